@@ -1,0 +1,70 @@
+# RTL helpers: lint tests for every top, and Verilated libraries for the engines and tests.
+#
+# htx_rtl_top(NAME <top> SOURCES <sv files...> [REGS <peripheral names...>] [YOSYS_ARGS <...>])
+#   Registers `lint.verilator.<top>` (verilator --lint-only -Wall) and `lint.yosys.<top>` (Debian
+#   Yosys 0.23, read_verilog -sv + synth_ice40) with the CTest label `lint`, and records the top's
+#   file list in the global properties HTX_RTL_<top>_SOURCES for synthesis reports and Verilation.
+#   REGS names the generated register packages (e.g. UART) that the top needs, which come first.
+# htx_verilate(<lib target> TOP <top> [ARGS <verilator args...>] [TRACE])
+#   Builds a static library holding the Verilated model of a top registered with htx_rtl_top.
+
+set(HTX_RTL_WAIVERS ${CMAKE_SOURCE_DIR}/hw/rtl/lint.vlt)
+find_program(HTX_VERILATOR_BIN verilator)
+find_program(HTX_YOSYS_BIN yosys)
+
+function(htx_reg_pkg_files out)
+  set(files)
+  foreach(p IN LISTS ARGN)
+    string(TOLOWER "${p}" lp)
+    list(APPEND files ${HTX_GENERATED_RTL}/htx_${lp}_reg_pkg.sv)
+  endforeach()
+  set(${out} ${files} PARENT_SCOPE)
+endfunction()
+
+function(htx_rtl_top)
+  cmake_parse_arguments(A "" "NAME" "SOURCES;REGS;YOSYS_ARGS" ${ARGN})
+  htx_reg_pkg_files(pkgs ${A_REGS})
+  set(srcs)
+  foreach(s IN LISTS A_SOURCES)
+    get_filename_component(abs ${s} ABSOLUTE)
+    list(APPEND srcs ${abs})
+  endforeach()
+  # Packages first: both tools need them before their users.
+  set(pkg_srcs ${srcs})
+  list(FILTER pkg_srcs INCLUDE REGEX "_pkg\\.sv$")
+  set(rest ${srcs})
+  list(FILTER rest EXCLUDE REGEX "_pkg\\.sv$")
+  set(all ${pkgs} ${pkg_srcs} ${rest})
+  set_property(GLOBAL PROPERTY HTX_RTL_${A_NAME}_SOURCES ${all})
+  set_property(GLOBAL APPEND PROPERTY HTX_RTL_TOPS ${A_NAME})
+  if(HTX_VERILATOR_BIN)
+    add_test(NAME lint.verilator.${A_NAME}
+      COMMAND ${HTX_VERILATOR_BIN} --lint-only -Wall --top-module ${A_NAME} ${HTX_RTL_WAIVERS} ${all})
+    set_tests_properties(lint.verilator.${A_NAME} PROPERTIES LABELS lint)
+  endif()
+  if(HTX_YOSYS_BIN)
+    list(JOIN all " " files)
+    add_test(NAME lint.yosys.${A_NAME}
+      COMMAND ${HTX_YOSYS_BIN} -q -l ${CMAKE_BINARY_DIR}/lint/${A_NAME}.yosys.log
+        -p "read_verilog -sv ${files}; synth_ice40 -dsp -top ${A_NAME} ${A_YOSYS_ARGS}")
+    set_tests_properties(lint.yosys.${A_NAME} PROPERTIES LABELS lint)
+  endif()
+  file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/lint)
+endfunction()
+
+function(htx_verilate lib)
+  cmake_parse_arguments(A "TRACE" "TOP" "ARGS" ${ARGN})
+  get_property(all GLOBAL PROPERTY HTX_RTL_${A_TOP}_SOURCES)
+  if(NOT all)
+    message(FATAL_ERROR "htx_verilate: ${A_TOP} was not registered with htx_rtl_top")
+  endif()
+  add_library(${lib} STATIC)
+  set(trace)
+  if(A_TRACE)
+    set(trace TRACE_FST)
+  endif()
+  verilate(${lib} SOURCES ${HTX_RTL_WAIVERS} ${all} TOP_MODULE ${A_TOP} PREFIX V${A_TOP} ${trace}
+    VERILATOR_ARGS -O3 -Wno-fatal --x-assign fast --x-initial fast ${A_ARGS})
+  add_dependencies(${lib} htx_regs_sv)
+  target_compile_options(${lib} PRIVATE -O2 -w)
+endfunction()

@@ -1,0 +1,39 @@
+/* picolibc stdio over the UART, and exit through SYSCTRL. picolibc asks the application for the
+ * stdin/stdout/stderr streams; a full TX FIFO stalls the bus write, so putc never drops a byte. */
+#include <stdio.h>
+
+#include "htx_regs.h"
+
+static int uart_putc(char c, FILE *file) {
+  (void)file;
+  HTX_UART->DATA = (uint8_t)c;
+  return (uint8_t)c;
+}
+
+static int uart_getc(FILE *file) {
+  (void)file;
+  uint32_t word;
+  do {
+    word = HTX_UART->DATA;
+  } while (word & UART_DATA_RX_EMPTY_Msk);
+  return (int)(word & UART_DATA_BYTE_Msk);
+}
+
+static FILE uart_stream = FDEV_SETUP_STREAM(uart_putc, uart_getc, NULL, _FDEV_SETUP_RW);
+FILE *const stdin = &uart_stream;
+FILE *const stdout = &uart_stream;
+FILE *const stderr = &uart_stream;
+
+/* Waits for the transmitter to drain, so the last bytes are on the wire before the SoC stops. */
+static void uart_drain(void) {
+  while (!(HTX_UART->STATUS & UART_STATUS_TX_IDLE_Msk)) {
+  }
+}
+
+void _exit(int status) {
+  uart_drain();
+  HTX_SYSCTRL->SIM_EXIT = (uint32_t)status;
+  for (;;) {
+    /* On a board SIM_EXIT is ignored: stay here. */
+  }
+}

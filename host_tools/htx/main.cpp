@@ -1,0 +1,25 @@
+// htx: the one command-line tool for everything a hypertex user does.
+#include <exception>
+#include <iostream>
+
+#include "commands.hpp"
+#include "htx_version.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"htx: hypertex, a small open GPU for FPGAs — render, compare, simulate, talk to a board"};
+  app.set_version_flag("--version", std::string("htx ") + HTX_VERSION);
+  app.require_subcommand(1);
+  app.fallthrough();
+#define HTX_DECLARE_COMMAND(name) htx::register_##name(app);
+#include "htx_commands.inc"
+#undef HTX_DECLARE_COMMAND
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "htx: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
