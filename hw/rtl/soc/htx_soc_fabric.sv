@@ -1,0 +1,236 @@
+// Everything of the SoC except the CPU: the interconnect, the RAM and the peripherals, with the two
+// CPU bus ports (instruction, data) as slave ports. Tests drive these ports directly; htx_soc puts
+// the CPU on them.
+//
+//   ibus -> demux --RAM port A
+//                 \-IO arbiter port 0 --+
+//   dbus -> demux --RAM port B          |
+//                 \-IO arbiter port 1 --+-> IO demux -> SYSCTRL, UART, TIMER
+//
+// Both masters see the same memory map (contracts.md). The RAM is dual-ported, so fetch and data
+// never wait for each other there; only IO accesses (0x2xxx_xxxx) share the arbiter. Each demux
+// answers addresses no slave claims with rsp_err. With StallInject, every slave sits behind an
+// htx_bus_stall whose random wait states are switched on by stall_en_i.
+module htx_soc_fabric #(
+  parameter int unsigned RamBytes    = 4096,
+  parameter              RamInitFile = "",
+  parameter int unsigned ClockHz     = 12_000_000,
+  parameter bit          Sim         = 1'b0,
+  parameter bit          StallInject = 1'b0
+) (
+  input  logic        clk_i,
+  input  logic        rst_ni,
+
+  input  logic        ibus_req_valid_i,
+  output logic        ibus_req_ready_o,
+  input  logic [31:0] ibus_req_addr_i,
+  input  logic        ibus_req_we_i,
+  input  logic [3:0]  ibus_req_be_i,
+  input  logic [31:0] ibus_req_wdata_i,
+  output logic        ibus_rsp_valid_o,
+  output logic [31:0] ibus_rsp_rdata_o,
+  output logic        ibus_rsp_err_o,
+
+  input  logic        dbus_req_valid_i,
+  output logic        dbus_req_ready_o,
+  input  logic [31:0] dbus_req_addr_i,
+  input  logic        dbus_req_we_i,
+  input  logic [3:0]  dbus_req_be_i,
+  input  logic [31:0] dbus_req_wdata_i,
+  output logic        dbus_rsp_valid_o,
+  output logic [31:0] dbus_rsp_rdata_o,
+  output logic        dbus_rsp_err_o,
+
+  input  logic        uart_rx_i,
+  output logic        uart_tx_o,
+  output logic        timer_irq_o,
+
+  output logic        sim_exit_o,
+  output logic [7:0]  sim_exit_code_o,
+  output logic        sim_putchar_o,
+  output logic [7:0]  sim_char_o,
+
+  input  logic        stall_en_i,
+  input  logic [31:0] stall_seed_i
+);
+  localparam logic [31:0] RamBase = 32'h0000_0000;
+  localparam logic [31:0] RamMask = ~(32'(RamBytes) - 32'd1);
+  localparam logic [31:0] IoBase  = 32'h2000_0000;
+  localparam logic [31:0] IoMask  = 32'hF000_0000;
+  localparam logic [31:0] RegMask = 32'hFFFF_F000;  // 4 KiB register blocks
+  localparam int unsigned NumIo   = 3;
+
+  // ---- CPU-side demuxes: slave 0 = RAM port, slave 1 = IO arbiter ----
+  logic [1:0]  i_valid, i_ready, i_rsp_valid, i_rsp_err;
+  logic [31:0] i_addr, i_wdata;
+  logic        i_we;
+  logic [3:0]  i_be;
+  logic [63:0] i_rsp_rdata;
+  logic [1:0]  d_valid, d_ready, d_rsp_valid, d_rsp_err;
+  logic [31:0] d_addr, d_wdata;
+  logic        d_we;
+  logic [3:0]  d_be;
+  logic [63:0] d_rsp_rdata;
+
+  htx_bus_demux #(
+    .NumSlaves(2),
+    .SlaveBase({IoBase, RamBase}),
+    .SlaveMask({IoMask, RamMask})
+  ) u_ibus_demux (
+    .clk_i, .rst_ni,
+    .m_req_valid_i(ibus_req_valid_i), .m_req_ready_o(ibus_req_ready_o),
+    .m_req_addr_i (ibus_req_addr_i),  .m_req_we_i   (ibus_req_we_i),
+    .m_req_be_i   (ibus_req_be_i),    .m_req_wdata_i(ibus_req_wdata_i),
+    .m_rsp_valid_o(ibus_rsp_valid_o), .m_rsp_rdata_o(ibus_rsp_rdata_o),
+    .m_rsp_err_o  (ibus_rsp_err_o),
+    .s_req_valid_o(i_valid), .s_req_ready_i(i_ready), .s_req_addr_o(i_addr),
+    .s_req_we_o   (i_we),    .s_req_be_o   (i_be),    .s_req_wdata_o(i_wdata),
+    .s_rsp_valid_i(i_rsp_valid), .s_rsp_rdata_i(i_rsp_rdata), .s_rsp_err_i(i_rsp_err)
+  );
+
+  htx_bus_demux #(
+    .NumSlaves(2),
+    .SlaveBase({IoBase, RamBase}),
+    .SlaveMask({IoMask, RamMask})
+  ) u_dbus_demux (
+    .clk_i, .rst_ni,
+    .m_req_valid_i(dbus_req_valid_i), .m_req_ready_o(dbus_req_ready_o),
+    .m_req_addr_i (dbus_req_addr_i),  .m_req_we_i   (dbus_req_we_i),
+    .m_req_be_i   (dbus_req_be_i),    .m_req_wdata_i(dbus_req_wdata_i),
+    .m_rsp_valid_o(dbus_rsp_valid_o), .m_rsp_rdata_o(dbus_rsp_rdata_o),
+    .m_rsp_err_o  (dbus_rsp_err_o),
+    .s_req_valid_o(d_valid), .s_req_ready_i(d_ready), .s_req_addr_o(d_addr),
+    .s_req_we_o   (d_we),    .s_req_be_o   (d_be),    .s_req_wdata_o(d_wdata),
+    .s_rsp_valid_i(d_rsp_valid), .s_rsp_rdata_i(d_rsp_rdata), .s_rsp_err_i(d_rsp_err)
+  );
+
+  // ---- RAM, one port per CPU bus, each behind a stall injector ----
+  logic        ra_valid, ra_ready, ra_we, ra_rsp_valid, ra_rsp_err;
+  logic [31:0] ra_addr, ra_wdata, ra_rsp_rdata;
+  logic [3:0]  ra_be;
+  logic        rb_valid, rb_ready, rb_we, rb_rsp_valid, rb_rsp_err;
+  logic [31:0] rb_addr, rb_wdata, rb_rsp_rdata;
+  logic [3:0]  rb_be;
+
+  htx_bus_stall #(.Present(StallInject), .Salt(32'h1234_5601)) u_stall_ram_a (
+    .clk_i, .rst_ni, .en_i(stall_en_i), .seed_i(stall_seed_i),
+    .m_req_valid_i(i_valid[0]), .m_req_ready_o(i_ready[0]), .m_req_addr_i(i_addr),
+    .m_req_we_i(i_we), .m_req_be_i(i_be), .m_req_wdata_i(i_wdata),
+    .m_rsp_valid_o(i_rsp_valid[0]), .m_rsp_rdata_o(i_rsp_rdata[31:0]), .m_rsp_err_o(i_rsp_err[0]),
+    .s_req_valid_o(ra_valid), .s_req_ready_i(ra_ready), .s_req_addr_o(ra_addr),
+    .s_req_we_o(ra_we), .s_req_be_o(ra_be), .s_req_wdata_o(ra_wdata),
+    .s_rsp_valid_i(ra_rsp_valid), .s_rsp_rdata_i(ra_rsp_rdata), .s_rsp_err_i(ra_rsp_err)
+  );
+
+  htx_bus_stall #(.Present(StallInject), .Salt(32'h1234_5602)) u_stall_ram_b (
+    .clk_i, .rst_ni, .en_i(stall_en_i), .seed_i(stall_seed_i),
+    .m_req_valid_i(d_valid[0]), .m_req_ready_o(d_ready[0]), .m_req_addr_i(d_addr),
+    .m_req_we_i(d_we), .m_req_be_i(d_be), .m_req_wdata_i(d_wdata),
+    .m_rsp_valid_o(d_rsp_valid[0]), .m_rsp_rdata_o(d_rsp_rdata[31:0]), .m_rsp_err_o(d_rsp_err[0]),
+    .s_req_valid_o(rb_valid), .s_req_ready_i(rb_ready), .s_req_addr_o(rb_addr),
+    .s_req_we_o(rb_we), .s_req_be_o(rb_be), .s_req_wdata_o(rb_wdata),
+    .s_rsp_valid_i(rb_rsp_valid), .s_rsp_rdata_i(rb_rsp_rdata), .s_rsp_err_i(rb_rsp_err)
+  );
+
+  htx_ram_dp #(.Bytes(RamBytes), .InitFile(RamInitFile)) u_ram (
+    .clk_i, .rst_ni,
+    .a_req_valid_i(ra_valid), .a_req_ready_o(ra_ready), .a_req_addr_i(ra_addr),
+    .a_req_we_i(ra_we), .a_req_be_i(ra_be), .a_req_wdata_i(ra_wdata),
+    .a_rsp_valid_o(ra_rsp_valid), .a_rsp_rdata_o(ra_rsp_rdata), .a_rsp_err_o(ra_rsp_err),
+    .b_req_valid_i(rb_valid), .b_req_ready_o(rb_ready), .b_req_addr_i(rb_addr),
+    .b_req_we_i(rb_we), .b_req_be_i(rb_be), .b_req_wdata_i(rb_wdata),
+    .b_rsp_valid_o(rb_rsp_valid), .b_rsp_rdata_o(rb_rsp_rdata), .b_rsp_err_o(rb_rsp_err)
+  );
+
+  // ---- IO: arbiter between the two CPU buses, then the register-block demux ----
+  logic        io_valid, io_ready, io_we, io_rsp_valid, io_rsp_err;
+  logic [31:0] io_addr, io_wdata, io_rsp_rdata;
+  logic [3:0]  io_be;
+  logic [31:0] io_rsp_rdata_shared;  // the arbiter returns one response to whichever master owns it
+  logic        io_rsp_err_shared;
+
+  htx_bus_arbiter #(.NumMasters(2)) u_io_arbiter (
+    .clk_i, .rst_ni,
+    .m_req_valid_i({d_valid[1], i_valid[1]}),
+    .m_req_ready_o({d_ready[1], i_ready[1]}),
+    .m_req_addr_i ({d_addr, i_addr}),
+    .m_req_we_i   ({d_we, i_we}),
+    .m_req_be_i   ({d_be, i_be}),
+    .m_req_wdata_i({d_wdata, i_wdata}),
+    .m_rsp_valid_o({d_rsp_valid[1], i_rsp_valid[1]}),
+    .m_rsp_rdata_o(io_rsp_rdata_shared),
+    .m_rsp_err_o  (io_rsp_err_shared),
+    .s_req_valid_o(io_valid), .s_req_ready_i(io_ready), .s_req_addr_o(io_addr),
+    .s_req_we_o(io_we), .s_req_be_o(io_be), .s_req_wdata_o(io_wdata),
+    .s_rsp_valid_i(io_rsp_valid), .s_rsp_rdata_i(io_rsp_rdata), .s_rsp_err_i(io_rsp_err)
+  );
+
+  assign i_rsp_rdata[63:32] = io_rsp_rdata_shared;
+  assign d_rsp_rdata[63:32] = io_rsp_rdata_shared;
+  assign i_rsp_err[1]       = io_rsp_err_shared;
+  assign d_rsp_err[1]       = io_rsp_err_shared;
+
+  logic [NumIo-1:0]    p_valid, p_ready, p_rsp_valid, p_rsp_err;
+  logic [31:0]         p_addr, p_wdata;
+  logic                p_we;
+  logic [3:0]          p_be;
+  logic [NumIo*32-1:0] p_rsp_rdata;
+
+  htx_bus_demux #(
+    .NumSlaves(NumIo),
+    .SlaveBase({htx_timer_reg_pkg::TIMER_BASE_ADDR, htx_uart_reg_pkg::UART_BASE_ADDR,
+                htx_sysctrl_reg_pkg::SYSCTRL_BASE_ADDR}),
+    .SlaveMask({RegMask, RegMask, RegMask})
+  ) u_io_demux (
+    .clk_i, .rst_ni,
+    .m_req_valid_i(io_valid), .m_req_ready_o(io_ready), .m_req_addr_i(io_addr),
+    .m_req_we_i(io_we), .m_req_be_i(io_be), .m_req_wdata_i(io_wdata),
+    .m_rsp_valid_o(io_rsp_valid), .m_rsp_rdata_o(io_rsp_rdata), .m_rsp_err_o(io_rsp_err),
+    .s_req_valid_o(p_valid), .s_req_ready_i(p_ready), .s_req_addr_o(p_addr),
+    .s_req_we_o(p_we), .s_req_be_o(p_be), .s_req_wdata_o(p_wdata),
+    .s_rsp_valid_i(p_rsp_valid), .s_rsp_rdata_i(p_rsp_rdata), .s_rsp_err_i(p_rsp_err)
+  );
+
+  // Peripheral-side links after the stall injectors.
+  logic [NumIo-1:0]    q_valid, q_ready, q_we, q_rsp_valid, q_rsp_err;
+  logic [NumIo*32-1:0] q_addr, q_wdata, q_rsp_rdata;
+  logic [NumIo*4-1:0]  q_be;
+
+  for (genvar k = 0; k < NumIo; k++) begin : g_io_stall
+    htx_bus_stall #(.Present(StallInject), .Salt(32'h1234_5610 + 32'(k))) u_stall (
+      .clk_i, .rst_ni, .en_i(stall_en_i), .seed_i(stall_seed_i),
+      .m_req_valid_i(p_valid[k]), .m_req_ready_o(p_ready[k]), .m_req_addr_i(p_addr),
+      .m_req_we_i(p_we), .m_req_be_i(p_be), .m_req_wdata_i(p_wdata),
+      .m_rsp_valid_o(p_rsp_valid[k]), .m_rsp_rdata_o(p_rsp_rdata[k*32 +: 32]),
+      .m_rsp_err_o(p_rsp_err[k]),
+      .s_req_valid_o(q_valid[k]), .s_req_ready_i(q_ready[k]), .s_req_addr_o(q_addr[k*32 +: 32]),
+      .s_req_we_o(q_we[k]), .s_req_be_o(q_be[k*4 +: 4]), .s_req_wdata_o(q_wdata[k*32 +: 32]),
+      .s_rsp_valid_i(q_rsp_valid[k]), .s_rsp_rdata_i(q_rsp_rdata[k*32 +: 32]),
+      .s_rsp_err_i(q_rsp_err[k])
+    );
+  end
+
+  htx_sysctrl #(.ClockHz(ClockHz), .Sim(Sim)) u_sysctrl (
+    .clk_i, .rst_ni,
+    .req_valid_i(q_valid[0]), .req_ready_o(q_ready[0]), .req_addr_i(q_addr[0 +: 32]),
+    .req_we_i(q_we[0]), .req_be_i(q_be[0 +: 4]), .req_wdata_i(q_wdata[0 +: 32]),
+    .rsp_valid_o(q_rsp_valid[0]), .rsp_rdata_o(q_rsp_rdata[0 +: 32]), .rsp_err_o(q_rsp_err[0]),
+    .sim_exit_o, .sim_exit_code_o, .sim_putchar_o, .sim_char_o
+  );
+
+  htx_uart u_uart (
+    .clk_i, .rst_ni,
+    .req_valid_i(q_valid[1]), .req_ready_o(q_ready[1]), .req_addr_i(q_addr[32 +: 32]),
+    .req_we_i(q_we[1]), .req_be_i(q_be[4 +: 4]), .req_wdata_i(q_wdata[32 +: 32]),
+    .rsp_valid_o(q_rsp_valid[1]), .rsp_rdata_o(q_rsp_rdata[32 +: 32]), .rsp_err_o(q_rsp_err[1]),
+    .rx_i(uart_rx_i), .tx_o(uart_tx_o)
+  );
+
+  htx_timer u_timer (
+    .clk_i, .rst_ni,
+    .req_valid_i(q_valid[2]), .req_ready_o(q_ready[2]), .req_addr_i(q_addr[64 +: 32]),
+    .req_we_i(q_we[2]), .req_be_i(q_be[8 +: 4]), .req_wdata_i(q_wdata[64 +: 32]),
+    .rsp_valid_o(q_rsp_valid[2]), .rsp_rdata_o(q_rsp_rdata[64 +: 32]), .rsp_err_o(q_rsp_err[2]),
+    .irq_o(timer_irq_o)
+  );
+endmodule
