@@ -1,0 +1,26 @@
+// Images on disk: PNG in and out (stb_image / stb_image_write), and RGB565 frames as 8-bit images.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace htx {
+
+// 8-bit RGBA, row-major, top row first.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgba;
+};
+
+// Loads any image stb_image reads (PNG and others) as RGBA8. Throws std::runtime_error with the
+// file name and the decoder's reason on failure.
+Image load_image(const std::string& path);
+
+// Writes a PNG. Throws std::runtime_error on failure.
+void write_png(const std::string& path, const Image& image);
+
+// Expands RGB565 to RGB8 by bit replication (0x1F -> 0xFF), alpha 255.
+Image image_from_rgb565(int width, int height, const std::vector<uint16_t>& pixels);
+
+}  // namespace htx

@@ -1,0 +1,52 @@
+// Metrics of an engine's frame against the `ref` frame of the same scene (docs/metrics.md).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "htx/model/image_io.hpp"
+#include "htx/model/types.hpp"
+
+namespace htx {
+
+// Differences between two images of the same size over R, G, B (alpha ignored), in 8-bit units.
+struct ImageDiff {
+  double psnr_db = 0;           // +infinity when identical
+  int max_channel_diff = 0;     // 0..255
+  uint64_t differing_pixels = 0;
+};
+// Throws std::invalid_argument when the sizes differ.
+ImageDiff compare_images(const Image& a, const Image& b);
+
+// Labels copied into the JSON as they are.
+struct MetricsLabels {
+  std::string engine, scene, method, filter, config;
+};
+
+struct Metrics {
+  MetricsLabels labels;
+  int width = 0, height = 0;
+  // Texel-coordinate error per pixel textured in both frames: max(|du|, |dv|) between the engine's
+  // and ref's probe coordinates, in texels of ref's sampled mip level.
+  double max_texel_error = 0, rms_texel_error = 0, p999_texel_error = 0;
+  uint64_t compared_pixels = 0;
+  double psnr_db = 0;  // +infinity when the frames are identical
+  int max_channel_diff = 0;
+  uint64_t coverage_diff_pixels = 0;  // textured in exactly one of the two frames
+  uint64_t divfree_max_steps = 0;
+  double divfree_mean_steps = 0;
+  uint64_t divfree_cap_hits = 0;
+};
+
+// Per-pixel texel-coordinate error, as defined for Metrics (engine probe against ref probe).
+double texel_error(const PixelProbe& engine, const PixelProbe& ref);
+
+// Throws std::invalid_argument when the frames' sizes differ or a frame is malformed.
+Metrics compute_metrics(const Frame& engine, const Frame& ref, const MetricsLabels& labels);
+
+// The JSON object with the documented keys; an infinite PSNR is written as null.
+nlohmann::json metrics_to_json(const Metrics& m);
+
+}  // namespace htx

@@ -1,0 +1,19 @@
+// Scenes from Wavefront OBJ/MTL files with PNG textures (tinyobjloader, stb_image).
+//
+// - One mesh per (shape, material); faces are triangulated; front faces counter-clockwise.
+// - A material's map_Kd image becomes a texture (RGB565): its sides must be powers of two in 8..256.
+//   OBJ's vt has v = 0 at the image bottom, so image rows are stored bottom-up (texel row 0 = v 0).
+// - Colour: the material's Kd times the vertex colour (white when absent), modulating the texture.
+// - The camera frames the bounding sphere from +z, slightly above, 60 degree vertical field of view.
+#pragma once
+
+#include <string>
+
+#include "htx/model/scene.hpp"
+
+namespace htx {
+
+// Throws std::runtime_error naming the file on any load or validation failure.
+Scene load_obj_scene(const std::string& path);
+
+}  // namespace htx

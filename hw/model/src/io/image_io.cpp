@@ -1,0 +1,49 @@
+#include "htx/model/image_io.hpp"
+
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+#include <stdexcept>
+
+namespace htx {
+
+Image load_image(const std::string& path) {
+  int w = 0, h = 0, channels = 0;
+  unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
+  if (!data) {
+    const char* reason = stbi_failure_reason();
+    throw std::runtime_error("cannot load image '" + path + "': " + (reason ? reason : "unknown error"));
+  }
+  Image img;
+  img.width = w;
+  img.height = h;
+  img.rgba.assign(data, data + static_cast<size_t>(w) * h * 4);
+  stbi_image_free(data);
+  return img;
+}
+
+void write_png(const std::string& path, const Image& image) {
+  if (image.width <= 0 || image.height <= 0 ||
+      image.rgba.size() != static_cast<size_t>(image.width) * image.height * 4)
+    throw std::runtime_error("cannot write '" + path + "': malformed image");
+  if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4))
+    throw std::runtime_error("cannot write PNG '" + path + "'");
+}
+
+Image image_from_rgb565(int width, int height, const std::vector<uint16_t>& pixels) {
+  Image img;
+  img.width = width;
+  img.height = height;
+  img.rgba.resize(pixels.size() * 4);
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    const unsigned p = pixels[i];
+    const unsigned r = p >> 11 & 31, g = p >> 5 & 63, b = p & 31;
+    img.rgba[i * 4 + 0] = static_cast<uint8_t>(r << 3 | r >> 2);
+    img.rgba[i * 4 + 1] = static_cast<uint8_t>(g << 2 | g >> 4);
+    img.rgba[i * 4 + 2] = static_cast<uint8_t>(b << 3 | b >> 2);
+    img.rgba[i * 4 + 3] = 255;
+  }
+  return img;
+}
+
+}  // namespace htx

@@ -1,0 +1,60 @@
+#include "scene_params.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace htx {
+
+SceneParams::SceneParams(const std::string& spec) {
+  const size_t colon = spec.find(':');
+  name_ = spec.substr(0, colon);
+  if (colon == std::string::npos) return;
+  std::string rest = spec.substr(colon + 1);
+  size_t pos = 0;
+  while (pos <= rest.size()) {
+    const size_t comma = rest.find(',', pos);
+    const std::string pair = rest.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+    const size_t eq = pair.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == pair.size())
+      throw std::invalid_argument("scene '" + name_ + "': malformed parameter '" + pair + "' (want key=value)");
+    const std::string key = pair.substr(0, eq);
+    if (!values_.emplace(key, pair.substr(eq + 1)).second)
+      throw std::invalid_argument("scene '" + name_ + "': parameter '" + key + "' given twice");
+    if (comma == std::string::npos) break;
+    pos = comma + 1;
+  }
+}
+
+double SceneParams::number(const std::string& key, double fallback, double min, double max) {
+  used_.insert(key);
+  const auto it = values_.find(key);
+  if (it == values_.end()) return fallback;
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(it->second, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != it->second.size() || !std::isfinite(v))
+    throw std::invalid_argument("scene '" + name_ + "': parameter " + key + "='" + it->second + "' is not a number");
+  if (v < min || v > max)
+    throw std::invalid_argument("scene '" + name_ + "': parameter " + key + "=" + it->second + " out of range [" +
+                                std::to_string(min) + ", " + std::to_string(max) + "]");
+  return v;
+}
+
+int SceneParams::integer(const std::string& key, int fallback, int min, int max) {
+  const double v = number(key, fallback, min, max);
+  if (v != std::floor(v))
+    throw std::invalid_argument("scene '" + name_ + "': parameter " + key + " must be an integer");
+  return static_cast<int>(v);
+}
+
+void SceneParams::check_all_used() const {
+  for (const auto& [key, value] : values_)
+    if (!used_.count(key))
+      throw std::invalid_argument("scene '" + name_ + "' has no parameter '" + key + "'");
+}
+
+}  // namespace htx

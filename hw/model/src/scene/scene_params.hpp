@@ -1,0 +1,28 @@
+// Parsing of scene specs `name:key=value,...` and typed, range-checked access to the values.
+#pragma once
+
+#include <map>
+#include <set>
+#include <string>
+
+namespace htx {
+
+class SceneParams {
+ public:
+  // Splits `spec` into the scene name and its key=value pairs. Throws std::invalid_argument on
+  // malformed pairs or repeated keys.
+  explicit SceneParams(const std::string& spec);
+
+  const std::string& name() const { return name_; }
+  double number(const std::string& key, double fallback, double min, double max);
+  int integer(const std::string& key, int fallback, int min, int max);
+  // Throws when a given key was never asked for (a misspelt parameter must not pass silently).
+  void check_all_used() const;
+
+ private:
+  std::string name_;
+  std::map<std::string, std::string> values_;
+  std::set<std::string> used_;
+};
+
+}  // namespace htx
