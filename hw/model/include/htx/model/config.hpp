@@ -1,0 +1,72 @@
+// Configuration of the bit-accurate model: every width, table size and which methods, filters and
+// formats are built. docs/model.md explains each field; the RTL takes the same values as parameters.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "htx/fw/vertex_record.h"
+#include "htx/model/types.hpp"
+
+namespace htx {
+
+struct ModelConfig {
+  std::string name;
+
+  // Vertex record (firmware/lib/include/htx/fw/vertex_record.h).
+  unsigned xy_int_bits = 16;  // x, y: signed, this many integer bits incl. sign, 8 subpixel bits
+  unsigned z_bits = 24;       // depth buffer and vertex z
+  unsigned q_bits = 32;       // per-vertex q mantissa (largest vertex q in [2^(q_bits-1), 2^q_bits))
+  unsigned uv_int_bits = 16;  // u - u_offset in texels, signed, incl. sign
+
+  // Setup and interpolation: every plane (z, q, uq, vq, colour) steps in fixed point with this many
+  // fractional bits per subpixel below the attribute's own unit (gradients and accumulators).
+  unsigned grad_frac_bits = 24;
+
+  // The shared reciprocal unit: k-bit table, g guard bits (k+g output bits after the leading one),
+  // datapath mantissa width W, Newton-Raphson steps for setup (1/determinant) and for RECIP_NR.
+  unsigned recip_table_bits = 10;  // k
+  unsigned recip_guard_bits = 2;   // g
+  unsigned recip_width = 32;       // W (input mantissa and result width)
+  unsigned setup_nr_steps = 2;
+  unsigned pixel_nr_steps = 2;
+  // Clocks between two divisions the unit accepts (1 = fully pipelined; a shared iterative unit
+  // on a small FPGA takes 1 + steps). Used by the cycle estimate.
+  unsigned recip_issue_interval = 1;
+
+  // Texel coordinates leave the divider as signed fixed point with this many fractional bits.
+  unsigned texcoord_frac_bits = 16;
+
+  // DIVFREE: grid of 2^-divfree_frac_bits texels for bilinear/trilinear (nearest tracks whole
+  // texels), and at most divfree_cap grid steps per axis per pixel.
+  unsigned divfree_frac_bits = 4;
+  unsigned divfree_cap = 64;
+
+  // LOD: fractional bits of the LOD, and index bits of the log2 table (log2(1+f), midpoint entries).
+  unsigned lod_frac_bits = 8;
+  unsigned lod_log_index_bits = 10;
+
+  unsigned filter_weight_bits = 8;  // bilinear and trilinear weights (fixed by the texture unit)
+
+  // What is built. Bit i of methods is Method(i), of filters Filter(i), of formats TexFormat(i).
+  uint32_t methods = 0x3F;  // affine, subdiv, recip_lut, recip_nr, divfree, quadratic
+  uint32_t filters = 0x7;
+  uint32_t formats = 0x7;
+
+  bool has_method(Method m) const { return (methods >> static_cast<unsigned>(m)) & 1u; }
+  bool has_filter(Filter f) const { return (filters >> static_cast<unsigned>(f)) & 1u; }
+  bool has_format(TexFormat f) const { return (formats >> static_cast<unsigned>(f)) & 1u; }
+  fw::RecordFormat record_format() const;
+  // Throws std::invalid_argument naming the field when a width is outside what the model supports.
+  void validate() const;
+};
+
+// Named configurations: "icebreaker" (iCE40 UP5K: narrow, shared iterative reciprocal unit,
+// RGB565/RGBA4444, no trilinear) and "full" (wide, pipelined, everything built).
+// Throws std::invalid_argument for an unknown name, listing the known ones.
+const ModelConfig& model_config(std::string_view name);
+std::vector<std::string> model_config_names();
+
+}  // namespace htx

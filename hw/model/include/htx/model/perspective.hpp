@@ -1,0 +1,80 @@
+// One triangle in the raster unit after setup (docs/model.md, "Setup", "Interpolation",
+// "Perspective methods"): its planes, its coverage, and the texel coordinates of a span under each
+// perspective method.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "htx/fw/vertex_record.h"
+#include "htx/model/config.hpp"
+#include "htx/model/lod.hpp"
+#include "htx/model/raster_setup.hpp"
+#include "htx/model/recip.hpp"
+#include "htx/model/texture.hpp"
+#include "htx/model/types.hpp"
+
+namespace htx::model {
+
+// Texel coordinates of one span (local: before the per-triangle texel offset), texcoord_frac_bits.
+struct SpanCoords {
+  std::vector<int64_t> u, v;
+  std::vector<uint32_t> divfree_steps;  // u steps + v steps at each pixel (DIVFREE)
+  std::vector<uint8_t> divfree_capped;  // 1 where an axis stopped at the cap
+  uint64_t cycles = 0;                  // estimated clocks of the span
+};
+
+// Exact quotient grid index of DIVFREE: the j with j < 2^f * U / Q <= j + 1 (Q > 0).
+int64_t divfree_exact_index(i128 num, i128 q, unsigned grid_bits);
+
+class TriangleUnit {
+ public:
+  TriangleUnit(const fw::TriangleRecord& rec, const TriState& state, const ModelConfig& cfg, int width, int height);
+
+  bool empty() const { return setup_.empty; }
+  int y_lo() const { return setup_.y_lo; }
+  int y_hi() const { return setup_.y_hi; }
+  bool span(int y, int* x0, int* x1) const { return row_span(setup_, y, x0, x1); }
+  uint64_t setup_cycles() const { return setup_cycles_; }
+
+  // Rows must be visited in increasing y (DIVFREE carries its grid position from span to span).
+  void span_coords(int y, int x0, int x1, Method method, SpanCoords* out) const;
+
+  uint32_t depth_at(int64_t px, int64_t py) const;
+  Rgba8 color_at(int64_t px, int64_t py) const;
+  Rgba8 flat_color() const;
+  int32_t lod_at(const Log2Unit& unit, int64_t px, int64_t py, int64_t u, int64_t v) const;
+
+  const TriSetup& setup() const { return setup_; }
+  const Plane& q_plane() const { return q_; }
+  const Plane& uq_plane() const { return uq_; }
+  const Plane& vq_plane() const { return vq_; }
+  unsigned divfree_grid_bits() const { return grid_bits_; }
+
+ private:
+  int64_t divide(i128 num, i128 q, const RecipParams& p) const;
+  void span_affine(int64_t py, int x0, int x1, SpanCoords* out) const;
+  void span_divide(int64_t py, int x0, int x1, const RecipParams& p, SpanCoords* out) const;
+  void span_subdiv(int64_t py, int x0, int x1, bool quadratic, SpanCoords* out) const;
+  void span_divfree(int64_t py, int x0, int x1, SpanCoords* out) const;
+
+  const ModelConfig& cfg_;
+  TriState state_;
+  TriSetup setup_;
+  RecipParams setup_recip_, pixel_nr_, pixel_lut_;
+  Plane z_, q_, uq_, vq_, ua_, va_;
+  Plane color_[4];
+  uint64_t setup_cycles_ = 0;
+  unsigned grid_bits_ = 0;
+  // DIVFREE position carried between spans: grid indices at the previous span's first pixel.
+  mutable bool df_started_ = false;
+  mutable int64_t df_ju_ = 0, df_jv_ = 0;
+};
+
+// AUTO: the firmware's choice for one triangle (modelled from the ScreenVertex doubles, as the
+// firmware decides before encoding): AFFINE when the predicted affine error
+// du_max * (sqrt(r) - 1) / (sqrt(r) + 1), r = w_max / w_min, is at most 1/64 texel, else the most
+// accurate division method the configuration builds (RECIP_NR, else RECIP_LUT, else SUBDIV).
+Method auto_method(const ScreenTri& tri, const ModelConfig& cfg);
+
+}  // namespace htx::model

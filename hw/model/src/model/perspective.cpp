@@ -1,0 +1,296 @@
+#include "htx/model/perspective.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+
+namespace htx::model {
+
+namespace {
+
+std::array<i128, 3> vertex_values(const fw::TriangleRecord& r, i128 (*get)(const fw::VertexRecord&)) {
+  return {get(r.v[0]), get(r.v[1]), get(r.v[2])};
+}
+
+// Reciprocals of span lengths 1..64 for SUBDIV's linear steps: round(2^16 / L).
+int64_t inverse_length(int64_t len) { return ((int64_t{1} << 17) + len) / (2 * len); }
+
+}  // namespace
+
+int64_t divfree_exact_index(i128 num, i128 q, unsigned grid_bits) {
+  if (q < 1) q = 1;
+  return static_cast<int64_t>(ceil_div(mul_checked(num, static_cast<i128>(1) << grid_bits), q) - 1);
+}
+
+TriangleUnit::TriangleUnit(const fw::TriangleRecord& rec, const TriState& state, const ModelConfig& cfg, int width,
+                           int height)
+    : cfg_(cfg), state_(state) {
+  setup_ = setup_coverage(rec, width, height);
+  if (setup_.empty) return;
+  setup_recip_ = {cfg.recip_table_bits, cfg.recip_guard_bits, cfg.recip_width, cfg.setup_nr_steps};
+  pixel_nr_ = setup_recip_;
+  pixel_nr_.steps = cfg.pixel_nr_steps;
+  pixel_lut_ = setup_recip_;
+  pixel_lut_.steps = 0;
+  const Reciprocal inv = reciprocal(setup_recip_, static_cast<u128>(setup_.det));
+  const DetReciprocal d{inv.value, inv.shift};
+  const unsigned gf = cfg.grad_frac_bits;
+  const fw::TriangleRecord& r = setup_.rec;
+  z_ = make_plane(setup_, vertex_values(r, [](const fw::VertexRecord& v) -> i128 { return v.z; }), d, gf);
+  q_ = make_plane(setup_, vertex_values(r, [](const fw::VertexRecord& v) -> i128 { return v.q; }), d, gf);
+  uq_ = make_plane(setup_, vertex_values(r, [](const fw::VertexRecord& v) -> i128 { return v.uq; }), d, gf);
+  vq_ = make_plane(setup_, vertex_values(r, [](const fw::VertexRecord& v) -> i128 { return v.vq; }), d, gf);
+  for (unsigned c = 0; c < 4; ++c) {
+    const std::array<i128, 3> ch = {(r.v[0].rgba >> (8 * c)) & 0xFF, (r.v[1].rgba >> (8 * c)) & 0xFF,
+                                    (r.v[2].rgba >> (8 * c)) & 0xFF};
+    color_[c] = make_plane(setup_, ch, d, gf);
+  }
+  // AFFINE interpolates the vertex texel coordinates themselves: u_i = uq_i / q_i from the shared
+  // reciprocal unit at setup (three divisions per axis).
+  std::array<i128, 3> ua{}, va{};
+  for (int i = 0; i < 3; ++i) {
+    ua[i] = divide(r.v[i].uq, r.v[i].q, setup_recip_);
+    va[i] = divide(r.v[i].vq, r.v[i].q, setup_recip_);
+  }
+  ua_ = make_plane(setup_, ua, d, gf);
+  va_ = make_plane(setup_, va, d, gf);
+  grid_bits_ = state.filter == Filter::Nearest ? 0 : cfg.divfree_frac_bits;
+  // Estimate: edge and determinant arithmetic, one division for 1/det, 6 for the affine vertex
+  // coordinates, then 9 planes x 2 gradients through one multiplier pair.
+  setup_cycles_ = 8 + 7 * uint64_t{cfg.recip_issue_interval} + 18;
+}
+
+int64_t TriangleUnit::divide(i128 num, i128 q, const RecipParams& p) const {
+  if (q < 1) q = 1;  // cannot happen inside a triangle with positive vertex q; defined anyway
+  const Reciprocal r = reciprocal(p, static_cast<u128>(q));
+  return static_cast<int64_t>(
+      shift_round(mul_checked(num, static_cast<i128>(r.value)), r.shift - static_cast<int>(cfg_.texcoord_frac_bits)));
+}
+
+uint32_t TriangleUnit::depth_at(int64_t px, int64_t py) const {
+  const i128 z = shift_round(z_.at(px, py), static_cast<int>(cfg_.grad_frac_bits));
+  const i128 top = (i128{1} << cfg_.z_bits) - 1;
+  return static_cast<uint32_t>(z < 0 ? 0 : (z > top ? top : z));
+}
+
+Rgba8 TriangleUnit::color_at(int64_t px, int64_t py) const {
+  uint8_t ch[4];
+  for (int c = 0; c < 4; ++c) {
+    const i128 a = shift_round(color_[c].at(px, py), static_cast<int>(cfg_.grad_frac_bits));
+    ch[c] = static_cast<uint8_t>(a < 0 ? 0 : (a > 255 ? 255 : a));
+  }
+  return {ch[0], ch[1], ch[2], ch[3]};
+}
+
+Rgba8 TriangleUnit::flat_color() const {
+  const uint32_t c = setup_.rec.v[0].rgba;  // vertex 0 is never reordered
+  return {static_cast<uint8_t>(c), static_cast<uint8_t>(c >> 8), static_cast<uint8_t>(c >> 16),
+          static_cast<uint8_t>(c >> 24)};
+}
+
+int32_t TriangleUnit::lod_at(const Log2Unit& unit, int64_t px, int64_t py, int64_t u, int64_t v) const {
+  LodInputs in;
+  in.q = std::max<i128>(q_.at(px, py), 1);
+  in.gux = uq_.gx;
+  in.guy = uq_.gy;
+  in.gvx = vq_.gx;
+  in.gvy = vq_.gy;
+  in.gqx = q_.gx;
+  in.gqy = q_.gy;
+  in.u = u;
+  in.v = v;
+  in.tex_frac_bits = cfg_.texcoord_frac_bits;
+  return compute_lod(unit, in, cfg_.lod_frac_bits);
+}
+
+void TriangleUnit::span_coords(int y, int x0, int x1, Method method, SpanCoords* out) const {
+  const size_t n = static_cast<size_t>(x1 - x0 + 1);
+  out->u.resize(n);
+  out->v.resize(n);
+  out->divfree_steps.assign(n, 0);
+  out->divfree_capped.assign(n, 0);
+  out->cycles = 0;
+  const int64_t py = 256 * int64_t{y} + 128;
+  switch (method) {
+    case Method::Affine:
+      span_affine(py, x0, x1, out);
+      out->cycles = n + 1;
+      return;
+    case Method::RecipLut:
+      span_divide(py, x0, x1, pixel_lut_, out);
+      out->cycles = n + 1;
+      return;
+    case Method::RecipNr:
+      span_divide(py, x0, x1, pixel_nr_, out);
+      out->cycles = n * cfg_.recip_issue_interval + 1;
+      return;
+    case Method::Subdiv:
+    case Method::Quadratic:
+      span_subdiv(py, x0, x1, method == Method::Quadratic, out);
+      return;
+    case Method::DivFree:
+      span_divfree(py, x0, x1, out);
+      return;
+    case Method::Auto:
+      break;
+  }
+  throw std::logic_error("span_coords: AUTO must be resolved before the raster unit");
+}
+
+void TriangleUnit::span_affine(int64_t py, int x0, int x1, SpanCoords* out) const {
+  const int gf = static_cast<int>(cfg_.grad_frac_bits);
+  const int64_t px0 = 256 * int64_t{x0} + 128;
+  i128 au = ua_.at(px0, py), av = va_.at(px0, py);
+  const i128 su = 256 * ua_.gx, sv = 256 * va_.gx;
+  for (size_t k = 0; k < out->u.size(); ++k) {
+    out->u[k] = static_cast<int64_t>(shift_round(au, gf));
+    out->v[k] = static_cast<int64_t>(shift_round(av, gf));
+    au += su;
+    av += sv;
+  }
+}
+
+void TriangleUnit::span_divide(int64_t py, int x0, int x1, const RecipParams& p, SpanCoords* out) const {
+  const int64_t px0 = 256 * int64_t{x0} + 128;
+  i128 q = q_.at(px0, py), u = uq_.at(px0, py), v = vq_.at(px0, py);
+  const i128 sq = 256 * q_.gx, su = 256 * uq_.gx, sv = 256 * vq_.gx;
+  const int tf = static_cast<int>(cfg_.texcoord_frac_bits);
+  for (size_t k = 0; k < out->u.size(); ++k) {
+    // One reciprocal of q per pixel serves both axes.
+    const Reciprocal r = reciprocal(p, static_cast<u128>(q < 1 ? 1 : q));
+    out->u[k] = static_cast<int64_t>(shift_round(mul_checked(u, static_cast<i128>(r.value)), r.shift - tf));
+    out->v[k] = static_cast<int64_t>(shift_round(mul_checked(v, static_cast<i128>(r.value)), r.shift - tf));
+    q += sq;
+    u += su;
+    v += sv;
+  }
+  (void)x1;
+}
+
+void TriangleUnit::span_subdiv(int64_t py, int x0, int x1, bool quadratic, SpanCoords* out) const {
+  const int n = static_cast<int>(state_.subdiv_n);
+  auto exact = [&](int x, int64_t* u, int64_t* v) {
+    const int64_t px = 256 * int64_t{x} + 128;
+    const i128 q = q_.at(px, py);
+    *u = divide(uq_.at(px, py), q, pixel_nr_);
+    *v = divide(vq_.at(px, py), q, pixel_nr_);
+  };
+  uint64_t divisions = 0;
+  for (int xa = x0; xa <= x1; xa += n) {
+    const int xb = std::min(xa + n, x1);
+    int64_t ua, va, ub, vb;
+    exact(xa, &ua, &va);
+    ++divisions;
+    const size_t ka = static_cast<size_t>(xa - x0);
+    out->u[ka] = ua;
+    out->v[ka] = va;
+    if (xb == xa) break;
+    exact(xb, &ub, &vb);
+    const int64_t len = xb - xa;
+    if (!quadratic || len < 2) {
+      // Linear between the exact points: a step with 8 extra fraction bits from a 64-entry
+      // reciprocal-of-length table, accumulated (j * step).
+      const int64_t inv = inverse_length(len);
+      const i128 du = shift_round(static_cast<i128>(ub - ua) * inv, 8);
+      const i128 dv = shift_round(static_cast<i128>(vb - va) * inv, 8);
+      for (int64_t j = 1; j < len; ++j) {
+        out->u[ka + static_cast<size_t>(j)] = ua + static_cast<int64_t>(shift_round(du * j, 8));
+        out->v[ka + static_cast<size_t>(j)] = va + static_cast<int64_t>(shift_round(dv * j, 8));
+      }
+    } else {
+      // QUADRATIC (model only): the parabola through the exact values at both ends and at the
+      // midpoint h, evaluated exactly and rounded (Lagrange form over h L (L - h)).
+      const int64_t h = len / 2;
+      int64_t um, vm;
+      exact(xa + static_cast<int>(h), &um, &vm);
+      ++divisions;
+      const i128 den = static_cast<i128>(h) * len * (len - h);
+      for (int64_t j = 1; j < len; ++j) {
+        const i128 c0 = static_cast<i128>(j - h) * (j - len) * (len - h);
+        const i128 c1 = -static_cast<i128>(j) * (j - len) * len;
+        const i128 c2 = static_cast<i128>(j) * (j - h) * h;
+        const i128 nu = c0 * ua + c1 * um + c2 * ub;
+        const i128 nv = c0 * va + c1 * vm + c2 * vb;
+        out->u[ka + static_cast<size_t>(j)] = static_cast<int64_t>(floor_div(2 * nu + den, 2 * den));
+        out->v[ka + static_cast<size_t>(j)] = static_cast<int64_t>(floor_div(2 * nv + den, 2 * den));
+      }
+    }
+    if (xb == x1) {
+      const size_t kb = static_cast<size_t>(xb - x0);
+      out->u[kb] = ub;
+      out->v[kb] = vb;
+      ++divisions;
+      break;
+    }
+  }
+  out->cycles = out->u.size() + divisions * cfg_.recip_issue_interval + 1;
+}
+
+void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) const {
+  const unsigned f = grid_bits_;
+  const int64_t cap = cfg_.divfree_cap;
+  const int tf = static_cast<int>(cfg_.texcoord_frac_bits);
+  const int64_t px0 = 256 * int64_t{x0} + 128;
+  i128 q = q_.at(px0, py), u = uq_.at(px0, py), v = vq_.at(px0, py);
+  const i128 sq = 256 * q_.gx, su = 256 * uq_.gx, sv = 256 * vq_.gx;
+  int64_t ju = 0, jv = 0;
+  if (df_started_) {
+    ju = df_ju_;
+    jv = df_jv_;
+  } else {
+    // The first pixel of the triangle starts from a setup division (modelled exact).
+    ju = divfree_exact_index(u, q, f);
+    jv = divfree_exact_index(v, q, f);
+    df_started_ = true;
+  }
+  // Move j toward the exact index one grid step at a time, at most `cap` steps: identical to
+  // reference 004's loop "while N <= 0: j -= 1; while M > 0: j += 1" on the integer conditions
+  // N = 2^f U - j Q > 0, M = 2^f U - (j+1) Q <= 0.
+  auto track = [cap](int64_t target, int64_t* j, uint32_t* steps, uint8_t* capped) {
+    const int64_t d = target - *j;
+    const int64_t a = d < 0 ? -d : d;
+    const int64_t s = std::min(a, cap);
+    *j += d < 0 ? -s : s;
+    *steps += static_cast<uint32_t>(s);
+    if (a > cap) *capped = 1;
+    return s;
+  };
+  uint64_t cycles = 1;
+  for (size_t k = 0; k < out->u.size(); ++k) {
+    const int64_t su_n = track(divfree_exact_index(u, q, f), &ju, &out->divfree_steps[k], &out->divfree_capped[k]);
+    const int64_t sv_n = track(divfree_exact_index(v, q, f), &jv, &out->divfree_steps[k], &out->divfree_capped[k]);
+    cycles += static_cast<uint64_t>(std::max<int64_t>(1, std::max(su_n, sv_n)));  // both axes step in parallel
+    if (k == 0) {
+      df_ju_ = ju;
+      df_jv_ = jv;
+    }
+    // The grid value is the centre of cell j: (j + 1/2) 2^-f texels.
+    out->u[k] = (2 * ju + 1) * (int64_t{1} << (tf - static_cast<int>(f) - 1));
+    out->v[k] = (2 * jv + 1) * (int64_t{1} << (tf - static_cast<int>(f) - 1));
+    q += sq;
+    u += su;
+    v += sv;
+  }
+  out->cycles = cycles;
+  (void)x1;
+}
+
+Method auto_method(const ScreenTri& tri, const ModelConfig& cfg) {
+  double wmin = tri.v[0].w, wmax = tri.v[0].w, du = 0;
+  for (int i = 0; i < 3; ++i) {
+    wmin = std::min(wmin, tri.v[i].w);
+    wmax = std::max(wmax, tri.v[i].w);
+    for (int j = 0; j < 3; ++j) {
+      du = std::max(du, std::fabs(tri.v[i].u - tri.v[j].u));
+      du = std::max(du, std::fabs(tri.v[i].v - tri.v[j].v));
+    }
+  }
+  const double sr = wmin > 0 ? std::sqrt(wmax / wmin) : 1e30;
+  const double err = du * (sr - 1) / (sr + 1);
+  if (err <= 1.0 / 64 && cfg.has_method(Method::Affine)) return Method::Affine;
+  if (cfg.has_method(Method::RecipNr)) return Method::RecipNr;
+  if (cfg.has_method(Method::RecipLut)) return Method::RecipLut;
+  return Method::Subdiv;
+}
+
+}  // namespace htx::model

@@ -1,0 +1,42 @@
+#include "htx/model/recip.hpp"
+
+#include <stdexcept>
+
+namespace htx::model {
+
+uint32_t recip_table_entry(unsigned k, unsigned g, uint32_t i) {
+  // 2 / (a + b) with a + b = 2 + (2i + 1) / 2^k, scaled by 2^(k+g+1):
+  // 2^(2k+g+2) / (2^(k+1) + 2i + 1). The divisor is odd, so there is never an exact tie.
+  const uint64_t num = uint64_t{1} << (2 * k + g + 2);
+  const uint64_t den = (uint64_t{1} << (k + 1)) + 2 * uint64_t{i} + 1;
+  return static_cast<uint32_t>((2 * num + den) / (2 * den));
+}
+
+uint64_t recip_mantissa(const RecipParams& p, uint64_t mantissa) {
+  const unsigned w = p.width;
+  const uint64_t index = (mantissa >> (w - 1 - p.k)) & ((uint64_t{1} << p.k) - 1);
+  u128 r = static_cast<u128>(recip_table_entry(p.k, p.g, static_cast<uint32_t>(index))) << (w - (p.k + p.g + 1));
+  for (unsigned s = 0; s < p.steps; ++s) {
+    const u128 e = (static_cast<u128>(mantissa) * r) >> (w - 1);  // m * r, W fraction bits
+    const u128 two = static_cast<u128>(1) << (w + 1);
+    const u128 c = e >= two ? 0 : two - e;  // 2 - m*r
+    r = (r * c + (static_cast<u128>(1) << (w - 1))) >> w;
+  }
+  return static_cast<uint64_t>(r);
+}
+
+uint64_t normalise(u128 x, unsigned width, int* msb) {
+  const int p = msb_index(x);
+  if (p < 0) throw std::logic_error("reciprocal of zero");
+  *msb = p;
+  const int s = p - static_cast<int>(width - 1);
+  return static_cast<uint64_t>(s >= 0 ? x >> s : x << -s);
+}
+
+Reciprocal reciprocal(const RecipParams& p, u128 x) {
+  int msb = 0;
+  const uint64_t m = normalise(x, p.width, &msb);
+  return {recip_mantissa(p, m), static_cast<int>(p.width) + msb};
+}
+
+}  // namespace htx::model
