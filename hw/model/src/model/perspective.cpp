@@ -17,14 +17,15 @@ int64_t inverse_length(int64_t len) { return ((int64_t{1} << 17) + len) / (2 * l
 
 }  // namespace
 
-int64_t divfree_exact_index(i128 num, i128 q, unsigned grid_bits) {
+int64_t divfree_exact_index(i128 num, i128 q, unsigned grid_bits, unsigned level) {
   if (q < 1) q = 1;
-  return static_cast<int64_t>(ceil_div(mul_checked(num, static_cast<i128>(1) << grid_bits), q) - 1);
+  return static_cast<int64_t>(
+      ceil_div(mul_checked(num, static_cast<i128>(1) << grid_bits), mul_checked(q, static_cast<i128>(1) << level)) - 1);
 }
 
 TriangleUnit::TriangleUnit(const fw::TriangleRecord& rec, const TriState& state, const ModelConfig& cfg, int width,
-                           int height)
-    : cfg_(cfg), state_(state) {
+                           int height, const Log2Unit* log2_unit, unsigned top_level)
+    : cfg_(cfg), state_(state), log2_(log2_unit), top_level_(top_level) {
   setup_ = setup_coverage(rec, width, height);
   if (setup_.empty) return;
   setup_recip_ = {cfg.recip_table_bits, cfg.recip_guard_bits, cfg.recip_width, cfg.setup_nr_steps};
@@ -226,21 +227,59 @@ void TriangleUnit::span_subdiv(int64_t py, int x0, int x1, bool quadratic, SpanC
   out->cycles = out->u.size() + divisions * cfg_.recip_issue_interval + 1;
 }
 
+int64_t TriangleUnit::grid_coord(int64_t j, unsigned level) const {
+  // The centre of grid cell j: (j + 1/2) 2^(level - f) level-0 texels, as a texel coordinate.
+  return (2 * j + 1) * (int64_t{1} << (static_cast<int>(cfg_.texcoord_frac_bits + level) - static_cast<int>(grid_bits_) - 1));
+}
+
 void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) const {
   const unsigned f = grid_bits_;
   const int64_t cap = cfg_.divfree_cap;
-  const int tf = static_cast<int>(cfg_.texcoord_frac_bits);
   const int64_t px0 = 256 * int64_t{x0} + 128;
   i128 q = q_.at(px0, py), u = uq_.at(px0, py), v = vq_.at(px0, py);
   const i128 sq = 256 * q_.gx, su = 256 * uq_.gx, sv = 256 * vq_.gx;
-  int64_t ju = 0, jv = 0;
+  // Trilinear tracks on the grid of the mip level the LOD unit picks at the span's first pixel
+  // (from the previous span's grid position; the first span from the setup division), so the steps
+  // per pixel stay near 2^f whatever the minification. A level change rescales the carried index.
+  unsigned level = df_level_;
+  if (state_.filter == Filter::Trilinear && log2_ != nullptr) {
+    int64_t cu, cv;
+    if (df_started_) {
+      cu = grid_coord(df_ju_, df_level_);
+      cv = grid_coord(df_jv_, df_level_);
+    } else {
+      cu = divide(u, q, setup_recip_);
+      cv = divide(v, q, setup_recip_);
+    }
+    const int32_t lod = lod_at(*log2_, px0, py, cu, cv);
+    const int64_t l = lod == INT32_MIN ? 0 : (lod >> cfg_.lod_frac_bits);
+    level = static_cast<unsigned>(std::clamp<int64_t>(l, 0, top_level_));
+    if (df_started_ && level != df_level_) {
+      auto rescale = [&](int64_t j) {
+        return level > df_level_ ? j >> (level - df_level_) : j * (int64_t{1} << (df_level_ - level));
+      };
+      df_ju_ = rescale(df_ju_);
+      df_jv_ = rescale(df_jv_);
+      df_du_ = rescale(df_du_);
+      df_dv_ = rescale(df_dv_);
+    }
+    df_level_ = level;
+  }
+  // Each pixel starts from a prediction: the previous pixel's index plus the previous pixel's
+  // movement (one adder; the indices of a span are close to linear in x, so the grid steps only
+  // cover the curvature). A span's first pixel is predicted the same way from the first pixels of
+  // the two previous spans. The triangle's very first pixel starts from a setup division (modelled
+  // exact) and takes no steps.
+  int64_t ju = 0, jv = 0, du = 0, dv = 0;
   if (df_started_) {
-    ju = df_ju_;
-    jv = df_jv_;
+    ju = df_ju_ + df_du_;
+    jv = df_jv_ + df_dv_;
   } else {
-    // The first pixel of the triangle starts from a setup division (modelled exact).
-    ju = divfree_exact_index(u, q, f);
-    jv = divfree_exact_index(v, q, f);
+    ju = divfree_exact_index(u, q, f, level);
+    jv = divfree_exact_index(v, q, f, level);
+    df_ju_ = ju;
+    df_jv_ = jv;
+    df_du_ = df_dv_ = 0;
     df_started_ = true;
   }
   // Move j toward the exact index one grid step at a time, at most `cap` steps: identical to
@@ -257,16 +296,27 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
   };
   uint64_t cycles = 1;
   for (size_t k = 0; k < out->u.size(); ++k) {
-    const int64_t su_n = track(divfree_exact_index(u, q, f), &ju, &out->divfree_steps[k], &out->divfree_capped[k]);
-    const int64_t sv_n = track(divfree_exact_index(v, q, f), &jv, &out->divfree_steps[k], &out->divfree_capped[k]);
+    if (k > 0) {
+      ju += du;  // prediction: previous index plus previous movement
+      jv += dv;
+    }
+    const int64_t prev_u = ju - du, prev_v = jv - dv;  // the previous pixel's final index
+    const int64_t su_n = track(divfree_exact_index(u, q, f, level), &ju, &out->divfree_steps[k], &out->divfree_capped[k]);
+    const int64_t sv_n = track(divfree_exact_index(v, q, f, level), &jv, &out->divfree_steps[k], &out->divfree_capped[k]);
     cycles += static_cast<uint64_t>(std::max<int64_t>(1, std::max(su_n, sv_n)));  // both axes step in parallel
     if (k == 0) {
+      // Movement between the first pixels of consecutive spans, for the next span's prediction.
+      df_du_ = ju - df_ju_;
+      df_dv_ = jv - df_jv_;
       df_ju_ = ju;
       df_jv_ = jv;
+      du = dv = 0;
+    } else {
+      du = ju - prev_u;
+      dv = jv - prev_v;
     }
-    // The grid value is the centre of cell j: (j + 1/2) 2^-f texels.
-    out->u[k] = (2 * ju + 1) * (int64_t{1} << (tf - static_cast<int>(f) - 1));
-    out->v[k] = (2 * jv + 1) * (int64_t{1} << (tf - static_cast<int>(f) - 1));
+    out->u[k] = grid_coord(ju, level);
+    out->v[k] = grid_coord(jv, level);
     q += sq;
     u += su;
     v += sv;

@@ -130,10 +130,11 @@ Frame render_model(const ScreenScene& scene, const ModelConfig& cfg) {
     if (status == fw::kEncodeBadFormat) throw std::logic_error("model configuration yields a bad record format");
     if (status != fw::kEncodeOk) continue;  // the firmware does not send it: draws nothing
 
-    const model::TriangleUnit unit(rec, st, cfg, scene.width, scene.height);
+    const Texture* tex = st.textured ? &scene.textures[static_cast<size_t>(st.texture)] : nullptr;
+    const model::TriangleUnit unit(rec, st, cfg, scene.width, scene.height, &log2_unit,
+                                   tex ? level_count(*tex) - 1 : 0);
     if (unit.empty()) continue;
     cnt.cycles += unit.setup_cycles();
-    const Texture* tex = st.textured ? &scene.textures[static_cast<size_t>(st.texture)] : nullptr;
     const Rgba8 flat = unit.flat_color();
 
     for (int y = unit.y_lo(); y <= unit.y_hi(); ++y) {

@@ -24,12 +24,16 @@ struct SpanCoords {
   uint64_t cycles = 0;                  // estimated clocks of the span
 };
 
-// Exact quotient grid index of DIVFREE: the j with j < 2^f * U / Q <= j + 1 (Q > 0).
-int64_t divfree_exact_index(i128 num, i128 q, unsigned grid_bits);
+// Exact quotient grid index of DIVFREE on the grid of 2^-f texels of mip level L:
+// the j with j < 2^f * U / (Q * 2^L) <= j + 1 (Q > 0).
+int64_t divfree_exact_index(i128 num, i128 q, unsigned grid_bits, unsigned level = 0);
 
 class TriangleUnit {
  public:
-  TriangleUnit(const fw::TriangleRecord& rec, const TriState& state, const ModelConfig& cfg, int width, int height);
+  // log2_unit and top_level (the texture's last mip level) serve DIVFREE's per-span level choice
+  // under trilinear filtering; without them DIVFREE tracks on level 0.
+  TriangleUnit(const fw::TriangleRecord& rec, const TriState& state, const ModelConfig& cfg, int width, int height,
+               const Log2Unit* log2_unit = nullptr, unsigned top_level = 0);
 
   bool empty() const { return setup_.empty; }
   int y_lo() const { return setup_.y_lo; }
@@ -53,6 +57,7 @@ class TriangleUnit {
 
  private:
   int64_t divide(i128 num, i128 q, const RecipParams& p) const;
+  int64_t grid_coord(int64_t j, unsigned level) const;
   void span_affine(int64_t py, int x0, int x1, SpanCoords* out) const;
   void span_divide(int64_t py, int x0, int x1, const RecipParams& p, SpanCoords* out) const;
   void span_subdiv(int64_t py, int x0, int x1, bool quadratic, SpanCoords* out) const;
@@ -60,15 +65,19 @@ class TriangleUnit {
 
   const ModelConfig& cfg_;
   TriState state_;
+  const Log2Unit* log2_ = nullptr;
+  unsigned top_level_ = 0;
   TriSetup setup_;
   RecipParams setup_recip_, pixel_nr_, pixel_lut_;
   Plane z_, q_, uq_, vq_, ua_, va_;
   Plane color_[4];
   uint64_t setup_cycles_ = 0;
   unsigned grid_bits_ = 0;
-  // DIVFREE position carried between spans: grid indices at the previous span's first pixel.
+  // DIVFREE position carried between spans: grid indices at the previous span's first pixel and
+  // their movement from the span before.
   mutable bool df_started_ = false;
-  mutable int64_t df_ju_ = 0, df_jv_ = 0;
+  mutable int64_t df_ju_ = 0, df_jv_ = 0, df_du_ = 0, df_dv_ = 0;
+  mutable unsigned df_level_ = 0;
 };
 
 // AUTO: the firmware's choice for one triangle (modelled from the ScreenVertex doubles, as the
