@@ -1,0 +1,140 @@
+// Machine-mode CSRs, the cycle and instret counters, and the trap/mret state updates.
+// Implemented: mstatus (MIE, MPIE; MPP reads 3), misa, mie/mip (read 0: no interrupt sources),
+// mtvec (direct mode only), mscratch, mepc, mcause, mtval, mcycle(h), minstret(h), the read-only
+// user aliases cycle(h)/instret(h) and mvendorid/marchid/mimpid/mhartid (read 0).
+module htx_cpu_csr (
+  input  logic                    clk_i,
+  input  logic                    rst_ni,
+  // CSR instruction in execute
+  input  htx_cpu_pkg::csr_sel_e   sel_i,
+  output logic [31:0]             rdata_o,
+  input  logic                    we_i,      // commit the CSR write this cycle
+  input  logic [1:0]              op_i,      // funct3[1:0]: 01 write, 10 set, 11 clear
+  input  logic [31:0]             src_i,     // rs1 value or zero-extended uimm
+  // instruction counting
+  input  logic                    retire_i,   // an instruction leaves execute without trapping
+  input  logic                    unretire_i, // ... but the load/store in write-back faulted
+  // traps
+  input  logic                    trap_i,
+  input  htx_cpu_pkg::exc_cause_e cause_i,
+  input  logic [31:2]             trap_pc_i,
+  input  logic [31:0]             tval_i,
+  input  logic                    mret_i,
+  output logic [31:2]             mtvec_o,
+  output logic [31:2]             mepc_o
+);
+
+  localparam logic [31:0] MisaValue = 32'h4000_1100;  // MXL=32, I, M
+
+  logic        mie_q, mpie_q;
+  logic [31:2] mtvec_q, mepc_q;
+  logic [3:0]  mcause_q;
+  logic [31:0] mtval_q, mscratch_q;
+  // Public so simulation harnesses can report the counts without a port.
+  logic [63:0] cycle_q   /* verilator public_flat_rd */;
+  logic [63:0] instret_q /* verilator public_flat_rd */;
+
+  always_comb begin
+    unique case (sel_i)
+      htx_cpu_pkg::CsrMstatus:  rdata_o = {19'b0, 2'b11, 3'b0, mpie_q, 3'b0, mie_q, 3'b0};
+      htx_cpu_pkg::CsrMisa:     rdata_o = MisaValue;
+      htx_cpu_pkg::CsrMtvec:    rdata_o = {mtvec_q, 2'b00};
+      htx_cpu_pkg::CsrMscratch: rdata_o = mscratch_q;
+      htx_cpu_pkg::CsrMepc:     rdata_o = {mepc_q, 2'b00};
+      htx_cpu_pkg::CsrMcause:   rdata_o = {28'b0, mcause_q};
+      htx_cpu_pkg::CsrMtval:    rdata_o = mtval_q;
+      htx_cpu_pkg::CsrCycle:    rdata_o = cycle_q[31:0];
+      htx_cpu_pkg::CsrCycleh:   rdata_o = cycle_q[63:32];
+      htx_cpu_pkg::CsrInstret:  rdata_o = instret_q[31:0];
+      htx_cpu_pkg::CsrInstreth: rdata_o = instret_q[63:32];
+      default:                  rdata_o = 32'b0;  // mie, mip, id registers
+    endcase
+  end
+
+  logic [31:0] wdata;
+  always_comb begin
+    unique case (op_i)
+      2'b01:   wdata = src_i;
+      2'b10:   wdata = rdata_o | src_i;
+      default: wdata = rdata_o & ~src_i;
+    endcase
+  end
+
+  logic wr_cycle, wr_cycleh, wr_instret, wr_instreth;
+  assign wr_cycle    = we_i && (sel_i == htx_cpu_pkg::CsrCycle);
+  assign wr_cycleh   = we_i && (sel_i == htx_cpu_pkg::CsrCycleh);
+  assign wr_instret  = we_i && (sel_i == htx_cpu_pkg::CsrInstret);
+  assign wr_instreth = we_i && (sel_i == htx_cpu_pkg::CsrInstreth);
+
+  // A written counter takes the written value instead of counting in that cycle (the writing
+  // instruction itself is not counted), so the next instruction reads what was written.
+  logic [63:0] cycle_inc, instret_step;
+  assign cycle_inc    = cycle_q + 64'd1;
+  assign instret_step = instret_q + (unretire_i ? 64'hFFFF_FFFF_FFFF_FFFF : {63'b0, retire_i});
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      cycle_q   <= 64'b0;
+      instret_q <= 64'b0;
+    end else begin
+      if (wr_cycle) begin
+        cycle_q <= {cycle_q[63:32], wdata};
+      end else if (wr_cycleh) begin
+        cycle_q <= {wdata, cycle_q[31:0]};
+      end else begin
+        cycle_q <= cycle_inc;
+      end
+      if (wr_instret) begin
+        instret_q <= {instret_q[63:32], wdata};
+      end else if (wr_instreth) begin
+        instret_q <= {wdata, instret_q[31:0]};
+      end else begin
+        instret_q <= instret_step;
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      mie_q    <= 1'b0;
+      mpie_q   <= 1'b0;
+      mtvec_q  <= 30'b0;
+      mcause_q <= 4'b0;
+    end else if (trap_i) begin
+      mpie_q   <= mie_q;
+      mie_q    <= 1'b0;
+      mcause_q <= cause_i;
+    end else if (mret_i) begin
+      mie_q  <= mpie_q;
+      mpie_q <= 1'b1;
+    end else if (we_i) begin
+      unique case (sel_i)
+        htx_cpu_pkg::CsrMstatus: begin
+          mie_q  <= wdata[3];
+          mpie_q <= wdata[7];
+        end
+        htx_cpu_pkg::CsrMtvec:  mtvec_q  <= wdata[31:2];
+        htx_cpu_pkg::CsrMcause: mcause_q <= wdata[3:0];
+        default: ;
+      endcase
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (trap_i) begin
+      mepc_q  <= trap_pc_i;
+      mtval_q <= tval_i;
+    end else if (we_i) begin
+      unique case (sel_i)
+        htx_cpu_pkg::CsrMscratch: mscratch_q <= wdata;
+        htx_cpu_pkg::CsrMepc:     mepc_q     <= wdata[31:2];
+        htx_cpu_pkg::CsrMtval:    mtval_q    <= wdata;
+        default: ;
+      endcase
+    end
+  end
+
+  assign mtvec_o = mtvec_q;
+  assign mepc_o  = mepc_q;
+
+endmodule

@@ -1,0 +1,220 @@
+// RV32IM + Zicsr instruction decoder (combinational). Every encoding that is not a legal RV32IM,
+// Zicsr, FENCE/FENCE.I, ECALL, EBREAK, MRET or WFI instruction for an implemented CSR comes out with
+// `illegal` set, every action flag clear and the raw instruction in `imm` (it becomes mtval).
+module htx_cpu_decoder (
+  input  logic [31:0]               instr_i,
+  output htx_cpu_pkg::decoded_t     dec_o
+);
+
+  localparam logic [6:0] OpcLoad    = 7'b0000011;
+  localparam logic [6:0] OpcMiscMem = 7'b0001111;
+  localparam logic [6:0] OpcOpImm   = 7'b0010011;
+  localparam logic [6:0] OpcAuipc   = 7'b0010111;
+  localparam logic [6:0] OpcStore   = 7'b0100011;
+  localparam logic [6:0] OpcOp      = 7'b0110011;
+  localparam logic [6:0] OpcLui     = 7'b0110111;
+  localparam logic [6:0] OpcBranch  = 7'b1100011;
+  localparam logic [6:0] OpcJalr    = 7'b1100111;
+  localparam logic [6:0] OpcJal     = 7'b1101111;
+  localparam logic [6:0] OpcSystem  = 7'b1110011;
+
+  logic [6:0]  opcode;
+  logic [2:0]  funct3;
+  logic [6:0]  funct7;
+  logic [11:0] csr_addr;
+  logic [31:0] imm_i, imm_s, imm_b, imm_u, imm_j;
+
+  assign opcode   = instr_i[6:0];
+  assign funct3   = instr_i[14:12];
+  assign funct7   = instr_i[31:25];
+  assign csr_addr = instr_i[31:20];
+
+  assign imm_i = {{20{instr_i[31]}}, instr_i[31:20]};
+  assign imm_s = {{20{instr_i[31]}}, instr_i[31:25], instr_i[11:7]};
+  assign imm_b = {{19{instr_i[31]}}, instr_i[31], instr_i[7], instr_i[30:25], instr_i[11:8], 1'b0};
+  assign imm_u = {instr_i[31:12], 12'b0};
+  assign imm_j = {{11{instr_i[31]}}, instr_i[31], instr_i[19:12], instr_i[20], instr_i[30:21], 1'b0};
+
+  // CSR address -> selector; read_only covers the user counter aliases and the machine id registers.
+  logic     csr_known;
+  logic     csr_read_only;
+  htx_cpu_pkg::csr_sel_e csr_sel;
+  always_comb begin
+    csr_known     = 1'b1;
+    csr_read_only = 1'b0;
+    csr_sel       = htx_cpu_pkg::CsrZero;
+    unique case (csr_addr)
+      12'h300: csr_sel = htx_cpu_pkg::CsrMstatus;
+      12'h301: csr_sel = htx_cpu_pkg::CsrMisa;
+      12'h304: csr_sel = htx_cpu_pkg::CsrMie;
+      12'h305: csr_sel = htx_cpu_pkg::CsrMtvec;
+      12'h340: csr_sel = htx_cpu_pkg::CsrMscratch;
+      12'h341: csr_sel = htx_cpu_pkg::CsrMepc;
+      12'h342: csr_sel = htx_cpu_pkg::CsrMcause;
+      12'h343: csr_sel = htx_cpu_pkg::CsrMtval;
+      12'h344: csr_sel = htx_cpu_pkg::CsrMip;
+      12'hB00: csr_sel = htx_cpu_pkg::CsrCycle;
+      12'hB02: csr_sel = htx_cpu_pkg::CsrInstret;
+      12'hB80: csr_sel = htx_cpu_pkg::CsrCycleh;
+      12'hB82: csr_sel = htx_cpu_pkg::CsrInstreth;
+      12'hC00: begin csr_sel = htx_cpu_pkg::CsrCycle;    csr_read_only = 1'b1; end
+      12'hC02: begin csr_sel = htx_cpu_pkg::CsrInstret;  csr_read_only = 1'b1; end
+      12'hC80: begin csr_sel = htx_cpu_pkg::CsrCycleh;   csr_read_only = 1'b1; end
+      12'hC82: begin csr_sel = htx_cpu_pkg::CsrInstreth; csr_read_only = 1'b1; end
+      12'hF11, 12'hF12, 12'hF13, 12'hF14: csr_read_only = 1'b1;
+      default: csr_known = 1'b0;
+    endcase
+  end
+
+  htx_cpu_pkg::decoded_t d;
+  logic legal;
+
+  always_comb begin
+    d          = '0;
+    d.funct3   = funct3;
+    d.rs1      = instr_i[19:15];
+    d.rs2      = instr_i[24:20];
+    d.rd       = instr_i[11:7];
+    d.op_a_sel = htx_cpu_pkg::OpARs1;
+    d.alu_op   = htx_cpu_pkg::AluAdd;
+    d.csr_sel  = csr_sel;
+    d.imm      = imm_i;
+    legal      = 1'b0;
+    if (instr_i[1:0] == 2'b11) begin
+      unique case (opcode)
+        OpcLui: begin
+          legal      = 1'b1;
+          d.rd_we    = 1'b1;
+          d.op_a_sel = htx_cpu_pkg::OpAZero;
+          d.op_b_imm = 1'b1;
+          d.imm      = imm_u;
+        end
+        OpcAuipc: begin
+          legal      = 1'b1;
+          d.rd_we    = 1'b1;
+          d.op_a_sel = htx_cpu_pkg::OpAPc;
+          d.op_b_imm = 1'b1;
+          d.imm      = imm_u;
+        end
+        OpcJal: begin
+          legal   = 1'b1;
+          d.jal   = 1'b1;
+          d.rd_we = 1'b1;
+          d.imm   = imm_j;
+        end
+        OpcJalr: begin
+          legal      = (funct3 == 3'b000);
+          d.jalr     = 1'b1;
+          d.rd_we    = 1'b1;
+          d.rs1_used = 1'b1;
+          d.op_b_imm = 1'b1;
+        end
+        OpcBranch: begin
+          legal      = (funct3 != 3'b010) && (funct3 != 3'b011);
+          d.branch   = 1'b1;
+          d.rs1_used = 1'b1;
+          d.rs2_used = 1'b1;
+          d.alu_op   = htx_cpu_pkg::AluSub;
+          d.imm      = imm_b;
+        end
+        OpcLoad: begin
+          legal      = (funct3 != 3'b011) && (funct3 != 3'b110) && (funct3 != 3'b111);
+          d.load     = 1'b1;
+          d.rd_we    = 1'b1;
+          d.rs1_used = 1'b1;
+          d.op_b_imm = 1'b1;
+        end
+        OpcStore: begin
+          legal      = (funct3 == 3'b000) || (funct3 == 3'b001) || (funct3 == 3'b010);
+          d.store    = 1'b1;
+          d.rs1_used = 1'b1;
+          d.rs2_used = 1'b1;
+          d.op_b_imm = 1'b1;
+          d.imm      = imm_s;
+        end
+        OpcOpImm: begin
+          d.rd_we    = 1'b1;
+          d.rs1_used = 1'b1;
+          d.op_b_imm = 1'b1;
+          legal      = 1'b1;
+          unique case (funct3)
+            3'b000: d.alu_op = htx_cpu_pkg::AluAdd;
+            3'b010: d.alu_op = htx_cpu_pkg::AluSlt;
+            3'b011: d.alu_op = htx_cpu_pkg::AluSltu;
+            3'b100: d.alu_op = htx_cpu_pkg::AluXor;
+            3'b110: d.alu_op = htx_cpu_pkg::AluOr;
+            3'b111: d.alu_op = htx_cpu_pkg::AluAnd;
+            3'b001: begin
+              d.alu_op = htx_cpu_pkg::AluSll;
+              legal    = (funct7 == 7'b0000000);
+            end
+            default: begin  // 3'b101
+              d.alu_op = funct7[5] ? htx_cpu_pkg::AluSra : htx_cpu_pkg::AluSrl;
+              legal    = (funct7 == 7'b0000000) || (funct7 == 7'b0100000);
+            end
+          endcase
+        end
+        OpcOp: begin
+          d.rd_we    = 1'b1;
+          d.rs1_used = 1'b1;
+          d.rs2_used = 1'b1;
+          if (funct7 == 7'b0000001) begin
+            legal = 1'b1;
+            d.mul = ~funct3[2];
+            d.div = funct3[2];
+          end else begin
+            unique case (funct3)
+              3'b000: d.alu_op = funct7[5] ? htx_cpu_pkg::AluSub : htx_cpu_pkg::AluAdd;
+              3'b001: d.alu_op = htx_cpu_pkg::AluSll;
+              3'b010: d.alu_op = htx_cpu_pkg::AluSlt;
+              3'b011: d.alu_op = htx_cpu_pkg::AluSltu;
+              3'b100: d.alu_op = htx_cpu_pkg::AluXor;
+              3'b101: d.alu_op = funct7[5] ? htx_cpu_pkg::AluSra : htx_cpu_pkg::AluSrl;
+              3'b110: d.alu_op = htx_cpu_pkg::AluOr;
+              default: d.alu_op = htx_cpu_pkg::AluAnd;
+            endcase
+            legal = (funct7 == 7'b0000000) ||
+                    ((funct7 == 7'b0100000) && ((funct3 == 3'b000) || (funct3 == 3'b101)));
+          end
+        end
+        OpcMiscMem: begin
+          // FENCE orders nothing here (one in-order hart, no caches); FENCE.I refetches.
+          legal    = (funct3 == 3'b000) || (funct3 == 3'b001);
+          d.fencei = (funct3 == 3'b001);
+        end
+        OpcSystem: begin
+          if (funct3 == 3'b000) begin
+            unique case (instr_i[31:7])
+              25'h0000000: begin legal = 1'b1; d.ecall  = 1'b1; end
+              25'h0002000: begin legal = 1'b1; d.ebreak = 1'b1; end
+              25'h0604000: begin legal = 1'b1; d.mret   = 1'b1; end
+              25'h020a000: legal = 1'b1;  // WFI: a legal no-op
+              default:     legal = 1'b0;
+            endcase
+          end else if (funct3 != 3'b100) begin
+            d.csr      = 1'b1;
+            d.rd_we    = 1'b1;
+            d.rs1_used = ~funct3[2];
+            d.csr_we   = (funct3[1:0] == 2'b01) || (instr_i[19:15] != 5'd0);
+            legal      = csr_known && !(csr_read_only && d.csr_we);
+          end
+        end
+        default: legal = 1'b0;
+      endcase
+    end
+    if (d.rd == 5'd0) begin
+      d.rd_we = 1'b0;
+    end
+    if (!legal) begin
+      d         = '0;
+      d.illegal = 1'b1;
+      d.imm     = instr_i;
+      d.op_a_sel = htx_cpu_pkg::OpARs1;
+      d.alu_op   = htx_cpu_pkg::AluAdd;
+      d.csr_sel  = htx_cpu_pkg::CsrZero;
+    end
+  end
+
+  assign dec_o = d;
+
+endmodule

@@ -1,0 +1,121 @@
+// Instruction fetch: issues sequential word requests on the instruction bus and hands the
+// instructions, in order with their PCs, to decode.
+//
+// At most two instructions are in flight or buffered, so every response has a place to go (the bus
+// cannot back-pressure responses) while a one-cycle memory still streams one word per clock: a
+// request goes out whenever fewer than two are outstanding or buffered, counting registered state
+// only, which also guarantees a presented request is never withdrawn. Decode reads the buffer head,
+// or the arriving response directly when the buffer is empty.
+//
+// A redirect flushes the buffer and marks every request still in flight as stale; stale responses
+// are dropped as they arrive. If the redirect comes while a request waits for ready, that request
+// stays on the bus (the protocol forbids withdrawing it) and the new address follows it.
+module htx_cpu_fetch #(
+  parameter logic [31:0] BootAddr = 32'h0000_0000
+) (
+  input  logic        clk_i,
+  input  logic        rst_ni,
+
+  output logic        ibus_req_valid_o,
+  input  logic        ibus_req_ready_i,
+  output logic [31:0] ibus_req_addr_o,
+  input  logic        ibus_rsp_valid_i,
+  input  logic [31:0] ibus_rsp_rdata_i,
+  input  logic        ibus_rsp_err_i,
+
+  input  logic        redirect_i,
+  input  logic [31:2] redirect_pc_i,
+
+  output logic        instr_valid_o,
+  output logic [31:0] instr_o,
+  output logic        instr_err_o,     // the fetch got rsp_err (instruction access fault)
+  output logic [31:0] instr_pc_o,
+  input  logic        instr_ready_i    // decode takes the instruction this cycle
+);
+
+  logic [31:2] req_pc_q;       // address being requested
+  logic [31:2] head_pc_q;      // PC of the instruction at the decode interface
+  logic [31:2] pend_pc_q;      // redirect target waiting behind a stuck request
+  logic        pend_q;
+  logic [1:0]  in_flight_q;    // accepted requests without a response yet
+  logic [1:0]  discard_q;      // how many of those are stale
+  logic [1:0]  count_q;        // buffered instructions
+  logic        rd_ptr_q, wr_ptr_q;
+  logic [32:0] buf_q [2];      // {err, instr}
+
+  logic [2:0] occupancy;
+  logic       req_accepted, rsp_keep, rsp_drop;
+  logic       buf_empty, consume, push, pop;
+
+  assign occupancy        = {1'b0, in_flight_q} + {1'b0, count_q};
+  assign ibus_req_valid_o = (occupancy < 3'd2);
+  assign ibus_req_addr_o  = {req_pc_q, 2'b00};
+  assign req_accepted     = ibus_req_valid_o && ibus_req_ready_i;
+  assign rsp_drop         = ibus_rsp_valid_i && (discard_q != 2'd0);
+  assign rsp_keep         = ibus_rsp_valid_i && (discard_q == 2'd0);
+
+  assign buf_empty     = (count_q == 2'd0);
+  assign instr_valid_o = !buf_empty || rsp_keep;
+  assign instr_o       = buf_empty ? ibus_rsp_rdata_i : buf_q[rd_ptr_q][31:0];
+  assign instr_err_o   = buf_empty ? ibus_rsp_err_i : buf_q[rd_ptr_q][32];
+  assign instr_pc_o    = {head_pc_q, 2'b00};
+  assign consume       = instr_valid_o && instr_ready_i;
+  assign pop           = consume && !buf_empty;
+  assign push          = rsp_keep && !(buf_empty && consume);
+
+  logic [1:0] in_flight_d;
+  assign in_flight_d = in_flight_q + {1'b0, req_accepted} - {1'b0, ibus_rsp_valid_i};
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      req_pc_q    <= BootAddr[31:2];
+      head_pc_q   <= BootAddr[31:2];
+      pend_pc_q   <= BootAddr[31:2];
+      pend_q      <= 1'b0;
+      in_flight_q <= 2'd0;
+      discard_q   <= 2'd0;
+      count_q     <= 2'd0;
+      rd_ptr_q    <= 1'b0;
+      wr_ptr_q    <= 1'b0;
+    end else begin
+      in_flight_q <= in_flight_d;
+      if (redirect_i) begin
+        discard_q <= in_flight_d;
+        count_q   <= 2'd0;
+        rd_ptr_q  <= 1'b0;
+        wr_ptr_q  <= 1'b0;
+        head_pc_q <= redirect_pc_i;
+        if (ibus_req_valid_o && !ibus_req_ready_i) begin
+          pend_q    <= 1'b1;
+          pend_pc_q <= redirect_pc_i;
+        end else begin
+          pend_q   <= 1'b0;
+          req_pc_q <= redirect_pc_i;
+        end
+      end else begin
+        discard_q <= discard_q - {1'b0, rsp_drop} + {1'b0, pend_q && req_accepted};
+        count_q   <= count_q + {1'b0, push} - {1'b0, pop};
+        if (push) begin
+          wr_ptr_q <= ~wr_ptr_q;
+        end
+        if (pop) begin
+          rd_ptr_q <= ~rd_ptr_q;
+        end
+        if (consume) begin
+          head_pc_q <= head_pc_q + 30'd1;
+        end
+        if (req_accepted) begin
+          pend_q   <= 1'b0;
+          req_pc_q <= pend_q ? pend_pc_q : (req_pc_q + 30'd1);
+        end
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (push && !redirect_i) begin
+      buf_q[wr_ptr_q] <= {ibus_rsp_err_i, ibus_rsp_rdata_i};
+    end
+  end
+
+endmodule

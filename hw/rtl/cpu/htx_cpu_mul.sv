@@ -1,0 +1,53 @@
+// Two-cycle 32x32 multiplier for MUL/MULH/MULHSU/MULHU built from four unsigned 16x16 partial
+// products, so that synth_ice40 -dsp maps exactly four SB_MAC16. Cycle 1 (start_i) registers the
+// partial products and the signed correction; cycle 2 (done_o) sums them. Signed high halves come
+// from the unsigned product: hi_signed = hi_unsigned - (a<0 ? b : 0) - (b<0 ? a : 0) (mod 2^32).
+module htx_cpu_mul (
+  input  logic        clk_i,
+  input  logic        rst_ni,
+  input  logic        start_i,
+  input  logic [1:0]  op_i,     // funct3[1:0]: 00 MUL, 01 MULH, 10 MULHSU, 11 MULHU
+  input  logic [31:0] a_i,
+  input  logic [31:0] b_i,
+  output logic        done_o,
+  output logic [31:0] result_o
+);
+
+  logic        a_signed, b_signed;
+  logic [31:0] corr_d;
+  assign a_signed = (op_i == 2'b01) || (op_i == 2'b10);
+  assign b_signed = (op_i == 2'b01);
+  assign corr_d   = ((a_signed && a_i[31]) ? b_i : 32'b0) + ((b_signed && b_i[31]) ? a_i : 32'b0);
+
+  logic [31:0] p_ll_q, p_lh_q, p_hl_q, p_hh_q, corr_q;
+  logic        high_q;
+  logic        busy_q;
+
+  always_ff @(posedge clk_i) begin
+    if (start_i) begin
+      p_ll_q <= a_i[15:0]  * b_i[15:0];
+      p_lh_q <= a_i[15:0]  * b_i[31:16];
+      p_hl_q <= a_i[31:16] * b_i[15:0];
+      p_hh_q <= a_i[31:16] * b_i[31:16];
+      corr_q <= corr_d;
+      high_q <= (op_i != 2'b00);
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      busy_q <= 1'b0;
+    end else begin
+      busy_q <= start_i;
+    end
+  end
+
+  logic [32:0] mid;
+  logic [63:0] product;
+  assign mid     = {1'b0, p_lh_q} + {1'b0, p_hl_q};
+  assign product = {p_hh_q, p_ll_q} + {15'b0, mid, 16'b0};
+
+  assign done_o   = busy_q;
+  assign result_o = high_q ? (product[63:32] - corr_q) : product[31:0];
+
+endmodule

@@ -1,0 +1,86 @@
+// Shared types of the htx_cpu RV32IM core: ALU operations, operand selects, the decoded-instruction
+// record that travels from decode into execute, CSR selectors and trap causes.
+package htx_cpu_pkg;
+
+  typedef enum logic [3:0] {
+    AluAdd  = 4'd0,
+    AluSub  = 4'd1,
+    AluSll  = 4'd2,
+    AluSlt  = 4'd3,
+    AluSltu = 4'd4,
+    AluXor  = 4'd5,
+    AluSrl  = 4'd6,
+    AluSra  = 4'd7,
+    AluOr   = 4'd8,
+    AluAnd  = 4'd9
+  } alu_op_e;
+
+  typedef enum logic [1:0] {
+    OpARs1  = 2'd0,
+    OpAPc   = 2'd1,
+    OpAZero = 2'd2
+  } op_a_sel_e;
+
+  // CSRs the core implements. Anything else is an illegal instruction.
+  typedef enum logic [3:0] {
+    CsrMstatus  = 4'd0,
+    CsrMisa     = 4'd1,
+    CsrMie      = 4'd2,
+    CsrMtvec    = 4'd3,
+    CsrMscratch = 4'd4,
+    CsrMepc     = 4'd5,
+    CsrMcause   = 4'd6,
+    CsrMtval    = 4'd7,
+    CsrMip      = 4'd8,
+    CsrCycle    = 4'd9,
+    CsrCycleh   = 4'd10,
+    CsrInstret  = 4'd11,
+    CsrInstreth = 4'd12,
+    CsrZero     = 4'd13  // mvendorid, marchid, mimpid, mhartid: read-only zero
+  } csr_sel_e;
+
+  // mcause exception codes (interrupt bit clear).
+  typedef enum logic [3:0] {
+    ExcInstrMisaligned = 4'd0,
+    ExcInstrAccess     = 4'd1,
+    ExcIllegal         = 4'd2,
+    ExcBreakpoint      = 4'd3,
+    ExcLoadMisaligned  = 4'd4,
+    ExcLoadAccess      = 4'd5,
+    ExcStoreMisaligned = 4'd6,
+    ExcStoreAccess     = 4'd7,
+    ExcEcallM          = 4'd11
+  } exc_cause_e;
+
+  // What decode hands to execute. funct3 is kept whole: it selects the branch condition, the memory
+  // access size and sign, the multiply/divide operation and the CSR operation.
+  typedef struct packed {
+    logic        illegal;   // imm then holds the instruction bits (for mtval)
+    logic        ecall;
+    logic        ebreak;
+    logic        mret;
+    logic        fencei;
+    logic        branch;
+    logic        jal;
+    logic        jalr;
+    logic        load;
+    logic        store;
+    logic        mul;
+    logic        div;
+    logic        csr;
+    logic        csr_we;    // the CSR instruction writes (csrrw*, or csrrs/c* with rs1/uimm != 0)
+    csr_sel_e    csr_sel;
+    logic [2:0]  funct3;
+    logic [4:0]  rs1;
+    logic [4:0]  rs2;
+    logic [4:0]  rd;
+    logic        rs1_used;
+    logic        rs2_used;
+    logic        rd_we;     // writes a register other than x0
+    op_a_sel_e   op_a_sel;
+    logic        op_b_imm;
+    alu_op_e     alu_op;
+    logic [31:0] imm;
+  } decoded_t;
+
+endpackage
