@@ -1,0 +1,169 @@
+// OBJ/PNG loading, PNG writing, metrics and their JSON, names and scene specs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "htx/model/geometry.hpp"
+#include "htx/model/image_io.hpp"
+#include "htx/model/metrics.hpp"
+#include "htx/model/names.hpp"
+#include "htx/model/obj_loader.hpp"
+#include "htx/model/ref.hpp"
+#include "htx/model/scenes.hpp"
+#include "htx/model/texture.hpp"
+
+namespace htx {
+namespace {
+
+const std::string kData = HTX_MODEL_TEST_DATA;
+
+TEST(RefIo, LoadsObjWithMaterialsAndPngTexture) {
+  const Scene s = load_obj_scene(kData + "/quad.obj");
+  ASSERT_EQ(s.textures.size(), 1u);
+  const Texture& tex = s.textures[0];
+  EXPECT_EQ(tex.log2_width, 3u);
+  EXPECT_EQ(tex.log2_height, 4u);
+  // v = 0 is the image's bottom row (blue), the top image row (red) is texel row 15.
+  EXPECT_EQ(fetch_texel(tex, 0, 0, 0), (Rgba8{0, 0, 255, 255}));
+  EXPECT_EQ(fetch_texel(tex, 0, 5, 15), (Rgba8{255, 0, 0, 255}));
+  ASSERT_EQ(s.meshes.size(), 2u);
+  const Mesh* quad = nullptr;
+  const Mesh* tri = nullptr;
+  for (const Mesh& m : s.meshes) (m.name == "quad" ? quad : tri) = &m;
+  ASSERT_TRUE(quad && tri);
+  EXPECT_TRUE(quad->state.textured);
+  EXPECT_EQ(quad->triangles.size(), 2u);
+  EXPECT_DOUBLE_EQ(quad->vertices[quad->triangles[0][1]].s, 1);
+  EXPECT_DOUBLE_EQ(quad->vertices[quad->triangles[0][1]].pos.x, 1);
+  EXPECT_FALSE(tri->state.textured);
+  EXPECT_DOUBLE_EQ(tri->vertices[0].r, 1);
+  EXPECT_DOUBLE_EQ(tri->vertices[0].g, 0);
+  // The automatic camera frames it: both meshes draw.
+  const ScreenScene screen = prepare_screen_scene(s, 64, 64);
+  EXPECT_EQ(screen.tris.size(), 3u);
+  const Frame f = render_ref(screen, {});
+  EXPECT_GT(f.counters.pixels_written, 500u);
+}
+
+TEST(RefIo, ObjErrorsAreClear) {
+  EXPECT_THROW(load_obj_scene(kData + "/missing.obj"), std::runtime_error);
+  const auto dir = std::filesystem::temp_directory_path() / "htx_ref_io_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "bad.mtl") << "newmtl m\nmap_Kd odd.png\n";
+  Image odd;
+  odd.width = 12;
+  odd.height = 8;
+  odd.rgba.assign(12 * 8 * 4, 128);
+  write_png((dir / "odd.png").string(), odd);
+  std::ofstream(dir / "bad.obj") << "mtllib bad.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n";
+  try {
+    load_obj_scene((dir / "bad.obj").string());
+    FAIL() << "a 12-texel-wide texture must be rejected";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("powers of two"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(RefIo, PngRoundTripAndRgb565Expansion) {
+  const Image img = image_from_rgb565(2, 1, {0xFFFF, 0x8410});
+  EXPECT_EQ(img.rgba[0], 255);
+  EXPECT_EQ(img.rgba[4], 0x84);  // 10000 -> 10000100
+  EXPECT_EQ(img.rgba[5], 0x82);  // 100000 -> 10000010
+  const auto path = (std::filesystem::temp_directory_path() / "htx_ref_io_roundtrip.png").string();
+  write_png(path, img);
+  const Image back = load_image(path);
+  EXPECT_EQ(back.width, 2);
+  EXPECT_EQ(back.rgba, img.rgba);
+  std::remove(path.c_str());
+  EXPECT_THROW(load_image(path), std::runtime_error);
+}
+
+TEST(RefIo, CompareImagesByHand) {
+  Image a = image_from_rgb565(4, 1, {0, 0, 0, 0});
+  Image b = a;
+  EXPECT_TRUE(std::isinf(compare_images(a, b).psnr_db));
+  b.rgba[0] = 10;  // one channel of one pixel off by 10: MSE = 100 / 12
+  const ImageDiff d = compare_images(a, b);
+  EXPECT_EQ(d.max_channel_diff, 10);
+  EXPECT_EQ(d.differing_pixels, 1u);
+  EXPECT_NEAR(d.psnr_db, 10 * std::log10(255.0 * 255.0 * 12 / 100), 1e-9);
+  EXPECT_THROW(compare_images(a, image_from_rgb565(2, 2, {0, 0, 0, 0})), std::invalid_argument);
+}
+
+TEST(RefIo, MetricsAndJsonKeys) {
+  Frame ref, eng;
+  for (Frame* f : {&ref, &eng}) {
+    f->width = 1000;
+    f->height = 1;
+    f->color.assign(1000, 0);
+    f->probe.assign(1000, PixelProbe{});
+  }
+  for (int i = 0; i < 1000; ++i) {
+    ref.probe[static_cast<size_t>(i)].covered = eng.probe[static_cast<size_t>(i)].covered = true;
+    ref.probe[static_cast<size_t>(i)].level = 1;
+    eng.probe[static_cast<size_t>(i)].u = i == 7 ? 4.0 : 0.002 * (i % 10);  // level-1 texels: halved
+  }
+  eng.probe[3].covered = false;  // one coverage difference
+  eng.counters.divfree_steps_total = 30;
+  eng.counters.divfree_pixels = 10;
+  eng.counters.divfree_steps_max = 7;
+  eng.counters.divfree_cap_hits = 2;
+  const Metrics m = compute_metrics(eng, ref, {"model", "floor", "recip_nr", "bilinear", "full"});
+  EXPECT_EQ(m.coverage_diff_pixels, 1u);
+  EXPECT_EQ(m.compared_pixels, 999u);
+  EXPECT_DOUBLE_EQ(m.max_texel_error, 2.0);
+  EXPECT_DOUBLE_EQ(m.p999_texel_error, 2.0);  // rank ceil(0.999 * 999) = 999 of 999: the top one
+  EXPECT_DOUBLE_EQ(m.divfree_mean_steps, 3.0);
+  const nlohmann::json j = metrics_to_json(m);
+  for (const char* key : {"max_texel_error", "rms_texel_error", "p999_texel_error", "psnr_db", "max_channel_diff",
+                          "coverage_diff_pixels", "divfree_max_steps", "divfree_mean_steps", "divfree_cap_hits",
+                          "engine", "scene", "method", "filter", "config", "width", "height"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_TRUE(j["psnr_db"].is_null());  // identical colours
+  EXPECT_EQ(j["divfree_max_steps"], 7);
+  EXPECT_EQ(j["scene"], "floor");
+}
+
+TEST(RefIo, Names) {
+  EXPECT_EQ(parse_method("subdiv16").method, Method::Subdiv);
+  EXPECT_EQ(parse_method("subdiv2").subdiv_n, 2u);
+  EXPECT_THROW(parse_method("subdiv65"), std::invalid_argument);
+  EXPECT_THROW(parse_method("subdiv"), std::invalid_argument);
+  EXPECT_THROW(parse_method("subdiv8x"), std::invalid_argument);
+  EXPECT_EQ(parse_method("divfree").method, Method::DivFree);
+  EXPECT_EQ(method_name(Method::Subdiv, 8), "subdiv8");
+  EXPECT_EQ(method_name(Method::RecipNr), "recip_nr");
+  EXPECT_EQ(parse_filter("trilinear"), Filter::Trilinear);
+  EXPECT_THROW(parse_filter("cubic"), std::invalid_argument);
+  EXPECT_EQ(parse_wrap("mirror"), Wrap::Mirror);
+  EXPECT_EQ(parse_depth_func("lequal"), DepthFunc::LEqual);
+}
+
+TEST(RefIo, SceneSpecsAreCheckedAndDeterministic) {
+  EXPECT_THROW(make_builtin_scene("nosuch"), std::invalid_argument);
+  EXPECT_THROW(make_builtin_scene("wsweep:r=1001"), std::invalid_argument);
+  EXPECT_THROW(make_builtin_scene("wsweep:q=2"), std::invalid_argument);
+  EXPECT_THROW(make_builtin_scene("wsweep:r"), std::invalid_argument);
+  EXPECT_THROW(make_builtin_scene("wsweep:r=abc"), std::invalid_argument);
+  EXPECT_THROW(make_builtin_scene("randmesh:count=2.5"), std::invalid_argument);
+  for (const SceneInfo& info : builtin_scenes()) {
+    const ScreenScene a = prepare_screen_scene(make_builtin_scene(info.name), 160, 120);
+    const ScreenScene b = prepare_screen_scene(make_builtin_scene(info.name), 160, 120);
+    ASSERT_EQ(a.tris.size(), b.tris.size()) << info.name;
+    EXPECT_GT(a.tris.size(), 0u) << info.name;
+    for (size_t i = 0; i < a.tris.size(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(a.tris[i].v[k].x, b.tris[i].v[k].x);
+        EXPECT_EQ(a.tris[i].v[k].u, b.tris[i].v[k].u);
+      }
+    const Frame f = render_ref(a, {});
+    EXPECT_GT(f.counters.pixels_written, 100u) << info.name;
+  }
+}
+
+}  // namespace
+}  // namespace htx
