@@ -8,7 +8,8 @@ endif()
 set(HTX_FIRMWARE_DIR ${CMAKE_BINARY_DIR}/firmware/bin CACHE INTERNAL "Where the firmware ELFs land")
 ExternalProject_Add(firmware
   SOURCE_DIR ${CMAKE_SOURCE_DIR}/firmware
-  BINARY_DIR ${CMAKE_BINARY_DIR}/firmware
+  # Not BUILD/firmware: the host build of firmware/lib already lives in BUILD/firmware/lib.
+  BINARY_DIR ${CMAKE_BINARY_DIR}/firmware-rv32
   CMAKE_ARGS
     -G Ninja
     -DCMAKE_TOOLCHAIN_FILE=${CMAKE_SOURCE_DIR}/cmake/riscv32-toolchain.cmake
