@@ -1,0 +1,137 @@
+// htx sim: run a firmware ELF on the whole SoC in Verilator.
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "commands.hpp"
+
+#if __has_include("htx/sim/soc_sim.hpp")
+#define HTX_HAVE_SOC_SIM 1
+#include "htx/sim/elf_image.hpp"
+#include "htx/sim/serial_endpoint.hpp"
+#include "htx/sim/soc_sim.hpp"
+#else
+#define HTX_HAVE_SOC_SIM 0  // configured with -DHTX_BUILD_RTL=OFF: no Verilated SoC
+#endif
+
+namespace htx {
+namespace {
+
+// Exit status when the cycle limit ends the run (as timeout(1) does); firmware should not use it.
+constexpr int kCycleLimitStatus = 124;
+
+struct SimArgs {
+  std::string elf;
+  std::string uart = "stdio";
+  uint64_t max_cycles = 1'000'000'000;
+  std::string signature;
+  std::string trace;
+  std::optional<uint32_t> stall_seed;
+  bool json = false;
+};
+
+#if HTX_HAVE_SOC_SIM
+void write_signature(const sim::SocSim& soc, const sim::ElfImage& elf, const std::string& path) {
+  const auto begin = elf.symbol("begin_signature");
+  const auto end = elf.symbol("end_signature");
+  if (!begin || !end) {
+    throw std::runtime_error(path + ": the ELF has no begin_signature/end_signature symbols");
+  }
+  const auto words = soc.read_words(*begin, *end);
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot write the signature");
+  for (uint32_t w : words) {
+    char line[16];
+    std::snprintf(line, sizeof line, "%08x\n", w);
+    out << line;
+  }
+}
+#endif
+
+#if HTX_HAVE_SOC_SIM
+int run_sim(const SimArgs& a) {
+  const sim::ElfImage elf = sim::load_elf(a.elf);
+  sim::SimOptions opt;
+  opt.max_cycles = a.max_cycles;
+  opt.stall_seed = a.stall_seed;
+  opt.trace_path = a.trace;
+
+  std::unique_ptr<sim::SerialEndpoint> uart;
+  if (a.uart == "pty") {
+    std::string path;
+    uart = sim::open_pty_serial(path);
+    // On stdout, on a line of its own, before the run starts: where scripts and people look for it.
+    std::cout << "htx sim: UART on " << path << std::endl;
+  } else {
+    uart = sim::open_stdio_serial();
+  }
+
+  sim::SocSim soc(elf, opt, uart.get(), std::cout);
+  const sim::SimResult r = soc.run();
+  uart.reset();  // flushes the UART's last bytes before the summary
+  if (!a.signature.empty()) write_signature(soc, elf, a.signature);
+
+  const double cpi = r.instret ? static_cast<double>(r.cycles) / static_cast<double>(r.instret) : 0.0;
+  const double rate = r.seconds > 0 ? static_cast<double>(r.cycles) / r.seconds : 0.0;
+  const int status = r.reason == sim::StopReason::CycleLimit ? kCycleLimitStatus : r.exit_code;
+  if (r.reason == sim::StopReason::CycleLimit) {
+    std::cerr << "htx sim: cycle limit of " << a.max_cycles
+              << " cycles reached before the firmware exited (raise --max-cycles?); status "
+              << kCycleLimitStatus << "\n";
+  }
+  char summary[256];
+  std::snprintf(summary, sizeof summary,
+                "htx sim: %s, exit code %d: %llu cycles, %llu instructions, CPI %.3f (%.2f Mcycles/s)\n",
+                sim::to_string(r.reason), r.exit_code, static_cast<unsigned long long>(r.cycles),
+                static_cast<unsigned long long>(r.instret), cpi, rate / 1e6);
+  std::cerr << summary;
+  if (a.json) {
+    nlohmann::json j = {{"exit_code", status},       {"reason", sim::to_string(r.reason)},
+                        {"cycles", r.cycles},        {"instret", r.instret},
+                        {"cpi", cpi},                {"seconds", r.seconds},
+                        {"cycles_per_second", rate}};
+    std::cout << j.dump() << std::endl;
+  }
+  return status;
+}
+#else
+int run_sim(const SimArgs&) {
+  throw std::runtime_error("this htx was built without the Verilated SoC (HTX_BUILD_RTL=OFF)");
+}
+#endif
+
+}  // namespace
+
+void register_sim(CLI::App& app) {
+  auto args = std::make_shared<SimArgs>();
+  CLI::App* cmd = app.add_subcommand("sim", "Run a firmware ELF on the simulated SoC (Verilator)");
+  cmd->add_option("--elf", args->elf, "Firmware ELF (rv32im) to load into RAM")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--uart", args->uart, "Where the UART goes: stdio, or pty (prints the terminal's path)")
+      ->check(CLI::IsMember({"stdio", "pty"}));
+  cmd->add_option("--max-cycles", args->max_cycles, "Stop after this many clocks (status 124)")
+      ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 62));
+  cmd->add_option("--signature", args->signature,
+                  "Write the words from begin_signature to end_signature, 8 hex digits a line");
+  cmd->add_option("--trace", args->trace, "Write an FST waveform to this file");
+  cmd->add_option("--stall-seed", args->stall_seed, "Insert random wait states on every bus slave, seeded");
+  cmd->add_flag("--json", args->json,
+                "Print one JSON object (exit_code, cycles, instret, cpi, ...) as the last line of stdout");
+  cmd->callback([args]() {
+    int status = 1;
+    try {
+      status = run_sim(*args);
+    } catch (const std::exception& e) {
+      std::cerr << "htx sim: " << e.what() << "\n";
+      status = 1;
+    }
+    std::cout.flush();
+    std::exit(status);  // the command's status is the firmware's exit code
+  });
+}
+
+}  // namespace htx

@@ -1,0 +1,131 @@
+// ELF32 reader written from the System V ABI / ELF specification field layouts.
+#include "htx/sim/elf_image.hpp"
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+namespace htx::sim {
+namespace {
+
+constexpr uint16_t kEtExec = 2;
+constexpr uint16_t kEmRiscv = 243;
+constexpr uint32_t kPtLoad = 1;
+constexpr uint32_t kShtSymtab = 2;
+constexpr uint16_t kShnUndef = 0;
+
+class Reader {
+ public:
+  Reader(std::span<const uint8_t> data, const std::string& what) : data_(data), what_(what) {}
+
+  uint32_t u32(uint64_t off) const { return get(off, 4); }
+  uint16_t u16(uint64_t off) const { return static_cast<uint16_t>(get(off, 2)); }
+  uint8_t u8(uint64_t off) const { return static_cast<uint8_t>(get(off, 1)); }
+  void need(uint64_t off, uint64_t len, const char* part) const {
+    if (off > data_.size() || len > data_.size() - off) {
+      fail(std::string(part) + " lies outside the file (truncated or corrupt)");
+    }
+  }
+  [[noreturn]] void fail(const std::string& msg) const {
+    throw std::runtime_error(what_ + ": not a usable RISC-V ELF32 executable: " + msg);
+  }
+  std::span<const uint8_t> bytes(uint64_t off, uint64_t len, const char* part) const {
+    need(off, len, part);
+    return data_.subspan(off, len);
+  }
+
+ private:
+  uint32_t get(uint64_t off, unsigned n) const {
+    need(off, n, "a header field");
+    uint32_t v = 0;
+    for (unsigned i = 0; i < n; ++i) v |= static_cast<uint32_t>(data_[off + i]) << (8 * i);
+    return v;
+  }
+  std::span<const uint8_t> data_;
+  const std::string& what_;
+};
+
+}  // namespace
+
+std::optional<uint32_t> ElfImage::symbol(const std::string& name) const {
+  auto it = symbols.find(name);
+  if (it == symbols.end()) return std::nullopt;
+  return it->second;
+}
+
+ElfImage parse_elf(std::span<const uint8_t> data, const std::string& what) {
+  Reader r(data, what);
+  r.need(0, 52, "the ELF header");
+  if (std::memcmp(data.data(), "\x7f" "ELF", 4) != 0) r.fail("bad magic (not an ELF file)");
+  if (r.u8(4) != 1) r.fail("not ELFCLASS32 (a 64-bit ELF?)");
+  if (r.u8(5) != 1) r.fail("not little-endian");
+  if (r.u16(16) != kEtExec) r.fail("not an executable (ET_EXEC)");
+  if (r.u16(18) != kEmRiscv) r.fail("machine is not RISC-V");
+
+  ElfImage img;
+  img.entry = r.u32(24);
+  const uint32_t phoff = r.u32(28);
+  const uint32_t shoff = r.u32(32);
+  const uint16_t phentsize = r.u16(42);
+  const uint16_t phnum = r.u16(44);
+  const uint16_t shentsize = r.u16(46);
+  const uint16_t shnum = r.u16(48);
+
+  if (phnum != 0 && phentsize < 32) r.fail("program header entries too small");
+  r.need(phoff, static_cast<uint64_t>(phnum) * phentsize, "the program header table");
+  for (uint16_t i = 0; i < phnum; ++i) {
+    const uint64_t ph = phoff + static_cast<uint64_t>(i) * phentsize;
+    if (r.u32(ph) != kPtLoad) continue;
+    const uint32_t offset = r.u32(ph + 4);
+    const uint32_t paddr = r.u32(ph + 12);
+    const uint32_t filesz = r.u32(ph + 16);
+    const uint32_t memsz = r.u32(ph + 20);
+    if (memsz == 0) continue;
+    if (filesz > memsz) r.fail("a segment's file size exceeds its memory size");
+    ElfSegment seg;
+    seg.addr = paddr;
+    seg.mem_size = memsz;
+    auto b = r.bytes(offset, filesz, "a loadable segment");
+    seg.bytes.assign(b.begin(), b.end());
+    img.segments.push_back(std::move(seg));
+  }
+  if (img.segments.empty()) r.fail("no loadable segments");
+
+  if (shnum != 0 && shentsize < 40) r.fail("section header entries too small");
+  r.need(shoff, static_cast<uint64_t>(shnum) * shentsize, "the section header table");
+  for (uint16_t i = 0; i < shnum; ++i) {
+    const uint64_t sh = shoff + static_cast<uint64_t>(i) * shentsize;
+    if (r.u32(sh + 4) != kShtSymtab) continue;
+    const uint32_t symoff = r.u32(sh + 16);
+    const uint32_t symsize = r.u32(sh + 20);
+    const uint32_t link = r.u32(sh + 24);
+    const uint32_t entsize = r.u32(sh + 36);
+    if (entsize < 16) r.fail("symbol table entries too small");
+    if (link >= shnum) r.fail("symbol table names a missing string table");
+    const uint64_t strsh = shoff + static_cast<uint64_t>(link) * shentsize;
+    const uint32_t stroff = r.u32(strsh + 16);
+    const uint32_t strsize = r.u32(strsh + 20);
+    auto strtab = r.bytes(stroff, strsize, "the string table");
+    r.need(symoff, symsize, "the symbol table");
+    for (uint64_t s = symoff; s + entsize <= static_cast<uint64_t>(symoff) + symsize; s += entsize) {
+      const uint32_t name = r.u32(s);
+      const uint32_t value = r.u32(s + 4);
+      const uint16_t shndx = r.u16(s + 14);
+      if (shndx == kShnUndef || name == 0 || name >= strtab.size()) continue;
+      const auto* begin = reinterpret_cast<const char*>(strtab.data()) + name;
+      const size_t len = strnlen(begin, strtab.size() - name);
+      img.symbols.emplace(std::string(begin, len), value);
+    }
+  }
+  return img;
+}
+
+ElfImage load_elf(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open");
+  std::vector<uint8_t> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parse_elf(data, path);
+}
+
+}  // namespace htx::sim

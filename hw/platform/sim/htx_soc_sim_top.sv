@@ -1,0 +1,37 @@
+// Simulation top of the SoC (Verilated): 64 KiB RAM, simulation-only SYSCTRL ports, random wait states
+// available on every slave, and the CPU's counters brought out for the harness's report.
+// Simulation only (hierarchical references); boards instantiate htx_soc directly.
+module htx_soc_sim_top #(
+  parameter int unsigned RamBytes = 65536,
+  parameter int unsigned ClockHz  = 12_000_000
+) (
+  input  logic        clk_i,
+  input  logic        rst_ni,
+
+  input  logic        uart_rx_i,
+  output logic        uart_tx_o,
+
+  output logic        sim_exit_o,
+  output logic [7:0]  sim_exit_code_o,
+  output logic        sim_putchar_o,
+  output logic [7:0]  sim_char_o,
+
+  input  logic        stall_en_i,
+  input  logic [31:0] stall_seed_i,
+
+  output logic [63:0] instret_o
+);
+  logic timer_irq_unused;
+
+  htx_soc #(
+    .RamBytes(RamBytes), .ClockHz(ClockHz), .Sim(1'b1), .StallInject(1'b1)
+  ) u_soc (
+    .clk_i, .rst_ni,
+    .uart_rx_i, .uart_tx_o,
+    .timer_irq_o(timer_irq_unused),
+    .sim_exit_o, .sim_exit_code_o, .sim_putchar_o, .sim_char_o,
+    .stall_en_i, .stall_seed_i
+  );
+
+  assign instret_o = u_soc.u_cpu.u_csr.instret_q;
+endmodule

@@ -1,0 +1,34 @@
+// A small ELF32 (little-endian RISC-V executable) reader: the loadable segments and the symbol
+// table, which is all the SoC harness needs (load the image, find tohost and the signature).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace htx::sim {
+
+struct ElfSegment {
+  uint32_t addr = 0;           // physical (load) address
+  uint32_t mem_size = 0;       // bytes in memory; those past bytes.size() are zero (.bss)
+  std::vector<uint8_t> bytes;  // file contents
+};
+
+struct ElfImage {
+  uint32_t entry = 0;
+  std::vector<ElfSegment> segments;
+  std::map<std::string, uint32_t> symbols;  // defined symbols by name
+
+  std::optional<uint32_t> symbol(const std::string& name) const;
+};
+
+// Parses an ELF32 RISC-V executable. Throws std::runtime_error naming `what` and the problem for
+// anything that is not one (wrong magic, class, endianness or machine, truncated tables).
+ElfImage parse_elf(std::span<const uint8_t> data, const std::string& what);
+// Reads and parses a file; errors name the path.
+ElfImage load_elf(const std::string& path);
+
+}  // namespace htx::sim

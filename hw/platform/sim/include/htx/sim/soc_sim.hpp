@@ -1,0 +1,58 @@
+// The whole SoC in Verilator, driven clock by clock: loads an ELF into RAM, releases reset and runs
+// until the firmware exits (SYSCTRL.SIM_EXIT, or the `tohost` convention of RISC-V tests) or the
+// cycle limit. The UART's serial line is encoded/decoded bit by bit and connected to a host endpoint.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "htx/sim/elf_image.hpp"
+#include "htx/sim/serial_endpoint.hpp"
+
+namespace htx::sim {
+
+struct SimOptions {
+  uint64_t max_cycles = 1'000'000'000;
+  std::optional<uint32_t> stall_seed;  // random wait states on every bus slave
+  std::string trace_path;              // FST waveform; empty = none
+  uint32_t baud = 115200;              // the host side of the serial line
+};
+
+enum class StopReason { Exit, ToHost, CycleLimit };
+
+struct SimResult {
+  StopReason reason = StopReason::CycleLimit;
+  int exit_code = 0;      // firmware's status (SIM_EXIT code, or tohost >> 1)
+  uint64_t cycles = 0;    // clocks after reset was released
+  uint64_t instret = 0;   // instructions retired (the CPU's minstret)
+  double seconds = 0.0;   // host wall time of the run
+};
+
+const char* to_string(StopReason r);
+
+class SocSim {
+ public:
+  static constexpr uint32_t kClockHz = 12'000'000;  // htx_soc_sim_top's ClockHz (SYSCTRL.CLOCK_HZ)
+  static constexpr uint32_t kRamBytes = 65536;
+
+  // Throws std::runtime_error if a segment does not fit in RAM or the trace cannot be opened.
+  // `uart` may be null (the RX line stays idle, TX bytes are dropped); SIM_PUTCHAR goes to `console`.
+  SocSim(const ElfImage& elf, const SimOptions& options, SerialEndpoint* uart, std::ostream& console);
+  ~SocSim();
+  SocSim(const SocSim&) = delete;
+  SocSim& operator=(const SocSim&) = delete;
+
+  SimResult run();
+  // RAM words in [begin, end) (byte addresses, 4-aligned); throws if outside RAM.
+  std::vector<uint32_t> read_words(uint32_t begin, uint32_t end) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace htx::sim
