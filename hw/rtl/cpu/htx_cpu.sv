@@ -11,7 +11,9 @@
 // E only acts (bus request, CSR write, trap, redirect, hand-over to W) in a cycle in which W
 // completes without an access fault, so a faulting load/store in W can still cancel everything
 // younger: traps are precise. A register written by a load in W cannot be used by E in the same
-// cycle (load-use: one stall). See docs/cpu.md.
+// cycle (load-use: one stall). Redirects decided in E or W (mispredicted branch, JALR, trap, MRET,
+// FENCE.I, access fault) are registered for timing: fetch follows them one cycle later and the
+// wrong-path instruction that entered E meanwhile is squashed. See docs/cpu.md.
 module htx_cpu #(
   parameter logic [31:0] ResetVector = 32'h0000_0000
 ) (
@@ -119,11 +121,13 @@ module htx_cpu #(
   logic        e_accept;
   logic [31:0] rf_rdata_a, rf_rdata_b;
 
+  // While E holds its instruction the register file keeps reading E's own sources, so the read
+  // data always reflects every write up to the previous edge and the bypass register only ever
+  // has to cover the most recent one.
   htx_cpu_regfile u_regfile (
     .clk_i,
-    .re_i      (e_accept),
-    .raddr_a_i (f_instr[19:15]),
-    .raddr_b_i (f_instr[24:20]),
+    .raddr_a_i (e_accept ? f_instr[19:15] : e_q.rs1),
+    .raddr_b_i (e_accept ? f_instr[24:20] : e_q.rs2),
     .rdata_a_o (rf_rdata_a),
     .rdata_b_o (rf_rdata_b),
     .we_i      (rf_we),
@@ -218,9 +222,16 @@ module htx_cpu #(
 
   // ------------------------------------------------------------------------------------------
   // Execute: traps
-  logic                    e_trap;
+  // e_trap_early depends only on registered state and the low address bits, so the stall logic
+  // never waits for a full-width compare; a taken branch to a misaligned target is only known
+  // from the branch condition and traps without affecting the hand-over timing.
+  logic                    e_trap, e_trap_early;
   htx_cpu_pkg::exc_cause_e e_cause;
   logic [31:0]             e_tval;
+
+  assign e_trap_early = e_ferr_q || e_q.illegal || e_q.ecall || e_q.ebreak ||
+                        (e_q.jal && e_target_q[1]) || (e_q.jalr && alu_sum[1]) ||
+                        ((e_q.load || e_q.store) && lsu_misaligned);
 
   always_comb begin
     e_trap  = 1'b1;
@@ -254,10 +265,15 @@ module htx_cpu #(
   logic [31:0] mul_result, div_result, csr_rdata;
   logic [31:2] mtvec, mepc;
 
-  assign e_can_go = e_valid_q && !load_use && w_ready && !w_fault;
-  assign e_mem    = (e_q.load || e_q.store) && !e_trap;
-  assign e_mul    = e_q.mul && !e_trap;
-  assign e_div    = e_q.div && !e_trap;
+  // E holds a live instruction unless it entered on the wrong path while a redirect was decided.
+  logic redirect_q;
+  logic [31:2] redirect_pc_q;
+  logic e_live;
+  assign e_live   = e_valid_q && !redirect_q;
+  assign e_can_go = e_live && !load_use && w_ready && !w_fault;
+  assign e_mem    = (e_q.load || e_q.store) && !e_trap_early;
+  assign e_mul    = e_q.mul && !e_trap_early;
+  assign e_div    = e_q.div && !e_trap_early;
 
   htx_cpu_mul u_mul (
     .clk_i,
@@ -335,28 +351,37 @@ module htx_cpu #(
   assign dbus_req_wdata_o = lsu_wdata;
 
   // ------------------------------------------------------------------------------------------
-  // Redirects (oldest first) and stage hand-over
-  logic kill_d, d_redirect;
-  assign kill_d     = w_fault || e_redirect;
-  assign e_accept   = !e_valid_q || e_done || w_fault;
-  assign d_advance  = e_accept && !kill_d;
+  // Redirects and stage hand-over
+  logic        d_redirect;
+  logic [31:2] late_pc;
+  assign e_accept   = !e_live || e_done || w_fault;
+  assign d_advance  = e_accept && !redirect_q && !w_fault;
   assign d_redirect = d_advance && f_valid && d_predict;
-  assign redirect   = kill_d || d_redirect;
+  assign redirect   = redirect_q || d_redirect;
+  assign redirect_pc = redirect_q ? redirect_pc_q : d_target[31:2];
 
   always_comb begin
     if (w_fault || e_take_trap) begin
-      redirect_pc = mtvec;
-    end else if (e_redirect) begin
-      if (e_q.mret) begin
-        redirect_pc = mepc;
-      end else if (taken && !e_pred_q) begin
-        redirect_pc = jump_target[31:2];
-      end else begin
-        redirect_pc = link[31:2];
-      end
+      late_pc = mtvec;
+    end else if (e_q.mret) begin
+      late_pc = mepc;
+    end else if (taken && !e_pred_q) begin
+      late_pc = jump_target[31:2];
     end else begin
-      redirect_pc = d_target[31:2];
+      late_pc = link[31:2];
     end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      redirect_q <= 1'b0;
+    end else begin
+      redirect_q <= w_fault || e_redirect;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    redirect_pc_q <= late_pc;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -366,7 +391,7 @@ module htx_cpu #(
       lw_valid_q <= 1'b0;
     end else begin
       if (e_accept) begin
-        e_valid_q <= f_valid && !kill_d;
+        e_valid_q <= f_valid && d_advance;
       end
       if (w_ready) begin
         w_valid_q <= e_commit;

@@ -14,6 +14,7 @@ module htx_cpu_csr (
   // instruction counting
   input  logic                    retire_i,   // an instruction leaves execute without trapping
   input  logic                    unretire_i, // ... but the load/store in write-back faulted
+                                              // (both counted one cycle later, for timing)
   // traps
   input  logic                    trap_i,
   input  htx_cpu_pkg::exc_cause_e cause_i,
@@ -33,6 +34,8 @@ module htx_cpu_csr (
   // Public so simulation harnesses can report the counts without a port.
   logic [63:0] cycle_q   /* verilator public_flat_rd */;
   logic [63:0] instret_q /* verilator public_flat_rd */;
+  logic [63:0] cycle_inc, instret_step;
+  logic        retire_q, unretire_q;
 
   always_comb begin
     unique case (sel_i)
@@ -45,8 +48,8 @@ module htx_cpu_csr (
       htx_cpu_pkg::CsrMtval:    rdata_o = mtval_q;
       htx_cpu_pkg::CsrCycle:    rdata_o = cycle_q[31:0];
       htx_cpu_pkg::CsrCycleh:   rdata_o = cycle_q[63:32];
-      htx_cpu_pkg::CsrInstret:  rdata_o = instret_q[31:0];
-      htx_cpu_pkg::CsrInstreth: rdata_o = instret_q[63:32];
+      htx_cpu_pkg::CsrInstret:  rdata_o = instret_step[31:0];   // includes the pending count
+      htx_cpu_pkg::CsrInstreth: rdata_o = instret_step[63:32];
       default:                  rdata_o = 32'b0;  // mie, mip, id registers
     endcase
   end
@@ -68,15 +71,19 @@ module htx_cpu_csr (
 
   // A written counter takes the written value instead of counting in that cycle (the writing
   // instruction itself is not counted), so the next instruction reads what was written.
-  logic [63:0] cycle_inc, instret_step;
   assign cycle_inc    = cycle_q + 64'd1;
-  assign instret_step = instret_q + (unretire_i ? 64'hFFFF_FFFF_FFFF_FFFF : {63'b0, retire_i});
+  assign instret_step = instret_q + (unretire_q ? 64'hFFFF_FFFF_FFFF_FFFF : {63'b0, retire_q});
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      cycle_q   <= 64'b0;
-      instret_q <= 64'b0;
+      cycle_q    <= 64'b0;
+      instret_q  <= 64'b0;
+      retire_q   <= 1'b0;
+      unretire_q <= 1'b0;
     end else begin
+      // The instruction that writes minstret(h) is not counted: the next one reads the value written.
+      retire_q   <= retire_i && !wr_instret && !wr_instreth;
+      unretire_q <= unretire_i;
       if (wr_cycle) begin
         cycle_q <= {cycle_q[63:32], wdata};
       end else if (wr_cycleh) begin
@@ -85,9 +92,9 @@ module htx_cpu_csr (
         cycle_q <= cycle_inc;
       end
       if (wr_instret) begin
-        instret_q <= {instret_q[63:32], wdata};
+        instret_q <= {instret_step[63:32], wdata};
       end else if (wr_instreth) begin
-        instret_q <= {wdata, instret_q[31:0]};
+        instret_q <= {wdata, instret_step[31:0]};
       end else begin
         instret_q <= instret_step;
       end

@@ -1,10 +1,9 @@
 // 31 x 32-bit register file with two synchronous read ports and one write port, written so that
 // Yosys maps it to iCE40 block RAM (one copy per read port). A read returns the contents from
 // before a write to the same address in the same cycle; the pipeline bypasses that write itself.
-// A read port with its enable low keeps its last output. Entry 0 is never written and reads 0.
+// Entry 0 is never written and reads 0.
 module htx_cpu_regfile (
   input  logic        clk_i,
-  input  logic        re_i,
   input  logic [4:0]  raddr_a_i,
   input  logic [4:0]  raddr_b_i,
   output logic [31:0] rdata_a_o,
@@ -26,10 +25,8 @@ module htx_cpu_regfile (
     if (we_i && (waddr_i != 5'd0)) begin
       mem_q[waddr_i] <= wdata_i;
     end
-    if (re_i) begin
-      rdata_a_o <= mem_q[raddr_a_i];
-      rdata_b_o <= mem_q[raddr_b_i];
-    end
+    rdata_a_o <= mem_q[raddr_a_i];
+    rdata_b_o <= mem_q[raddr_b_i];
   end
 
 endmodule

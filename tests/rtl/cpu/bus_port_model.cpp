@@ -1,5 +1,6 @@
 #include "bus_port_model.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace htx::cpu_tb {
@@ -33,8 +34,12 @@ std::optional<BusRequest> BusPortModel::sample(uint64_t cycle, const BusRequest&
     }
     if (req.addr != waiting_.addr || req.we != waiting_.we || req.be != waiting_.be ||
         (req.we && req.wdata != waiting_.wdata)) {
+      char detail[160];
+      std::snprintf(detail, sizeof detail, " (was addr %08x we %d be %x wdata %08x, now %08x %d %x %08x)",
+                    waiting_.addr, waiting_.we, waiting_.be, waiting_.wdata, req.addr, req.we, req.be,
+                    req.wdata);
       throw std::runtime_error(name_ + ": request changed while waiting for ready at cycle " +
-                               std::to_string(cycle));
+                               std::to_string(cycle) + detail);
     }
   }
   if (rsp_presented_) pending_.pop_front();

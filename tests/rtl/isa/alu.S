@@ -32,7 +32,7 @@ TEST_BEGIN
   TEST_RI(28, ori,  0xff00ff0f, 0xff00ff00, 0x00f)
   TEST_RI(29, ori,  0xffffffff, 0x00ff00ff, -256)
   TEST_RI(30, xori, 0x00ff00f0, 0xff00ff0f, -1)
-  TEST_RI(31, xori, 0xff00f00f, 0xff00ff00, 0x70f)
+  TEST_RI(31, xori, 0xff00f80f, 0xff00ff00, 0x70f)
   TEST_RI(32, slti, 1, 0x80000000, 0)
   TEST_RI(33, slti, 0, 0x00000000, -2048)
   TEST_RI(34, slti, 1, 0xfffffffe, -1)
