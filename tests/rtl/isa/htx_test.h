@@ -66,14 +66,14 @@
 #define TEST_RR_SRC2_EQ_DEST(num, inst, expected, a, b)                  \
   TEST_CASE(num, a1, expected, li a0, a; li a1, b; inst a1, a0, a1)
 
-// Expects the trap handler installed by TRAP_EXPECT_BEGIN to have recorded these values.
-// The handler saves mcause in s2, mepc in s3, mtval in s4 and resumes at the label `resume`.
-#define TRAP_HANDLER(label, resume)                                      \
+// A trap handler for tests that provoke traps: records mcause in s2, mepc in s3, mtval in s4 and
+// mstatus in s6, then resumes at the address the test put in s7 beforehand.
+#define TRAP_HANDLER(label)                                              \
   .balign 4;                                                             \
   label:                                                                 \
   csrr s2, mcause;                                                       \
   csrr s3, mepc;                                                         \
   csrr s4, mtval;                                                        \
-  la s5, resume;                                                         \
-  csrw mepc, s5;                                                         \
+  csrr s6, mstatus;                                                      \
+  csrw mepc, s7;                                                         \
   mret;
