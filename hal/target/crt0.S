@@ -1,8 +1,12 @@
-/* Reset entry for hypertex firmware: global pointer, stack, .data copy (when it has a separate load
- * address), .bss and .tbss clear, thread pointer for picolibc's TLS, constructors, main, exit. */
+/* Reset entry for hypertex firmware: trap vector, global pointer, stack, .data copy (when it has a
+ * separate load address), .bss and .tbss clear, thread pointer for picolibc's TLS, the target
+ * set-up (UART divisor), C++ constructors (init_array), main, then exit with main's status. */
     .section .text.init, "ax"
     .globl _start
 _start:
+    /* Traps before main (or unexpected ones later) are reported, not silently looped on. */
+    la      t0, htx_trap_entry
+    csrw    mtvec, t0
     .option push
     .option norelax
     la      gp, __global_pointer$
@@ -21,7 +25,7 @@ _start:
     addi    a1, a1, 4
     j       1b
 2:
-    /* .bss */
+    /* .bss (and .tbss, which the linker script places at its start) */
     la      a0, __bss_start
     la      a1, __bss_end
 3:  bgeu    a0, a1, 4f
@@ -31,9 +35,10 @@ _start:
 4:
     la      tp, __tls_base
 
-    call    __libc_init_array
+    call    htx_target_init
+    call    __libc_init_array     /* preinit_array, init_array: C++ constructors */
     li      a0, 0
     li      a1, 0
     call    main
-    call    exit
+    call    exit                  /* runs destructors/atexit, then _exit */
 5:  j       5b

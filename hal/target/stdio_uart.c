@@ -1,5 +1,5 @@
-/* picolibc stdio over the UART, and exit through SYSCTRL. picolibc asks the application for the
- * stdin/stdout/stderr streams; a full TX FIFO stalls the bus write, so putc never drops a byte. */
+/* picolibc stdio over the UART. picolibc asks the application for the stdin/stdout/stderr streams;
+ * a full TX FIFO stalls the bus write, so putc never drops a byte. stdin blocks until a byte arrives. */
 #include <stdio.h>
 
 #include "htx_regs.h"
@@ -23,17 +23,3 @@ static FILE uart_stream = FDEV_SETUP_STREAM(uart_putc, uart_getc, NULL, _FDEV_SE
 FILE *const stdin = &uart_stream;
 FILE *const stdout = &uart_stream;
 FILE *const stderr = &uart_stream;
-
-/* Waits for the transmitter to drain, so the last bytes are on the wire before the SoC stops. */
-static void uart_drain(void) {
-  while (!(HTX_UART->STATUS & UART_STATUS_TX_IDLE_Msk)) {
-  }
-}
-
-void _exit(int status) {
-  uart_drain();
-  HTX_SYSCTRL->SIM_EXIT = (uint32_t)status;
-  for (;;) {
-    /* On a board SIM_EXIT is ignored: stay here. */
-  }
-}
