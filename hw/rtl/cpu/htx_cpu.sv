@@ -262,6 +262,12 @@ module htx_cpu #(
   // Execute: multiply, divide, CSR
   logic        e_can_go, e_mem, e_mul, e_div, e_wait, e_done, e_commit, e_take_trap, e_redirect;
   logic        mul_done, div_done, div_busy;
+  // A trap's CSR updates are applied one cycle after it is taken (together with the registered
+  // redirect); nothing can read those CSRs in between, because the instruction then in E is squashed.
+  logic                    trap_q;
+  htx_cpu_pkg::exc_cause_e trap_cause_q;
+  logic [31:2]             trap_pc_q;
+  logic [31:0]             trap_tval_q;
   logic [31:0] mul_result, div_result, csr_rdata;
   logic [31:2] mtvec, mepc;
 
@@ -310,17 +316,16 @@ module htx_cpu #(
     .rst_ni,
     .sel_i      (e_q.csr_sel),
     .rdata_o    (csr_rdata),
-    .we_i       (e_commit && e_q.csr && e_q.csr_we),
+    .we_i       (e_done && !e_trap_early && e_q.csr && e_q.csr_we),
     .op_i       (e_q.funct3[1:0]),
     .src_i      (e_q.funct3[2] ? {27'b0, e_q.rs1} : rs1_val),
     .retire_i   (e_commit),
     .unretire_i (w_fault),
-    .trap_i     (w_fault || e_take_trap),
-    .cause_i    (w_fault ? (w_store_q ? htx_cpu_pkg::ExcStoreAccess : htx_cpu_pkg::ExcLoadAccess)
-                         : e_cause),
-    .trap_pc_i  (w_fault ? w_pc_q : e_pc_q[31:2]),
-    .tval_i     (w_fault ? w_result_q : e_tval),
-    .mret_i     (e_commit && e_q.mret),
+    .trap_i     (trap_q),
+    .cause_i    (trap_cause_q),
+    .trap_pc_i  (trap_pc_q),
+    .tval_i     (trap_tval_q),
+    .mret_i     (e_done && !e_trap_early && e_q.mret),
     .mtvec_o    (mtvec),
     .mepc_o     (mepc)
   );
@@ -377,11 +382,16 @@ module htx_cpu #(
       redirect_q <= 1'b0;
     end else begin
       redirect_q <= w_fault || e_redirect;
+      trap_q     <= w_fault || e_take_trap;
     end
   end
 
   always_ff @(posedge clk_i) begin
     redirect_pc_q <= late_pc;
+    trap_cause_q  <= w_fault ? (w_store_q ? htx_cpu_pkg::ExcStoreAccess : htx_cpu_pkg::ExcLoadAccess)
+                             : e_cause;
+    trap_pc_q     <= w_fault ? w_pc_q : e_pc_q[31:2];
+    trap_tval_q   <= w_fault ? w_result_q : e_tval;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin

@@ -44,7 +44,7 @@ module htx_cpu_synth_wrapper (
   );
 
   // Register every output first so that the core's output paths end at a flip-flop.
-  logic [141:0] out_q;
+  logic [139:0] out_q;
   always_ff @(posedge clk_i) begin
     out_q  <= {ibus_req_valid, ibus_req_we, ibus_req_be, ibus_req_addr, ibus_req_wdata,
                dbus_req_valid, dbus_req_we, dbus_req_be, dbus_req_addr, dbus_req_wdata};
