@@ -73,9 +73,9 @@ Barycentric barycentric(const TriSetup& s, double x, double y) {
     const auto& q = s.p[(k + 2) % 3];
     const double e = (q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0]);
     const int in = s.order[k];
-    r.l[in] = e / s.area2;
-    r.dx[in] = -(q[1] - p[1]) / s.area2;
-    r.dy[in] = (q[0] - p[0]) / s.area2;
+    r.l[in] = e;
+    r.dx[in] = -(q[1] - p[1]);
+    r.dy[in] = q[0] - p[0];
   }
   return r;
 }

@@ -23,7 +23,10 @@ TriSetup setup_triangle(const ScreenTri& tri, int width, int height);
 // Whether the centre of pixel (i, j) is covered under the top-left rule.
 bool covers(const TriSetup& s, int i, int j);
 
-// Barycentric weights of the input vertices at a point (sum to 1), and their screen derivatives.
+// Unnormalised barycentric weights of the input vertices at a point (edge functions of the opposite
+// edges, summing to area2) and their screen derivatives. Kept unnormalised so that a ratio of
+// weighted sums rounds once: with vertices on the subpixel grid the edge functions at pixel centres
+// are exact, and an exactly representable quotient (an exact tie) comes out exact.
 struct Barycentric {
   double l[3];
   double dx[3];

@@ -69,10 +69,11 @@ Frame render_ref(const ScreenScene& scene, const RefOptions& options) {
         ++f.counters.fragments;
         const ref::Barycentric b = ref::barycentric(s, i + 0.5, j + 0.5);
         const size_t idx = static_cast<size_t>(j) * w + i;
-        const double z = std::clamp(b.l[0] * tri.v[0].z + b.l[1] * tri.v[1].z + b.l[2] * tri.v[2].z, 0.0, 1.0);
+        const double z = std::clamp(
+            (b.l[0] * tri.v[0].z + b.l[1] * tri.v[1].z + b.l[2] * tri.v[2].z) / (b.l[0] + b.l[1] + b.l[2]), 0.0, 1.0);
         if (!depth_passes(st.depth_func, z, zbuf[idx])) continue;
 
-        // Rational linear interpolation: A = sum(l_k q_k A_k) / sum(l_k q_k).
+        // Rational linear interpolation: A = sum(l_k q_k A_k) / sum(l_k q_k) (the scale of l cancels).
         double qs = 0, dqx = 0, dqy = 0;
         for (int k = 0; k < 3; ++k) {
           qs += b.l[k] * q[k];
