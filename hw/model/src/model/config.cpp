@@ -28,7 +28,7 @@ ModelConfig make_icebreaker() {
   c.recip_issue_interval = 3;  // one shared unit: table, then one multiply pair per Newton step
   c.texcoord_frac_bits = 10;
   c.divfree_frac_bits = 2;
-  c.divfree_cap = 16;
+  c.divfree_cap = 64;
   c.lod_frac_bits = 6;
   c.lod_log_index_bits = 6;
   c.methods = 0x3F;

@@ -268,19 +268,25 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
   // Each pixel starts from a prediction: the previous pixel's index plus the previous pixel's
   // movement (one adder; the indices of a span are close to linear in x, so the grid steps only
   // cover the curvature). A span's first pixel is predicted the same way from the first pixels of
-  // the two previous spans. The triangle's very first pixel starts from a setup division (modelled
-  // exact) and takes no steps.
+  // the two previous spans. The triangle's first pixel, and the pixel after one that hit the cap,
+  // start from a division by the shared reciprocal unit (modelled exact; no steps), so a capped
+  // pixel's error never propagates.
+  const auto exact_u = [&] { return divfree_exact_index(u, q, f, level); };
+  const auto exact_v = [&] { return divfree_exact_index(v, q, f, level); };
   int64_t ju = 0, jv = 0, du = 0, dv = 0;
-  if (df_started_) {
+  uint64_t cycles = 1;
+  if (df_started_ && !df_resync_) {
     ju = df_ju_ + df_du_;
     jv = df_jv_ + df_dv_;
   } else {
-    ju = divfree_exact_index(u, q, f, level);
-    jv = divfree_exact_index(v, q, f, level);
+    ju = exact_u();
+    jv = exact_v();
+    if (df_started_) cycles += cfg_.recip_issue_interval;
     df_ju_ = ju;
     df_jv_ = jv;
     df_du_ = df_dv_ = 0;
     df_started_ = true;
+    df_resync_ = false;
   }
   // Move j toward the exact index one grid step at a time, at most `cap` steps: identical to
   // reference 004's loop "while N <= 0: j -= 1; while M > 0: j += 1" on the integer conditions
@@ -294,22 +300,30 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
     if (a > cap) *capped = 1;
     return s;
   };
-  uint64_t cycles = 1;
+  bool resync = false;
   for (size_t k = 0; k < out->u.size(); ++k) {
-    if (k > 0) {
+    if (resync) {
+      ju = exact_u();
+      jv = exact_v();
+      du = dv = 0;
+      resync = false;
+      cycles += cfg_.recip_issue_interval;
+    } else if (k > 0) {
       ju += du;  // prediction: previous index plus previous movement
       jv += dv;
     }
     const int64_t prev_u = ju - du, prev_v = jv - dv;  // the previous pixel's final index
-    const int64_t su_n = track(divfree_exact_index(u, q, f, level), &ju, &out->divfree_steps[k], &out->divfree_capped[k]);
-    const int64_t sv_n = track(divfree_exact_index(v, q, f, level), &jv, &out->divfree_steps[k], &out->divfree_capped[k]);
+    const int64_t su_n = track(exact_u(), &ju, &out->divfree_steps[k], &out->divfree_capped[k]);
+    const int64_t sv_n = track(exact_v(), &jv, &out->divfree_steps[k], &out->divfree_capped[k]);
     cycles += static_cast<uint64_t>(std::max<int64_t>(1, std::max(su_n, sv_n)));  // both axes step in parallel
+    resync = out->divfree_capped[k] != 0;
     if (k == 0) {
       // Movement between the first pixels of consecutive spans, for the next span's prediction.
       df_du_ = ju - df_ju_;
       df_dv_ = jv - df_jv_;
       df_ju_ = ju;
       df_jv_ = jv;
+      df_resync_ = resync;
       du = dv = 0;
     } else {
       du = ju - prev_u;

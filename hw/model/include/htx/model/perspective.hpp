@@ -78,6 +78,7 @@ class TriangleUnit {
   mutable bool df_started_ = false;
   mutable int64_t df_ju_ = 0, df_jv_ = 0, df_du_ = 0, df_dv_ = 0;
   mutable unsigned df_level_ = 0;
+  mutable bool df_resync_ = false;  // the previous span's first pixel hit the cap
 };
 
 // AUTO: the firmware's choice for one triangle (modelled from the ScreenVertex doubles, as the
