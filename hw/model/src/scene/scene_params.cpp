@@ -1,9 +1,20 @@
 #include "scene_params.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace htx {
+
+namespace {
+
+std::string format_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+}  // namespace
 
 SceneParams::SceneParams(const std::string& spec) {
   const size_t colon = spec.find(':');
@@ -40,7 +51,7 @@ double SceneParams::number(const std::string& key, double fallback, double min, 
     throw std::invalid_argument("scene '" + name_ + "': parameter " + key + "='" + it->second + "' is not a number");
   if (v < min || v > max)
     throw std::invalid_argument("scene '" + name_ + "': parameter " + key + "=" + it->second + " out of range [" +
-                                std::to_string(min) + ", " + std::to_string(max) + "]");
+                                format_number(min) + ", " + format_number(max) + "]");
   return v;
 }
 
