@@ -56,8 +56,10 @@ std::optional<uint32_t> ElfImage::symbol(const std::string& name) const {
 
 ElfImage parse_elf(std::span<const uint8_t> data, const std::string& what) {
   Reader r(data, what);
+  if (data.size() < 4 || std::memcmp(data.data(), "\x7f" "ELF", 4) != 0) {
+    r.fail("bad magic (not an ELF file)");
+  }
   r.need(0, 52, "the ELF header");
-  if (std::memcmp(data.data(), "\x7f" "ELF", 4) != 0) r.fail("bad magic (not an ELF file)");
   if (r.u8(4) != 1) r.fail("not ELFCLASS32 (a 64-bit ELF?)");
   if (r.u8(5) != 1) r.fail("not little-endian");
   if (r.u16(16) != kEtExec) r.fail("not an executable (ET_EXEC)");

@@ -1,0 +1,66 @@
+// The benchmark firmware runs to completion on the simulated SoC and its kernel checksums equal
+// the host's results for the same kernels (the same source, firmware/app/bench/kernels.cpp).
+// Speed is reported (printed and recorded as test properties), not asserted.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "kernels.hpp"
+#include "subprocess.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+
+std::map<std::string, std::string> checksums_from(const std::string& out) {
+  std::map<std::string, std::string> sums;
+  std::istringstream in(out);
+  std::string line;
+  while (std::getline(in, line)) {
+    char name[32];
+    unsigned sum = 0;
+    if (std::sscanf(line.c_str(), "bench %31s cycles %*u instret %*u cpi %*u.%*u checksum %x", name,
+                    &sum) == 2) {
+      char hex[16];
+      std::snprintf(hex, sizeof hex, "%08x", sum);
+      sums[name] = hex;
+    }
+  }
+  return sums;
+}
+
+TEST(SystemBench, RunsToCompletionWithHostChecksums) {
+  const auto r = htx::test::run_program(
+      {HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/bench.elf", "--max-cycles", "20000000", "--json"}, 120s);
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+
+  const auto sums = checksums_from(r.out);
+  ASSERT_EQ(sums.size(), htx::bench::kKernelCount) << r.out;
+  for (unsigned k = 0; k < htx::bench::kKernelCount; ++k) {
+    const auto& spec = htx::bench::kKernels[k];
+    spec.prepare(spec.seed, spec.n);
+    char want[16];
+    std::snprintf(want, sizeof want, "%08x", spec.run(spec.n));
+    ASSERT_TRUE(sums.count(spec.name)) << spec.name << " missing in\n" << r.out;
+    EXPECT_EQ(sums.at(spec.name), want) << "kernel " << spec.name;
+  }
+
+  // The figures: the firmware's own total (kernels only) and the whole run from the harness.
+  const size_t total = r.out.find("bench total");
+  ASSERT_NE(total, std::string::npos) << r.out;
+  const std::string total_line = r.out.substr(total, r.out.find('\n', total) - total);
+  const auto json = nlohmann::json::parse(r.out.substr(r.out.rfind('{')));
+  EXPECT_EQ(json.at("exit_code"), 0);
+  EXPECT_EQ(json.at("reason"), "exit");
+  std::printf("%s\nwhole run: %s\n", total_line.c_str(), json.dump().c_str());
+  ::testing::Test::RecordProperty("bench_total", total_line);
+  ::testing::Test::RecordProperty("sim_cycles_per_second",
+                                  std::to_string(json.at("cycles_per_second").get<double>()));
+}
+
+}  // namespace

@@ -1,0 +1,138 @@
+#include "subprocess.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <stdexcept>
+
+namespace htx::test {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+pid_t spawn(const std::vector<std::string>& argv, int out_fd, int err_fd) {
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid == 0) {
+    const int devnull = open("/dev/null", O_RDONLY);
+    dup2(devnull, STDIN_FILENO);
+    if (out_fd >= 0) dup2(out_fd, STDOUT_FILENO);
+    if (err_fd >= 0) dup2(err_fd, STDERR_FILENO);
+    execv(args[0], args.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+int remaining_ms(Clock::time_point deadline) {
+  const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+  return left.count() > 0 ? static_cast<int>(left.count()) : 0;
+}
+
+int decode_status(int st) { return WIFEXITED(st) ? WEXITSTATUS(st) : -1; }
+
+int wait_with_limit(pid_t pid, Clock::time_point deadline, bool& timed_out) {
+  int st = 0;
+  for (;;) {
+    const pid_t r = waitpid(pid, &st, WNOHANG);
+    if (r == pid) return decode_status(st);
+    if (r < 0 && errno != EINTR) return -1;
+    if (Clock::now() >= deadline) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &st, 0);
+      timed_out = true;
+      return -1;
+    }
+    usleep(2000);
+  }
+}
+
+}  // namespace
+
+RunResult run_program(const std::vector<std::string>& argv, std::chrono::milliseconds limit) {
+  int out_pipe[2], err_pipe[2];
+  if (pipe(out_pipe) != 0 || pipe(err_pipe) != 0) throw std::runtime_error("pipe failed");
+  const pid_t pid = spawn(argv, out_pipe[1], err_pipe[1]);
+  close(out_pipe[1]);
+  close(err_pipe[1]);
+  RunResult res;
+  const auto deadline = Clock::now() + limit;
+  pollfd fds[2] = {{out_pipe[0], POLLIN, 0}, {err_pipe[0], POLLIN, 0}};
+  std::string* sinks[2] = {&res.out, &res.err};
+  int open_fds = 2;
+  while (open_fds > 0 && Clock::now() < deadline) {
+    if (poll(fds, 2, remaining_ms(deadline)) <= 0) continue;
+    for (int i = 0; i < 2; ++i) {
+      if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP))) continue;
+      char buf[4096];
+      const ssize_t n = read(fds[i].fd, buf, sizeof buf);
+      if (n > 0) {
+        sinks[i]->append(buf, static_cast<size_t>(n));
+      } else {
+        close(fds[i].fd);
+        fds[i].fd = -1;
+        --open_fds;
+      }
+    }
+  }
+  for (auto& f : fds) {
+    if (f.fd >= 0) close(f.fd);
+  }
+  res.status = wait_with_limit(pid, deadline, res.timed_out);
+  return res;
+}
+
+bool read_fd_until(int fd, std::string& acc, const std::string& needle, std::chrono::milliseconds limit) {
+  const auto deadline = Clock::now() + limit;
+  while (acc.find(needle) == std::string::npos) {
+    pollfd p{fd, POLLIN, 0};
+    const int left = remaining_ms(deadline);
+    if (left == 0) return false;
+    if (poll(&p, 1, left) <= 0) continue;
+    char buf[1024];
+    const ssize_t n = read(fd, buf, sizeof buf);
+    if (n > 0) {
+      acc.append(buf, static_cast<size_t>(n));
+    } else if (n == 0 || (errno != EAGAIN && errno != EINTR)) {
+      return acc.find(needle) != std::string::npos;  // end of stream
+    }
+  }
+  return true;
+}
+
+Child::Child(const std::vector<std::string>& argv) {
+  int p[2];
+  if (pipe(p) != 0) throw std::runtime_error("pipe failed");
+  pid_ = spawn(argv, p[1], -1);
+  close(p[1]);
+  out_fd_ = p[0];
+}
+
+Child::~Child() {
+  if (pid_ > 0) {
+    kill(pid_, SIGKILL);
+    int st;
+    waitpid(pid_, &st, 0);
+  }
+  if (out_fd_ >= 0) close(out_fd_);
+}
+
+bool Child::read_until(const std::string& needle, std::chrono::milliseconds limit) {
+  return read_fd_until(out_fd_, out_, needle, limit);
+}
+
+int Child::wait(std::chrono::milliseconds limit) {
+  bool timed_out = false;
+  const int st = wait_with_limit(pid_, Clock::now() + limit, timed_out);
+  pid_ = -1;
+  return st;
+}
+
+}  // namespace htx::test

@@ -1,0 +1,45 @@
+// Runs a program for a system test: argv, captured stdout/stderr, a hard time limit (the child is
+// killed when it passes), and incremental reading for interactive tests.
+#pragma once
+
+#include <sys/types.h>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace htx::test {
+
+struct RunResult {
+  int status = -1;  // exit status, or -1 if killed/signalled
+  bool timed_out = false;
+  std::string out;
+  std::string err;
+};
+
+RunResult run_program(const std::vector<std::string>& argv, std::chrono::milliseconds limit);
+
+// A child whose stdout is read incrementally (stderr is inherited, so it shows in the test log).
+class Child {
+ public:
+  explicit Child(const std::vector<std::string>& argv);
+  ~Child();  // kills the child if it is still running
+  Child(const Child&) = delete;
+  Child& operator=(const Child&) = delete;
+
+  // Reads stdout until `needle` has appeared in everything read so far, or the limit passes.
+  bool read_until(const std::string& needle, std::chrono::milliseconds limit);
+  const std::string& output() const { return out_; }
+  // Waits for the child to exit; -1 if it had to be killed at the limit.
+  int wait(std::chrono::milliseconds limit);
+
+ private:
+  pid_t pid_ = -1;
+  int out_fd_ = -1;
+  std::string out_;
+};
+
+// Reads from `fd` (non-blocking or not) until `needle` appears in `acc`, or the limit passes.
+bool read_fd_until(int fd, std::string& acc, const std::string& needle, std::chrono::milliseconds limit);
+
+}  // namespace htx::test
