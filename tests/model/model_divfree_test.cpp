@@ -27,7 +27,9 @@ struct Tally {
 };
 
 // Walks every triangle through the raster unit and checks each uncapped pixel's texel against the
-// integer conditions N = U - i Q > 0, M = U - (i+1) Q <= 0 of the exact quotient.
+// exact quotient u = U / Q of its planes rounded to the coordinate's TF fraction bits (round half
+// up), sampled nearest (ceil - 1): texel i iff i < round(u) <= i + 1, i.e. in integers
+// N = 2^(TF+1) U - (2^(TF+1) i + 1) Q >= 0 and M = 2^(TF+1) U - (2^(TF+1) (i+1) + 1) Q < 0.
 Tally check_scene(const ScreenScene& sc, const ModelConfig& cfg) {
   Tally t;
   const unsigned tf = cfg.texcoord_frac_bits;
@@ -61,7 +63,8 @@ Tally check_scene(const ScreenScene& sc, const ModelConfig& cfg) {
         const int64_t coord[2] = {span.u[k], span.v[k]};
         for (int axis = 0; axis < 2; ++axis) {
           const int64_t i = (coord[axis] - 1) >> tf;  // the sampler's nearest rule, ceil(u) - 1
-          const bool ok = num[axis] - static_cast<model::i128>(i) * q > 0 && num[axis] - static_cast<model::i128>(i + 1) * q <= 0;
+          const model::i128 s = static_cast<model::i128>(1) << (tf + 1);
+          const bool ok = s * num[axis] - (s * i + 1) * q >= 0 && s * num[axis] - (s * (i + 1) + 1) * q < 0;
           if (!ok) ++t.mismatches;
         }
       }
@@ -112,13 +115,17 @@ TEST(Divfree, ASmallCapIsHitAndStillBoundsTheSteps) {
 }
 
 TEST(Divfree, ExactIndexMatchesTheConditions) {
-  // j < 2^f U / (Q 2^L) <= j + 1, including exact ties (which go to the lower cell).
-  EXPECT_EQ(model::divfree_exact_index(30, 10, 0), 2);   // u = 3.0 exactly: cell 2 (ties lower)
-  EXPECT_EQ(model::divfree_exact_index(31, 10, 0), 3);
-  EXPECT_EQ(model::divfree_exact_index(-1, 10, 0), -1);  // u = -0.1
-  EXPECT_EQ(model::divfree_exact_index(-10, 10, 0), -2); // u = -1.0: cell -2
-  EXPECT_EQ(model::divfree_exact_index(31, 10, 4), 49);  // 3.1 * 16 = 49.6
-  EXPECT_EQ(model::divfree_exact_index(31, 10, 0, 1), 1);  // level 1: 1.55
+  // Cell j holds x - 2^-(P+1) in [j, j+1): exact ties (x = 3.0) go to the lower cell, and so does
+  // anything that rounds to the tie at P fraction bits.
+  EXPECT_EQ(model::divfree_exact_index(30, 10, 0, 0, 16), 2);  // u = 3.0 exactly: cell 2
+  EXPECT_EQ(model::divfree_exact_index(31, 10, 0, 0, 16), 3);
+  EXPECT_EQ(model::divfree_exact_index(-1, 10, 0, 0, 16), -1);   // u = -0.1
+  EXPECT_EQ(model::divfree_exact_index(-10, 10, 0, 0, 16), -2);  // u = -1.0: cell -2
+  EXPECT_EQ(model::divfree_exact_index(31, 10, 4, 0, 12), 49);   // 3.1 * 16 = 49.6
+  EXPECT_EQ(model::divfree_exact_index(31, 10, 0, 1, 16), 1);    // level 1: 1.55
+  // 3 + 2^-18 rounds to 3.0 at 16 bits (a tie: lower), 3 + 2^-16 does not.
+  EXPECT_EQ(model::divfree_exact_index((int64_t{3} << 18) + 1, int64_t{1} << 18, 0, 0, 16), 2);
+  EXPECT_EQ(model::divfree_exact_index((int64_t{3} << 16) + 1, int64_t{1} << 16, 0, 0, 16), 3);
 }
 
 }  // namespace

@@ -17,10 +17,12 @@ int64_t inverse_length(int64_t len) { return ((int64_t{1} << 17) + len) / (2 * l
 
 }  // namespace
 
-int64_t divfree_exact_index(i128 num, i128 q, unsigned grid_bits, unsigned level) {
+int64_t divfree_exact_index(i128 num, i128 q, unsigned grid_bits, unsigned level, unsigned coord_bits) {
   if (q < 1) q = 1;
-  return static_cast<int64_t>(
-      ceil_div(mul_checked(num, static_cast<i128>(1) << grid_bits), mul_checked(q, static_cast<i128>(1) << level)) - 1);
+  // x = 2^f U / (Q 2^L) in grid cells; cell j holds x - 2^-(P+1) in [j, j+1), P = coord_bits.
+  const i128 n = mul_checked(num, static_cast<i128>(1) << (grid_bits + coord_bits + 1)) -
+                 mul_checked(q, static_cast<i128>(1) << level);
+  return static_cast<int64_t>(floor_div(n, mul_checked(q, static_cast<i128>(1) << (level + coord_bits + 1))));
 }
 
 TriangleUnit::TriangleUnit(const fw::TriangleRecord& rec, const TriState& state, const ModelConfig& cfg, int width,
@@ -271,8 +273,12 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
   // the two previous spans. The triangle's first pixel, and the pixel after one that hit the cap,
   // start from a division by the shared reciprocal unit (modelled exact; no steps), so a capped
   // pixel's error never propagates.
-  const auto exact_u = [&] { return divfree_exact_index(u, q, f, level); };
-  const auto exact_v = [&] { return divfree_exact_index(v, q, f, level); };
+  // Cell boundaries sit half a coordinate ulp above the grid lines (P = TF + L - f fraction bits
+  // of a cell), so DIVFREE picks the texel nearest sampling picks for the exact quotient rounded to
+  // the texel-coordinate precision, exact ties included.
+  const unsigned p_bits = cfg_.texcoord_frac_bits + level - f;
+  const auto exact_u = [&] { return divfree_exact_index(u, q, f, level, p_bits); };
+  const auto exact_v = [&] { return divfree_exact_index(v, q, f, level, p_bits); };
   int64_t ju = 0, jv = 0, du = 0, dv = 0;
   uint64_t cycles = 1;
   if (df_started_ && !df_resync_) {
@@ -289,8 +295,8 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
     df_resync_ = false;
   }
   // Move j toward the exact index one grid step at a time, at most `cap` steps: identical to
-  // reference 004's loop "while N <= 0: j -= 1; while M > 0: j += 1" on the integer conditions
-  // N = 2^f U - j Q > 0, M = 2^f U - (j+1) Q <= 0.
+  // reference 004's loop "while N < 0: j -= 1; while M >= 0: j += 1" on the integer conditions
+  // of divfree_exact_index (N and M step by constants in x and by multiples of Q in j).
   auto track = [cap](int64_t target, int64_t* j, uint32_t* steps, uint8_t* capped) {
     const int64_t d = target - *j;
     const int64_t a = d < 0 ? -d : d;

@@ -24,9 +24,13 @@ struct SpanCoords {
   uint64_t cycles = 0;                  // estimated clocks of the span
 };
 
-// Exact quotient grid index of DIVFREE on the grid of 2^-f texels of mip level L:
-// the j with j < 2^f * U / (Q * 2^L) <= j + 1 (Q > 0).
-int64_t divfree_exact_index(i128 num, i128 q, unsigned grid_bits, unsigned level = 0);
+// The grid cell DIVFREE converges to, on the grid of 2^-f texels of mip level L: with
+// x = 2^f U / (Q 2^L) (cells) and P = coord_bits, the j with j <= x - 2^-(P+1) < j + 1. In the
+// integer conditions of reference 004 (Q > 0):
+//   N = 2^(f+P+1) U - (2^(P+1) j + 1) Q 2^L >= 0,   M = 2^(f+P+1) U - (2^(P+1) (j+1) + 1) Q 2^L < 0.
+// The half-ulp offset makes the cell the one nearest sampling selects for x rounded to P fraction
+// bits (round half up), i.e. for the exact quotient at the texel-coordinate precision.
+int64_t divfree_exact_index(i128 num, i128 q, unsigned grid_bits, unsigned level, unsigned coord_bits);
 
 class TriangleUnit {
  public:
