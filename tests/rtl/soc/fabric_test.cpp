@@ -1,0 +1,320 @@
+// htx_soc_fabric (interconnect, RAM, SYSCTRL, UART, TIMER) driven directly on the CPU's two bus
+// ports: unmapped accesses, RAM throughput and byte lanes, each peripheral, the UART's serial line
+// (internal loopback and the real pins), the timer compare, and random wait states on every slave.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "fabric_harness.hpp"
+#include "htx/sim/uart_line.hpp"
+#include "htx_regs.h"
+
+namespace {
+
+using htx::test::BusReq;
+using htx::test::FabricHarness;
+
+constexpr uint32_t kSys = HTX_SYSCTRL_BASE;
+constexpr uint32_t kUart = HTX_UART_BASE;
+constexpr uint32_t kTimer = HTX_TIMER_BASE;
+constexpr uint32_t kRamBytes = 65536;  // the Verilated fabric's RamBytes
+
+uint32_t lcg(uint32_t& s) { return s = s * 1664525u + 1013904223u; }
+
+class FabricTest : public ::testing::TestWithParam<int> {
+ protected:
+  // Parameter 0: no wait states; otherwise the stall seed.
+  FabricTest() : soc(GetParam() != 0, static_cast<uint32_t>(GetParam())) {}
+  FabricHarness soc;
+};
+
+TEST_P(FabricTest, UnmappedAccessesCompleteWithErrorAndNothingHangs) {
+  const uint32_t holes[] = {0x1000'0000, kRamBytes, 0x2000'7000, 0x2FFF'FFFC, 0x5000'0000, 0xFFFF'FFFC};
+  for (uint32_t a : holes) {
+    const auto r = soc.read(a);
+    EXPECT_TRUE(r.err) << std::hex << a;
+    EXPECT_EQ(r.rdata, 0u) << std::hex << a;
+    EXPECT_TRUE(soc.write(a, 0x1234'5678).err) << std::hex << a;
+  }
+  // The instruction port sees the same map, and still works afterwards.
+  soc.ibus.pending.push_back({0x6000'0000});
+  soc.ibus.pending.push_back({0x0000'0100});
+  ASSERT_TRUE(soc.drain());
+  ASSERT_EQ(soc.ibus.responses.size(), 2u);
+  EXPECT_TRUE(soc.ibus.responses[0].err);
+  EXPECT_FALSE(soc.ibus.responses[1].err);
+  // Back-to-back error, RAM, error on the data port: in order, each with its own outcome.
+  const size_t base = soc.dbus.responses.size();
+  soc.dbus.pending.push_back({0x1000'0000});
+  soc.dbus.pending.push_back({0x0000'0040, true, 0xF, 77});
+  soc.dbus.pending.push_back({0x0000'0040});
+  soc.dbus.pending.push_back({0x7000'0000});
+  ASSERT_TRUE(soc.drain());
+  ASSERT_EQ(soc.dbus.responses.size(), base + 4);
+  EXPECT_TRUE(soc.dbus.responses[base].err);
+  EXPECT_FALSE(soc.dbus.responses[base + 1].err);
+  EXPECT_EQ(soc.dbus.responses[base + 2].rdata, 77u);
+  EXPECT_TRUE(soc.dbus.responses[base + 3].err);
+}
+
+TEST_P(FabricTest, RamByteLanes) {
+  ASSERT_FALSE(soc.write(0x100, 0x1122'3344).err);
+  soc.write(0x100, 0x0000'00AA, 0x1);  // sb to byte 0
+  soc.write(0x100, 0xBB00'0000, 0x8);  // sb to byte 3
+  EXPECT_EQ(soc.read(0x100).rdata, 0xBB22'33AAu);
+  soc.write(0x100, 0xCCDD'0000, 0xC);  // sh to the upper half
+  EXPECT_EQ(soc.read(0x100).rdata, 0xCCDD'33AAu);
+  soc.write(kRamBytes - 4, 0xCAFE'F00D);  // the last word
+  EXPECT_EQ(soc.read(kRamBytes - 4).rdata, 0xCAFE'F00Du);
+}
+
+TEST_P(FabricTest, FetchAndDataRunInParallel) {
+  constexpr int kWords = 64;
+  for (int i = 0; i < kWords; ++i) soc.dbus.pending.push_back({0x1000u + 4u * i, true, 0xF, 0xA000'0000u + i});
+  ASSERT_TRUE(soc.drain());
+  const uint64_t start = soc.cycle();
+  const size_t d0 = soc.dbus.responses.size();
+  for (int i = 0; i < kWords; ++i) {
+    soc.ibus.pending.push_back({0x1000u + 4u * i});
+    soc.dbus.pending.push_back({0x2000u + 4u * i, true, 0xF, 0xB000'0000u + i});
+  }
+  ASSERT_TRUE(soc.drain());
+  for (int i = 0; i < kWords; ++i) {
+    EXPECT_EQ(soc.ibus.responses[i].rdata, 0xA000'0000u + i);
+    EXPECT_FALSE(soc.dbus.responses[d0 + i].err);
+  }
+  if (GetParam() == 0) {
+    // One access per clock on each port at once: the RAM is dual-ported, latency 1.
+    EXPECT_LE(soc.cycle() - start, static_cast<uint64_t>(kWords + 1));
+  }
+  for (int i = 0; i < kWords; i += 7) EXPECT_EQ(soc.read(0x2000u + 4u * i).rdata, 0xB000'0000u + i);
+}
+
+TEST_P(FabricTest, SysctrlRegisters) {
+  EXPECT_EQ(soc.read(kSys + SYSCTRL_ID_Offset).rdata, SYSCTRL_ID_RESET);
+  EXPECT_EQ(soc.read(kSys + SYSCTRL_VERSION_Offset).rdata, SYSCTRL_VERSION_RESET);
+  EXPECT_EQ(soc.read(kSys + SYSCTRL_CLOCK_HZ_Offset).rdata, 12'000'000u);
+  EXPECT_EQ(soc.read(kSys + SYSCTRL_PLATFORM_Offset).rdata & SYSCTRL_PLATFORM_SIM_Msk, SYSCTRL_PLATFORM_SIM_Msk);
+  soc.write(kSys + SYSCTRL_SCRATCH_Offset, 0xDEAD'BEEF);
+  soc.write(kSys + SYSCTRL_SCRATCH_Offset, 0x0000'5500, 0x2);
+  EXPECT_EQ(soc.read(kSys + SYSCTRL_SCRATCH_Offset).rdata, 0xDEAD'55EFu);
+  // SIM_EXIT: a one-clock strobe with the code.
+  soc.dbus.pending.push_back({kSys + SYSCTRL_SIM_EXIT_Offset, true, 0xF, 42});
+  bool seen = false;
+  for (int i = 0; i < 200 && !seen; ++i) {
+    soc.step();
+    if (soc.sim_exit_strobe()) {
+      seen = true;
+      EXPECT_EQ(soc.sim_exit_code(), 42);
+    }
+  }
+  EXPECT_TRUE(seen);
+}
+
+// Reads STATUS until `mask` is set, at most `limit` reads.
+bool wait_status(FabricHarness& soc, uint32_t mask, int limit = 20000) {
+  for (int i = 0; i < limit; ++i) {
+    if (soc.read(kUart + UART_STATUS_Offset).rdata & mask) return true;
+  }
+  return false;
+}
+
+TEST_P(FabricTest, UartLoopbackFifosAndOverrun) {
+  const uint32_t st = soc.read(kUart + UART_STATUS_Offset).rdata;
+  EXPECT_EQ(st & (UART_STATUS_TX_EMPTY_Msk | UART_STATUS_TX_IDLE_Msk | UART_STATUS_RX_VALID_Msk),
+            UART_STATUS_TX_EMPTY_Msk | UART_STATUS_TX_IDLE_Msk);
+  EXPECT_EQ(soc.read(kUart + UART_CTRL_Offset).rdata, UART_CTRL_RESET);
+  EXPECT_EQ(soc.read(kUart + UART_DATA_Offset).rdata, UART_DATA_RX_EMPTY_Msk);  // empty: nothing popped
+  soc.write(kUart + UART_CTRL_Offset, 8u | UART_CTRL_LOOPBACK_Msk);
+
+  // 20 bytes queued back to back: the TX FIFO holds 16, so later writes wait (stall the bus) for
+  // room and none is lost; the receiver keeps 16 and flags the rest as overrun.
+  const std::string msg = "The quick brown fox!";
+  for (char c : msg) soc.dbus.pending.push_back({kUart + UART_DATA_Offset, true, 0x1, static_cast<uint8_t>(c)});
+  const size_t first = soc.dbus.responses.size();
+  ASSERT_TRUE(soc.drain(200000));
+  // 16 bytes fit in the FIFO and one more in the shifter; the 18th write could only be accepted once
+  // the shifter had sent a byte (10 bits of 8 clocks).
+  EXPECT_LT(soc.dbus.responses[first + 16].cycle - soc.dbus.responses[first].cycle, 8u * 10);
+  EXPECT_GT(soc.dbus.responses[first + 17].cycle - soc.dbus.responses[first + 16].cycle, 8u * 5);
+  ASSERT_TRUE(wait_status(soc, UART_STATUS_TX_IDLE_Msk));
+  for (int i = 0; i < 50; ++i) soc.step();  // the last stop bit reaches the receiver
+  const uint32_t level = soc.read(kUart + UART_LEVEL_Offset).rdata;
+  EXPECT_EQ((level & UART_LEVEL_RX_Msk) >> UART_LEVEL_RX_Pos, 16u);
+  EXPECT_EQ((level & UART_LEVEL_TX_Msk) >> UART_LEVEL_TX_Pos, 0u);
+  const uint32_t st2 = soc.read(kUart + UART_STATUS_Offset).rdata;
+  EXPECT_TRUE(st2 & UART_STATUS_RX_FULL_Msk);
+  EXPECT_TRUE(st2 & UART_STATUS_RX_OVERRUN_Msk);
+  EXPECT_FALSE(st2 & UART_STATUS_RX_FRAME_ERR_Msk);
+  std::string got;
+  for (int i = 0; i < 16; ++i) {
+    const uint32_t d = soc.read(kUart + UART_DATA_Offset).rdata;
+    ASSERT_FALSE(d & UART_DATA_RX_EMPTY_Msk);
+    got += static_cast<char>(d & 0xFF);
+  }
+  EXPECT_EQ(got, msg.substr(0, 16));
+  EXPECT_TRUE(soc.read(kUart + UART_DATA_Offset).rdata & UART_DATA_RX_EMPTY_Msk);
+  soc.write(kUart + UART_STATUS_Offset, UART_STATUS_RX_OVERRUN_Msk);  // write one to clear
+  EXPECT_FALSE(soc.read(kUart + UART_STATUS_Offset).rdata & UART_STATUS_RX_OVERRUN_Msk);
+  EXPECT_TRUE(soc.uart_tx()) << "in loopback the TX pin stays idle";
+}
+
+TEST_P(FabricTest, UartSerialPinsBothWaysAndFramingError) {
+  constexpr uint32_t kDiv = 16;
+  soc.write(kUart + UART_CTRL_Offset, kDiv);
+  htx::sim::UartLineDecoder from_soc(kDiv);
+  htx::sim::UartLineEncoder to_soc(kDiv);
+  std::string heard;
+  auto clock = [&](int n) {
+    for (int i = 0; i < n; ++i) {
+      soc.uart_rx = to_soc.step();
+      soc.step();
+      if (auto b = from_soc.step(soc.uart_tx())) heard += static_cast<char>(*b);
+    }
+  };
+  for (char c : std::string("hi\n")) soc.dbus.pending.push_back({kUart + UART_DATA_Offset, true, 0x1, static_cast<uint8_t>(c)});
+  for (char c : std::string("ok")) to_soc.push(static_cast<uint8_t>(c));
+  clock(3 * 10 * kDiv + 200);
+  EXPECT_EQ(heard, "hi\n");
+  EXPECT_EQ(from_soc.framing_errors(), 0u);
+  soc.dbus.responses.clear();
+  EXPECT_EQ(soc.read(kUart + UART_DATA_Offset).rdata, static_cast<uint32_t>('o'));
+  EXPECT_EQ(soc.read(kUart + UART_DATA_Offset).rdata, static_cast<uint32_t>('k'));
+
+  // A frame whose stop bit is 0: dropped, RX_FRAME_ERR set until written with a one.
+  const uint8_t byte = 0x5A;
+  const int bits[10] = {0, byte & 1, (byte >> 1) & 1, (byte >> 2) & 1, (byte >> 3) & 1, (byte >> 4) & 1,
+                        (byte >> 5) & 1, (byte >> 6) & 1, (byte >> 7) & 1, 0};
+  for (int b : bits) {
+    for (uint32_t k = 0; k < kDiv; ++k) {
+      soc.uart_rx = b;
+      soc.step();
+    }
+  }
+  soc.uart_rx = true;
+  for (int i = 0; i < 4 * static_cast<int>(kDiv); ++i) soc.step();
+  const uint32_t st = soc.read(kUart + UART_STATUS_Offset).rdata;
+  EXPECT_TRUE(st & UART_STATUS_RX_FRAME_ERR_Msk);
+  EXPECT_FALSE(st & UART_STATUS_RX_VALID_Msk);
+  soc.write(kUart + UART_STATUS_Offset, UART_STATUS_RX_FRAME_ERR_Msk);
+  EXPECT_FALSE(soc.read(kUart + UART_STATUS_Offset).rdata & UART_STATUS_RX_FRAME_ERR_Msk);
+}
+
+TEST_P(FabricTest, TimerCountsAndCompares) {
+  const uint32_t t0 = soc.read(kTimer + TIMER_MTIME_LO_Offset).rdata;
+  for (int i = 0; i < 100; ++i) soc.step();
+  const uint32_t t1 = soc.read(kTimer + TIMER_MTIME_LO_Offset).rdata;
+  EXPECT_GE(t1 - t0, 100u);
+  EXPECT_EQ(soc.read(kTimer + TIMER_STATUS_Offset).rdata & TIMER_STATUS_MATCH_Msk, 0u);  // compare resets to all ones
+
+  // A carry from the low into the high word.
+  soc.write(kTimer + TIMER_MTIME_HI_Offset, 0);
+  soc.write(kTimer + TIMER_MTIME_LO_Offset, 0xFFFF'FFF0u);
+  for (int i = 0; i < 40; ++i) soc.step();
+  EXPECT_EQ(soc.read(kTimer + TIMER_MTIME_HI_Offset).rdata, 1u);
+
+  const uint32_t now = soc.read(kTimer + TIMER_MTIME_LO_Offset).rdata;
+  soc.write(kTimer + TIMER_MTIMECMP_LO_Offset, now + 300);
+  soc.write(kTimer + TIMER_MTIMECMP_HI_Offset, 1);
+  soc.write(kTimer + TIMER_MTIMECMP_LO_Offset, 0x1234, 0x1);  // partial writes are ignored
+  EXPECT_EQ(soc.read(kTimer + TIMER_MTIMECMP_LO_Offset).rdata, now + 300);
+  soc.write(kTimer + TIMER_CTRL_Offset, TIMER_CTRL_ENABLE_Msk | TIMER_CTRL_IRQ_ENABLE_Msk);
+  EXPECT_EQ(soc.read(kTimer + TIMER_STATUS_Offset).rdata & TIMER_STATUS_MATCH_Msk, 0u);
+  EXPECT_FALSE(soc.timer_irq());
+  int waited = 0;
+  while (!soc.timer_irq() && waited < 2000) {
+    soc.step();
+    ++waited;
+  }
+  EXPECT_TRUE(soc.timer_irq());
+  EXPECT_EQ(soc.read(kTimer + TIMER_STATUS_Offset).rdata & TIMER_STATUS_MATCH_Msk, TIMER_STATUS_MATCH_Msk);
+  const uint32_t at = soc.read(kTimer + TIMER_MTIME_LO_Offset).rdata;
+  EXPECT_GE(at - now, 300u);
+
+  soc.write(kTimer + TIMER_CTRL_Offset, 0);  // stopped: the counter holds
+  const uint32_t held = soc.read(kTimer + TIMER_MTIME_LO_Offset).rdata;
+  for (int i = 0; i < 50; ++i) soc.step();
+  EXPECT_EQ(soc.read(kTimer + TIMER_MTIME_LO_Offset).rdata, held);
+  EXPECT_FALSE(soc.timer_irq());
+}
+
+// Random traffic on both ports at once, checked against a model of memory: responses arrive in
+// request order with the right data, whatever the wait states.
+TEST_P(FabricTest, RandomTrafficOnBothPortsMatchesTheModel) {
+  std::vector<uint32_t> model(1024);
+  uint32_t s = 12345u + static_cast<uint32_t>(GetParam());
+  for (uint32_t i = 0; i < model.size(); ++i) {
+    model[i] = lcg(s);
+    soc.dbus.pending.push_back({0x4000u + 4u * i, true, 0xF, model[i]});
+  }
+  ASSERT_TRUE(soc.drain());
+  soc.ibus.responses.clear();
+  soc.dbus.responses.clear();
+
+  struct Expect {
+    uint32_t rdata;
+    bool err;
+    bool check_data;
+  };
+  std::vector<Expect> want_i, want_d;
+  uint32_t scratch = soc.read(kSys + SYSCTRL_SCRATCH_Offset).rdata;
+  soc.dbus.responses.clear();
+  for (int n = 0; n < 3000; ++n) {
+    const uint32_t r = lcg(s);
+    const uint32_t w = (r >> 8) % 512;  // the instruction port reads words 0..511, data writes 512..1023
+    soc.ibus.pending.push_back({0x4000u + 4u * w});
+    want_i.push_back({model[w], false, true});
+    switch (r % 5) {
+      case 0: {
+        const uint32_t d = 512 + (r >> 16) % 512;
+        const uint32_t v = lcg(s);
+        soc.dbus.pending.push_back({0x4000u + 4u * d, true, 0xF, v});
+        model[d] = v;
+        want_d.push_back({0, false, false});
+        break;
+      }
+      case 1: {
+        const uint32_t d = 512 + (r >> 16) % 512;
+        soc.dbus.pending.push_back({0x4000u + 4u * d});
+        want_d.push_back({model[d], false, true});
+        break;
+      }
+      case 2:
+        soc.dbus.pending.push_back({kSys + SYSCTRL_SCRATCH_Offset, true, 0xF, r});
+        scratch = r;
+        want_d.push_back({0, false, false});
+        break;
+      case 3:
+        soc.dbus.pending.push_back({kSys + SYSCTRL_SCRATCH_Offset});
+        want_d.push_back({scratch, false, true});
+        break;
+      default:
+        soc.dbus.pending.push_back({0x1000'0000u + (r & 0xFFC)});
+        want_d.push_back({0, true, true});
+        break;
+    }
+  }
+  const uint64_t start = soc.cycle();
+  ASSERT_TRUE(soc.drain(400000));
+  ASSERT_EQ(soc.ibus.responses.size(), want_i.size());
+  ASSERT_EQ(soc.dbus.responses.size(), want_d.size());
+  for (size_t i = 0; i < want_i.size(); ++i) {
+    ASSERT_EQ(soc.ibus.responses[i].rdata, want_i[i].rdata) << "ibus response " << i;
+  }
+  for (size_t i = 0; i < want_d.size(); ++i) {
+    ASSERT_EQ(soc.dbus.responses[i].err, want_d[i].err) << "dbus response " << i;
+    if (want_d[i].check_data) ASSERT_EQ(soc.dbus.responses[i].rdata, want_d[i].rdata) << "dbus response " << i;
+  }
+  if (GetParam() != 0) {
+    EXPECT_GT(soc.cycle() - start, 3000u * 3 / 2) << "stall injection should have slowed the traffic";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Stalls, FabricTest, ::testing::Values(0, 1, 7, 1234),
+                         [](const ::testing::TestParamInfo<int>& p) {
+                           return p.param == 0 ? std::string("nostall") : "seed" + std::to_string(p.param);
+                         });
+
+}  // namespace
