@@ -65,9 +65,7 @@ TriangleUnit::TriangleUnit(const fw::TriangleRecord& rec, const TriState& state,
 
 int64_t TriangleUnit::divide(i128 num, i128 q, const RecipParams& p) const {
   if (q < 1) q = 1;  // cannot happen inside a triangle with positive vertex q; defined anyway
-  const Reciprocal r = reciprocal(p, static_cast<u128>(q));
-  return static_cast<int64_t>(
-      shift_round(mul_checked(num, static_cast<i128>(r.value)), r.shift - static_cast<int>(cfg_.texcoord_frac_bits)));
+  return divide_fixed(p, num, q, cfg_.texcoord_frac_bits);
 }
 
 uint32_t TriangleUnit::depth_at(int64_t px, int64_t py) const {
@@ -157,12 +155,11 @@ void TriangleUnit::span_divide(int64_t py, int x0, int x1, const RecipParams& p,
   const int64_t px0 = 256 * int64_t{x0} + 128;
   i128 q = q_.at(px0, py), u = uq_.at(px0, py), v = vq_.at(px0, py);
   const i128 sq = 256 * q_.gx, su = 256 * uq_.gx, sv = 256 * vq_.gx;
-  const int tf = static_cast<int>(cfg_.texcoord_frac_bits);
   for (size_t k = 0; k < out->u.size(); ++k) {
-    // One reciprocal of q per pixel serves both axes.
-    const Reciprocal r = reciprocal(p, static_cast<u128>(q < 1 ? 1 : q));
-    out->u[k] = static_cast<int64_t>(shift_round(mul_checked(u, static_cast<i128>(r.value)), r.shift - tf));
-    out->v[k] = static_cast<int64_t>(shift_round(mul_checked(v, static_cast<i128>(r.value)), r.shift - tf));
+    // One reciprocal of q per pixel serves both axes (divide_fixed recomputes it for v only
+    // because the model has no state; the value is the same).
+    out->u[k] = divide(u, q, p);
+    out->v[k] = divide(v, q, p);
     q += sq;
     u += su;
     v += sv;

@@ -39,4 +39,15 @@ Reciprocal reciprocal(const RecipParams& p, u128 x) {
   return {recip_mantissa(p, m), static_cast<int>(p.width) + msb};
 }
 
+int64_t divide_fixed(const RecipParams& p, i128 num, i128 den, unsigned frac_bits) {
+  if (den < 1) throw std::logic_error("divider: denominator must be positive");
+  int msb = 0;
+  const uint64_t m = normalise(static_cast<u128>(den), p.width, &msb);
+  const int s = msb - static_cast<int>(p.width - 1);
+  const i128 n = s > 0 ? shift_round(num, s) : mul_checked(num, static_cast<i128>(1) << -s);
+  const uint64_t r = recip_mantissa(p, m);
+  return static_cast<int64_t>(shift_round(mul_checked(n, static_cast<i128>(r)),
+                                          2 * static_cast<int>(p.width) - 1 - static_cast<int>(frac_bits)));
+}
+
 }  // namespace htx::model

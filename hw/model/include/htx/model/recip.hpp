@@ -35,4 +35,10 @@ Reciprocal reciprocal(const RecipParams& p, u128 x);
 // Normalised W-bit mantissa of x > 0 (truncated) and the position of its leading one.
 uint64_t normalise(u128 x, unsigned width, int* msb);
 
+// The divider: num / den (den > 0) as signed fixed point with frac_bits fraction bits. den is
+// normalised to its W-bit mantissa M by a shift s (den ~ M 2^s); num is shifted by the same s
+// (rounded), so the multiplier sees num' = round(num 2^-s) of about (quotient bits + W) bits, and
+// the result is round(num' R 2^(frac_bits - 2W + 1)).
+int64_t divide_fixed(const RecipParams& p, i128 num, i128 den, unsigned frac_bits);
+
 }  // namespace htx::model
