@@ -9,6 +9,7 @@
 
 #include "htx/fw/vertex_record.h"
 #include "htx/model/lod.hpp"
+#include "htx/model/names.hpp"
 #include "htx/model/perspective.hpp"
 #include "htx/model/raster_setup.hpp"
 #include "htx/model/recip.hpp"
@@ -21,19 +22,6 @@ namespace {
 using model::i128;
 
 constexpr int kMaxScreen = 4096;
-
-const char* method_label(Method m) {
-  switch (m) {
-    case Method::Affine: return "affine";
-    case Method::Subdiv: return "subdiv";
-    case Method::RecipLut: return "recip_lut";
-    case Method::RecipNr: return "recip_nr";
-    case Method::DivFree: return "divfree";
-    case Method::Quadratic: return "quadratic";
-    case Method::Auto: return "auto";
-  }
-  return "?";
-}
 
 bool depth_pass(DepthFunc f, uint32_t z, uint32_t stored) {
   switch (f) {
@@ -76,19 +64,19 @@ fw::VertexIn to_vertex_in(const ScreenVertex& v) {
 void check_state(const ScreenScene& scene, const ScreenTri& tri, const ModelConfig& cfg, Method method) {
   const TriState& st = tri.state;
   if (!cfg.has_method(method))
-    throw std::invalid_argument(std::string("method ") + method_label(method) + " is not built in configuration " +
+    throw std::invalid_argument("method " + method_name(method, st.subdiv_n) + " is not built in configuration " +
                                 cfg.name);
   if ((method == Method::Subdiv || method == Method::Quadratic) && (st.subdiv_n < 2 || st.subdiv_n > 64))
     throw std::invalid_argument("subdiv_n " + std::to_string(st.subdiv_n) + " outside 2..64");
   if (!st.textured) return;
   if (!cfg.has_filter(st.filter))
-    throw std::invalid_argument("filter " + std::to_string(static_cast<int>(st.filter)) +
-                                " is not built in configuration " + cfg.name);
+    throw std::invalid_argument("filter " + std::string(filter_name(st.filter)) + " is not built in configuration " +
+                                cfg.name);
   if (st.texture < 0 || static_cast<size_t>(st.texture) >= scene.textures.size())
     throw std::invalid_argument("triangle names missing texture " + std::to_string(st.texture));
   const Texture& tex = scene.textures[static_cast<size_t>(st.texture)];
   if (!cfg.has_format(tex.format))
-    throw std::invalid_argument("texture format " + std::to_string(static_cast<int>(tex.format)) +
+    throw std::invalid_argument("texture format " + std::string(tex_format_name(tex.format)) +
                                 " is not built in configuration " + cfg.name);
   if (tex.log2_width < kMinTexLog2 || tex.log2_width > kMaxTexLog2 || tex.log2_height < kMinTexLog2 ||
       tex.log2_height > kMaxTexLog2 || tex.levels.size() < level_count(tex))
