@@ -1,6 +1,6 @@
 // `wsweep`: one triangle whose depth goes from w_near = 1 along its left edge to w_far = r at its
 // right apex, with u going from 0 to du. 1/w and u/w then depend on screen x only, so every row
-// sees the same span, and affine interpolation errs by at most du*(sqrt(r)-1)/(sqrt(r)+1) texels.
+// sees the same u(x), and affine interpolation errs by up to du*(sqrt(r)-1)/(sqrt(r)+1) texels.
 // The projection uses a fixed 4:3 aspect so the screen extent of the triangle is known: its left
 // edge is at x_ndc = -0.9, its apex at x_ndc = +0.9, y_ndc within +-0.9.
 #include <cmath>
