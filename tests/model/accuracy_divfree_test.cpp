@@ -1,10 +1,7 @@
 // DIVFREE (nearest): the same texel as ref's nearest sampling on at least 99.9 % of the pixels both
 // cover, on every built-in scene, and its iteration cap bounds the steps of every pixel.
-//
-// Known model failure (reported to the model engineer): on `wsweep:r=1` (u = (x - 16) * 8/9, so
-// every ninth pixel centre has an exactly integer u) DIVFREE resolves exact ties to the upper texel
-// (u = 4 gives texel 4, centre 4.5), while the project's nearest rule (and reference 004's
-// conditions u - du/2 <= q < u + du/2) sends them to the lower one: 88.9 % instead of >= 99.9 %.
+// `wsweep:r=1` has an exactly integer u at every ninth pixel centre (u = (x - 16) * 8/9): exact ties
+// must go to the lower texel, as in nearest sampling.
 #include <gtest/gtest.h>
 
 #include <cmath>
