@@ -1,0 +1,66 @@
+# One design of the synthesis report (cmake -P; see HtxSynth.cmake). Writes OUT: {"lut4", "dsp",
+# "ebr", "spram", "fmax_mhz", "area_top", "pnr_top", "target_mhz"}; logs and netlists stay in WORK.
+foreach(v NAME AREA_TOP PNR_TOP FREQ AREA_SOURCES PNR_SOURCES WORK YOSYS NEXTPNR OUT)
+  if(NOT DEFINED ${v} OR "${${v}}" STREQUAL "")
+    message(FATAL_ERROR "HtxSynthRun: ${v} is not set (is yosys / nextpnr-ice40 installed?)")
+  endif()
+endforeach()
+file(MAKE_DIRECTORY ${WORK})
+string(REPLACE "|" " " area_files "${AREA_SOURCES}")
+string(REPLACE "|" " " pnr_files "${PNR_SOURCES}")
+
+function(run_yosys top files stat_json netlist log)
+  set(script "read_verilog -sv ${files}; synth_ice40 -dsp -top ${top}")
+  if(netlist)
+    string(APPEND script " -json ${netlist}")
+  endif()
+  string(APPEND script "; tee -q -o ${stat_json} stat -json")
+  execute_process(COMMAND ${YOSYS} -q -l ${log} -p "${script}" RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "synth-report ${NAME}: yosys failed for ${top}; see ${log}")
+  endif()
+endfunction()
+
+function(cell_count stat_json cell out)
+  file(READ ${stat_json} text)
+  string(JSON n ERROR_VARIABLE err GET "${text}" design num_cells_by_type ${cell})
+  if(err)
+    set(n 0)
+  endif()
+  set(${out} ${n} PARENT_SCOPE)
+endfunction()
+
+set(area_stat ${WORK}/${NAME}.area.stat.json)
+run_yosys(${AREA_TOP} "${area_files}" ${area_stat} "" ${WORK}/${NAME}.area.yosys.log)
+cell_count(${area_stat} SB_LUT4 lut4)
+cell_count(${area_stat} SB_MAC16 dsp)
+cell_count(${area_stat} SB_RAM40_4K ebr)
+cell_count(${area_stat} SB_SPRAM256KA spram)
+
+set(netlist ${WORK}/${NAME}.pnr.netlist.json)
+run_yosys(${PNR_TOP} "${pnr_files}" ${WORK}/${NAME}.pnr.stat.json ${netlist} ${WORK}/${NAME}.pnr.yosys.log)
+set(pnr_report ${WORK}/${NAME}.nextpnr.json)
+execute_process(COMMAND ${NEXTPNR} --up5k --package sg48 --json ${netlist} --freq ${FREQ}
+    --pcf-allow-unconstrained --timing-allow-fail --seed 1 --report ${pnr_report} -q
+    -l ${WORK}/${NAME}.nextpnr.log
+  RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "synth-report ${NAME}: nextpnr-ice40 failed; see ${WORK}/${NAME}.nextpnr.log")
+endif()
+file(READ ${pnr_report} report)
+# The design's one clock: the lowest achieved frequency over the clocks nextpnr reports.
+string(JSON nclk LENGTH "${report}" fmax)
+set(fmax "")
+math(EXPR last "${nclk} - 1")
+foreach(i RANGE ${last})
+  string(JSON clk MEMBER "${report}" fmax ${i})
+  string(JSON achieved GET "${report}" fmax ${clk} achieved)
+  if(fmax STREQUAL "" OR achieved LESS fmax)
+    set(fmax ${achieved})
+  endif()
+endforeach()
+# Two decimals.
+string(REGEX MATCH "^[0-9]+(\\.[0-9]?[0-9]?)?" fmax "${fmax}")
+
+file(WRITE ${OUT} "{\"lut4\": ${lut4}, \"dsp\": ${dsp}, \"ebr\": ${ebr}, \"spram\": ${spram}, \"fmax_mhz\": ${fmax}, \"area_top\": \"${AREA_TOP}\", \"pnr_top\": \"${PNR_TOP}\", \"target_mhz\": ${FREQ}}")
+message(STATUS "synth-report ${NAME}: ${lut4} LUT4, ${dsp} DSP, ${ebr} EBR, ${spram} SPRAM, ${fmax} MHz")
