@@ -184,5 +184,29 @@ TEST(Lod, IsotropicLodOfKnownScales) {
   EXPECT_EQ(compute_lod(unit, in, 8), INT32_MIN);
 }
 
+TEST(Lod, BlockFloatingGradientsKeepTheLod) {
+  const Log2Unit unit(10, 10);
+  LodInputs in;
+  in.q = i128{1} << 50;
+  in.u = 123456;
+  in.v = -98765;
+  in.gux = (i128{3} << 50) / 256 + 12345;
+  in.gvy = (i128{7} << 49) / 256 - 999;
+  in.gqx = (i128{1} << 50) / 3000;
+  in.gqy = -(i128{1} << 50) / 7000;
+  const int32_t exact = compute_lod(unit, in, 8);
+  const i128 g[6] = {in.gux, in.guy, in.gvx, in.gvy, in.gqx, in.gqy};
+  const int s = lod_gradient_shift(g, 16);
+  EXPECT_EQ(s, msb_index(static_cast<u128>(in.gux)) + 2 - 16);
+  for (i128 x : g) EXPECT_LT(abs128(x >> s), i128{1} << 15);
+  LodInputs b = in;
+  b.gux = in.gux >> s, b.guy = in.guy >> s, b.gvx = in.gvx >> s, b.gvy = in.gvy >> s;
+  b.gqx = in.gqx >> s, b.gqy = in.gqy >> s;
+  b.grad_shift = s;
+  EXPECT_NEAR(compute_lod(unit, b, 8), exact, 2);
+  const i128 small[6] = {5, -3, 0, 0, 1, 0};
+  EXPECT_EQ(lod_gradient_shift(small, 16), 0);
+}
+
 }  // namespace
 }  // namespace htx::model

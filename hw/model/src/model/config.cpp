@@ -31,6 +31,7 @@ ModelConfig make_icebreaker() {
   c.divfree_cap = 64;
   c.lod_frac_bits = 6;
   c.lod_log_index_bits = 6;
+  c.lod_grad_bits = 16;
   c.methods = 0x3F;
   c.filters = (1u << static_cast<unsigned>(Filter::Nearest)) | (1u << static_cast<unsigned>(Filter::Bilinear));
   c.formats = (1u << static_cast<unsigned>(TexFormat::RGB565)) | (1u << static_cast<unsigned>(TexFormat::RGBA4444));
@@ -69,6 +70,7 @@ void ModelConfig::validate() const {
   check(divfree_cap >= 1 && divfree_cap <= 4096, "divfree_cap", "1..4096");
   check(lod_frac_bits >= 4 && lod_frac_bits <= 8, "lod_frac_bits", "4..8");
   check(lod_log_index_bits >= 4 && lod_log_index_bits <= 12, "lod_log_index_bits", "4..12");
+  check(lod_grad_bits >= 12 && lod_grad_bits <= 32, "lod_grad_bits", "12..32");
   check(filter_weight_bits == 8, "filter_weight_bits", "8");
 }
 

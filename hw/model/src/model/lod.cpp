@@ -37,6 +37,12 @@ int64_t Log2Unit::log2(u128 x) const {
   return (static_cast<int64_t>(p) << out_frac_bits_) + table_[idx];
 }
 
+int lod_gradient_shift(const i128 (&gradients)[6], unsigned bits) {
+  i128 big = 0;
+  for (i128 g : gradients) big = std::max(big, abs128(g));
+  return std::max(0, msb_index(static_cast<u128>(big)) + 2 - static_cast<int>(bits));
+}
+
 int32_t compute_lod(const Log2Unit& unit, const LodInputs& in, unsigned lod_frac_bits) {
   const unsigned f = in.tex_frac_bits;
   // Numerators of the four derivatives, each (G * 2^f - coord * Gq): per subpixel, scaled by
@@ -57,8 +63,8 @@ int32_t compute_lod(const Log2Unit& unit, const LodInputs& in, unsigned lod_frac
   const u128 lx = sq(nux) + sq(nvx), ly = sq(nuy) + sq(nvy);
   const u128 len2 = std::max(lx, ly);
   const unsigned of = unit.out_frac_bits();
-  // log2 rho = log2(len2)/2 + s + 8 - f - log2(q)
-  const int64_t l = (unit.log2(len2) >> 1) + (static_cast<int64_t>(s + 8) << of) -
+  // log2 rho = log2(len2)/2 + s + grad_shift + 8 - f - log2(q)
+  const int64_t l = (unit.log2(len2) >> 1) + (static_cast<int64_t>(s + in.grad_shift + 8) << of) -
                     (static_cast<int64_t>(f) << of) - unit.log2(static_cast<u128>(in.q));
   const unsigned drop = of - lod_frac_bits;
   const int64_t r = drop ? (l + (int64_t{1} << (drop - 1))) >> drop : l;

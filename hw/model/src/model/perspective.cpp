@@ -58,6 +58,9 @@ TriangleUnit::TriangleUnit(const fw::TriangleRecord& rec, const TriState& state,
   ua_ = make_plane(setup_, ua, d, gf);
   va_ = make_plane(setup_, va, d, gf);
   grid_bits_ = state.filter == Filter::Nearest ? 0 : cfg.divfree_frac_bits;
+  const i128 g[6] = {uq_.gx, uq_.gy, vq_.gx, vq_.gy, q_.gx, q_.gy};
+  lod_shift_ = lod_gradient_shift(g, cfg.lod_grad_bits);
+  for (int i = 0; i < 6; ++i) lod_grad_[i] = g[i] >> lod_shift_;
   // Estimate: edge and determinant arithmetic, one division for 1/det, 6 for the affine vertex
   // coordinates, then 9 planes x 2 gradients through one multiplier pair.
   setup_cycles_ = 8 + 7 * uint64_t{cfg.recip_issue_interval} + 18;
@@ -92,12 +95,13 @@ Rgba8 TriangleUnit::flat_color() const {
 int32_t TriangleUnit::lod_at(const Log2Unit& unit, int64_t px, int64_t py, int64_t u, int64_t v) const {
   LodInputs in;
   in.q = std::max<i128>(q_.at(px, py), 1);
-  in.gux = uq_.gx;
-  in.guy = uq_.gy;
-  in.gvx = vq_.gx;
-  in.gvy = vq_.gy;
-  in.gqx = q_.gx;
-  in.gqy = q_.gy;
+  in.gux = lod_grad_[0];
+  in.guy = lod_grad_[1];
+  in.gvx = lod_grad_[2];
+  in.gvy = lod_grad_[3];
+  in.gqx = lod_grad_[4];
+  in.gqy = lod_grad_[5];
+  in.grad_shift = lod_shift_;
   in.u = u;
   in.v = v;
   in.tex_frac_bits = cfg_.texcoord_frac_bits;

@@ -47,6 +47,9 @@ struct ModelConfig {
   // LOD: fractional bits of the LOD, and index bits of the log2 table (log2(1+f), midpoint entries).
   unsigned lod_frac_bits = 8;
   unsigned lod_log_index_bits = 10;
+  // The LOD unit takes the six plane gradients (uq, vq, q along x and y) in a per-triangle block
+  // floating-point form: all shifted right by one common amount so the largest has this many bits.
+  unsigned lod_grad_bits = 24;
 
   unsigned filter_weight_bits = 8;  // bilinear and trilinear weights (fixed by the texture unit)
 

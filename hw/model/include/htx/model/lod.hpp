@@ -25,16 +25,22 @@ class Log2Unit {
   std::vector<uint32_t> table_;
 };
 
-// Inputs of the LOD unit at one pixel. Gradients are per subpixel scaled by 2^grad_frac_bits, the
-// accumulators q and the coordinates u, v (local, before the texel offset) carry tex_frac_bits.
+// Inputs of the LOD unit at one pixel. Gradients are per subpixel scaled by 2^(grad_frac_bits -
+// grad_shift) (see lod_gradient_shift), the accumulator q by 2^grad_frac_bits, the coordinates u, v
+// (local, before the texel offset) carry tex_frac_bits.
 struct LodInputs {
   i128 q = 0;               // Q plane accumulator (> 0)
   i128 gux = 0, guy = 0;    // uq plane gradients
   i128 gvx = 0, gvy = 0;    // vq plane gradients
   i128 gqx = 0, gqy = 0;    // q plane gradients
+  int grad_shift = 0;       // the gradients above were shifted right by this much
   int64_t u = 0, v = 0;     // local texel coordinates with tex_frac_bits
   unsigned tex_frac_bits = 16;
 };
+
+// The per-triangle block exponent: the right shift that leaves the largest of the six gradients
+// with at most `bits` bits including the sign (0 when they already fit).
+int lod_gradient_shift(const i128 (&gradients)[6], unsigned bits);
 
 // LOD with lod_frac_bits fractional bits (may be negative: magnification). The unit's log tables run
 // two bits finer than the result, which is rounded to nearest. Returns INT32_MIN when both

@@ -75,6 +75,8 @@ class TriangleUnit {
   RecipParams setup_recip_, pixel_nr_, pixel_lut_;
   Plane z_, q_, uq_, vq_, ua_, va_;
   Plane color_[4];
+  i128 lod_grad_[6] = {};  // uq x, uq y, vq x, vq y, q x, q y after the block shift
+  int lod_shift_ = 0;
   uint64_t setup_cycles_ = 0;
   unsigned grid_bits_ = 0;
   // DIVFREE position carried between spans: grid indices at the previous span's first pixel and
