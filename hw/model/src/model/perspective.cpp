@@ -241,11 +241,13 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
   const int64_t px0 = 256 * int64_t{x0} + 128;
   i128 q = q_.at(px0, py), u = uq_.at(px0, py), v = vq_.at(px0, py);
   const i128 sq = 256 * q_.gx, su = 256 * uq_.gx, sv = 256 * vq_.gx;
-  // Trilinear tracks on the grid of the mip level the LOD unit picks at the span's first pixel
-  // (from the previous span's grid position; the first span from the setup division), so the steps
-  // per pixel stay near 2^f whatever the minification. A level change rescales the carried index.
+  // Bilinear and trilinear track on the grid of the mip level the LOD unit picks at the span's
+  // first pixel (from the previous span's grid position; the first span from the setup division),
+  // so the steps per pixel stay near 2^f whatever the minification. (Bilinear still samples level 0;
+  // its coordinate is then as coarse as the minification.) A level change rescales the carried
+  // index. Nearest always tracks whole level-0 texels: it must find the exact texel.
   unsigned level = df_level_;
-  if (state_.filter == Filter::Trilinear && log2_ != nullptr) {
+  if (state_.filter != Filter::Nearest && log2_ != nullptr) {
     int64_t cu, cv;
     if (df_started_) {
       cu = grid_coord(df_ju_, df_level_);
