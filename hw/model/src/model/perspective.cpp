@@ -267,6 +267,8 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
       df_jv_ = rescale(df_jv_);
       df_du_ = rescale(df_du_);
       df_dv_ = rescale(df_dv_);
+      df_slope_u_ = rescale(df_slope_u_);
+      df_slope_v_ = rescale(df_slope_v_);
     }
     df_level_ = level;
   }
@@ -284,9 +286,14 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
   const auto exact_v = [&] { return divfree_exact_index(v, q, f, level, p_bits); };
   int64_t ju = 0, jv = 0, du = 0, dv = 0;
   uint64_t cycles = 1;
+  // The x shift of the span start times the previous span's slope (cells per pixel, 16 fraction
+  // bits) predicts the part of the movement that comes from moving along the row.
+  const int64_t shift_x = x0 - df_x0_;
+  const int64_t along_u = (shift_x * df_slope_u_ + (int64_t{1} << 15)) >> 16;
+  const int64_t along_v = (shift_x * df_slope_v_ + (int64_t{1} << 15)) >> 16;
   if (df_started_ && !df_resync_) {
-    ju = df_ju_ + df_du_;
-    jv = df_jv_ + df_dv_;
+    ju = df_ju_ + df_du_ + along_u;
+    jv = df_jv_ + df_dv_ + along_v;
   } else {
     ju = exact_u();
     jv = exact_v();
@@ -297,6 +304,9 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
     df_started_ = true;
     df_resync_ = false;
   }
+  const size_t n = out->u.size();
+  const size_t slope_from = n > 65 ? n - 65 : 0;  // the slope spans at most the last 64 pixels
+  int64_t slope_ju = 0, slope_jv = 0;
   // Move j toward the exact index one grid step at a time, at most `cap` steps: identical to
   // reference 004's loop "while N < 0: j -= 1; while M >= 0: j += 1" on the integer conditions
   // of divfree_exact_index (N and M step by constants in x and by multiples of Q in j).
@@ -327,22 +337,34 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
     cycles += static_cast<uint64_t>(std::max<int64_t>(1, std::max(su_n, sv_n)));  // both axes step in parallel
     resync = out->divfree_capped[k] != 0;
     if (k == 0) {
-      // Movement between the first pixels of consecutive spans, for the next span's prediction.
-      df_du_ = ju - df_ju_;
-      df_dv_ = jv - df_jv_;
+      // Movement between the first pixels of consecutive spans beyond the x-shift part, for the
+      // next span's prediction.
+      df_du_ = ju - df_ju_ - along_u;
+      df_dv_ = jv - df_jv_ - along_v;
       df_ju_ = ju;
       df_jv_ = jv;
+      df_x0_ = x0;
       df_resync_ = resync;
       du = dv = 0;
     } else {
       du = ju - prev_u;
       dv = jv - prev_v;
     }
+    if (k == slope_from) {
+      slope_ju = ju;
+      slope_jv = jv;
+    }
     out->u[k] = grid_coord(ju, level);
     out->v[k] = grid_coord(jv, level);
     q += sq;
     u += su;
     v += sv;
+  }
+  if (n >= 2) {
+    // Slope over the span's last (up to 64) pixels, with the reciprocal-of-length table of SUBDIV.
+    const int64_t len = static_cast<int64_t>(n - 1 - slope_from);
+    df_slope_u_ = (ju - slope_ju) * inverse_length(len);
+    df_slope_v_ = (jv - slope_jv) * inverse_length(len);
   }
   out->cycles = cycles;
   (void)x1;

@@ -85,6 +85,8 @@ class TriangleUnit {
   mutable int64_t df_ju_ = 0, df_jv_ = 0, df_du_ = 0, df_dv_ = 0;
   mutable unsigned df_level_ = 0;
   mutable bool df_resync_ = false;  // the previous span's first pixel hit the cap
+  mutable int64_t df_x0_ = 0;       // first x of the previous span
+  mutable int64_t df_slope_u_ = 0, df_slope_v_ = 0;  // cells per pixel, 16 fraction bits
 };
 
 // AUTO: the firmware's choice for one triangle (modelled from the ScreenVertex doubles, as the
