@@ -2,9 +2,12 @@
 // Gouraud and flat colour, texture combine (replace, modulate), RGB565 output.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "htx/model/model.hpp"
+#include "htx/model/perspective.hpp"
 #include "htx/model/texture.hpp"
 
 namespace htx {
@@ -169,6 +172,53 @@ TEST(Fragment, UnbuiltFeaturesAreRejectedClearly) {
   EXPECT_THROW(model_config("nosuch"), std::invalid_argument);
   sc.width = 0;
   EXPECT_THROW(render_model(sc, model_config("full")), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace htx
+
+namespace htx {
+namespace {
+
+TEST(Trilinear, ProbeLevelFollowsTheLod) {
+  // A receding textured quad: the LOD grows towards the top of the screen.
+  std::vector<uint8_t> px(64 * 64 * 4);
+  for (size_t i = 0; i < px.size(); ++i) px[i] = static_cast<uint8_t>(i * 37);
+  ScreenScene sc;
+  sc.width = 64;
+  sc.height = 64;
+  sc.textures.push_back(make_texture(TexFormat::RGB565, 6, 6, px));
+  ScreenTri t;
+  t.state.filter = Filter::Trilinear;
+  t.state.depth_func = DepthFunc::Always;
+  auto vtx = [](double x, double y, double w, double u, double v) {
+    return ScreenVertex{x, y, 0.5, w, u, v, 1, 1, 1, 1};
+  };
+  t.v = {vtx(0, 64, 1, 0, 0), vtx(64, 64, 1, 64, 0), vtx(24, 0, 40, 0, 2048)};
+  sc.tris.push_back(t);
+  const Frame f = render_model(sc, model_config("full"));
+  int levels_seen = 0, last = -1;
+  uint64_t covered = 0;
+  for (const PixelProbe& p : f.probe) {
+    if (!p.covered) continue;
+    ++covered;
+    const int want = std::min(6, std::max(0, static_cast<int>(std::floor(p.lod))));
+    ASSERT_EQ(p.level, want) << p.lod;
+    if (p.level != last) ++levels_seen, last = p.level;
+  }
+  EXPECT_GT(covered, 1000u);
+  EXPECT_GE(levels_seen, 3);
+}
+
+TEST(Auto, AffineWhenFlatAndADivisionUnderPerspective) {
+  ScreenTri t;
+  t.v = {ScreenVertex{0, 0, 0, 1, 0, 0}, ScreenVertex{100, 0, 0, 1, 64, 0}, ScreenVertex{0, 100, 0, 1, 0, 64}};
+  EXPECT_EQ(model::auto_method(t, model_config("full")), Method::Affine);
+  t.v[2].w = 4;
+  EXPECT_EQ(model::auto_method(t, model_config("full")), Method::RecipNr);
+  ModelConfig no_nr = model_config("full");
+  no_nr.methods &= ~(1u << static_cast<unsigned>(Method::RecipNr));
+  EXPECT_EQ(model::auto_method(t, no_nr), Method::RecipLut);
 }
 
 }  // namespace
