@@ -223,3 +223,47 @@ TEST(Auto, AffineWhenFlatAndADivisionUnderPerspective) {
 
 }  // namespace
 }  // namespace htx
+
+namespace htx {
+namespace {
+
+TEST(Fragment, GouraudScreenLinearOrPerspectiveCorrect) {
+  ScreenScene sc;
+  sc.width = 64;
+  sc.height = 64;
+  ScreenTri t;
+  t.state.textured = false;
+  t.state.depth_func = DepthFunc::Always;
+  const double xs[3] = {2, 62, 2}, ys[3] = {2, 2, 62}, ws[3] = {1, 8, 3}, rs[3] = {0, 1, 0.25};
+  for (int i = 0; i < 3; ++i) t.v[i] = ScreenVertex{xs[i], ys[i], 0, ws[i], 0, 0, rs[i], 0, 0, 1};
+  sc.tris = {t};
+  for (bool persp : {false, true}) {
+    ModelConfig cfg = model_config("full");
+    cfg.perspective_color = persp;
+    const Frame f = render_model(sc, cfg);
+    int worst = 0;
+    for (int y = 3; y < 60; y += 3)
+      for (int x = 3; x < 60 - y; x += 3) {
+        const double px = x + 0.5, py = y + 0.5;
+        const double l1 = (px - 2) / 60, l2 = (py - 2) / 60, l0 = 1 - l1 - l2;  // screen barycentrics
+        double r;
+        if (persp) {
+          const double q0 = l0 / ws[0], q1 = l1 / ws[1], q2 = l2 / ws[2];
+          r = (q0 * rs[0] + q1 * rs[1] + q2 * rs[2]) / (q0 + q1 + q2);
+        } else {
+          r = l0 * rs[0] + l1 * rs[1] + l2 * rs[2];
+        }
+        const int want = static_cast<int>(quantise_channel(static_cast<unsigned>(std::lround(r * 255)), 5));
+        worst = std::max(worst, std::abs(static_cast<int>(f.color[static_cast<size_t>(y * 64 + x)] >> 11) - want));
+      }
+    EXPECT_LE(worst, 1) << "perspective " << persp;
+  }
+  // The two differ visibly on this triangle (w ratio 8).
+  ModelConfig a = model_config("full"), b = model_config("full");
+  a.perspective_color = false;
+  b.perspective_color = true;
+  EXPECT_NE(render_model(sc, a).color, render_model(sc, b).color);
+}
+
+}  // namespace
+}  // namespace htx

@@ -9,6 +9,10 @@ namespace {
 ModelConfig make_full() {
   ModelConfig c;  // the defaults are the full configuration
   c.name = "full";
+  // Perspective-correct Gouraud: the model then differs from `ref` only by its texel and RGB565
+  // rounding (max channel difference 9 instead of 66 on nearclip), so image metrics measure the
+  // texture method alone. A pipelined reciprocal unit makes the per-pixel division cheap.
+  c.perspective_color = true;
   return c;
 }
 

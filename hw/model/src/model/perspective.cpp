@@ -44,8 +44,11 @@ TriangleUnit::TriangleUnit(const fw::TriangleRecord& rec, const TriState& state,
   uq_ = make_plane(setup_, vertex_values(r, [](const fw::VertexRecord& v) -> i128 { return v.uq; }), d, gf);
   vq_ = make_plane(setup_, vertex_values(r, [](const fw::VertexRecord& v) -> i128 { return v.vq; }), d, gf);
   for (unsigned c = 0; c < 4; ++c) {
-    const std::array<i128, 3> ch = {(r.v[0].rgba >> (8 * c)) & 0xFF, (r.v[1].rgba >> (8 * c)) & 0xFF,
-                                    (r.v[2].rgba >> (8 * c)) & 0xFF};
+    std::array<i128, 3> ch{};
+    for (int i = 0; i < 3; ++i) {
+      ch[i] = (r.v[i].rgba >> (8 * c)) & 0xFF;
+      if (cfg.perspective_color) ch[i] *= r.v[i].q;  // 8 x q_bits multiply at setup
+    }
     color_[c] = make_plane(setup_, ch, d, gf);
   }
   // AFFINE interpolates the vertex texel coordinates themselves: u_i = uq_i / q_i from the shared
@@ -80,7 +83,10 @@ uint32_t TriangleUnit::depth_at(int64_t px, int64_t py) const {
 Rgba8 TriangleUnit::color_at(int64_t px, int64_t py) const {
   uint8_t ch[4];
   for (int c = 0; c < 4; ++c) {
-    const i128 a = shift_round(color_[c].at(px, py), static_cast<int>(cfg_.grad_frac_bits));
+    const i128 a = cfg_.perspective_color
+                       ? static_cast<i128>(divide_fixed(pixel_nr_, color_[c].at(px, py),
+                                                        std::max<i128>(q_.at(px, py), 1), 0))
+                       : shift_round(color_[c].at(px, py), static_cast<int>(cfg_.grad_frac_bits));
     ch[c] = static_cast<uint8_t>(a < 0 ? 0 : (a > 255 ? 255 : a));
   }
   return {ch[0], ch[1], ch[2], ch[3]};

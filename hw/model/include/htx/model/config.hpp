@@ -53,6 +53,11 @@ struct ModelConfig {
 
   unsigned filter_weight_bits = 8;  // bilinear and trilinear weights (fixed by the texture unit)
 
+  // Gouraud colour: false = linear in screen space (planes of the vertex colours, no division);
+  // true = perspective-correct (planes of colour * q, divided by q per pixel in the reciprocal
+  // unit with pixel_nr_steps, whatever the texture coordinates' method).
+  bool perspective_color = false;
+
   // What is built. Bit i of methods is Method(i), of filters Filter(i), of formats TexFormat(i).
   uint32_t methods = 0x3F;  // affine, subdiv, recip_lut, recip_nr, divfree, quadratic
   uint32_t filters = 0x7;

@@ -74,7 +74,7 @@ class TriangleUnit {
   TriSetup setup_;
   RecipParams setup_recip_, pixel_nr_, pixel_lut_;
   Plane z_, q_, uq_, vq_, ua_, va_;
-  Plane color_[4];
+  Plane color_[4];  // colour, or colour * q with perspective_color
   i128 lod_grad_[6] = {};  // uq x, uq y, vq x, vq y, q x, q y after the block shift
   int lod_shift_ = 0;
   uint64_t setup_cycles_ = 0;
