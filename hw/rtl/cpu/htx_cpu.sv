@@ -1,19 +1,24 @@
 // htx_cpu: RV32IM + Zicsr machine-mode core with a 4-stage pipeline.
 //
-//   F  fetch      htx_cpu_fetch issues word requests from a registered PC (one per clock).
-//   D  decode     the instruction arrives from the bus (or the fetch buffer); decoded, the register
-//                 file read is issued (block RAM, synchronous), JAL and backward branches are
-//                 predicted taken and redirect fetch (BTFN).
-//   E  execute    operands (register file, forwarded from W or from the last register write), ALU,
-//                 branch resolution, CSR access, traps, the data bus request, multi-cycle MUL/DIV.
+//   F  fetch      htx_cpu_fetch issues word requests from a registered PC (one per clock). When
+//                 decode takes an instruction, JAL and backward branches are predicted taken (BTFN)
+//                 and redirect fetch; the register file read of the instruction's sources is issued.
+//   D  decode     decodes the registered instruction, forwards its operands (newest first: the
+//                 instruction in E, the one in W, the last register write, the register file) and
+//                 registers the ALU operands, so E starts from flip-flops. Also precomputes every
+//                 trap that does not depend on E's results.
+//   E  execute    ALU, branch resolution, CSR access, traps, the data bus request, MUL/DIV.
 //   W  write-back waits for the data bus response of a load/store, writes the register file.
+//
+// Timing rules (docs/cpu.md): the ALU's results never feed the stall or hand-over logic; those are
+// decided from registered state and the bus handshakes only. E's adder/logic result is forwarded
+// into D; results that come late in E (shifts, links, CSR reads, MUL/DIV) are forwarded from W one
+// cycle later. Redirects decided in E or W are registered: fetch follows one cycle later and the
+// wrong-path instructions then in D and E are squashed.
 //
 // E only acts (bus request, CSR write, trap, redirect, hand-over to W) in a cycle in which W
 // completes without an access fault, so a faulting load/store in W can still cancel everything
-// younger: traps are precise. A register written by a load in W cannot be used by E in the same
-// cycle (load-use: one stall). Redirects decided in E or W (mispredicted branch, JALR, trap, MRET,
-// FENCE.I, access fault) are registered for timing: fetch follows them one cycle later and the
-// wrong-path instruction that entered E meanwhile is squashed. See docs/cpu.md.
+// younger: traps are precise.
 module htx_cpu #(
   parameter logic [31:0] ResetVector = 32'h0000_0000
 ) (
@@ -43,11 +48,15 @@ module htx_cpu #(
 
   // ------------------------------------------------------------------------------------------
   // Fetch
-  logic        redirect;
-  logic [31:2] redirect_pc;
+  logic        redirect_q, d_redirect;
+  logic [31:2] redirect_pc_q, redirect_npc_q;
+  logic [31:0] d_target;
+  logic        redirect_seq_q;
   logic        f_valid, f_err;
-  logic [31:0] f_instr, f_pc;
-  logic        d_advance;
+  logic [31:0] f_instr;
+  logic [31:2] f_pc;
+  logic [31:2] f_npc;
+  logic        f_take;   // D takes the fetch output this cycle
 
   htx_cpu_fetch #(.BootAddr(ResetVector)) u_fetch (
     .clk_i,
@@ -58,42 +67,46 @@ module htx_cpu #(
     .ibus_rsp_valid_i,
     .ibus_rsp_rdata_i,
     .ibus_rsp_err_i,
-    .redirect_i    (redirect),
-    .redirect_pc_i (redirect_pc),
+    .redirect_i    (redirect_q),
+    .redirect_pc_i (redirect_seq_q ? redirect_npc_q : redirect_pc_q),
+    .predict_i     (d_redirect),
+    .predict_pc_i  (d_target[31:2]),
     .instr_valid_o (f_valid),
     .instr_o       (f_instr),
     .instr_err_o   (f_err),
     .instr_pc_o    (f_pc),
-    .instr_ready_i (d_advance)
+    .instr_npc_o   (f_npc),
+    .instr_ready_i (f_take)
   );
 
   assign ibus_req_we_o    = 1'b0;
   assign ibus_req_be_o    = 4'b1111;
   assign ibus_req_wdata_o = 32'b0;
 
-  // ------------------------------------------------------------------------------------------
-  // Decode
-  htx_cpu_pkg::decoded_t d_dec;
-  logic [31:0] d_target;
-  logic        d_predict;
-
-  htx_cpu_decoder u_decoder (
-    .instr_i (f_instr),
-    .dec_o   (d_dec)
-  );
-
-  // Static prediction: JAL and backward branches taken, unless the target would trap.
-  assign d_target  = f_pc + d_dec.imm;
-  assign d_predict = !f_err && (d_dec.jal || (d_dec.branch && d_dec.imm[31])) && !d_target[1];
+  // Static prediction: JAL and backward branches are taken, unless the target would be misaligned
+  // (then E raises the trap). Decided as D takes the instruction (from a few instruction bits),
+  // acted on in D's first cycle with the target computed there from registered values.
+  logic f_is_jal, f_is_branch, f_predict;
+  assign f_is_jal    = (f_instr[6:0] == 7'b1101111);
+  assign f_is_branch = (f_instr[6:0] == 7'b1100011);
+  assign f_predict   = !f_err && ((f_is_jal && !f_instr[21]) || (f_is_branch && f_instr[31] && !f_instr[8]));
 
   // ------------------------------------------------------------------------------------------
   // Pipeline registers
-  logic                  e_valid_q;
-  htx_cpu_pkg::decoded_t e_q;
-  logic [31:0]           e_pc_q, e_target_q;
-  logic                  e_pred_q, e_ferr_q;
+  logic        d_valid_q, d_first_q, d_err_q, d_pred_q;
+  logic [31:2] d_pc_q, d_npc_q;
 
-  logic        w_valid_q, w_rd_we_q, w_load_q, w_mem_q, w_store_q;
+  logic                    e_valid_q;
+  htx_cpu_pkg::exec_t      e_q;
+  logic [32:0]             e_a_q, e_b_q;                    // ALU operands (bit 32: see the ALU)
+  logic [31:0]             e_rs2_q, e_aux_q;                // store data, target/tval
+  logic                    e_br_eq_q, e_br_inv_q;           // branch condition: use eq, invert
+  logic [31:2]             e_pc_q, e_npc_q;
+  logic                    e_pred_q, e_xtrap_q, e_late_q, e_late_alu_q, e_sub_q;
+  htx_cpu_pkg::exc_cause_e e_cause_q;
+  logic [1:0]              e_lo_q;     // address bits [1:0] of a load/store
+
+  logic        w_valid_q, w_rd_we_q, w_load_q, w_mem_q, w_store_q, w_nocount_q;
   logic [4:0]  w_rd_q;
   logic [2:0]  w_funct3_q;
   logic [31:0] w_result_q;   // result, or the address of a load/store
@@ -117,17 +130,16 @@ module htx_cpu #(
   assign rf_wdata = w_load_q ? w_load_value : w_result_q;
 
   // ------------------------------------------------------------------------------------------
-  // Register file
-  logic        e_accept;
+  // Register file: read when D takes an instruction; while D holds its instruction the register
+  // file keeps reading D's own sources, so the read data always reflects every write up to the
+  // previous edge and the bypass register only ever has to cover the most recent one.
+  logic        d_free;
   logic [31:0] rf_rdata_a, rf_rdata_b;
 
-  // While E holds its instruction the register file keeps reading E's own sources, so the read
-  // data always reflects every write up to the previous edge and the bypass register only ever
-  // has to cover the most recent one.
   htx_cpu_regfile u_regfile (
     .clk_i,
-    .raddr_a_i (e_accept ? f_instr[19:15] : e_q.rs1),
-    .raddr_b_i (e_accept ? f_instr[24:20] : e_q.rs2),
+    .raddr_a_i (d_free ? f_instr[19:15] : d_dec.rs1),
+    .raddr_b_i (d_free ? f_instr[24:20] : d_dec.rs2),
     .rdata_a_o (rf_rdata_a),
     .rdata_b_o (rf_rdata_b),
     .we_i      (rf_we),
@@ -136,132 +148,184 @@ module htx_cpu #(
   );
 
   // ------------------------------------------------------------------------------------------
-  // Execute: operands
-  logic [31:0] rs1_val, rs2_val;
+  // Decode: the decoder works on the instruction as D takes it and its outputs are registered, so
+  // the forwarding selects in D start from flip-flops.
+  htx_cpu_pkg::decoded_t f_dec, d_dec;
 
+  htx_cpu_decoder u_decoder (
+    .instr_i (f_instr),
+    .dec_o   (f_dec)
+  );
+
+  logic        e_live, e_accept;
+  logic [31:0] e_fast_result;
+
+  // Forwarding: E's adder/logic result, W's write data, the last write, the register file.
+  logic fe_a, fe_b, fw_a, fw_b, fl_a, fl_b;
+  assign fe_a = e_live && e_q.rd_we && !e_late_q && (e_q.rd == d_dec.rs1);
+  assign fe_b = e_live && e_q.rd_we && !e_late_q && (e_q.rd == d_dec.rs2);
+  assign fw_a = w_valid_q && w_rd_we_q && (w_rd_q == d_dec.rs1);
+  assign fw_b = w_valid_q && w_rd_we_q && (w_rd_q == d_dec.rs2);
+  assign fl_a = lw_valid_q && (lw_rd_q == d_dec.rs1);
+  assign fl_b = lw_valid_q && (lw_rd_q == d_dec.rs2);
+
+  logic [31:0] d_rs1, d_rs2;
   always_comb begin
-    if (w_valid_q && w_rd_we_q && (w_rd_q == e_q.rs1)) begin
-      rs1_val = w_result_q;
-    end else if (lw_valid_q && (lw_rd_q == e_q.rs1)) begin
-      rs1_val = lw_data_q;
+    if (fe_a) begin
+      d_rs1 = e_fast_result;
+    end else if (fw_a) begin
+      d_rs1 = rf_wdata;
+    end else if (fl_a) begin
+      d_rs1 = lw_data_q;
     end else begin
-      rs1_val = rf_rdata_a;
+      d_rs1 = rf_rdata_a;
     end
-    if (w_valid_q && w_rd_we_q && (w_rd_q == e_q.rs2)) begin
-      rs2_val = w_result_q;
-    end else if (lw_valid_q && (lw_rd_q == e_q.rs2)) begin
-      rs2_val = lw_data_q;
+    if (fe_b) begin
+      d_rs2 = e_fast_result;
+    end else if (fw_b) begin
+      d_rs2 = rf_wdata;
+    end else if (fl_b) begin
+      d_rs2 = lw_data_q;
     end else begin
-      rs2_val = rf_rdata_b;
+      d_rs2 = rf_rdata_b;
     end
   end
 
-  logic load_use;
-  assign load_use = w_valid_q && w_load_q && w_rd_we_q &&
-                    ((e_q.rs1_used && (e_q.rs1 == w_rd_q)) || (e_q.rs2_used && (e_q.rs2 == w_rd_q)));
+  // A source written by the instruction in E whose result comes late (load, shift, link, CSR,
+  // MUL/DIV) waits one cycle and then comes from W. W always completes when D moves on.
+  logic d_hazard;
+  assign d_hazard = e_live && e_q.rd_we && e_late_q &&
+                    ((d_dec.rs1_used && (e_q.rd == d_dec.rs1)) ||
+                     (d_dec.rs2_used && (e_q.rd == d_dec.rs2)));
 
-  // ------------------------------------------------------------------------------------------
-  // Execute: ALU, branches, address
-  logic [31:0] alu_a, alu_b, alu_result, alu_sum;
-  logic        alu_eq, alu_lt, alu_ltu;
+  logic late_alu_d, late_d, sub_d;
+  assign late_alu_d = (d_dec.alu_op == htx_cpu_pkg::AluSll) || (d_dec.alu_op == htx_cpu_pkg::AluSrl) ||
+                      (d_dec.alu_op == htx_cpu_pkg::AluSra) || (d_dec.alu_op == htx_cpu_pkg::AluSlt) ||
+                      (d_dec.alu_op == htx_cpu_pkg::AluSltu);
+  assign late_d     = d_dec.load || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul || d_dec.div ||
+                      late_alu_d;
+  assign sub_d      = (d_dec.alu_op == htx_cpu_pkg::AluSub) || (d_dec.alu_op == htx_cpu_pkg::AluSlt) ||
+                      (d_dec.alu_op == htx_cpu_pkg::AluSltu);
 
+  // ALU operands.
+  // ALU operands, extended to 33 bits with the sign for a signed comparison (SLT, BLT, BGE) and
+  // with zero otherwise; b is inverted for a subtraction.
+  logic [31:0] d_a, d_b;
+  logic        signed_d;
   always_comb begin
-    unique case (e_q.op_a_sel)
-      htx_cpu_pkg::OpAPc:   alu_a = e_pc_q;
-      htx_cpu_pkg::OpAZero: alu_a = 32'b0;
-      default:              alu_a = rs1_val;
+    unique case (d_dec.op_a_sel)
+      htx_cpu_pkg::OpAPc:   d_a = {d_pc_q, 2'b00};
+      htx_cpu_pkg::OpAZero: d_a = 32'b0;
+      default:              d_a = d_rs1;
     endcase
   end
-  assign alu_b = e_q.op_b_imm ? e_q.imm : rs2_val;
+  assign d_b      = d_dec.op_b_imm ? d_dec.imm : d_rs2;
+  assign signed_d = (d_dec.branch && !d_dec.funct3[1]) || (d_dec.alu_op == htx_cpu_pkg::AluSlt);
+
+  // Address bits [1:0] of a load, store or JALR target, for the misalignment checks.
+  logic [1:0] d_lo;
+  logic       d_misaligned;
+  assign d_lo = d_rs1[1:0] + d_dec.imm[1:0];
+  always_comb begin
+    unique case (d_dec.funct3[1:0])
+      2'b00:   d_misaligned = 1'b0;
+      2'b01:   d_misaligned = d_lo[0];
+      default: d_misaligned = (d_lo != 2'b00);
+    endcase
+  end
+
+  // Branch and JAL target.
+  assign d_target = {d_pc_q, 2'b00} + d_dec.imm;
+
+  // Traps known before E (everything except a taken branch to a misaligned target). mtval comes
+  // from E's adder (decode sets it up to produce the PC, the instruction bits or 0 where that is
+  // the value), or for a branch from the target.
+  logic                    d_xtrap;
+  htx_cpu_pkg::exc_cause_e d_cause;
+  always_comb begin
+    d_xtrap = 1'b1;
+    d_cause = htx_cpu_pkg::ExcIllegal;
+    if (d_err_q) begin
+      d_cause = htx_cpu_pkg::ExcInstrAccess;
+    end else if (d_dec.illegal) begin
+      d_cause = htx_cpu_pkg::ExcIllegal;
+    end else if (d_dec.ecall) begin
+      d_cause = htx_cpu_pkg::ExcEcallM;
+    end else if (d_dec.ebreak) begin
+      d_cause = htx_cpu_pkg::ExcBreakpoint;
+    end else if ((d_dec.jal && d_dec.imm[1]) || (d_dec.jalr && d_lo[1])) begin
+      d_cause = htx_cpu_pkg::ExcInstrMisaligned;
+    end else if ((d_dec.load || d_dec.store) && d_misaligned) begin
+      d_cause = d_dec.store ? htx_cpu_pkg::ExcStoreMisaligned : htx_cpu_pkg::ExcLoadMisaligned;
+    end else begin
+      d_xtrap = 1'b0;
+    end
+  end
+
+  htx_cpu_pkg::exec_t d_exec;
+  always_comb begin
+    d_exec.mret    = d_dec.mret;
+    d_exec.fencei  = d_dec.fencei;
+    d_exec.branch  = d_dec.branch;
+    d_exec.jal     = d_dec.jal;
+    d_exec.jalr    = d_dec.jalr;
+    d_exec.load    = d_dec.load;
+    d_exec.store   = d_dec.store;
+    d_exec.mul     = d_dec.mul;
+    d_exec.div     = d_dec.div;
+    d_exec.csr     = d_dec.csr;
+    d_exec.csr_we  = d_dec.csr_we;
+    d_exec.csr_sel = d_dec.csr_sel;
+    d_exec.funct3  = d_dec.funct3;
+    d_exec.uimm    = d_dec.rs1;
+    d_exec.rd      = d_dec.rd;
+    d_exec.rd_we   = d_dec.rd_we;
+    d_exec.alu_op  = d_dec.alu_op;
+  end
+
+  logic d_live, d_go;
+  assign d_live     = d_valid_q && !redirect_q;
+  assign d_go       = d_live && e_accept && !d_hazard;
+  assign d_free     = !d_live || d_go;
+  assign d_redirect = d_live && d_first_q && d_pred_q;
+  assign f_take     = d_free && !redirect_q && !d_redirect;
+
+
+  // ------------------------------------------------------------------------------------------
+  // Execute: ALU, branches
+  logic [31:0] alu_sum, alu_late;
+  logic        alu_eq, alu_lt;
 
   htx_cpu_alu u_alu (
     .op_i     (e_q.alu_op),
-    .a_i      (alu_a),
-    .b_i      (alu_b),
-    .result_o (alu_result),
+    .sub_i    (e_sub_q),
+    .a_i      (e_a_q),
+    .b_i      (e_b_q),
+    .fast_o   (e_fast_result),
+    .late_o   (alu_late),
     .sum_o    (alu_sum),
     .eq_o     (alu_eq),
-    .lt_o     (alu_lt),
-    .ltu_o    (alu_ltu)
+    .lt_o     (alu_lt)
   );
 
-  logic branch_cond;
-  always_comb begin
-    unique case (e_q.funct3)
-      3'b000:  branch_cond = alu_eq;
-      3'b001:  branch_cond = !alu_eq;
-      3'b100:  branch_cond = alu_lt;
-      3'b101:  branch_cond = !alu_lt;
-      3'b110:  branch_cond = alu_ltu;
-      default: branch_cond = !alu_ltu;
-    endcase
-  end
-
-  logic        taken;
-  logic [31:0] jump_target, link;
-  assign taken       = e_q.jal || e_q.jalr || (e_q.branch && branch_cond);
-  assign jump_target = e_q.jalr ? {alu_sum[31:1], 1'b0} : e_target_q;
-  assign link        = e_pc_q + 32'd4;
-
-  logic [3:0]  lsu_be;
-  logic [31:0] lsu_wdata;
-  logic        lsu_misaligned;
-
-  htx_cpu_lsu u_lsu (
-    .req_size_i       (e_q.funct3[1:0]),
-    .req_offset_i     (alu_sum[1:0]),
-    .req_data_i       (rs2_val),
-    .req_be_o         (lsu_be),
-    .req_wdata_o      (lsu_wdata),
-    .req_misaligned_o (lsu_misaligned),
-    .rsp_funct3_i     (w_funct3_q),
-    .rsp_offset_i     (w_result_q[1:0]),
-    .rsp_rdata_i      (dbus_rsp_rdata_i),
-    .rsp_value_o      (w_load_value)
-  );
+  // The branch condition arrives last (from the end of the carry chain). Everything that depends
+  // on it is computed for both outcomes (_t taken, _n not taken) from registered state and the
+  // handshakes, and the condition selects in one LUT level; the keep attributes stop synthesis
+  // from merging the condition deeper into that logic.
+  (* keep *) logic br_cond;
+  assign br_cond = e_br_inv_q ^ (e_br_eq_q ? alu_eq : alu_lt);
 
   // ------------------------------------------------------------------------------------------
   // Execute: traps
-  // e_trap_early depends only on registered state and the low address bits, so the stall logic
-  // never waits for a full-width compare; a taken branch to a misaligned target is only known
-  // from the branch condition and traps without affecting the hand-over timing.
-  logic                    e_trap, e_trap_early;
   htx_cpu_pkg::exc_cause_e e_cause;
   logic [31:0]             e_tval;
-
-  assign e_trap_early = e_ferr_q || e_q.illegal || e_q.ecall || e_q.ebreak ||
-                        (e_q.jal && e_target_q[1]) || (e_q.jalr && alu_sum[1]) ||
-                        ((e_q.load || e_q.store) && lsu_misaligned);
-
-  always_comb begin
-    e_trap  = 1'b1;
-    e_cause = htx_cpu_pkg::ExcIllegal;
-    e_tval  = 32'b0;
-    if (e_ferr_q) begin
-      e_cause = htx_cpu_pkg::ExcInstrAccess;
-      e_tval  = e_pc_q;
-    end else if (e_q.illegal) begin
-      e_cause = htx_cpu_pkg::ExcIllegal;
-      e_tval  = e_q.imm;
-    end else if (e_q.ecall) begin
-      e_cause = htx_cpu_pkg::ExcEcallM;
-    end else if (e_q.ebreak) begin
-      e_cause = htx_cpu_pkg::ExcBreakpoint;
-    end else if (taken && jump_target[1]) begin
-      e_cause = htx_cpu_pkg::ExcInstrMisaligned;
-      e_tval  = jump_target;
-    end else if ((e_q.load || e_q.store) && lsu_misaligned) begin
-      e_cause = e_q.store ? htx_cpu_pkg::ExcStoreMisaligned : htx_cpu_pkg::ExcLoadMisaligned;
-      e_tval  = alu_sum;
-    end else begin
-      e_trap = 1'b0;
-    end
-  end
+  assign e_cause = e_xtrap_q ? e_cause_q : htx_cpu_pkg::ExcInstrMisaligned;
+  assign e_tval  = (e_q.branch || e_q.jal) ? e_aux_q : {alu_sum[31:1], alu_sum[0] && !e_q.jalr};
 
   // ------------------------------------------------------------------------------------------
-  // Execute: multiply, divide, CSR
-  logic        e_can_go, e_mem, e_mul, e_div, e_wait, e_done, e_commit, e_take_trap, e_redirect;
-  logic        mul_done, div_done, div_busy;
+  // Execute: memory, multiply, divide, CSR
+  logic        e_can_go, e_mem, e_mul, e_div, e_wait, e_done, e_commit;
+  logic        mul_done, mul_busy, div_done, div_busy;
   // A trap's CSR updates are applied one cycle after it is taken (together with the registered
   // redirect); nothing can read those CSRs in between, because the instruction then in E is squashed.
   logic                    trap_q;
@@ -272,22 +336,21 @@ module htx_cpu #(
   logic [31:2] mtvec, mepc;
 
   // E holds a live instruction unless it entered on the wrong path while a redirect was decided.
-  logic redirect_q;
-  logic [31:2] redirect_pc_q;
-  logic e_live;
+  // A CSR instruction waits until W is empty, so the counters it reads are exact.
   assign e_live   = e_valid_q && !redirect_q;
-  assign e_can_go = e_live && !load_use && w_ready && !w_fault;
-  assign e_mem    = (e_q.load || e_q.store) && !e_trap_early;
-  assign e_mul    = e_q.mul && !e_trap_early;
-  assign e_div    = e_q.div && !e_trap_early;
+  assign e_can_go = e_live && w_ready && !w_fault && !(e_q.csr && w_valid_q);
+  assign e_mem    = (e_q.load || e_q.store) && !e_xtrap_q;
+  assign e_mul    = e_q.mul && !e_xtrap_q;
+  assign e_div    = e_q.div && !e_xtrap_q;
 
   htx_cpu_mul u_mul (
     .clk_i,
     .rst_ni,
-    .start_i  (e_can_go && e_mul && !mul_done),
+    .start_i  (e_can_go && e_mul && !mul_busy),
     .op_i     (e_q.funct3[1:0]),
-    .a_i      (rs1_val),
-    .b_i      (rs2_val),
+    .a_i      (e_a_q[31:0]),
+    .b_i      (e_b_q[31:0]),
+    .busy_o   (mul_busy),
     .done_o   (mul_done),
     .result_o (mul_result)
   );
@@ -298,8 +361,8 @@ module htx_cpu #(
     .start_i  (e_can_go && e_div && !div_busy),
     .kill_i   (w_fault),
     .op_i     (e_q.funct3[1:0]),
-    .a_i      (rs1_val),
-    .b_i      (rs2_val),
+    .a_i      (e_a_q[31:0]),
+    .b_i      (e_b_q[31:0]),
     .busy_o   (div_busy),
     .done_o   (div_done),
     .result_o (div_result)
@@ -307,48 +370,83 @@ module htx_cpu #(
 
   assign e_wait      = (e_mem && !dbus_req_ready_i) || (e_mul && !mul_done) || (e_div && !div_done);
   assign e_done      = e_can_go && !e_wait;
-  assign e_commit    = e_done && !e_trap;
-  assign e_take_trap = e_done && e_trap;
-  assign e_redirect  = e_done && (e_trap || e_q.mret || e_q.fencei || (taken != e_pred_q));
+
+  // Outcomes of E for both branch outcomes (see br_cond): hand-over to W, trap (including an
+  // access fault in W), redirect, and whether the redirect goes to the fall-through PC.
+  logic br_misaligned, e_jump, e_ctl_n, e_ctl_t;
+  assign br_misaligned = e_q.branch && e_aux_q[1];
+  assign e_jump        = e_q.jal || e_q.jalr;
+  assign e_ctl_n       = e_xtrap_q || e_q.mret || e_q.fencei || (e_jump != e_pred_q);
+  assign e_ctl_t       = e_xtrap_q || e_q.mret || e_q.fencei || br_misaligned ||
+                         ((e_jump || e_q.branch) != e_pred_q);
+  (* keep *) logic commit_t, commit_n, trap_t, trap_n, redir_t, redir_n, seq_t, seq_n;
+  assign commit_n = e_done && !e_xtrap_q;
+  assign commit_t = e_done && !e_xtrap_q && !br_misaligned;
+  assign trap_n   = w_fault || (e_done && e_xtrap_q);
+  assign trap_t   = w_fault || (e_done && (e_xtrap_q || br_misaligned));
+  assign redir_n  = w_fault || (e_done && e_ctl_n);
+  assign redir_t  = w_fault || (e_done && e_ctl_t);
+  assign seq_n    = !w_fault && !e_xtrap_q && (e_q.fencei || e_q.branch);
+  assign seq_t    = !w_fault && !e_xtrap_q && e_q.fencei;
+  assign e_commit = br_cond ? commit_t : commit_n;
+
+  logic csr_we, csr_instret_we;
+  assign csr_we         = e_done && !e_xtrap_q && e_q.csr && e_q.csr_we;
+  assign csr_instret_we = (e_q.csr_sel == htx_cpu_pkg::CsrInstret) ||
+                          (e_q.csr_sel == htx_cpu_pkg::CsrInstreth);
 
   htx_cpu_csr u_csr (
     .clk_i,
     .rst_ni,
-    .sel_i      (e_q.csr_sel),
-    .rdata_o    (csr_rdata),
-    .we_i       (e_done && !e_trap_early && e_q.csr && e_q.csr_we),
-    .op_i       (e_q.funct3[1:0]),
-    .src_i      (e_q.funct3[2] ? {27'b0, e_q.rs1} : rs1_val),
-    .retire_i   (e_commit),
-    .unretire_i (w_fault),
-    .trap_i     (trap_q),
-    .cause_i    (trap_cause_q),
-    .trap_pc_i  (trap_pc_q),
-    .tval_i     (trap_tval_q),
-    .mret_i     (e_done && !e_trap_early && e_q.mret),
-    .mtvec_o    (mtvec),
-    .mepc_o     (mepc)
+    .sel_i     (e_q.csr_sel),
+    .rdata_o   (csr_rdata),
+    .we_i      (csr_we),
+    .op_i      (e_q.funct3[1:0]),
+    .src_i     (e_q.funct3[2] ? {27'b0, e_q.uimm} : e_a_q[31:0]),
+    .retire_i  (w_valid_q && w_ready && !w_fault && !w_nocount_q),
+    .trap_i    (trap_q),
+    .cause_i   (trap_cause_q),
+    .trap_pc_i (trap_pc_q),
+    .tval_i    (trap_tval_q),
+    .mret_i    (e_done && !e_xtrap_q && e_q.mret),
+    .mtvec_o   (mtvec),
+    .mepc_o    (mepc)
   );
 
   logic [31:0] e_result;
   always_comb begin
-    if (e_q.load || e_q.store) begin
-      e_result = alu_sum;
-    end else if (e_q.jal || e_q.jalr) begin
-      e_result = link;
+    if (e_q.jal || e_q.jalr) begin
+      e_result = {e_npc_q, 2'b00};
     end else if (e_q.csr) begin
       e_result = csr_rdata;
     end else if (e_q.mul) begin
       e_result = mul_result;
     end else if (e_q.div) begin
       e_result = div_result;
+    end else if (e_late_alu_q) begin
+      e_result = alu_late;
     end else begin
-      e_result = alu_result;
+      e_result = e_fast_result;  // includes the address of a load/store
     end
   end
 
+  logic [3:0]  lsu_be;
+  logic [31:0] lsu_wdata;
+
+  htx_cpu_lsu u_lsu (
+    .req_size_i   (e_q.funct3[1:0]),
+    .req_offset_i (e_lo_q),
+    .req_data_i   (e_rs2_q),
+    .req_be_o     (lsu_be),
+    .req_wdata_o  (lsu_wdata),
+    .rsp_funct3_i (w_funct3_q),
+    .rsp_offset_i (w_result_q[1:0]),
+    .rsp_rdata_i  (dbus_rsp_rdata_i),
+    .rsp_value_o  (w_load_value)
+  );
+
   // Data bus request: held stable while not accepted, because nothing it depends on can change
-  // until E moves on (W has drained, the forwarded operands stay put).
+  // until E moves on.
   assign dbus_req_valid_o = e_can_go && e_mem;
   assign dbus_req_addr_o  = alu_sum;
   assign dbus_req_we_o    = e_q.store;
@@ -357,52 +455,56 @@ module htx_cpu #(
 
   // ------------------------------------------------------------------------------------------
   // Redirects and stage hand-over
-  logic        d_redirect;
-  logic [31:2] late_pc;
-  assign e_accept   = !e_live || e_done || w_fault;
-  assign d_advance  = e_accept && !redirect_q && !w_fault;
-  assign d_redirect = d_advance && f_valid && d_predict;
-  assign redirect   = redirect_q || d_redirect;
-  assign redirect_pc = redirect_q ? redirect_pc_q : d_target[31:2];
+  assign e_accept = w_ready && (!e_live || e_done);
 
+  // The redirect target is registered as two candidates and chosen in the next cycle, so the
+  // branch condition only drives one flip-flop here: the fall-through PC (a branch that is not
+  // taken, FENCE.I) or the other target.
+  logic [31:2] late_pc;
   always_comb begin
-    if (w_fault || e_take_trap) begin
+    if (w_fault || e_xtrap_q || (e_q.branch && e_aux_q[1])) begin
       late_pc = mtvec;
     end else if (e_q.mret) begin
       late_pc = mepc;
-    end else if (taken && !e_pred_q) begin
-      late_pc = jump_target[31:2];
+    end else if (e_q.jalr) begin
+      late_pc = alu_sum[31:2];
     end else begin
-      late_pc = link[31:2];
+      late_pc = e_aux_q[31:2];
     end
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       redirect_q <= 1'b0;
+      trap_q     <= 1'b0;
     end else begin
-      redirect_q <= w_fault || e_redirect;
-      trap_q     <= w_fault || e_take_trap;
+      redirect_q <= br_cond ? redir_t : redir_n;
+      trap_q     <= br_cond ? trap_t : trap_n;
     end
   end
 
   always_ff @(posedge clk_i) begin
     redirect_pc_q <= late_pc;
+    redirect_npc_q <= e_npc_q;
+    redirect_seq_q <= br_cond ? seq_t : seq_n;
     trap_cause_q  <= w_fault ? (w_store_q ? htx_cpu_pkg::ExcStoreAccess : htx_cpu_pkg::ExcLoadAccess)
                              : e_cause;
-    trap_pc_q     <= w_fault ? w_pc_q : e_pc_q[31:2];
+    trap_pc_q     <= w_fault ? w_pc_q : e_pc_q;
     trap_tval_q   <= w_fault ? w_result_q : e_tval;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
+      d_valid_q  <= 1'b0;
       e_valid_q  <= 1'b0;
       w_valid_q  <= 1'b0;
       lw_valid_q <= 1'b0;
     end else begin
-      if (e_accept) begin
-        e_valid_q <= f_valid && d_advance;
+      if (d_free) begin
+        d_valid_q <= f_take && f_valid;
       end
+      d_first_q <= d_free;
+      e_valid_q <= e_accept ? d_go : (e_valid_q && !redirect_q);
       if (w_ready) begin
         w_valid_q <= e_commit;
       end
@@ -413,22 +515,41 @@ module htx_cpu #(
   end
 
   always_ff @(posedge clk_i) begin
+    if (d_free) begin
+      d_dec      <= f_dec;
+      d_err_q    <= f_err;
+      d_pc_q     <= f_pc;
+      d_npc_q    <= f_npc;
+      d_pred_q   <= f_predict;
+    end
     if (e_accept) begin
-      e_q        <= d_dec;
-      e_pc_q     <= f_pc;
-      e_target_q <= d_target;
-      e_pred_q   <= d_predict;
-      e_ferr_q   <= f_err;
+      e_q       <= d_exec;
+      e_a_q     <= {signed_d & d_a[31], d_a};
+      e_b_q     <= {signed_d & d_b[31], d_b} ^ {33{sub_d}};
+      e_br_eq_q <= !d_dec.funct3[2];
+      e_br_inv_q <= d_dec.funct3[0];
+      e_rs2_q   <= d_rs2;
+      e_aux_q   <= d_target;
+      e_pc_q    <= d_pc_q;
+      e_npc_q   <= d_npc_q;
+      e_pred_q  <= d_pred_q;
+      e_xtrap_q <= d_xtrap;
+      e_cause_q <= d_cause;
+      e_late_q  <= late_d;
+      e_sub_q   <= sub_d;
+      e_late_alu_q <= late_alu_d;
+      e_lo_q    <= d_lo;
     end
     if (w_ready) begin
-      w_rd_q     <= e_q.rd;
-      w_rd_we_q  <= e_q.rd_we;
-      w_load_q   <= e_q.load;
-      w_store_q  <= e_q.store;
-      w_mem_q    <= e_q.load || e_q.store;
-      w_funct3_q <= e_q.funct3;
-      w_result_q <= e_result;
-      w_pc_q     <= e_pc_q[31:2];
+      w_rd_q      <= e_q.rd;
+      w_rd_we_q   <= e_q.rd_we;
+      w_load_q    <= e_q.load;
+      w_store_q   <= e_q.store;
+      w_mem_q     <= e_q.load || e_q.store;
+      w_funct3_q  <= e_q.funct3;
+      w_result_q  <= e_result;
+      w_pc_q      <= e_pc_q;
+      w_nocount_q <= e_q.csr && e_q.csr_we && csr_instret_we;
     end
     if (rf_we) begin
       lw_rd_q   <= w_rd_q;

@@ -1,25 +1,39 @@
-// Integer ALU: one adder/subtractor (also the load/store address and JALR target adder), a barrel
-// shifter (left shifts reuse the right shifter on bit-reversed data) and the branch comparisons.
+// Integer ALU: one adder/subtractor (also the load/store address and JALR target adder), logic
+// operations, the branch comparisons, set-less-than and a barrel shifter (left shifts reuse the
+// right shifter on bit-reversed data). The results are split by when they are ready: fast_o (add,
+// sub, xor, or, and) is forwarded from E into D, late_o (shifts, slt, sltu) only from W.
+//
+// For a subtraction or comparison (sub_i) the operand b_i arrives already inverted (decode does it
+// together with the operand select), which keeps one LUT level off the carry chain's input. The
+// adder is 33 bits wide: decode extends the operands with their sign bits for a signed comparison
+// and with zeros for an unsigned one, so bit 32 of a - b is the comparison result straight from
+// the end of the carry chain.
 module htx_cpu_alu (
   input  htx_cpu_pkg::alu_op_e op_i,
-  input  logic [31:0]          a_i,
-  input  logic [31:0]          b_i,
-  output logic [31:0]          result_o,
-  output logic [31:0]          sum_o,    // a + b, or a - b for Sub/Slt/Sltu
-  output logic                 eq_o,     // a == b
-  output logic                 lt_o,     // a < b signed   (valid when op_i subtracts)
-  output logic                 ltu_o     // a < b unsigned (valid when op_i subtracts)
+  input  logic                 sub_i,    // op_i is Sub, Slt or Sltu (decoded a cycle earlier)
+  input  logic [32:0]          a_i,      // bit 32: extension for comparisons
+  input  logic [32:0]          b_i,      // b, or ~b when sub_i; bit 32 likewise
+  output logic [31:0]          fast_o,   // add, sub, xor, or, and
+  output logic [31:0]          late_o,   // sll, srl, sra, slt, sltu
+  output logic [31:0]          sum_o,    // a + b, or a - b when sub_i
+  output logic                 eq_o,     // a == b (valid when sub_i)
+  output logic                 lt_o      // a < b, signed or not as extended (valid when sub_i)
 );
 
-  logic        sub;
   logic [32:0] sum33;
-  assign sub   = (op_i == htx_cpu_pkg::AluSub) || (op_i == htx_cpu_pkg::AluSlt) ||
-                 (op_i == htx_cpu_pkg::AluSltu);
-  assign sum33 = {1'b0, a_i} + {1'b0, b_i ^ {32{sub}}} + {32'b0, sub};
+  assign sum33 = a_i + b_i + {32'b0, sub_i};
   assign sum_o = sum33[31:0];
-  assign eq_o  = (a_i == b_i);
-  assign ltu_o = ~sum33[32];
-  assign lt_o  = (a_i[31] != b_i[31]) ? a_i[31] : sum33[31];
+  assign eq_o  = &(a_i[31:0] ^ b_i[31:0]);
+  assign lt_o  = sum33[32];
+
+  always_comb begin
+    unique case (op_i)
+      htx_cpu_pkg::AluXor: fast_o = a_i[31:0] ^ b_i[31:0];
+      htx_cpu_pkg::AluOr:  fast_o = a_i[31:0] | b_i[31:0];
+      htx_cpu_pkg::AluAnd: fast_o = a_i[31:0] & b_i[31:0];
+      default:             fast_o = sum_o;
+    endcase
+  end
 
   function automatic logic [31:0] reverse32(input logic [31:0] x);
     for (int i = 0; i < 32; i++) begin
@@ -33,27 +47,21 @@ module htx_cpu_alu (
   logic [32:0] shift_r;
   logic [31:0] shift_out;
   assign left      = (op_i == htx_cpu_pkg::AluSll);
-  assign shift_in  = left ? reverse32(a_i) : a_i;
+  assign shift_in  = left ? reverse32(a_i[31:0]) : a_i[31:0];
   assign shift_ext = {(op_i == htx_cpu_pkg::AluSra) & a_i[31], shift_in};
   assign shift_r   = $unsigned($signed(shift_ext) >>> b_i[4:0]);
   assign shift_out = left ? reverse32(shift_r[31:0]) : shift_r[31:0];
 
   logic unused_shift_sign;
   assign unused_shift_sign = shift_r[32];  // the sign-fill bit itself is never part of the result
+  logic unused_b_high;
+  assign unused_b_high = ^b_i[32:5];       // shift amounts use b_i[4:0] only
 
   always_comb begin
     unique case (op_i)
-      htx_cpu_pkg::AluAdd,
-      htx_cpu_pkg::AluSub:  result_o = sum_o;
-      htx_cpu_pkg::AluSlt:  result_o = {31'b0, lt_o};
-      htx_cpu_pkg::AluSltu: result_o = {31'b0, ltu_o};
-      htx_cpu_pkg::AluXor:  result_o = a_i ^ b_i;
-      htx_cpu_pkg::AluOr:   result_o = a_i | b_i;
-      htx_cpu_pkg::AluAnd:  result_o = a_i & b_i;
-      htx_cpu_pkg::AluSll,
-      htx_cpu_pkg::AluSrl,
-      htx_cpu_pkg::AluSra:  result_o = shift_out;
-      default:              result_o = sum_o;
+      htx_cpu_pkg::AluSlt,
+      htx_cpu_pkg::AluSltu: late_o = {31'b0, lt_o};
+      default:              late_o = shift_out;
     endcase
   end
 

@@ -12,9 +12,7 @@ module htx_cpu_csr (
   input  logic [1:0]              op_i,      // funct3[1:0]: 01 write, 10 set, 11 clear
   input  logic [31:0]             src_i,     // rs1 value or zero-extended uimm
   // instruction counting
-  input  logic                    retire_i,   // an instruction leaves execute without trapping
-  input  logic                    unretire_i, // ... but the load/store in write-back faulted
-                                              // (both counted one cycle later, for timing)
+  input  logic                    retire_i,   // an instruction leaves write-back without a fault
   // traps
   input  logic                    trap_i,
   input  htx_cpu_pkg::exc_cause_e cause_i,
@@ -34,8 +32,7 @@ module htx_cpu_csr (
   // Public so simulation harnesses can report the counts without a port.
   logic [63:0] cycle_q   /* verilator public_flat_rd */;
   logic [63:0] instret_q /* verilator public_flat_rd */;
-  logic [63:0] cycle_inc, instret_step;
-  logic        retire_q, unretire_q;
+  logic [63:0] cycle_inc, instret_inc;
 
   always_comb begin
     unique case (sel_i)
@@ -48,8 +45,8 @@ module htx_cpu_csr (
       htx_cpu_pkg::CsrMtval:    rdata_o = mtval_q;
       htx_cpu_pkg::CsrCycle:    rdata_o = cycle_q[31:0];
       htx_cpu_pkg::CsrCycleh:   rdata_o = cycle_q[63:32];
-      htx_cpu_pkg::CsrInstret:  rdata_o = instret_step[31:0];   // includes the pending count
-      htx_cpu_pkg::CsrInstreth: rdata_o = instret_step[63:32];
+      htx_cpu_pkg::CsrInstret:  rdata_o = instret_q[31:0];
+      htx_cpu_pkg::CsrInstreth: rdata_o = instret_q[63:32];
       default:                  rdata_o = 32'b0;  // mie, mip, id registers
     endcase
   end
@@ -69,21 +66,18 @@ module htx_cpu_csr (
   assign wr_instret  = we_i && (sel_i == htx_cpu_pkg::CsrInstret);
   assign wr_instreth = we_i && (sel_i == htx_cpu_pkg::CsrInstreth);
 
-  // A written counter takes the written value instead of counting in that cycle (the writing
-  // instruction itself is not counted), so the next instruction reads what was written.
-  assign cycle_inc    = cycle_q + 64'd1;
-  assign instret_step = instret_q + (unretire_q ? 64'hFFFF_FFFF_FFFF_FFFF : {63'b0, retire_q});
+  // A written counter takes the written value instead of counting in that cycle, so the next
+  // instruction reads what was written. The pipeline does not count the instruction that writes
+  // minstret(h), and runs a CSR instruction only when write-back is empty, so instret_q is exact
+  // when it is read and no retirement coincides with a write.
+  assign cycle_inc   = cycle_q + 64'd1;
+  assign instret_inc = instret_q + {63'b0, retire_i};
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       cycle_q    <= 64'b0;
       instret_q  <= 64'b0;
-      retire_q   <= 1'b0;
-      unretire_q <= 1'b0;
     end else begin
-      // The instruction that writes minstret(h) is not counted: the next one reads the value written.
-      retire_q   <= retire_i && !wr_instret && !wr_instreth;
-      unretire_q <= unretire_i;
       if (wr_cycle) begin
         cycle_q <= {cycle_q[63:32], wdata};
       end else if (wr_cycleh) begin
@@ -92,11 +86,11 @@ module htx_cpu_csr (
         cycle_q <= cycle_inc;
       end
       if (wr_instret) begin
-        instret_q <= {instret_step[63:32], wdata};
+        instret_q <= {instret_q[63:32], wdata};
       end else if (wr_instreth) begin
-        instret_q <= {wdata, instret_step[31:0]};
+        instret_q <= {wdata, instret_q[31:0]};
       end else begin
-        instret_q <= instret_step;
+        instret_q <= instret_inc;
       end
     end
   end

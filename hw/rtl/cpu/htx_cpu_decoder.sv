@@ -1,6 +1,7 @@
 // RV32IM + Zicsr instruction decoder (combinational). Every encoding that is not a legal RV32IM,
 // Zicsr, FENCE/FENCE.I, ECALL, EBREAK, MRET or WFI instruction for an implemented CSR comes out with
-// `illegal` set, every action flag clear and the raw instruction in `imm` (it becomes mtval).
+// `illegal` set, every action flag clear and the ALU set up to add 0 and the raw instruction (the
+// sum becomes mtval).
 module htx_cpu_decoder (
   input  logic [31:0]               instr_i,
   output htx_cpu_pkg::decoded_t     dec_o
@@ -184,6 +185,10 @@ module htx_cpu_decoder (
         end
         OpcSystem: begin
           if (funct3 == 3'b000) begin
+            // mtval of ECALL and EBREAK is 0: the adder computes 0 + 0.
+            d.op_a_sel = htx_cpu_pkg::OpAZero;
+            d.op_b_imm = 1'b1;
+            d.imm      = 32'b0;
             unique case (instr_i[31:7])
               25'h0000000: begin legal = 1'b1; d.ecall  = 1'b1; end
               25'h0002000: begin legal = 1'b1; d.ebreak = 1'b1; end
@@ -208,8 +213,9 @@ module htx_cpu_decoder (
     if (!legal) begin
       d         = '0;
       d.illegal = 1'b1;
-      d.imm     = instr_i;
-      d.op_a_sel = htx_cpu_pkg::OpARs1;
+      d.imm     = instr_i;  // mtval: the adder computes 0 + instruction
+      d.op_a_sel = htx_cpu_pkg::OpAZero;
+      d.op_b_imm = 1'b1;
       d.alu_op   = htx_cpu_pkg::AluAdd;
       d.csr_sel  = htx_cpu_pkg::CsrZero;
     end

@@ -7,8 +7,10 @@
 // only, which also guarantees a presented request is never withdrawn. Decode reads the buffer head,
 // or the arriving response directly when the buffer is empty.
 //
-// A redirect flushes the buffer and marks every request still in flight as stale; stale responses
-// are dropped as they arrive. If the redirect comes while a request waits for ready, that request
+// Two kinds of redirect flush the buffer and mark every request still in flight as stale (stale
+// responses are dropped as they arrive): redirect_i comes from a register, so its address goes on
+// the bus in the same cycle; predict_i (decode's branch prediction) comes from an adder and takes
+// effect from the next cycle. If a redirect comes while a request waits for ready, that request
 // stays on the bus (the protocol forbids withdrawing it) and the new address follows it.
 module htx_cpu_fetch #(
   parameter logic [31:0] BootAddr = 32'h0000_0000
@@ -23,13 +25,16 @@ module htx_cpu_fetch #(
   input  logic [31:0] ibus_rsp_rdata_i,
   input  logic        ibus_rsp_err_i,
 
-  input  logic        redirect_i,
+  input  logic        redirect_i,      // registered redirect (has priority)
   input  logic [31:2] redirect_pc_i,
+  input  logic        predict_i,       // decode's predicted-taken jump or branch
+  input  logic [31:2] predict_pc_i,
 
   output logic        instr_valid_o,
-  output logic [31:0] instr_o,
+  output logic [31:0] instr_o,         // an access fault reads as 0x00000017 (auipc x0, 0)
   output logic        instr_err_o,     // the fetch got rsp_err (instruction access fault)
-  output logic [31:0] instr_pc_o,
+  output logic [31:2] instr_pc_o,
+  output logic [31:2] instr_npc_o,     // instr_pc_o + 4
   input  logic        instr_ready_i    // decode takes the instruction this cycle
 );
 
@@ -37,28 +42,40 @@ module htx_cpu_fetch #(
   logic [31:2] head_pc_q;      // PC of the instruction at the decode interface
   logic [31:2] pend_pc_q;      // redirect target waiting behind a stuck request
   logic        pend_q;
+  logic        stuck_q;        // the request presented last cycle was not accepted
   logic [1:0]  in_flight_q;    // accepted requests without a response yet
   logic [1:0]  discard_q;      // how many of those are stale
   logic [1:0]  count_q;        // buffered instructions
   logic        rd_ptr_q, wr_ptr_q;
   logic [32:0] buf_q [2];      // {err, instr}
 
-  logic [2:0] occupancy;
-  logic       req_accepted, rsp_keep, rsp_drop;
-  logic       buf_empty, consume, push, pop;
+  logic [2:0]  occupancy;
+  logic        req_accepted, rsp_keep, rsp_drop, bypass, flush;
+  logic        buf_empty, consume, push, pop;
+  logic [31:2] req_addr, flush_pc;
+  logic [31:0] rsp_instr;
 
   assign occupancy        = {1'b0, in_flight_q} + {1'b0, count_q};
+  assign bypass           = redirect_i && !stuck_q;
+  assign req_addr         = bypass ? redirect_pc_i : req_pc_q;
   assign ibus_req_valid_o = (occupancy < 3'd2);
-  assign ibus_req_addr_o  = {req_pc_q, 2'b00};
+  assign ibus_req_addr_o  = {req_addr, 2'b00};
   assign req_accepted     = ibus_req_valid_o && ibus_req_ready_i;
   assign rsp_drop         = ibus_rsp_valid_i && (discard_q != 2'd0);
   assign rsp_keep         = ibus_rsp_valid_i && (discard_q == 2'd0);
+  assign flush            = redirect_i || predict_i;
+  assign flush_pc         = redirect_i ? redirect_pc_i : predict_pc_i;
+
+  // A faulting fetch is handed on as AUIPC x0, 0, so execute's adder produces the PC for mtval
+  // (the bus returns rdata = 0 with an error); instr_err_o makes it trap.
+  assign rsp_instr = ibus_rsp_rdata_i | (ibus_rsp_err_i ? 32'h0000_0017 : 32'h0);
 
   assign buf_empty     = (count_q == 2'd0);
   assign instr_valid_o = !buf_empty || rsp_keep;
-  assign instr_o       = buf_empty ? ibus_rsp_rdata_i : buf_q[rd_ptr_q][31:0];
+  assign instr_o       = buf_empty ? rsp_instr : buf_q[rd_ptr_q][31:0];
   assign instr_err_o   = buf_empty ? ibus_rsp_err_i : buf_q[rd_ptr_q][32];
-  assign instr_pc_o    = {head_pc_q, 2'b00};
+  assign instr_pc_o    = head_pc_q;
+  assign instr_npc_o   = head_pc_q + 30'd1;
   assign consume       = instr_valid_o && instr_ready_i;
   assign pop           = consume && !buf_empty;
   assign push          = rsp_keep && !(buf_empty && consume);
@@ -72,6 +89,7 @@ module htx_cpu_fetch #(
       head_pc_q   <= BootAddr[31:2];
       pend_pc_q   <= BootAddr[31:2];
       pend_q      <= 1'b0;
+      stuck_q     <= 1'b0;
       in_flight_q <= 2'd0;
       discard_q   <= 2'd0;
       count_q     <= 2'd0;
@@ -79,18 +97,23 @@ module htx_cpu_fetch #(
       wr_ptr_q    <= 1'b0;
     end else begin
       in_flight_q <= in_flight_d;
-      if (redirect_i) begin
-        discard_q <= in_flight_d;
+      stuck_q     <= ibus_req_valid_o && !ibus_req_ready_i;
+      if (flush) begin
+        // Every request in flight after this cycle is stale, except one for the new address.
+        discard_q <= in_flight_d - {1'b0, bypass && req_accepted};
         count_q   <= 2'd0;
         rd_ptr_q  <= 1'b0;
         wr_ptr_q  <= 1'b0;
-        head_pc_q <= redirect_pc_i;
-        if (ibus_req_valid_o && !ibus_req_ready_i) begin
+        head_pc_q <= flush_pc;
+        if (bypass) begin
+          pend_q   <= 1'b0;
+          req_pc_q <= req_accepted ? (req_addr + 30'd1) : req_addr;
+        end else if (ibus_req_valid_o && !ibus_req_ready_i) begin
           pend_q    <= 1'b1;
-          pend_pc_q <= redirect_pc_i;
+          pend_pc_q <= flush_pc;
         end else begin
           pend_q   <= 1'b0;
-          req_pc_q <= redirect_pc_i;
+          req_pc_q <= flush_pc;
         end
       end else begin
         discard_q <= discard_q - {1'b0, rsp_drop} + {1'b0, pend_q && req_accepted};
@@ -102,19 +125,19 @@ module htx_cpu_fetch #(
           rd_ptr_q <= ~rd_ptr_q;
         end
         if (consume) begin
-          head_pc_q <= head_pc_q + 30'd1;
+          head_pc_q <= instr_npc_o;
         end
         if (req_accepted) begin
           pend_q   <= 1'b0;
-          req_pc_q <= pend_q ? pend_pc_q : (req_pc_q + 30'd1);
+          req_pc_q <= pend_q ? pend_pc_q : (req_addr + 30'd1);
         end
       end
     end
   end
 
   always_ff @(posedge clk_i) begin
-    if (push && !redirect_i) begin
-      buf_q[wr_ptr_q] <= {ibus_rsp_err_i, ibus_rsp_rdata_i};
+    if (push && !flush) begin
+      buf_q[wr_ptr_q] <= {ibus_rsp_err_i, rsp_instr};
     end
   end
 

@@ -1,5 +1,6 @@
-// Load/store datapath (combinational): byte enables, store data placed on its lanes and the
-// misalignment check for the request; lane selection and sign/zero extension for the response.
+// Load/store datapath (combinational): byte enables and store data placed on its lanes for the
+// request (misalignment is checked in decode); lane selection and sign/zero extension for the
+// response.
 module htx_cpu_lsu (
   // request side (execute stage)
   input  logic [1:0]  req_size_i,     // funct3[1:0] of the load or store: byte, half, word
@@ -7,7 +8,6 @@ module htx_cpu_lsu (
   input  logic [31:0] req_data_i,     // rs2 of a store
   output logic [3:0]  req_be_o,
   output logic [31:0] req_wdata_o,
-  output logic        req_misaligned_o,
   // response side (write-back stage)
   input  logic [2:0]  rsp_funct3_i,
   input  logic [1:0]  rsp_offset_i,   // address bits [1:0] of the load
@@ -20,17 +20,14 @@ module htx_cpu_lsu (
       2'b00: begin
         req_be_o         = 4'b0001 << req_offset_i;
         req_wdata_o      = {4{req_data_i[7:0]}};
-        req_misaligned_o = 1'b0;
       end
       2'b01: begin
         req_be_o         = req_offset_i[1] ? 4'b1100 : 4'b0011;
         req_wdata_o      = {2{req_data_i[15:0]}};
-        req_misaligned_o = req_offset_i[0];
       end
       default: begin
         req_be_o         = 4'b1111;
         req_wdata_o      = req_data_i;
-        req_misaligned_o = (req_offset_i != 2'b00);
       end
     endcase
   end

@@ -1,7 +1,10 @@
-// Two-cycle 32x32 multiplier for MUL/MULH/MULHSU/MULHU built from four unsigned 16x16 partial
-// products, so that synth_ice40 -dsp maps exactly four SB_MAC16. Cycle 1 (start_i) registers the
-// partial products and the signed correction; cycle 2 (done_o) sums them. Signed high halves come
-// from the unsigned product: hi_signed = hi_unsigned - (a<0 ? b : 0) - (b<0 ? a : 0) (mod 2^32).
+// Three-cycle 32x32 multiplier for MUL/MULH/MULHSU/MULHU built from four unsigned 16x16 partial
+// products, so that synth_ice40 -dsp maps exactly four SB_MAC16. Signed high halves come from the
+// unsigned product: hi_signed = hi_unsigned - (a<0 ? b : 0) - (b<0 ? a : 0) (mod 2^32). Each cycle
+// has at most one carry chain, so the result can still be forwarded in the cycle it is done:
+//   cycle 1 (start_i): the partial products and the signed correction are registered;
+//   cycle 2:           lh + hl and hh - correction are registered;
+//   cycle 3 (done_o):  {hh - corr, ll} + (lh + hl) << 16 gives the selected half.
 module htx_cpu_mul (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -9,6 +12,7 @@ module htx_cpu_mul (
   input  logic [1:0]  op_i,     // funct3[1:0]: 00 MUL, 01 MULH, 10 MULHSU, 11 MULHU
   input  logic [31:0] a_i,
   input  logic [31:0] b_i,
+  output logic        busy_o,   // an operation is in flight: start_i is ignored
   output logic        done_o,
   output logic [31:0] result_o
 );
@@ -20,8 +24,10 @@ module htx_cpu_mul (
   assign corr_d   = ((a_signed && a_i[31]) ? b_i : 32'b0) + ((b_signed && b_i[31]) ? a_i : 32'b0);
 
   logic [31:0] p_ll_q, p_lh_q, p_hl_q, p_hh_q, corr_q;
+  logic [31:0] ll_q, hs_q;
+  logic [32:0] mid_q;
   logic        high_q;
-  logic        busy_q;
+  logic        step1_q, step2_q;
 
   always_ff @(posedge clk_i) begin
     if (start_i) begin
@@ -32,22 +38,28 @@ module htx_cpu_mul (
       corr_q <= corr_d;
       high_q <= (op_i != 2'b00);
     end
+    if (step1_q) begin
+      ll_q  <= p_ll_q;
+      hs_q  <= p_hh_q - corr_q;
+      mid_q <= {1'b0, p_lh_q} + {1'b0, p_hl_q};
+    end
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      busy_q <= 1'b0;
+      step1_q <= 1'b0;
+      step2_q <= 1'b0;
     end else begin
-      busy_q <= start_i;
+      step1_q <= start_i && !busy_o;
+      step2_q <= step1_q;
     end
   end
 
-  logic [32:0] mid;
   logic [63:0] product;
-  assign mid     = {1'b0, p_lh_q} + {1'b0, p_hl_q};
-  assign product = {p_hh_q, p_ll_q} + {15'b0, mid, 16'b0};
+  assign product = {hs_q, ll_q} + {15'b0, mid_q, 16'b0};
 
-  assign done_o   = busy_q;
-  assign result_o = high_q ? (product[63:32] - corr_q) : product[31:0];
+  assign busy_o   = step1_q || step2_q;
+  assign done_o   = step2_q;
+  assign result_o = high_q ? product[63:32] : product[31:0];
 
 endmodule

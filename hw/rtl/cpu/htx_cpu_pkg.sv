@@ -83,4 +83,26 @@ package htx_cpu_pkg;
     logic [31:0] imm;
   } decoded_t;
 
+  // The part of a decoded instruction that execute still needs (operands, traps and targets are
+  // resolved in decode and travel separately).
+  typedef struct packed {
+    logic        mret;
+    logic        fencei;
+    logic        branch;
+    logic        jal;
+    logic        jalr;
+    logic        load;
+    logic        store;
+    logic        mul;
+    logic        div;
+    logic        csr;
+    logic        csr_we;
+    csr_sel_e    csr_sel;
+    logic [2:0]  funct3;
+    logic [4:0]  uimm;      // rs1 field: CSRR*I immediate
+    logic [4:0]  rd;
+    logic        rd_we;
+    alu_op_e     alu_op;
+  } exec_t;
+
 endpackage

@@ -13,7 +13,9 @@ module htx_cpu_regfile (
   input  logic [31:0] wdata_i
 );
 
-  logic [31:0] mem_q [32];
+  // A same-cycle read of the address being written may return anything (the pipeline forwards that
+  // write itself), so synthesis adds no collision logic around the block RAM.
+  (* no_rw_check *) logic [31:0] mem_q [32];
 
   initial begin
     for (int i = 0; i < 32; i++) begin
