@@ -247,21 +247,25 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
   const int64_t px0 = 256 * int64_t{x0} + 128;
   i128 q = q_.at(px0, py), u = uq_.at(px0, py), v = vq_.at(px0, py);
   const i128 sq = 256 * q_.gx, su = 256 * uq_.gx, sv = 256 * vq_.gx;
+  // DIVFREE's only divisions, the RECIP_NR divider's (pixel_nr_steps): the coordinate U / Q with TF
+  // fraction bits; one reciprocal of Q serves both axes.
+  const auto divided = [&](i128 num) { return divide(num, q, pixel_nr_); };
+  // The triangle's first pixel is seeded by one division, whose coordinate also serves the first
+  // span's level choice.
+  int64_t seed_u = 0, seed_v = 0;
+  if (!df_started_) {
+    seed_u = divided(u);
+    seed_v = divided(v);
+  }
   // Bilinear and trilinear track on the grid of the mip level the LOD unit picks at the span's
-  // first pixel (from the previous span's grid position; the first span from the setup division),
+  // first pixel (from the previous span's grid position; the first span from the seed division),
   // so the steps per pixel stay near 2^f whatever the minification. (Bilinear still samples level 0;
   // its coordinate is then as coarse as the minification.) A level change rescales the carried
   // index. Nearest always tracks whole level-0 texels: it must find the exact texel.
   unsigned level = df_level_;
   if (state_.filter != Filter::Nearest && log2_ != nullptr) {
-    int64_t cu, cv;
-    if (df_started_) {
-      cu = grid_coord(df_ju_, df_level_);
-      cv = grid_coord(df_jv_, df_level_);
-    } else {
-      cu = divide(u, q, setup_recip_);
-      cv = divide(v, q, setup_recip_);
-    }
+    const int64_t cu = df_started_ ? grid_coord(df_ju_, df_level_) : seed_u;
+    const int64_t cv = df_started_ ? grid_coord(df_jv_, df_level_) : seed_v;
     const int32_t lod = lod_at(*log2_, px0, py, cu, cv);
     const int64_t l = lod == INT32_MIN ? 0 : (lod >> cfg_.lod_frac_bits);
     level = static_cast<unsigned>(std::clamp<int64_t>(l, 0, top_level_));
@@ -278,79 +282,91 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
     }
     df_level_ = level;
   }
-  // Each pixel starts from a prediction: the previous pixel's index plus the previous pixel's
-  // movement (one adder; the indices of a span are close to linear in x, so the grid steps only
-  // cover the curvature). A span's first pixel is predicted the same way from the first pixels of
-  // the two previous spans. The triangle's first pixel, and the pixel after one that hit the cap,
-  // start from a division by the shared reciprocal unit (modelled exact; no steps), so a capped
-  // pixel's error never propagates.
+  out->divfree_level = level;
   // Cell boundaries sit half a coordinate ulp above the grid lines (P = TF + L - f fraction bits
   // of a cell), so DIVFREE picks the texel nearest sampling picks for the exact quotient rounded to
-  // the texel-coordinate precision, exact ties included.
+  // the texel-coordinate precision, exact ties included. A divided coordinate c (TF fraction bits
+  // of level-0 texels, i.e. P bits of a cell) lies in cell (c - 1) >> P: the sampler's nearest rule
+  // on the cell grid.
   const unsigned p_bits = cfg_.texcoord_frac_bits + level - f;
+  const auto cell_of = [p_bits](int64_t coord) { return (coord - 1) >> p_bits; };
   const auto exact_u = [&] { return divfree_exact_index(u, q, f, level, p_bits); };
   const auto exact_v = [&] { return divfree_exact_index(v, q, f, level, p_bits); };
-  int64_t ju = 0, jv = 0, du = 0, dv = 0;
-  uint64_t cycles = 1;
-  // The x shift of the span start times the previous span's slope (cells per pixel, 16 fraction
-  // bits) predicts the part of the movement that comes from moving along the row.
+  // A span's first pixel is predicted from the first pixels of the previous spans: the last
+  // movement between them, plus the change of the x shift of the span start times the slope (cells
+  // per pixel, 16 fraction bits). When the shift is steady the slope does not matter at all; when
+  // it alternates (edges that are not at an integer slope) the slope accounts for it.
   const int64_t shift_x = x0 - df_x0_;
-  const int64_t along_u = (shift_x * df_slope_u_ + (int64_t{1} << 15)) >> 16;
-  const int64_t along_v = (shift_x * df_slope_v_ + (int64_t{1} << 15)) >> 16;
-  if (df_started_ && !df_resync_) {
-    ju = df_ju_ + df_du_ + along_u;
-    jv = df_jv_ + df_dv_ + along_v;
+  const int64_t shift_change = shift_x - df_shift_;
+  auto along = [shift_change](int64_t slope) { return (shift_change * slope + (int64_t{1} << 15)) >> 16; };
+  int64_t ju = 0, jv = 0, du = 0, dv = 0;
+  if (df_started_) {
+    ju = df_ju_ + df_du_ + along(df_slope_u_);
+    jv = df_jv_ + df_dv_ + along(df_slope_v_);
   } else {
-    ju = exact_u();
-    jv = exact_v();
-    if (df_started_) cycles += cfg_.recip_issue_interval;
-    df_ju_ = ju;
-    df_jv_ = jv;
-    df_du_ = df_dv_ = 0;
-    df_started_ = true;
-    df_resync_ = false;
+    ju = cell_of(seed_u);
+    jv = cell_of(seed_v);
   }
+  const int64_t first_pred_u = ju, first_pred_v = jv;
   const size_t n = out->u.size();
   const size_t slope_from = n > 65 ? n - 65 : 0;  // the slope spans at most the last 64 pixels
   int64_t slope_ju = 0, slope_jv = 0;
+  uint64_t cycles = 1;
   // Move j toward the exact index one grid step at a time, at most `cap` steps: identical to
   // reference 004's loop "while N < 0: j -= 1; while M >= 0: j += 1" on the integer conditions
   // of divfree_exact_index (N and M step by constants in x and by multiples of Q in j).
-  auto track = [cap](int64_t target, int64_t* j, uint32_t* steps, uint8_t* capped) {
+  // Returns false when the cap stopped the walk short of the exact index.
+  auto track = [cap](int64_t target, int64_t* j) {
     const int64_t d = target - *j;
     const int64_t a = d < 0 ? -d : d;
     const int64_t s = std::min(a, cap);
     *j += d < 0 ? -s : s;
-    *steps += static_cast<uint32_t>(s);
-    if (a > cap) *capped = 1;
     return s;
   };
-  bool resync = false;
-  for (size_t k = 0; k < out->u.size(); ++k) {
-    if (resync) {
-      ju = exact_u();
-      jv = exact_v();
-      du = dv = 0;
-      resync = false;
-      cycles += cfg_.recip_issue_interval;
-    } else if (k > 0) {
-      ju += du;  // prediction: previous index plus previous movement
+  for (size_t k = 0; k < n; ++k) {
+    // Each pixel starts from a prediction: the previous index plus the previous movement (one
+    // adder; the indices of a span are close to linear in x, so the grid steps only cover the
+    // curvature).
+    if (k > 0) {
+      ju += du;
       jv += dv;
     }
     const int64_t prev_u = ju - du, prev_v = jv - dv;  // the previous pixel's final index
-    const int64_t su_n = track(exact_u(), &ju, &out->divfree_steps[k], &out->divfree_capped[k]);
-    const int64_t sv_n = track(exact_v(), &jv, &out->divfree_steps[k], &out->divfree_capped[k]);
-    cycles += static_cast<uint64_t>(std::max<int64_t>(1, std::max(su_n, sv_n)));  // both axes step in parallel
-    resync = out->divfree_capped[k] != 0;
+    const int64_t target_u = exact_u(), target_v = exact_v();
+    const int64_t steps_u = track(target_u, &ju), steps_v = track(target_v, &jv);
+    out->divfree_steps[k] = static_cast<uint32_t>(steps_u + steps_v);
+    cycles += static_cast<uint64_t>(std::max<int64_t>(1, std::max(steps_u, steps_v)));  // axes step in parallel
+    if (ju != target_u || jv != target_v) {
+      // The cap stopped the walk: the pixel takes the divided value on the stopped axis (one
+      // division; its reciprocal of Q would serve both axes) and the walk goes on from there, so
+      // the pixel's error is the divider's and nothing propagates.
+      if (ju != target_u) ju = cell_of(divided(u));
+      if (jv != target_v) jv = cell_of(divided(v));
+      out->divfree_capped[k] = 1;
+      cycles += cfg_.recip_issue_interval;
+    }
     if (k == 0) {
-      // Movement between the first pixels of consecutive spans beyond the x-shift part, for the
-      // next span's prediction.
-      df_du_ = ju - df_ju_ - along_u;
-      df_dv_ = jv - df_jv_ - along_v;
+      if (df_started_) {
+        // Spans of one pixel show no slope of their own: the secant between the last two span
+        // starts, s + (j - prediction) / (change of shift), replaces it (reciprocal-of-length
+        // table, the change clamped to 64).
+        if (n == 1 && shift_change != 0) {
+          const int64_t a = std::min<int64_t>(shift_change < 0 ? -shift_change : shift_change, 64);
+          const int64_t inv = shift_change < 0 ? -inverse_length(a) : inverse_length(a);
+          df_slope_u_ += (ju - first_pred_u) * inv;
+          df_slope_v_ += (jv - first_pred_v) * inv;
+        }
+        df_du_ = ju - df_ju_;
+        df_dv_ = jv - df_jv_;
+        df_shift_ = shift_x;
+      } else {
+        df_du_ = df_dv_ = 0;
+        df_shift_ = 0;
+        df_started_ = true;
+      }
       df_ju_ = ju;
       df_jv_ = jv;
       df_x0_ = x0;
-      df_resync_ = resync;
       du = dv = 0;
     } else {
       du = ju - prev_u;

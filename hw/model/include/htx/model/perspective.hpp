@@ -21,6 +21,7 @@ struct SpanCoords {
   std::vector<int64_t> u, v;
   std::vector<uint32_t> divfree_steps;  // u steps + v steps at each pixel (DIVFREE)
   std::vector<uint8_t> divfree_capped;  // 1 where an axis stopped at the cap
+  unsigned divfree_level = 0;           // DIVFREE: mip level whose grid the span tracked on
   uint64_t cycles = 0;                  // estimated clocks of the span
 };
 
@@ -79,14 +80,14 @@ class TriangleUnit {
   int lod_shift_ = 0;
   uint64_t setup_cycles_ = 0;
   unsigned grid_bits_ = 0;
-  // DIVFREE position carried between spans: grid indices at the previous span's first pixel and
-  // their movement from the span before.
+  // DIVFREE position carried between spans: grid indices at the previous span's first pixel, their
+  // movement from the span before, that span start's x and its shift from the one before, and the
+  // slope (cells per pixel, 16 fraction bits).
   mutable bool df_started_ = false;
   mutable int64_t df_ju_ = 0, df_jv_ = 0, df_du_ = 0, df_dv_ = 0;
   mutable unsigned df_level_ = 0;
-  mutable bool df_resync_ = false;  // the previous span's first pixel hit the cap
-  mutable int64_t df_x0_ = 0;       // first x of the previous span
-  mutable int64_t df_slope_u_ = 0, df_slope_v_ = 0;  // cells per pixel, 16 fraction bits
+  mutable int64_t df_x0_ = 0, df_shift_ = 0;
+  mutable int64_t df_slope_u_ = 0, df_slope_v_ = 0;
 };
 
 // AUTO: the firmware's choice for one triangle (modelled from the ScreenVertex doubles, as the
