@@ -1,0 +1,122 @@
+// Framebuffer and depth buffer memories with their two users: the raster unit's fragment stage
+// (depth read, colour and depth write; always served first) and a bus slave for the CPU windows
+// (docs/contracts.md): colour at 0x3000_0000, RGB565, two pixels per 32-bit word (the lower address
+// in bits 15:0); depth at 0x3010_0000, one pixel per word in the low ZBits. A bus access waits while
+// the raster uses the port it needs. An address beyond the memory answers rsp_err (reads give 0).
+module htx_fb #(
+  parameter int unsigned ZBits    = 24,
+  parameter int unsigned AddrW    = 24,
+  parameter int unsigned FbPixels = 76800   // even
+) (
+  input  logic              clk_i,
+  input  logic              rst_ni,
+
+  input  logic              zr_en_i,
+  input  logic [AddrW-1:0]  zr_addr_i,
+  output logic [ZBits-1:0]  zr_data_o,
+  input  logic              wc_en_i,
+  input  logic              wz_en_i,
+  input  logic [AddrW-1:0]  w_addr_i,
+  input  logic [15:0]       wc_data_i,
+  input  logic [ZBits-1:0]  wz_data_i,
+
+  input  logic              req_valid_i,
+  output logic              req_ready_o,
+  input  logic [31:0]       req_addr_i,
+  input  logic              req_we_i,
+  input  logic [3:0]        req_be_i,
+  input  logic [31:0]       req_wdata_i,
+  output logic              rsp_valid_o,
+  output logic [31:0]       rsp_rdata_o,
+  output logic              rsp_err_o
+);
+  localparam int unsigned CWords = FbPixels / 2;
+  localparam int unsigned CAW    = $clog2(CWords);
+  localparam int unsigned ZAW    = $clog2(FbPixels);
+
+  // ---- Bus decode ------------------------------------------------------------------------------
+  logic        is_color, is_depth, in_range, accept, conflict;
+  logic [17:0] bus_word;   // word index inside the 1 MiB window
+  assign is_color = (req_addr_i[31:20] == 12'h300);
+  assign is_depth = (req_addr_i[31:20] == 12'h301);
+  assign bus_word = req_addr_i[19:2];
+  assign in_range = is_color ? (32'(bus_word) < CWords) : (is_depth && (32'(bus_word) < FbPixels));
+  // The raster's ports come first: a bus read of depth needs the depth read port, a bus write the
+  // write port of its memory.
+  assign conflict = in_range && (req_we_i ? (is_color ? wc_en_i : wz_en_i) : (is_depth && zr_en_i));
+  assign req_ready_o = !conflict;
+  assign accept = req_valid_i && req_ready_o;
+
+  logic bus_rd_c, bus_rd_z, bus_wr_c, bus_wr_z;
+  assign bus_rd_c = accept && in_range && !req_we_i && is_color;
+  assign bus_rd_z = accept && in_range && !req_we_i && is_depth;
+  assign bus_wr_c = accept && in_range && req_we_i && is_color;
+  assign bus_wr_z = accept && in_range && req_we_i && is_depth && (&req_be_i);
+
+  // ---- Colour: 32-bit words of two pixels --------------------------------------------------------
+  logic [1:0]     c_we;
+  logic [CAW-1:0] c_waddr;
+  logic [31:0]    c_wdata, c_rdata;
+  always_comb begin
+    if (wc_en_i) begin
+      c_we    = w_addr_i[0] ? 2'b10 : 2'b01;
+      c_waddr = CAW'(w_addr_i >> 1);
+      c_wdata = {wc_data_i, wc_data_i};
+    end else begin
+      c_we    = bus_wr_c ? {&req_be_i[3:2], &req_be_i[1:0]} : 2'b00;
+      c_waddr = CAW'(bus_word);
+      c_wdata = req_wdata_i;
+    end
+  end
+  htx_fb_ram #(.LaneW(16), .Lanes(2), .Words(CWords)) u_color (
+    .clk_i,
+    .re_i   (bus_rd_c),
+    .raddr_i(CAW'(bus_word)),
+    .rdata_o(c_rdata),
+    .we_i   (c_we),
+    .waddr_i(c_waddr),
+    .wdata_i(c_wdata)
+  );
+
+  // ---- Depth -------------------------------------------------------------------------------------
+  logic           z_re, z_we;
+  logic [ZAW-1:0] z_raddr, z_waddr;
+  logic [ZBits-1:0] z_wdata, z_rdata;
+  assign z_re    = zr_en_i || bus_rd_z;
+  assign z_raddr = zr_en_i ? ZAW'(zr_addr_i) : ZAW'(bus_word);
+  assign z_we    = wz_en_i || bus_wr_z;
+  assign z_waddr = wz_en_i ? ZAW'(w_addr_i) : ZAW'(bus_word);
+  assign z_wdata = wz_en_i ? wz_data_i : ZBits'(req_wdata_i);
+  htx_fb_ram #(.LaneW(ZBits), .Lanes(1), .Words(FbPixels)) u_depth (
+    .clk_i,
+    .re_i   (z_re),
+    .raddr_i(z_raddr),
+    .rdata_o(z_rdata),
+    .we_i   (z_we),
+    .waddr_i(z_waddr),
+    .wdata_i(z_wdata)
+  );
+  assign zr_data_o = z_rdata;
+
+  // ---- Response ----------------------------------------------------------------------------------
+  logic rsp_valid_q, rsp_err_q, rsp_c_q, rsp_z_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      rsp_valid_q <= 1'b0;
+      rsp_err_q   <= 1'b0;
+      rsp_c_q     <= 1'b0;
+      rsp_z_q     <= 1'b0;
+    end else begin
+      rsp_valid_q <= accept;
+      rsp_err_q   <= accept && !in_range;
+      rsp_c_q     <= bus_rd_c;
+      rsp_z_q     <= bus_rd_z;
+    end
+  end
+  assign rsp_valid_o = rsp_valid_q;
+  assign rsp_err_o   = rsp_err_q;
+  assign rsp_rdata_o = rsp_c_q ? c_rdata : (rsp_z_q ? 32'(z_rdata) : 32'd0);
+
+  logic unused;
+  assign unused = ^{zr_addr_i, w_addr_i, req_addr_i[1:0], req_wdata_i};
+endmodule

@@ -1,0 +1,118 @@
+// Setup of one attribute plane (docs/model.md §2): from vertex values a0..a2 and the vertex deltas,
+//   n_x = da1 dy2 - da2 dy1,  n_y = da2 dx1 - da1 dx2   (before any vertex swap),
+//   g = round(n R 2^-(W + msb - GF))                     (negated when setup swapped vertices 1, 2),
+//   start = a0 2^GF + g_x dxs + g_y dys                  (value at the first pixel centre visited).
+// n_x, n_y do not depend on the determinant, so they are formed while the reciprocal unit works.
+// Gradients and the start value are kept modulo 2^AccW (AccW = VB + GF + 2): traversal only
+// evaluates the plane inside the triangle, where the true value fits (docs/model.md §3).
+module htx_raster_plane #(
+  parameter int unsigned VB        = 8,    // value bits (unsigned vertex values)
+  parameter int unsigned DW        = 25,   // vertex coordinate delta width (signed)
+  parameter int unsigned W         = 32,   // reciprocal width
+  parameter int unsigned GF        = 24,   // gradient fraction bits
+  parameter bit          Iterative = 1'b0,
+  parameter int unsigned ShiftW    = 7,
+  parameter int unsigned AccW      = VB + GF + 2
+) (
+  input  logic                   clk_i,
+  input  logic                   rst_ni,
+  input  logic                   abort_i,
+  input  logic                   start_i,      // vertex values and deltas are valid from now on
+  input  logic [VB-1:0]          a0_i, a1_i, a2_i,
+  input  logic signed [DW-1:0]   dx1_i, dy1_i, dx2_i, dy2_i,
+  input  logic signed [DW-1:0]   dxs_i, dys_i, // first pixel centre minus vertex 0 (after the box)
+  input  logic                   recip_valid_i,
+  input  logic [W:0]             r_i,
+  input  logic [ShiftW-1:0]      shift_i,      // W + msb(det) - GF, at least 1
+  input  logic                   det_neg_i,
+  output logic                   done_o,
+  output logic [AccW-1:0]        gx_o, gy_o, start_o
+);
+  localparam int unsigned NW = VB + DW + 2;
+  localparam int unsigned MA = (NW > AccW) ? NW : AccW;
+  localparam int unsigned MB = (DW > W + 2) ? DW : W + 2;
+  localparam int unsigned PW = MA + MB;
+
+  typedef enum logic [3:0] {
+    StIdle, StNx0, StNx1, StNy0, StNy1, StWait, StGx, StGy, StSx, StSy, StDone
+  } state_e;
+
+  state_e state_q;
+  logic signed [VB:0]   da1, da2;
+  logic signed [NW-1:0] t_q, nx_q, ny_q, nsel;
+  logic [AccW-1:0]      gx_q, gy_q, acc_q;
+  logic signed [MA-1:0] mul_a;
+  logic signed [MB-1:0] mul_b;
+  logic signed [PW-1:0] mul_p, rounded;
+  logic                 mul_start, mul_done;
+  logic                 unused;
+
+  assign unused = ^rounded[PW-1:AccW];
+
+  assign da1 = $signed({1'b0, a1_i}) - $signed({1'b0, a0_i});
+  assign da2 = $signed({1'b0, a2_i}) - $signed({1'b0, a0_i});
+  assign nsel = (state_q == StGx) ? (det_neg_i ? -nx_q : nx_q) : (det_neg_i ? -ny_q : ny_q);
+
+  always_comb begin
+    mul_a = '0;
+    mul_b = '0;
+    unique case (state_q)
+      StNx0: begin mul_a = MA'(da1); mul_b = MB'(dy2_i); end
+      StNx1: begin mul_a = MA'(da2); mul_b = MB'(dy1_i); end
+      StNy0: begin mul_a = MA'(da2); mul_b = MB'(dx1_i); end
+      StNy1: begin mul_a = MA'(da1); mul_b = MB'(dx2_i); end
+      StGx, StGy: begin mul_a = MA'(nsel); mul_b = MB'($signed({1'b0, r_i})); end
+      StSx: begin mul_a = MA'($signed(gx_q)); mul_b = MB'(dxs_i); end
+      StSy: begin mul_a = MA'($signed(gy_q)); mul_b = MB'(dys_i); end
+      default: ;
+    endcase
+  end
+  assign mul_start = (state_q inside {StNx0, StNx1, StNy0, StNy1, StGx, StGy, StSx, StSy});
+
+  htx_raster_mul #(.AWidth(MA), .BWidth(MB), .Iterative(Iterative)) u_mul (
+    .clk_i, .rst_ni,
+    .start_i(mul_start),
+    .a_i    (mul_a),
+    .b_i    (mul_b),
+    .done_o (mul_done),
+    .p_o    (mul_p)
+  );
+  // Round to nearest, ties up: (p + 2^(shift-1)) >>> shift.
+  assign rounded = (mul_p + $signed(PW'(1) << (shift_i - 1'b1))) >>> shift_i;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      state_q <= StIdle;
+      t_q     <= '0;
+      nx_q    <= '0;
+      ny_q    <= '0;
+      gx_q    <= '0;
+      gy_q    <= '0;
+      acc_q   <= '0;
+    end else if (abort_i) begin
+      state_q <= StIdle;
+    end else begin
+      unique case (state_q)
+        StIdle, StDone: if (start_i) state_q <= StNx0;
+        StNx0: if (mul_done) begin t_q <= NW'(mul_p); state_q <= StNx1; end
+        StNx1: if (mul_done) begin nx_q <= t_q - NW'(mul_p); state_q <= StNy0; end
+        StNy0: if (mul_done) begin t_q <= NW'(mul_p); state_q <= StNy1; end
+        StNy1: if (mul_done) begin ny_q <= t_q - NW'(mul_p); state_q <= StWait; end
+        StWait: if (recip_valid_i) state_q <= StGx;
+        StGx: if (mul_done) begin gx_q <= AccW'(rounded); state_q <= StGy; end
+        StGy: if (mul_done) begin gy_q <= AccW'(rounded); state_q <= StSx; end
+        StSx: if (mul_done) begin
+          acc_q   <= (AccW'(a0_i) << GF) + AccW'(mul_p);
+          state_q <= StSy;
+        end
+        StSy: if (mul_done) begin acc_q <= acc_q + AccW'(mul_p); state_q <= StDone; end
+        default: state_q <= StIdle;
+      endcase
+    end
+  end
+
+  assign done_o  = (state_q == StDone);
+  assign gx_o    = gx_q;
+  assign gy_o    = gy_q;
+  assign start_o = acc_q;
+endmodule

@@ -1,0 +1,39 @@
+// Engine `rtl`: the same ScreenScene the `model` engine takes, encoded into vertex records by the
+// firmware's encoder exactly as the model encodes them, pushed through the Verilated raster unit's
+// FIFO register, and read back from its framebuffer and depth memories.
+#pragma once
+
+#include <cstdint>
+
+#include "htx/model/config.hpp"
+#include "htx/model/types.hpp"
+
+namespace htx {
+
+struct RtlStats {
+  uint64_t cycles = 0;          // clocks the raster unit was busy drawing (CNT_BUSY; the clear excluded)
+  uint64_t feed_cycles = 0;     // clocks from the first FIFO word to idle, as the host saw them
+  uint64_t covered_pixels = 0;  // fragments traversal produced (CNT_FRAGMENTS)
+  uint64_t pixels_written = 0;  // CNT_PIXELS
+  uint64_t triangles = 0;       // triangles taken from the FIFO (CNT_TRIANGLES)
+  uint64_t triangles_sent = 0;  // triangles the encoder accepted and the host pushed
+  uint64_t setup_busy_cycles = 0;
+  uint64_t stall_input = 0, stall_setup = 0, stall_fragment = 0;
+  uint64_t clear_cycles = 0;    // clocks of the fast clear before drawing
+  double px_per_clk = 0;        // covered_pixels / cycles
+  double setup_cycles_per_triangle = 0;
+};
+
+// Renders untextured triangles (flat and Gouraud; the texture slice comes later). Throws
+// std::invalid_argument when the configuration is not one the RTL builds (the named `full` and
+// `icebreaker` with their exact field values), when a triangle is textured, asks for a method the
+// configuration does not build, or the frame exceeds the 262144-pixel memories or 4096 per side.
+Frame render_rtl(const ScreenScene& scene, const ModelConfig& config, RtlStats* stats = nullptr);
+
+// The per-triangle state word (hw/regs/raster.json register STATE) of a triangle.
+uint32_t pack_state_word(const TriState& state, Method resolved_method);
+
+// Pixels whose colour or depth differ between two frames of the same size (throws otherwise).
+uint64_t frame_mismatch_pixels(const Frame& a, const Frame& b);
+
+}  // namespace htx

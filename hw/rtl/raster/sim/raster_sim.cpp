@@ -1,0 +1,242 @@
+#include "htx/rtl/raster_sim.hpp"
+
+#include <cstddef>
+#include <stdexcept>
+
+#include "Vhtx_raster_full.h"
+#include "Vhtx_raster_icebreaker.h"
+#include "htx_regs.h"
+#include "verilated.h"
+
+namespace htx::rtl {
+
+// The two Verilated configurations share every port name; this hides which one runs.
+struct BusIn {
+  bool valid = false, we = false;
+  uint32_t addr = 0, wdata = 0;
+  uint8_t be = 0xF;
+};
+struct BusOut {
+  bool ready = false, rsp_valid = false, rsp_err = false;
+  uint32_t rdata = 0;
+};
+
+class RasterPort {
+ public:
+  virtual ~RasterPort() = default;
+  // Drives both request ports, settles the logic with the clock low and returns the ready flags.
+  virtual void settle(const BusIn& reg, const BusIn& mem, bool* reg_ready, bool* mem_ready) = 0;
+  // Rising edge; returns the responses visible after it.
+  virtual void rise(BusOut* reg, BusOut* mem) = 0;
+  virtual void reset() = 0;
+};
+
+namespace {
+
+template <class V>
+class VerilatedPort final : public RasterPort {
+ public:
+  VerilatedPort() : ctx_(std::make_unique<VerilatedContext>()), top_(std::make_unique<V>(ctx_.get())) {}
+  ~VerilatedPort() override { top_->final(); }
+
+  void settle(const BusIn& r, const BusIn& m, bool* reg_ready, bool* mem_ready) override {
+    top_->reg_req_valid_i = r.valid;
+    top_->reg_req_addr_i = r.addr;
+    top_->reg_req_we_i = r.we;
+    top_->reg_req_be_i = r.be;
+    top_->reg_req_wdata_i = r.wdata;
+    top_->mem_req_valid_i = m.valid;
+    top_->mem_req_addr_i = m.addr;
+    top_->mem_req_we_i = m.we;
+    top_->mem_req_be_i = m.be;
+    top_->mem_req_wdata_i = m.wdata;
+    top_->clk_i = 0;
+    top_->eval();
+    *reg_ready = top_->reg_req_ready_o;
+    *mem_ready = top_->mem_req_ready_o;
+  }
+  void rise(BusOut* r, BusOut* m) override {
+    top_->clk_i = 1;
+    top_->eval();
+    r->rsp_valid = top_->reg_rsp_valid_o;
+    r->rsp_err = top_->reg_rsp_err_o;
+    r->rdata = top_->reg_rsp_rdata_o;
+    m->rsp_valid = top_->mem_rsp_valid_o;
+    m->rsp_err = top_->mem_rsp_err_o;
+    m->rdata = top_->mem_rsp_rdata_o;
+  }
+  void reset() override {
+    top_->reg_req_valid_i = 0;
+    top_->mem_req_valid_i = 0;
+    top_->rst_ni = 0;
+    top_->clk_i = 0;
+    top_->eval();
+    for (int i = 0; i < 2; ++i) {
+      top_->clk_i = 1;
+      top_->eval();
+      top_->clk_i = 0;
+      top_->eval();
+    }
+    top_->rst_ni = 1;
+    top_->eval();
+  }
+
+ private:
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<V> top_;
+};
+
+constexpr uint32_t kColorWindow = 0x30000000u;
+constexpr uint32_t kDepthWindow = 0x30100000u;
+
+}  // namespace
+
+RasterSim::RasterSim(const std::string& config) {
+  if (config == "full") {
+    port_ = std::make_unique<VerilatedPort<Vhtx_raster_full>>();
+  } else if (config == "icebreaker") {
+    port_ = std::make_unique<VerilatedPort<Vhtx_raster_icebreaker>>();
+  } else {
+    throw std::invalid_argument("rtl engine: no Verilated raster for configuration '" + config +
+                                "' (built: full, icebreaker)");
+  }
+  port_->reset();
+}
+
+RasterSim::~RasterSim() = default;
+
+void RasterSim::tick() {
+  bool rr = false, mr = false;
+  port_->settle(BusIn{}, BusIn{}, &rr, &mr);
+  BusOut r, m;
+  port_->rise(&r, &m);
+  ++cycles_;
+}
+
+void RasterSim::idle(uint64_t n) {
+  for (uint64_t i = 0; i < n; ++i) tick();
+}
+
+// One request on one port, held until accepted; its response is registered, so it is visible
+// right after the accepting edge.
+static BusOut run_one(RasterPort& port, const BusIn& req, bool on_mem, uint64_t& cycles) {
+  BusOut r, m;
+  for (;;) {
+    bool rr = false, mr = false;
+    port.settle(on_mem ? BusIn{} : req, on_mem ? req : BusIn{}, &rr, &mr);
+    const bool accepted = on_mem ? mr : rr;
+    port.rise(&r, &m);
+    ++cycles;
+    if (accepted) break;
+    if (cycles > (uint64_t{1} << 40)) throw std::runtime_error("rtl engine: bus request never accepted");
+  }
+  return on_mem ? m : r;
+}
+
+uint32_t RasterSim::read_reg(uint32_t offset) {
+  BusIn q;
+  q.valid = true;
+  q.addr = HTX_RASTER_BASE + offset;
+  return run_one(*port_, q, false, cycles_).rdata;
+}
+
+void RasterSim::write_reg(uint32_t offset, uint32_t value) {
+  BusIn q;
+  q.valid = true;
+  q.we = true;
+  q.addr = HTX_RASTER_BASE + offset;
+  q.wdata = value;
+  run_one(*port_, q, false, cycles_);
+}
+
+bool RasterSim::mem_read(uint32_t addr, uint32_t* data) {
+  BusIn q;
+  q.valid = true;
+  q.addr = addr;
+  const BusOut o = run_one(*port_, q, true, cycles_);
+  *data = o.rdata;
+  return o.rsp_err;
+}
+
+bool RasterSim::mem_write(uint32_t addr, uint32_t data, uint8_t be) {
+  BusIn q;
+  q.valid = true;
+  q.we = true;
+  q.addr = addr;
+  q.wdata = data;
+  q.be = be;
+  return run_one(*port_, q, true, cycles_).rsp_err;
+}
+
+void RasterSim::push_words(const std::vector<uint32_t>& words, unsigned gap_every, unsigned gap_cycles) {
+  BusIn q;
+  q.valid = true;
+  q.we = true;
+  q.addr = HTX_RASTER_BASE + offsetof(HTX_RASTER_Type, FIFO);
+  size_t i = 0;
+  size_t since_gap = 0;
+  while (i < words.size()) {
+    q.wdata = words[i];
+    bool rr = false, mr = false;
+    port_->settle(q, BusIn{}, &rr, &mr);
+    BusOut r, m;
+    port_->rise(&r, &m);
+    ++cycles_;
+    if (!rr) {
+      ++fifo_stall_cycles_;
+      continue;
+    }
+    ++i;
+    if (gap_every && ++since_gap == gap_every) {
+      since_gap = 0;
+      idle(gap_cycles);
+    }
+  }
+}
+
+void RasterSim::wait_idle(uint64_t max_cycles) {
+  const uint64_t start = cycles_;
+  while (read_reg(offsetof(HTX_RASTER_Type, STATUS)) & RASTER_STATUS_BUSY_Msk) {
+    if (cycles_ - start > max_cycles)
+      throw std::runtime_error("rtl engine: the raster unit did not go idle within " + std::to_string(max_cycles) +
+                               " clocks");
+  }
+}
+
+namespace {
+
+// Pipelined reads of n consecutive words from base: a new request every clock the port is ready.
+std::vector<uint32_t> read_words(RasterPort& port, uint32_t base, uint32_t n, uint64_t& cycles) {
+  std::vector<uint32_t> out;
+  out.reserve(n);
+  uint32_t issued = 0;
+  while (out.size() < n) {
+    BusIn q;
+    q.valid = issued < n;
+    q.addr = base + 4 * issued;
+    bool rr = false, mr = false;
+    port.settle(BusIn{}, q, &rr, &mr);
+    BusOut r, m;
+    port.rise(&r, &m);
+    ++cycles;
+    if (m.rsp_valid) {
+      if (m.rsp_err) throw std::runtime_error("rtl engine: framebuffer read outside the memory");
+      out.push_back(m.rdata);
+    }
+    if (q.valid && mr) ++issued;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<uint16_t> RasterSim::read_color(uint32_t n) {
+  const std::vector<uint32_t> w = read_words(*port_, kColorWindow, (n + 1) / 2, cycles_);
+  std::vector<uint16_t> px(n);
+  for (uint32_t i = 0; i < n; ++i) px[i] = static_cast<uint16_t>(w[i / 2] >> (16 * (i % 2)));
+  return px;
+}
+
+std::vector<uint32_t> RasterSim::read_depth(uint32_t n) { return read_words(*port_, kDepthWindow, n, cycles_); }
+
+}  // namespace htx::rtl
