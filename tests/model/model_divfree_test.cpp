@@ -53,6 +53,7 @@ struct Tally {
   uint64_t not_divided = 0;       // capped axes off both the exact cell and the divided value's cell
   uint64_t beyond_divider = 0;    // divided coordinates outside the divider's bound
   uint64_t wild = 0;              // capped axes more than one cell from the exact cell
+  uint64_t off_one = 0;           // capped axes one cell off (the divider's error crossed a cell edge)
   uint64_t steps_over_cap = 0;    // pixels with more than 2 * cap steps
   double worst_divider_ulps = 0;  // largest |divided - exact| in units of the bound
 };
@@ -121,6 +122,7 @@ Tally check_scene(const ScreenScene& sc, const ModelConfig& cfg) {
           if (err > bound) ++t.beyond_divider;
           if (j != exact && j != ((c - 1) >> p_bits)) ++t.not_divided;
           if (j > exact + 1 || j < exact - 1) ++t.wild;
+          if (j == exact + 1 || j == exact - 1) ++t.off_one;
         }
       }
     }
@@ -186,9 +188,12 @@ TEST_P(DivfreeScenes, ASmallCapIsHitAndEveryPixelStaysBounded) {
         const std::string what =
             std::string(cfg_name) + " cap " + std::to_string(cap) + (f == Filter::Nearest ? " nearest" : " bilinear");
         const Tally t = check_scene(divfree_scene(GetParam(), f), cfg);
-        std::printf("%s %s: %llu of %llu pixels capped, divided values within %.3f of the divider's bound\n",
-                    GetParam().c_str(), what.c_str(), static_cast<unsigned long long>(t.capped),
-                    static_cast<unsigned long long>(t.pixels), t.worst_divider_ulps);
+        std::printf(
+            "%s %s: %llu of %llu pixels capped, %llu capped axes one cell off, divided values within %.3f "
+            "of the divider's bound\n",
+            GetParam().c_str(), what.c_str(), static_cast<unsigned long long>(t.capped),
+            static_cast<unsigned long long>(t.pixels), static_cast<unsigned long long>(t.off_one),
+            t.worst_divider_ulps);
         expect_stable(t, what);
         if (cap == 1 && GetParam() == "floor") {
           EXPECT_GT(t.capped, 0u) << what;
