@@ -34,6 +34,9 @@ void check_config(const ModelConfig& c) {
                     c.recip_table_bits == n.recip_table_bits && c.recip_guard_bits == n.recip_guard_bits &&
                     c.recip_width == n.recip_width && c.setup_nr_steps == n.setup_nr_steps &&
                     c.methods == n.methods;
+  if (c.perspective_color)
+    throw std::invalid_argument(
+        "rtl engine: perspective-correct Gouraud colour (perspective_color) is not built yet; render with it off");
   if (!same)
     throw std::invalid_argument("rtl engine: configuration '" + c.name +
                                 "' differs from the built one in a width, table or method set");
@@ -57,6 +60,12 @@ fw::VertexIn to_vertex_in(const ScreenVertex& v) {
 uint32_t field(uint32_t value, uint32_t pos, uint32_t msk) { return (value << pos) & msk; }
 
 }  // namespace
+
+ModelConfig rtl_config(const std::string& name) {
+  ModelConfig c = model_config(name);
+  c.perspective_color = false;
+  return c;
+}
 
 uint32_t pack_state_word(const TriState& s, Method m) {
   return field(static_cast<uint32_t>(m), RASTER_STATE_METHOD_Pos, RASTER_STATE_METHOD_Msk) |

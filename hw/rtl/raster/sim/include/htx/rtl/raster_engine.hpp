@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "htx/model/config.hpp"
 #include "htx/model/types.hpp"
@@ -24,11 +25,16 @@ struct RtlStats {
   double setup_cycles_per_triangle = 0;
 };
 
-// Renders untextured triangles (flat and Gouraud; the texture slice comes later). Throws
-// std::invalid_argument when the configuration is not one the RTL builds (the named `full` and
-// `icebreaker` with their exact field values), when a triangle is textured, asks for a method the
+// Renders untextured triangles (flat and Gouraud linear in screen space; the texture slice comes
+// later). Throws std::invalid_argument when the configuration is not one the RTL builds (the named
+// `full` and `icebreaker` with their exact field values, except that perspective_color must be off:
+// `full` sets it, and its per-pixel colour division is not built yet; rtl_config() gives the
+// configuration the RTL renders), when a triangle is textured, asks for a method the
 // configuration does not build, or the frame exceeds the 262144-pixel memories or 4096 per side.
 Frame render_rtl(const ScreenScene& scene, const ModelConfig& config, RtlStats* stats = nullptr);
+
+// The named configuration as the RTL builds it (perspective_color off). Throws like model_config.
+ModelConfig rtl_config(const std::string& name);
 
 // The per-triangle state word (hw/regs/raster.json register STATE) of a triangle.
 uint32_t pack_state_word(const TriState& state, Method resolved_method);
