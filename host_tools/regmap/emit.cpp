@@ -36,7 +36,10 @@ void emit_c_header(std::ostream& os, const std::vector<Peripheral>& map) {
         "#ifndef __IM\n#define __IM volatile const\n#endif\n"
         "#ifndef __OM\n#define __OM volatile\n#endif\n"
         "#ifndef __IOM\n#define __IOM volatile\n#endif\n"
-        "#ifndef HTX_REG_WORD\n#define HTX_REG_WORD uint32_t\n#endif\n\n"
+        "#ifndef HTX_REG_WORD\n#define HTX_REG_WORD uint32_t\n#endif\n"
+        "/* Where a peripheral's register block is: the plain bus address by default. The host simulation\n"
+        " * maps each base onto a window of register proxies (hal/sim). */\n"
+        "#ifndef HTX_PERIPH_ADDR\n#define HTX_PERIPH_ADDR(base) (base)\n#endif\n\n"
         "#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n";
   for (const auto& p : map) {
     os << "/* ---- " << p.name << ": " << p.description << " ---- */\n";
@@ -53,7 +56,7 @@ void emit_c_header(std::ostream& os, const std::vector<Peripheral>& map) {
       next = r.offset + 4;
     }
     os << "} HTX_" << p.name << "_Type;\n\n";
-    os << "#define HTX_" << p.name << " ((HTX_" << p.name << "_Type *)HTX_" << p.name << "_BASE)\n\n";
+    os << "#define HTX_" << p.name << " ((HTX_" << p.name << "_Type *)HTX_PERIPH_ADDR(HTX_" << p.name << "_BASE))\n\n";
     for (const auto& r : p.registers) {
       const std::string rn = p.name + "_" + r.name;
       os << "#define " << rn << "_Offset 0x" << hex(r.offset, 3) << "U\n";
