@@ -1,0 +1,76 @@
+// Raster unit driver (hw/regs/raster.json): framebuffer set-up, fast clear, the vertex FIFO and the
+// performance counters. A triangle is one state word (layout of register STATE) followed by the
+// kTriangleWords words of htx::fw::pack_triangle.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "htx/fw/vertex_record.h"
+#include "htx/hal/regs.h"
+
+namespace htx::hal {
+
+struct RasterCounters {
+  uint32_t busy = 0, stall_input = 0, stall_setup = 0, stall_fragment = 0, setup_busy = 0;
+  uint32_t triangles = 0, fragments = 0, pixels = 0, divfree_steps = 0;
+};
+
+// Drops everything queued or in flight (FIFO, setup, traversal, a clear) and leaves the unit
+// enabled and idle. Pixels already written stay.
+inline void raster_abort() { HTX_RASTER->CTRL = RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_ABORT_Msk; }
+
+// Screen size (1..4096 each) and row stride in pixels; traversal clips every triangle to the size.
+inline void raster_configure(uint32_t width, uint32_t height, uint32_t stride) {
+  HTX_RASTER->FB_SIZE = ((width << RASTER_FB_SIZE_WIDTH_Pos) & RASTER_FB_SIZE_WIDTH_Msk) |
+                        ((height << RASTER_FB_SIZE_HEIGHT_Pos) & RASTER_FB_SIZE_HEIGHT_Msk);
+  HTX_RASTER->FB_STRIDE = (stride << RASTER_FB_STRIDE_PIXELS_Pos) & RASTER_FB_STRIDE_PIXELS_Msk;
+}
+
+// Queues a fast clear of the colour and/or depth buffer behind the triangles already queued.
+inline void raster_clear(bool color, uint16_t rgb565, bool depth, uint32_t z) {
+  HTX_RASTER->CLEAR_COLOR = (static_cast<uint32_t>(rgb565) << RASTER_CLEAR_COLOR_RGB565_Pos) & RASTER_CLEAR_COLOR_RGB565_Msk;
+  HTX_RASTER->CLEAR_DEPTH = (z << RASTER_CLEAR_DEPTH_Z_Pos) & RASTER_CLEAR_DEPTH_Z_Msk;
+  HTX_RASTER->CTRL = RASTER_CTRL_ENABLE_Msk | (color ? RASTER_CTRL_CLEAR_COLOR_Msk : 0u) |
+                     (depth ? RASTER_CTRL_CLEAR_DEPTH_Msk : 0u);
+}
+
+// Writes words into the vertex FIFO. A full FIFO holds each bus write until there is room
+// (back-pressure), so no word is dropped and no polling is needed.
+inline void raster_push(const uint32_t* words, size_t n) {
+  for (size_t i = 0; i < n; ++i) HTX_RASTER->FIFO = words[i];
+}
+
+inline void raster_push_triangle(uint32_t state_word, const uint32_t words[fw::kTriangleWords]) {
+  HTX_RASTER->FIFO = state_word;
+  raster_push(words, fw::kTriangleWords);
+}
+
+inline bool raster_busy() { return (HTX_RASTER->STATUS & RASTER_STATUS_BUSY_Msk) != 0; }
+
+// Polls STATUS until the unit is idle, at most max_polls times; returns false on a timeout.
+inline bool raster_wait_idle(uint32_t max_polls) {
+  for (uint32_t i = 0; i < max_polls; ++i)
+    if (!raster_busy()) return true;
+  return false;
+}
+
+// A triangle asked for something the configuration does not build since the last clear_error.
+inline bool raster_state_error() { return (HTX_RASTER->STATUS & RASTER_STATUS_ERR_STATE_Msk) != 0; }
+inline void raster_clear_state_error() { HTX_RASTER->STATUS = RASTER_STATUS_ERR_STATE_Msk; }
+
+inline void raster_reset_counters() { HTX_RASTER->CTRL = RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_COUNTERS_RESET_Msk; }
+
+inline void raster_read_counters(RasterCounters* c) {
+  c->busy = HTX_RASTER->CNT_BUSY;
+  c->stall_input = HTX_RASTER->CNT_STALL_INPUT;
+  c->stall_setup = HTX_RASTER->CNT_STALL_SETUP;
+  c->stall_fragment = HTX_RASTER->CNT_STALL_FRAGMENT;
+  c->setup_busy = HTX_RASTER->CNT_SETUP_BUSY;
+  c->triangles = HTX_RASTER->CNT_TRIANGLES;
+  c->fragments = HTX_RASTER->CNT_FRAGMENTS;
+  c->pixels = HTX_RASTER->CNT_PIXELS;
+  c->divfree_steps = HTX_RASTER->CNT_DIVFREE_STEPS;
+}
+
+}  // namespace htx::hal

@@ -1,0 +1,42 @@
+// UART driver (hw/regs/uart.json): bytes out and in, and waiting for the line to drain.
+// Freestanding C++17, written once over the generated registers for every HAL backend.
+#pragma once
+
+#include <stdint.h>
+
+#include "htx/hal/regs.h"
+
+namespace htx::hal {
+
+// Queues one byte. A full TX FIFO holds the bus write until there is room, so nothing is lost.
+inline void uart_put(uint8_t byte) { HTX_UART->DATA = byte; }
+
+inline void uart_write(const char* s) {
+  while (*s) uart_put(static_cast<uint8_t>(*s++));
+}
+
+// Takes one received byte if there is one (returns false when the RX FIFO is empty).
+inline bool uart_try_get(uint8_t* byte) {
+  const uint32_t d = HTX_UART->DATA;
+  if (d & UART_DATA_RX_EMPTY_Msk) return false;
+  *byte = static_cast<uint8_t>((d & UART_DATA_BYTE_Msk) >> UART_DATA_BYTE_Pos);
+  return true;
+}
+
+// Waits for a byte, polling at most max_polls times; returns -1 if none came.
+inline int uart_get(uint32_t max_polls) {
+  uint8_t b = 0;
+  for (uint32_t i = 0; i < max_polls; ++i)
+    if (uart_try_get(&b)) return b;
+  return -1;
+}
+
+// Waits until every queued byte has left the shift register (TX_IDLE), polling at most max_polls
+// times; returns false on a timeout.
+inline bool uart_flush(uint32_t max_polls) {
+  for (uint32_t i = 0; i < max_polls; ++i)
+    if (HTX_UART->STATUS & UART_STATUS_TX_IDLE_Msk) return true;
+  return false;
+}
+
+}  // namespace htx::hal

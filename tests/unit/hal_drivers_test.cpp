@@ -1,0 +1,166 @@
+// The HAL drivers over the host backend with the in-memory FakeBus: the same register syntax as on
+// the SoC lands on the right bus addresses with the right values, polling loops end, and misuse
+// gives clear errors.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <type_traits>
+
+#include "htx/hal/framebuffer.h"
+#include "htx/hal/raster.h"
+#include "htx/hal/sim/fake_bus.hpp"
+#include "htx/hal/sim/system_devices.hpp"
+#include "htx/hal/timer.h"
+#include "htx/hal/uart.h"
+
+namespace {
+
+using htx::hal::sim::FakeBus;
+using htx::hal::sim::ScopedBus;
+
+constexpr uint32_t kRaster = HTX_RASTER_BASE;
+
+// Read-only registers are const proxies: assigning one does not compile, as with volatile const.
+static_assert(!std::is_assignable_v<decltype((HTX_RASTER->STATE)), uint32_t>);
+static_assert(std::is_assignable_v<decltype((HTX_RASTER->FIFO)), uint32_t>);
+static_assert(sizeof(HTX_RASTER_Type) == RASTER_CNT_DIVFREE_STEPS_Offset + 4);
+
+TEST(HalSim, RegisterSyntaxIsABusTransactionAtBasePlusOffset) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  HTX_RASTER->FIFO = 0xDEADBEEFu;
+  bus.poke(HTX_UART_BASE + UART_STATUS_Offset, 0x5Au);
+  const uint32_t status = HTX_UART->STATUS;
+  ASSERT_EQ(bus.log().size(), 2u);
+  EXPECT_TRUE(bus.log()[0].write);
+  EXPECT_EQ(bus.log()[0].addr, kRaster + RASTER_FIFO_Offset);
+  EXPECT_EQ(bus.log()[0].value, 0xDEADBEEFu);
+  EXPECT_FALSE(bus.log()[1].write);
+  EXPECT_EQ(bus.log()[1].addr, HTX_UART_BASE + UART_STATUS_Offset);
+  EXPECT_EQ(status, 0x5Au);
+  HTX_TIMER->CTRL |= TIMER_CTRL_IRQ_ENABLE_Msk;  // read-modify-write: one read, one write
+  EXPECT_EQ(bus.reads_of(HTX_TIMER_BASE + TIMER_CTRL_Offset), 1u);
+  EXPECT_EQ(bus.writes_to(HTX_TIMER_BASE + TIMER_CTRL_Offset), std::vector<uint32_t>{TIMER_CTRL_IRQ_ENABLE_Msk});
+}
+
+TEST(HalSim, AccessWithoutABusThrows) {
+  htx::hal::sim::set_bus(nullptr);
+  EXPECT_THROW((void)static_cast<uint32_t>(HTX_RASTER->STATUS), std::logic_error);
+  EXPECT_THROW(htx::hal::sim::window(0x10000000u), std::invalid_argument);
+}
+
+TEST(HalRaster, PushTriangleWritesStateThenRecordWordsInOrder) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  uint32_t words[htx::fw::kTriangleWords];
+  for (size_t i = 0; i < htx::fw::kTriangleWords; ++i) words[i] = 1000u + static_cast<uint32_t>(i);
+  htx::hal::raster_push_triangle(0x00310000u, words);
+  const std::vector<uint32_t> fifo = bus.writes_to(kRaster + RASTER_FIFO_Offset);
+  ASSERT_EQ(fifo.size(), htx::fw::kTriangleWords + 1);
+  EXPECT_EQ(fifo[0], 0x00310000u);
+  for (size_t i = 0; i < htx::fw::kTriangleWords; ++i) EXPECT_EQ(fifo[i + 1], words[i]);
+}
+
+TEST(HalRaster, ConfigureClearAndCounters) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  htx::hal::raster_configure(160, 120, 176);
+  EXPECT_EQ(bus.peek(kRaster + RASTER_FB_SIZE_Offset), (120u << 16) | 160u);
+  EXPECT_EQ(bus.peek(kRaster + RASTER_FB_STRIDE_Offset), 176u);
+  htx::hal::raster_clear(true, 0x1234, false, 0xFFFFFFu);
+  EXPECT_EQ(bus.peek(kRaster + RASTER_CLEAR_COLOR_Offset), 0x1234u);
+  EXPECT_EQ(bus.peek(kRaster + RASTER_CLEAR_DEPTH_Offset), 0xFFFFFFu);
+  EXPECT_EQ(bus.peek(kRaster + RASTER_CTRL_Offset), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_CLEAR_COLOR_Msk);
+  bus.poke(kRaster + RASTER_CNT_PIXELS_Offset, 77);
+  bus.poke(kRaster + RASTER_CNT_TRIANGLES_Offset, 3);
+  htx::hal::RasterCounters c;
+  htx::hal::raster_read_counters(&c);
+  EXPECT_EQ(c.pixels, 77u);
+  EXPECT_EQ(c.triangles, 3u);
+  htx::hal::raster_abort();
+  EXPECT_EQ(bus.peek(kRaster + RASTER_CTRL_Offset), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_ABORT_Msk);
+}
+
+TEST(HalRaster, WaitIdlePollsUntilIdleAndTimesOut) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  int busy_reads = 5;
+  bus.on_read(kRaster + RASTER_STATUS_Offset,
+              [&] { return busy_reads-- > 0 ? uint32_t{RASTER_STATUS_BUSY_Msk} : uint32_t{RASTER_STATUS_FIFO_EMPTY_Msk}; });
+  EXPECT_TRUE(htx::hal::raster_wait_idle(100));
+  EXPECT_EQ(bus.reads_of(kRaster + RASTER_STATUS_Offset), 6u);
+  bus.on_read(kRaster + RASTER_STATUS_Offset, [] { return uint32_t{RASTER_STATUS_BUSY_Msk}; });
+  EXPECT_FALSE(htx::hal::raster_wait_idle(10));
+}
+
+TEST(HalTimer, NowRetriesWhenTheHighWordChangesAndWaitEnds) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  // The counter wraps its low word between the first two reads.
+  int hi_reads = 0;
+  bus.on_read(HTX_TIMER_BASE + TIMER_MTIME_HI_Offset, [&] { return hi_reads++ == 0 ? 6u : 7u; });
+  bus.on_read(HTX_TIMER_BASE + TIMER_MTIME_LO_Offset, [&] { return hi_reads <= 1 ? 0xFFFFFFFFu : 2u; });
+  EXPECT_EQ(htx::hal::timer_now(), (uint64_t{7} << 32) | 2u);
+
+  FakeBus clocked;
+  ScopedBus attach2(clocked);
+  clocked.on_read(HTX_TIMER_BASE + TIMER_MTIME_LO_Offset, [&] { return static_cast<uint32_t>(clocked.cycles()); });
+  htx::hal::timer_wait(50);
+  EXPECT_GE(clocked.cycles(), 50u);
+  EXPECT_LT(clocked.cycles(), 100u);
+  const uint64_t before = htx::hal::cpu_cycles();
+  htx::hal::cpu_idle(1000);
+  EXPECT_EQ(htx::hal::cpu_cycles() - before, 1000u);
+}
+
+TEST(HalUart, PutGetFlush) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  htx::hal::uart_write("hi");
+  EXPECT_EQ(bus.writes_to(HTX_UART_BASE + UART_DATA_Offset), (std::vector<uint32_t>{'h', 'i'}));
+  bus.poke(HTX_UART_BASE + UART_DATA_Offset, UART_DATA_RX_EMPTY_Msk);
+  uint8_t b = 0;
+  EXPECT_FALSE(htx::hal::uart_try_get(&b));
+  EXPECT_EQ(htx::hal::uart_get(3), -1);
+  bus.poke(HTX_UART_BASE + UART_DATA_Offset, 'x');
+  EXPECT_EQ(htx::hal::uart_get(3), 'x');
+  EXPECT_FALSE(htx::hal::uart_flush(4));
+  bus.poke(HTX_UART_BASE + UART_STATUS_Offset, UART_STATUS_TX_IDLE_Msk);
+  EXPECT_TRUE(htx::hal::uart_flush(4));
+}
+
+TEST(HalFramebuffer, ReadsPixelsAndRowsFromHalfWords) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  // stride 5: pixel i at half-word i of the colour window.
+  for (uint32_t w = 0; w < 8; ++w) bus.poke(htx::hal::kFbColorBase + 4 * w, ((2 * w + 1) << 16) | (2 * w));
+  EXPECT_EQ(htx::hal::fb_read_pixel(5, 2, 1), 7);
+  uint16_t row[4] = {};
+  htx::hal::fb_read_row(5, 1, 0, 4, row);  // pixels 5..8
+  EXPECT_EQ(row[0], 5);
+  EXPECT_EQ(row[1], 6);
+  EXPECT_EQ(row[2], 7);
+  EXPECT_EQ(row[3], 8);
+  bus.poke(htx::hal::kFbDepthBase + 4 * 6, 0xABCDEF);
+  EXPECT_EQ(htx::hal::fb_read_depth(5, 1, 1), 0xABCDEFu);
+}
+
+TEST(HalSystemDevices, TimerFollowsTheClockUartCollectsBytes) {
+  htx::hal::sim::SystemDevices d;
+  EXPECT_EQ(d.read(HTX_TIMER_BASE + TIMER_MTIME_LO_Offset, 1234), 1234u);
+  d.write(HTX_TIMER_BASE + TIMER_MTIME_LO_Offset, 0, 2000);
+  EXPECT_EQ(d.read(HTX_TIMER_BASE + TIMER_MTIME_LO_Offset, 2010), 10u);
+  d.write(HTX_UART_BASE + UART_DATA_Offset, 'o', 0);
+  d.write(HTX_SYSCTRL_BASE + SYSCTRL_SIM_PUTCHAR_Offset, 'k', 0);
+  EXPECT_EQ(d.uart_output(), "ok");
+  EXPECT_EQ(d.read(HTX_UART_BASE + UART_DATA_Offset, 0), UART_DATA_RX_EMPTY_Msk);
+  d.uart_receive("z");
+  EXPECT_TRUE(d.read(HTX_UART_BASE + UART_STATUS_Offset, 0) & UART_STATUS_RX_VALID_Msk);
+  EXPECT_EQ(d.read(HTX_UART_BASE + UART_DATA_Offset, 0), uint32_t{'z'});
+  EXPECT_EQ(d.read(HTX_SYSCTRL_BASE + SYSCTRL_ID_Offset, 0), SYSCTRL_ID_RESET);
+  d.write(HTX_SYSCTRL_BASE + SYSCTRL_SIM_EXIT_Offset, 3, 0);
+  EXPECT_TRUE(d.exited());
+  EXPECT_EQ(d.exit_code(), 3u);
+}
+
+}  // namespace
