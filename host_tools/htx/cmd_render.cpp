@@ -1,5 +1,5 @@
-// htx render: render a built-in scene or an OBJ file on the `ref` or `model` engine, write a PNG,
-// and optionally the metrics of the frame against `ref` as JSON.
+// htx render: render a built-in scene or an OBJ file on the `ref`, `model` or (when built) `rtl`
+// engine, write a PNG, and optionally the metrics of the frame against `ref` as JSON.
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -16,6 +16,10 @@
 #include "htx/model/names.hpp"
 #include "htx/model/ref.hpp"
 #include "htx/model/scenes.hpp"
+#if __has_include("htx/rtl/raster_engine.hpp")
+#include "htx/rtl/raster_engine.hpp"
+#define HTX_HAVE_RTL_ENGINE 1
+#endif
 
 namespace htx {
 
@@ -30,6 +34,7 @@ struct RenderArgs {
   std::string size = "320x240";
   std::string out;
   std::string metrics;
+  bool untextured = false;
 };
 
 void parse_size(const std::string& text, int& w, int& h) {
@@ -42,9 +47,16 @@ void parse_size(const std::string& text, int& w, int& h) {
 void run_render(const RenderArgs& a) {
   int width = 0, height = 0;
   parse_size(a.size, width, height);
+#ifdef HTX_HAVE_RTL_ENGINE
+  if (a.engine != "ref" && a.engine != "model" && a.engine != "rtl")
+    throw std::invalid_argument("--engine '" + a.engine + "': this build renders on ref, model or rtl");
+#else
   if (a.engine != "ref" && a.engine != "model")
     throw std::invalid_argument("--engine '" + a.engine + "': this build renders on ref or model");
+#endif
   ScreenScene screen = prepare_screen_scene(load_scene(a.scene), width, height);
+  if (a.untextured)
+    for (ScreenTri& t : screen.tris) t.state.textured = false;
   if (!a.method.empty()) {
     const MethodChoice m = parse_method(a.method);
     for (ScreenTri& t : screen.tris) {
@@ -56,12 +68,24 @@ void run_render(const RenderArgs& a) {
     const Filter f = parse_filter(a.filter);
     for (ScreenTri& t : screen.tris) t.state.filter = f;
   }
+#ifdef HTX_HAVE_RTL_ENGINE
+  // The RTL builds Gouraud colour linear in screen space; `rtl` and its model comparison use that.
+  const ModelConfig config = a.engine == "rtl" ? rtl_config(a.config) : model_config(a.config);
+  RtlStats rtl_stats;
+#else
   const ModelConfig& config = model_config(a.config);
+#endif
   RefOptions ref_options;
   ref_options.depth_bits = config.z_bits;
 
   const auto t0 = std::chrono::steady_clock::now();
+#ifdef HTX_HAVE_RTL_ENGINE
+  const Frame frame = a.engine == "ref"     ? render_ref(screen, ref_options)
+                      : a.engine == "model" ? render_model(screen, config)
+                                            : render_rtl(screen, config, &rtl_stats);
+#else
   const Frame frame = a.engine == "ref" ? render_ref(screen, ref_options) : render_model(screen, config);
+#endif
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   write_png(a.out, image_from_rgb565(frame.width, frame.height, frame.color));
   std::cout << a.engine << " rendered " << a.scene << " (" << screen.tris.size() << " triangles, " << width << "x"
@@ -71,7 +95,17 @@ void run_render(const RenderArgs& a) {
     const Frame ref = a.engine == "ref" ? frame : render_ref(screen, ref_options);
     MetricsLabels labels{a.engine, a.scene, a.method.empty() ? "scene" : a.method,
                          a.filter.empty() ? "scene" : a.filter, a.engine == "ref" ? "-" : a.config};
-    const nlohmann::json j = metrics_to_json(compute_metrics(frame, ref, labels));
+    nlohmann::json j = metrics_to_json(compute_metrics(frame, ref, labels));
+#ifdef HTX_HAVE_RTL_ENGINE
+    if (a.engine == "rtl") {
+      j["cycles"] = rtl_stats.cycles;
+      j["covered_pixels"] = rtl_stats.covered_pixels;
+      j["px_per_clk"] = rtl_stats.px_per_clk;
+      j["triangles"] = rtl_stats.triangles;
+      j["setup_cycles_per_triangle"] = rtl_stats.setup_cycles_per_triangle;
+      j["model_mismatch_pixels"] = frame_mismatch_pixels(frame, render_model(screen, config));
+    }
+#endif
     std::ofstream out(a.metrics);
     out << j.dump(2) << "\n";
     if (!out) throw std::runtime_error("cannot write metrics to '" + a.metrics + "'");
@@ -85,7 +119,9 @@ void register_render(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   auto* cmd = app.add_subcommand("render", "Render a scene (built-in NAME[:k=v,...] or FILE.obj) to a PNG");
   cmd->add_option("scene", args->scene, "built-in scene spec (see `htx scenes`) or an OBJ file")->required();
-  cmd->add_option("--engine", args->engine, "ref | model")->capture_default_str();
+  cmd->add_option("--engine", args->engine, "ref | model | rtl (when built)")->capture_default_str();
+  cmd->add_flag("--untextured", args->untextured,
+                "draw every triangle untextured (its colour only); the rtl engine needs it until the texture unit lands");
   cmd->add_option("--method", args->method,
                   "override every triangle's perspective method: affine, subdivN (2..64), recip_lut, recip_nr, "
                   "divfree, quadratic, auto");
