@@ -67,7 +67,7 @@ module htx_raster_plane #(
       default: ;
     endcase
   end
-  assign mul_start = (state_q inside {StNx0, StNx1, StNy0, StNy1, StGx, StGy, StSx, StSy});
+  assign mul_start = (state_q != StIdle) && (state_q != StWait) && (state_q != StDone);
 
   htx_raster_mul #(.AWidth(MA), .BWidth(MB), .Iterative(Iterative)) u_mul (
     .clk_i, .rst_ni,
