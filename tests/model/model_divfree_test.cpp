@@ -159,8 +159,8 @@ TEST_P(DivfreeScenes, ExactOnTheLevelGridWithBilinearAndTrilinear) {
       const std::string what = std::string(cfg_name) + (f == Filter::Bilinear ? " bilinear" : " trilinear");
       const Tally t = check_scene(divfree_scene(GetParam(), f), cfg);
       expect_stable(t, what);
-      // On the 2^-f grid cap hits stay below 1 % everywhere (the worst, `slivers` in `full`, 0.6 %).
-      EXPECT_LE(t.capped * 100, t.pixels) << what << ": " << t.capped << " of " << t.pixels;
+      // Even on the finer 2^-f grid cap hits stay rare, thin triangles included.
+      EXPECT_LE(t.capped * 1000, t.pixels) << what << ": " << t.capped << " of " << t.pixels;
     }
   }
 }
@@ -173,6 +173,8 @@ TEST_P(DivfreeScenes, CapBoundsTheStepsOfEveryFilter) {
       const Frame fr = render_model(divfree_scene(GetParam(), f), cfg);
       EXPECT_GT(fr.counters.divfree_pixels, 0u);
       EXPECT_LE(fr.counters.divfree_steps_max, 2u * cfg.divfree_cap) << cfg_name;
+      // The predictions leave about one grid step per pixel (measured 0.2 to 1.15 on every scene).
+      EXPECT_LE(fr.counters.divfree_steps_total, 2 * fr.counters.divfree_pixels) << cfg_name;
     }
   }
 }

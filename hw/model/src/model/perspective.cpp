@@ -243,25 +243,42 @@ int64_t TriangleUnit::grid_coord(int64_t j, unsigned level) const {
 
 void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) const {
   const unsigned f = grid_bits_;
+  const unsigned tf = cfg_.texcoord_frac_bits;
   const int64_t cap = cfg_.divfree_cap;
   const int64_t px0 = 256 * int64_t{x0} + 128;
+  const int64_t row = py >> 8;
   i128 q = q_.at(px0, py), u = uq_.at(px0, py), v = vq_.at(px0, py);
   const i128 sq = 256 * q_.gx, su = 256 * uq_.gx, sv = 256 * vq_.gx;
   // DIVFREE's only divisions, the RECIP_NR divider's (pixel_nr_steps): the coordinate U / Q with TF
   // fraction bits; one reciprocal of Q serves both axes.
   const auto divided = [&](i128 num) { return divide(num, q, pixel_nr_); };
-  // The triangle's first pixel is seeded by one division, whose coordinate also serves the first
-  // span's level choice.
+  // The triangle's first pixel is seeded by one division. The same reciprocal of Q also gives the
+  // coordinate's derivatives there, (g_U 2^TF - c g_Q) / Q per subpixel along x and y (TF units per
+  // pixel, 16 fraction bits), which start the span-start predictor; the seed's coordinate also serves
+  // the first span's level choice.
   int64_t seed_u = 0, seed_v = 0;
+  int64_t seed_ux = 0, seed_uy = 0, seed_vx = 0, seed_vy = 0;
   if (!df_started_) {
     seed_u = divided(u);
     seed_v = divided(v);
+    // A derivative beyond twice the coordinate range per pixel predicts nothing: the numerator
+    // saturates at that many TF units times Q.
+    const i128 limit = mul_checked(static_cast<i128>(1) << (cfg_.uv_int_bits + tf + 1), q);
+    auto derivative = [&](i128 g_num, i128 g_q, int64_t c) {
+      const i128 num = mul_checked(256, mul_checked(g_num, static_cast<i128>(1) << tf) - mul_checked(c, g_q));
+      return divide_fixed(pixel_nr_, std::clamp<i128>(num, -limit, limit), q, 16);
+    };
+    seed_ux = derivative(uq_.gx, q_.gx, seed_u);
+    seed_uy = derivative(uq_.gy, q_.gy, seed_u);
+    seed_vx = derivative(vq_.gx, q_.gx, seed_v);
+    seed_vy = derivative(vq_.gy, q_.gy, seed_v);
   }
   // Bilinear and trilinear track on the grid of the mip level the LOD unit picks at the span's
   // first pixel (from the previous span's grid position; the first span from the seed division),
   // so the steps per pixel stay near 2^f whatever the minification. (Bilinear still samples level 0;
   // its coordinate is then as coarse as the minification.) A level change rescales the carried
-  // index. Nearest always tracks whole level-0 texels: it must find the exact texel.
+  // index, slope and row movement. Nearest always tracks whole level-0 texels: it must find the
+  // exact texel.
   unsigned level = df_level_;
   if (state_.filter != Filter::Nearest && log2_ != nullptr) {
     const int64_t cu = df_started_ ? grid_coord(df_ju_, df_level_) : seed_u;
@@ -275,8 +292,8 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
       };
       df_ju_ = rescale(df_ju_);
       df_jv_ = rescale(df_jv_);
-      df_du_ = rescale(df_du_);
-      df_dv_ = rescale(df_dv_);
+      df_row_u_ = rescale(df_row_u_);
+      df_row_v_ = rescale(df_row_v_);
       df_slope_u_ = rescale(df_slope_u_);
       df_slope_v_ = rescale(df_slope_v_);
     }
@@ -288,26 +305,25 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
   // the texel-coordinate precision, exact ties included. A divided coordinate c (TF fraction bits
   // of level-0 texels, i.e. P bits of a cell) lies in cell (c - 1) >> P: the sampler's nearest rule
   // on the cell grid.
-  const unsigned p_bits = cfg_.texcoord_frac_bits + level - f;
+  const unsigned p_bits = tf + level - f;
   const auto cell_of = [p_bits](int64_t coord) { return (coord - 1) >> p_bits; };
   const auto exact_u = [&] { return divfree_exact_index(u, q, f, level, p_bits); };
   const auto exact_v = [&] { return divfree_exact_index(v, q, f, level, p_bits); };
-  // A span's first pixel is predicted from the first pixels of the previous spans: the last
-  // movement between them, plus the change of the x shift of the span start times the slope (cells
-  // per pixel, 16 fraction bits). When the shift is steady the slope does not matter at all; when
-  // it alternates (edges that are not at an integer slope) the slope accounts for it.
-  const int64_t shift_x = x0 - df_x0_;
-  const int64_t shift_change = shift_x - df_shift_;
-  auto along = [shift_change](int64_t slope) { return (shift_change * slope + (int64_t{1} << 15)) >> 16; };
+  // A span's first pixel is predicted from the previous span's first pixel by a plane in cells:
+  // j_a + (dy * row + dx * slope) with the movement per row at fixed x and per pixel along x (both
+  // 16 fraction bits), dy and dx the distance in rows and pixels between the two span starts.
+  const int64_t dx = x0 - df_x0_, dy = row - df_row_;
+  auto plane_step = [dx, dy](int64_t per_row, int64_t per_pixel) {
+    return static_cast<int64_t>(shift_round(static_cast<i128>(dy) * per_row + static_cast<i128>(dx) * per_pixel, 16));
+  };
   int64_t ju = 0, jv = 0, du = 0, dv = 0;
   if (df_started_) {
-    ju = df_ju_ + df_du_ + along(df_slope_u_);
-    jv = df_jv_ + df_dv_ + along(df_slope_v_);
+    ju = df_ju_ + plane_step(df_row_u_, df_slope_u_);
+    jv = df_jv_ + plane_step(df_row_v_, df_slope_v_);
   } else {
     ju = cell_of(seed_u);
     jv = cell_of(seed_v);
   }
-  const int64_t first_pred_u = ju, first_pred_v = jv;
   const size_t n = out->u.size();
   const size_t slope_from = n > 65 ? n - 65 : 0;  // the slope spans at most the last 64 pixels
   int64_t slope_ju = 0, slope_jv = 0;
@@ -315,16 +331,14 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
   // Move j toward the exact index one grid step at a time, at most `cap` steps: identical to
   // reference 004's loop "while N < 0: j -= 1; while M >= 0: j += 1" on the integer conditions
   // of divfree_exact_index (N and M step by constants in x and by multiples of Q in j).
-  // Returns false when the cap stopped the walk short of the exact index.
   auto track = [cap](int64_t target, int64_t* j) {
     const int64_t d = target - *j;
-    const int64_t a = d < 0 ? -d : d;
-    const int64_t s = std::min(a, cap);
+    const int64_t s = std::min(d < 0 ? -d : d, cap);
     *j += d < 0 ? -s : s;
     return s;
   };
   for (size_t k = 0; k < n; ++k) {
-    // Each pixel starts from a prediction: the previous index plus the previous movement (one
+    // Each pixel after the first starts from the previous index plus the previous movement (one
     // adder; the indices of a span are close to linear in x, so the grid steps only cover the
     // curvature).
     if (k > 0) {
@@ -347,27 +361,33 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
     }
     if (k == 0) {
       if (df_started_) {
-        // Spans of one pixel show no slope of their own: the secant between the last two span
-        // starts, s + (j - prediction) / (change of shift), replaces it (reciprocal-of-length
-        // table, the change clamped to 64).
-        if (n == 1 && shift_change != 0) {
-          const int64_t a = std::min<int64_t>(shift_change < 0 ? -shift_change : shift_change, 64);
-          const int64_t inv = shift_change < 0 ? -inverse_length(a) : inverse_length(a);
-          df_slope_u_ += (ju - first_pred_u) * inv;
-          df_slope_v_ += (jv - first_pred_v) * inv;
+        // The movement per row that, with the current slope, explains this span start:
+        // ((j - j_a) 2^16 - dx * slope) / dy, the division by the row count from the reciprocal-of-
+        // length table (a gap of more than 64 rows keeps the old value).
+        if (dy <= 64) {
+          const int64_t inv_dy = inverse_length(dy);
+          auto per_row = [&](int64_t moved, int64_t per_pixel) {
+            const i128 rest = static_cast<i128>(moved) * 65536 - static_cast<i128>(dx) * per_pixel;
+            return static_cast<int64_t>(shift_round(rest * inv_dy, 16));
+          };
+          df_row_u_ = per_row(ju - df_ju_, df_slope_u_);
+          df_row_v_ = per_row(jv - df_jv_, df_slope_v_);
         }
-        df_du_ = ju - df_ju_;
-        df_dv_ = jv - df_jv_;
-        df_shift_ = shift_x;
       } else {
-        df_du_ = df_dv_ = 0;
-        df_shift_ = 0;
+        // The seed's derivatives in cells (16 fraction bits).
+        df_row_u_ = static_cast<int64_t>(shift_round(seed_uy, static_cast<int>(p_bits)));
+        df_row_v_ = static_cast<int64_t>(shift_round(seed_vy, static_cast<int>(p_bits)));
+        df_slope_u_ = static_cast<int64_t>(shift_round(seed_ux, static_cast<int>(p_bits)));
+        df_slope_v_ = static_cast<int64_t>(shift_round(seed_vx, static_cast<int>(p_bits)));
         df_started_ = true;
       }
       df_ju_ = ju;
       df_jv_ = jv;
       df_x0_ = x0;
-      du = dv = 0;
+      df_row_ = row;
+      // The second pixel is predicted with the slope.
+      du = static_cast<int64_t>(shift_round(df_slope_u_, 16));
+      dv = static_cast<int64_t>(shift_round(df_slope_v_, 16));
     } else {
       du = ju - prev_u;
       dv = jv - prev_v;
@@ -383,7 +403,8 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
     v += sv;
   }
   if (n >= 2) {
-    // Slope over the span's last (up to 64) pixels, with the reciprocal-of-length table of SUBDIV.
+    // The span measures the slope over its last (up to 64) pixels, with the reciprocal-of-length
+    // table of SUBDIV.
     const int64_t len = static_cast<int64_t>(n - 1 - slope_from);
     df_slope_u_ = (ju - slope_ju) * inverse_length(len);
     df_slope_v_ = (jv - slope_jv) * inverse_length(len);

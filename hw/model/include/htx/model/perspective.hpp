@@ -80,14 +80,12 @@ class TriangleUnit {
   int lod_shift_ = 0;
   uint64_t setup_cycles_ = 0;
   unsigned grid_bits_ = 0;
-  // DIVFREE position carried between spans: grid indices at the previous span's first pixel, their
-  // movement from the span before, that span start's x and its shift from the one before, and the
-  // slope (cells per pixel, 16 fraction bits).
+  // DIVFREE position carried between spans: grid indices at the previous span's first pixel, its
+  // x and row, and the movement per row at fixed x and per pixel along x (cells, 16 fraction bits).
   mutable bool df_started_ = false;
-  mutable int64_t df_ju_ = 0, df_jv_ = 0, df_du_ = 0, df_dv_ = 0;
   mutable unsigned df_level_ = 0;
-  mutable int64_t df_x0_ = 0, df_shift_ = 0;
-  mutable int64_t df_slope_u_ = 0, df_slope_v_ = 0;
+  mutable int64_t df_ju_ = 0, df_jv_ = 0, df_x0_ = 0, df_row_ = 0;
+  mutable int64_t df_row_u_ = 0, df_row_v_ = 0, df_slope_u_ = 0, df_slope_v_ = 0;
 };
 
 // AUTO: the firmware's choice for one triangle (modelled from the ScreenVertex doubles, as the
