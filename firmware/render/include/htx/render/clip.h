@@ -1,0 +1,35 @@
+// Clipping in homogeneous clip space (Sutherland-Hodgman) against the six frustum planes
+// x >= -w, x <= w, y >= -w, y <= w, z >= -w, z <= w, the same planes and order as the host's
+// double-precision geometry stage (hw/model geometry.hpp).
+#pragma once
+
+#include <stdint.h>
+
+namespace htx::render {
+
+// A vertex in clip space with the attributes the clipper interpolates.
+struct ClipVert {
+  int32_t x, y, z, w;  // Q16.16
+  int32_t s, t;        // normalised texture coordinates, Q16.16
+  int32_t c[4];        // r, g, b, a in units of 2^-16 of one 8-bit step (0 .. 255 * 2^16)
+};
+
+// A triangle clipped against six planes has at most 3 + 6 vertices.
+inline constexpr int kMaxClipVerts = 9;
+
+struct ClipPolygon {
+  int count;
+  ClipVert v[kMaxClipVerts];
+};
+
+// Bit p set when the vertex is outside plane p (0..5 as above).
+uint32_t outcode(const ClipVert& v);
+
+// Clips `poly` in place against the planes in `planes` (bit p = plane p), in plane order. A new
+// vertex is interpolated from the inside end of its edge towards the outside end, so an edge shared
+// by two triangles is cut at the same point in both. Afterwards count is 0 (nothing left) or >= 3,
+// and every vertex has w > 0: a polygon that would keep a vertex with w <= 0 (only possible for a
+// degenerate input at the eye) is dropped whole.
+void clip_polygon(ClipPolygon* poly, uint32_t planes);
+
+}  // namespace htx::render

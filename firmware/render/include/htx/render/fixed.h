@@ -1,0 +1,40 @@
+// Fixed-point arithmetic of the geometry stage (docs/firmware.md, "Number formats").
+// Q16.16: int32 with 16 fraction bits; products go through 64-bit intermediates and are rounded to
+// nearest, ties toward +infinity (the rounding rule of htx::fw). Freestanding C++17.
+#pragma once
+
+#include <stdint.h>
+
+namespace htx::render {
+
+inline constexpr int kFracBits = 16;
+inline constexpr int32_t kOne = int32_t{1} << kFracBits;
+
+// floor(v / 2^s + 1/2) for s >= 1 (arithmetic shift).
+inline int64_t round_shift(int64_t v, int s) { return (v + (int64_t{1} << (s - 1))) >> s; }
+
+// Saturates to the int32 range.
+inline int32_t saturate32(int64_t v) {
+  return v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : static_cast<int32_t>(v));
+}
+
+// Q16.16 product, rounded.
+inline int32_t mul_q16(int32_t a, int32_t b) {
+  return saturate32(round_shift(static_cast<int64_t>(a) * b, kFracBits));
+}
+
+// Number of leading zeros; 32 for zero.
+inline int clz32(uint32_t x) { return x ? __builtin_clz(x) : 32; }
+
+// 1/x for x > 0 as mant * 2^-(63 - lz): mant in [2^31, 2^32) is 1/m for the normalised
+// m = x * 2^lz in [2^31, 2^32), with 32 significant bits (relative error below 2^-31).
+struct Reciprocal {
+  uint32_t mant = 0;
+  int lz = 0;
+};
+
+// One 32-bit division for a 16-bit estimate, then two Newton-Raphson steps (docs/firmware.md).
+// x = 0 gives {0, 0} (callers never divide by zero: w > 0 after clipping).
+Reciprocal reciprocal(uint32_t x);
+
+}  // namespace htx::render

@@ -1,0 +1,32 @@
+// 4x4 transforms: column-vector convention (p' = M p), row-major m[row][col], like the host's
+// htx::Mat4. Points are Q16.16. Matrix entries of columns 0..2 (the linear part, including the w
+// row's) have `frac` fraction bits, chosen per matrix in 16..30 so the largest is below 2^30; column
+// 3 (translation) is Q16.16. A projection's depth row needs the extra bits: with far/near = 4000,
+// Q16.16 would move the far plane by percents. Each output coordinate is a sum of 64-bit products
+// rounded once (docs/firmware.md, "Number formats").
+#pragma once
+
+#include <stdint.h>
+
+namespace htx::render {
+
+inline constexpr int kMatMinFrac = 16;
+inline constexpr int kMatMaxFrac = 30;
+
+struct Mat4 {
+  int32_t m[4][4];
+  int32_t frac;  // fraction bits of columns 0..2, kMatMinFrac..kMatMaxFrac
+};
+
+struct Vec4 {
+  int32_t x, y, z, w;
+};
+
+Mat4 mat4_identity();
+// a * b with the most fraction bits its largest linear entry allows (every entry rounded once,
+// saturating when an entry leaves the format: linear part beyond 2^14, translation beyond 2^15).
+Mat4 mat4_mul(const Mat4& a, const Mat4& b);
+// M * (x, y, z, 1) for a point in Q16.16.
+Vec4 transform_point(const Mat4& m, int32_t x, int32_t y, int32_t z);
+
+}  // namespace htx::render

@@ -1,0 +1,103 @@
+#include "htx/render/pipeline.h"
+
+#include "htx/hal/raster.h"
+#include "htx/render/auto_method.h"
+
+namespace htx::render {
+
+namespace {
+
+void to_clip(const Mat4& mvp, const MeshVertex& in, ClipVert* out) {
+  const Vec4 p = transform_point(mvp, in.x, in.y, in.z);
+  out->x = p.x;
+  out->y = p.y;
+  out->z = p.z;
+  out->w = p.w;
+  out->s = in.s;
+  out->t = in.t;
+  for (int k = 0; k < 4; ++k) out->c[k] = static_cast<int32_t>((in.rgba >> (8 * k)) & 0xFFu) << kFracBits;
+}
+
+void emit_to_fifo(void*, uint32_t state_word, const uint32_t* words) { hal::raster_push_triangle(state_word, words); }
+
+// Culls, chooses the method, encodes and emits one screen triangle.
+void finish_triangle(const FrameParams& frame, const Mesh& mesh, const ScreenVert* const v[3], const TriangleSink& sink,
+                     DrawStats* st) {
+  const int64_t area2 = screen_area2(*v[0], *v[1], *v[2]);
+  if (area2 == 0) {
+    ++st->degenerate;
+    return;
+  }
+  if (frame.cull_backfaces && area2 > 0) {
+    ++st->culled;
+    return;
+  }
+  uint8_t method = mesh.state.method;
+  if (method == kMethodAuto)
+    method = auto_method(v, mesh.tex.log2_width, mesh.tex.log2_height, frame.auto_tolerance, frame.methods_built);
+  fw::TriangleRecord rec;
+  if (encode_triangle_fx(frame.format, v, mesh.tex, &rec) != fw::kEncodeOk) {
+    ++st->encode_errors;
+    return;
+  }
+  uint32_t words[fw::kTriangleWords];
+  fw::pack_triangle(rec, words);
+  sink.emit(sink.context, pack_state_word(mesh.state, method), words);
+  ++st->sent;
+}
+
+}  // namespace
+
+TriangleSink raster_fifo_sink() { return TriangleSink{emit_to_fifo, nullptr}; }
+
+void process_vertices(const Mat4& mvp, const MeshVertex* vertices, uint32_t count, const Viewport& vp,
+                      VertexCache* cache) {
+  for (uint32_t i = 0; i < count; ++i) {
+    ClipVert& c = cache->clip[i];
+    to_clip(mvp, vertices[i], &c);
+    const uint32_t code = outcode(c);
+    cache->outcode[i] = static_cast<uint8_t>(code);
+    if (code == 0) cache->screen[i] = project(c, vp);
+  }
+}
+
+DrawStatus draw_mesh(const FrameParams& frame, const Mat4& view_proj, const Mesh& mesh, VertexCache* cache,
+                     const TriangleSink& sink, DrawStats* st) {
+  const Viewport& vp = frame.viewport;
+  if (vp.width < 1 || vp.width > 4096 || vp.height < 1 || vp.height > 4096) return kDrawBadViewport;
+  if (mesh.vertex_count > cache->capacity) return kDrawCacheTooSmall;
+  for (uint32_t i = 0; i < 3 * mesh.triangle_count; ++i)
+    if (mesh.indices[i] >= mesh.vertex_count) return kDrawBadIndex;
+  const Mat4 mvp = mat4_mul(view_proj, mesh.model);
+  process_vertices(mvp, mesh.vertices, mesh.vertex_count, vp, cache);
+
+  for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
+    ++st->triangles;
+    const uint16_t* idx = mesh.indices + 3 * t;
+    const uint32_t c0 = cache->outcode[idx[0]], c1 = cache->outcode[idx[1]], c2 = cache->outcode[idx[2]];
+    if (c0 & c1 & c2) {
+      ++st->rejected;
+      continue;
+    }
+    if ((c0 | c1 | c2) == 0) {
+      const ScreenVert* v[3] = {&cache->screen[idx[0]], &cache->screen[idx[1]], &cache->screen[idx[2]]};
+      finish_triangle(frame, mesh, v, sink, st);
+      continue;
+    }
+    ++st->clipped;
+    ClipPolygon poly;
+    poly.count = 3;
+    for (int k = 0; k < 3; ++k) poly.v[k] = cache->clip[idx[k]];
+    clip_polygon(&poly, c0 | c1 | c2);
+    if (poly.count == 0) continue;
+    ScreenVert screen[kMaxClipVerts];
+    for (int k = 0; k < poly.count; ++k) screen[k] = project(poly.v[k], vp);
+    for (int k = 1; k + 1 < poly.count; ++k) {
+      const ScreenVert* v[3] = {&screen[0], &screen[k], &screen[k + 1]};
+      finish_triangle(frame, mesh, v, sink, st);
+    }
+  }
+  return kDrawOk;
+}
+
+}  // namespace htx::render

@@ -1,0 +1,420 @@
+// firmware/render's fixed-point geometry against the host's double-precision geometry stage
+// (hw/model geometry.hpp) and the double vertex-record encoder (firmware/lib vertex_record.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "htx/fw/vertex_record.h"
+#include "htx/model/geometry.hpp"
+#include "htx/model/scenes.hpp"
+#include "htx/render/auto_method.h"
+#include "htx/render/clip.h"
+#include "htx/render/encode.h"
+#include "htx/render/fixed.h"
+#include "htx/render/pipeline.h"
+#include "htx/render/transform.h"
+#include "render_scene.hpp"
+
+namespace {
+
+using htx::test::to_q16;
+constexpr double kQ = 1.0 / 65536.0;
+
+double q16(int32_t v) { return v * kQ; }
+
+TEST(RenderFixed, ReciprocalHas31CorrectBits) {
+  std::mt19937 rng(7);
+  for (int i = 0; i < 200000; ++i) {
+    uint32_t x = rng() >> (rng() % 32);
+    if (x == 0) x = 1;
+    const htx::render::Reciprocal r = htx::render::reciprocal(x);
+    ASSERT_GE(r.mant, 0x80000000u);
+    const double got = std::ldexp(static_cast<double>(r.mant), r.lz - 63);
+    const double rel = std::fabs(got * x - 1.0);
+    ASSERT_LT(rel, std::ldexp(1.0, -30)) << "x=" << x;
+  }
+  for (int k = 0; k < 32; ++k) {  // powers of two are exact
+    const htx::render::Reciprocal r = htx::render::reciprocal(1u << k);
+    EXPECT_EQ(std::ldexp(static_cast<double>(r.mant), r.lz - 63), std::ldexp(1.0, -k));
+  }
+}
+
+htx::Mat4 random_matrix(std::mt19937& rng, double range) {
+  std::uniform_real_distribution<double> d(-range, range);
+  htx::Mat4 m;
+  for (auto& row : m.m)
+    for (double& e : row) e = d(rng);
+  return m;
+}
+
+double entry(const htx::render::Mat4& m, int r, int c) {
+  return std::ldexp(static_cast<double>(m.m[r][c]), -(c < 3 ? m.frac : 16));
+}
+
+TEST(RenderTransform, PointsAndProductsWithinTheirRoundingBounds) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> coord(-300, 300);
+  for (int i = 0; i < 2000; ++i) {
+    const htx::Mat4 m = random_matrix(rng, 4);
+    const htx::render::Mat4 mf = htx::test::to_mat4_fx(m);
+    ASSERT_GE(mf.frac, 27);  // |entries| < 4
+    const int32_t x = to_q16(coord(rng)), y = to_q16(coord(rng)), z = to_q16(coord(rng));
+    const htx::render::Vec4 p = htx::render::transform_point(mf, x, y, z);
+    const int32_t in[3] = {x, y, z};
+    const int32_t got[4] = {p.x, p.y, p.z, p.w};
+    const double half_ulp_m = std::ldexp(0.5, -mf.frac);
+    for (int r = 0; r < 4; ++r) {
+      // Against the exact product of the quantised inputs: one final rounding. Against the
+      // unquantised matrix: plus half an ulp per entry times the coordinate.
+      double exact_q = entry(mf, r, 3), exact = m.m[static_cast<size_t>(r)][3], bound = kQ / 2 + kQ / 2;
+      for (int c = 0; c < 3; ++c) {
+        exact_q += entry(mf, r, c) * q16(in[c]);
+        exact += m.m[static_cast<size_t>(r)][static_cast<size_t>(c)] * q16(in[c]);
+        bound += std::fabs(q16(in[c])) * half_ulp_m;
+      }
+      ASSERT_LE(std::fabs(q16(got[r]) - exact_q), kQ / 2 + 1e-12);
+      ASSERT_LE(std::fabs(q16(got[r]) - exact), bound + 1e-12);
+    }
+  }
+  for (int i = 0; i < 200; ++i) {
+    const htx::Mat4 a = random_matrix(rng, 3), b = random_matrix(rng, 3);
+    const htx::render::Mat4 pf = htx::render::mat4_mul(htx::test::to_mat4_fx(a), htx::test::to_mat4_fx(b));
+    const htx::Mat4 p = a * b;
+    // Inputs quantised to 2^-28 (linear) and 2^-17 (translation), four products each rounded.
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c)
+        ASSERT_NEAR(entry(pf, r, c), p.m[static_cast<size_t>(r)][static_cast<size_t>(c)], 4 * 3 * kQ / 2 + 4 * kQ);
+  }
+  // A projection's depth row keeps its precision through the product (far/near = 4000).
+  const htx::Mat4 proj = htx::perspective(0.8, 4.0 / 3.0, 0.1, 400);
+  const htx::Mat4 view = htx::look_at({0, 1, 0}, {0, 0.86, -1}, {0, 1, 0});
+  const htx::render::Mat4 vp = htx::render::mat4_mul(htx::test::to_mat4_fx(proj), htx::test::to_mat4_fx(view));
+  const htx::Mat4 vpd = proj * view;
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(entry(vp, 2, c), vpd.m[2][static_cast<size_t>(c)], 1e-7);
+}
+
+htx::render::ClipVert clip_vert(double x, double y, double z, double w, double s, double t, double r) {
+  htx::render::ClipVert v{};
+  v.x = to_q16(x);
+  v.y = to_q16(y);
+  v.z = to_q16(z);
+  v.w = to_q16(w);
+  v.s = to_q16(s);
+  v.t = to_q16(t);
+  v.c[0] = to_q16(r * 255);
+  v.c[1] = v.c[2] = v.c[3] = 255 << 16;
+  return v;
+}
+
+htx::ClipVertex to_double(const htx::render::ClipVert& v) {
+  htx::ClipVertex d;
+  d.pos = {q16(v.x), q16(v.y), q16(v.z), q16(v.w)};
+  d.s = q16(v.s);
+  d.t = q16(v.t);
+  d.r = q16(v.c[0]) / 255;
+  return d;
+}
+
+// Clips the same triangle with both stages and compares vertex by vertex.
+void expect_clip_matches(const htx::render::ClipVert in[3], int* vertices_out, double tol) {
+  htx::render::ClipPolygon poly;
+  poly.count = 3;
+  std::vector<htx::ClipVertex> dpoly;
+  uint32_t planes = 0;
+  for (int k = 0; k < 3; ++k) {
+    poly.v[k] = in[k];
+    dpoly.push_back(to_double(in[k]));
+    planes |= htx::render::outcode(in[k]);
+  }
+  htx::render::clip_polygon(&poly, planes);
+  const std::vector<htx::ClipVertex> ref = htx::clip_polygon(dpoly);
+  ASSERT_EQ(static_cast<size_t>(poly.count), ref.size());
+  *vertices_out = poly.count;
+  for (int k = 0; k < poly.count; ++k) {
+    const htx::render::ClipVert& v = poly.v[k];
+    ASSERT_GT(v.w, 0) << "a vertex with w <= 0 left the clipper";
+    EXPECT_NEAR(q16(v.x), ref[static_cast<size_t>(k)].pos.x, tol);
+    EXPECT_NEAR(q16(v.y), ref[static_cast<size_t>(k)].pos.y, tol);
+    EXPECT_NEAR(q16(v.z), ref[static_cast<size_t>(k)].pos.z, tol);
+    EXPECT_NEAR(q16(v.w), ref[static_cast<size_t>(k)].pos.w, tol);
+    EXPECT_NEAR(q16(v.s), ref[static_cast<size_t>(k)].s, tol);
+    EXPECT_NEAR(q16(v.t), ref[static_cast<size_t>(k)].t, tol);
+    EXPECT_NEAR(q16(v.c[0]) / 255, ref[static_cast<size_t>(k)].r, tol);
+    // On the inside of every plane, up to the rounding of the cut.
+    for (int p = 0; p < 6; ++p) EXPECT_GE(htx::clip_plane_distance(to_double(v), p), -tol) << "plane " << p;
+  }
+}
+
+TEST(RenderClip, TriangleCrossingEachPlaneMatchesTheDoubleClipper) {
+  // One vertex beyond plane p, two inside: the polygon gains a vertex (quad).
+  for (int p = 0; p < 6; ++p) {
+    const int axis = p / 2;
+    const double sign = (p % 2) ? 1.0 : -1.0;
+    double out[3] = {0.1, 0.2, 0.3};
+    out[axis] = sign * 3.0;  // |coord| = 3 > w = 2
+    const htx::render::ClipVert tri[3] = {clip_vert(out[0], out[1], out[2], 2.0, 1.0, 0.0, 1.0),
+                                          clip_vert(0.5, -0.5, 0.2, 2.0, 0.0, 0.0, 0.0),
+                                          clip_vert(-0.5, 0.5, -0.2, 2.5, 0.0, 1.0, 0.5)};
+    EXPECT_EQ(htx::render::outcode(tri[0]), 1u << p);
+    int n = 0;
+    SCOPED_TRACE("plane " + std::to_string(p));
+    expect_clip_matches(tri, &n, 4 * kQ);
+    EXPECT_EQ(n, 4);
+  }
+}
+
+TEST(RenderClip, BehindTheEyeNeverReachesTheRasterUnit) {
+  // Vertices with w < 0 (behind the camera): after the near plane z >= -w every vertex has w > 0.
+  const htx::render::ClipVert tri[3] = {clip_vert(0.2, 0.1, -1.5, -1.0, 0, 0, 1),
+                                        clip_vert(0.3, -0.2, 0.5, 1.0, 1, 0, 0),
+                                        clip_vert(-0.4, 0.3, 0.8, 1.5, 0, 1, 0.5)};
+  int n = 0;
+  expect_clip_matches(tri, &n, 4 * kQ);
+  EXPECT_GE(n, 3);
+  // Entirely behind: nothing left.
+  const htx::render::ClipVert behind[3] = {clip_vert(0, 0, 1, -1, 0, 0, 0), clip_vert(1, 0, 1, -2, 0, 0, 0),
+                                           clip_vert(0, 1, 1, -1.5, 0, 0, 0)};
+  htx::render::ClipPolygon poly;
+  poly.count = 3;
+  uint32_t planes = 0;
+  for (int k = 0; k < 3; ++k) {
+    poly.v[k] = behind[k];
+    planes |= htx::render::outcode(behind[k]);
+  }
+  htx::render::clip_polygon(&poly, planes);
+  EXPECT_EQ(poly.count, 0);
+}
+
+TEST(RenderClip, RandomTrianglesAgreeAndKeepWPositive) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> c(-3, 3), w(-1, 3), a(0, 1);
+  int compared = 0;
+  for (int i = 0; i < 3000; ++i) {
+    htx::render::ClipVert tri[3];
+    for (auto& v : tri) v = clip_vert(c(rng), c(rng), c(rng), w(rng), a(rng), a(rng), a(rng));
+    // Skip slivers where a vertex lies within the rounding of a plane (the two clippers may then
+    // legitimately keep or drop a zero-area piece).
+    bool near_plane = false;
+    for (const auto& v : tri)
+      for (int p = 0; p < 6; ++p) near_plane |= std::fabs(htx::clip_plane_distance(to_double(v), p)) < 1e-3;
+    if (near_plane) continue;
+    int n = 0;
+    SCOPED_TRACE("triangle " + std::to_string(i));
+    // Each cut rounds its vertex to Q16.16 and the next cut starts from the rounded values; an edge
+    // nearly parallel to a later plane amplifies that. 2^-10 bounds these random triangles.
+    expect_clip_matches(tri, &n, 1.0 / 1024);
+    if (HasFatalFailure()) return;
+    ++compared;
+  }
+  EXPECT_GT(compared, 2500);
+}
+
+TEST(RenderProject, MatchesTheDoubleViewportWithinOneSubpixel) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> w(0.1, 300), f(-1, 1);
+  const int sizes[3][2] = {{320, 240}, {160, 120}, {4096, 4096}};
+  for (const auto& size : sizes) {
+    for (int i = 0; i < 5000; ++i) {
+      const double ww = w(rng);
+      const htx::render::ClipVert v = clip_vert(f(rng) * ww, f(rng) * ww, f(rng) * ww, ww, 0, 0, 0);
+      const htx::render::ScreenVert s = htx::render::project(v, {size[0], size[1]});
+      const htx::ScreenVertex d = htx::to_screen(to_double(v), size[0], size[1], 1, 1);
+      // The double stage snaps to 1/256 (ties to even), ours rounds ties up after a 2^-30 divide.
+      ASSERT_LE(std::fabs(s.x / 256.0 - d.x), 1.0 / 256 + 1e-9) << ww;
+      ASSERT_LE(std::fabs(s.y / 256.0 - d.y), 1.0 / 256 + 1e-9) << ww;
+      ASSERT_NEAR(std::ldexp(static_cast<double>(s.z), -32), d.z, std::ldexp(1.0, -28));
+    }
+  }
+}
+
+TEST(RenderCull, BackFacesAndDegenerateTrianglesAreNotSent) {
+  // A unit-depth triangle in clip space, counter-clockwise in NDC (front), and the same reversed.
+  const htx::render::MeshVertex verts[4] = {{to_q16(-0.5), to_q16(-0.5), 0, 0, 0, 0xFFFFFFFFu},
+                                            {to_q16(0.5), to_q16(-0.5), 0, 0, 0, 0xFFFFFFFFu},
+                                            {to_q16(0.0), to_q16(0.5), 0, 0, 0, 0xFFFFFFFFu},
+                                            {to_q16(0.25), to_q16(-0.5), 0, 0, 0, 0xFFFFFFFFu}};
+  const uint16_t idx[9] = {0, 1, 2, 0, 2, 1, 0, 1, 3};  // front, back, degenerate (collinear)
+  htx::render::Mesh mesh{};
+  mesh.vertices = verts;
+  mesh.vertex_count = 4;
+  mesh.indices = idx;
+  mesh.triangle_count = 3;
+  mesh.model = htx::render::mat4_identity();
+  mesh.state.textured = false;
+  htx::render::ClipVert clip[4];
+  htx::render::ScreenVert screen[4];
+  uint8_t codes[4];
+  htx::render::VertexCache cache{clip, screen, codes, 4};
+  std::vector<uint32_t> states;
+  const htx::render::TriangleSink sink{
+      [](void* ctx, uint32_t state, const uint32_t*) { static_cast<std::vector<uint32_t>*>(ctx)->push_back(state); },
+      &states};
+  htx::render::FrameParams frame;
+  frame.viewport = {64, 64};
+  htx::render::DrawStats st;
+  ASSERT_EQ(htx::render::draw_mesh(frame, htx::render::mat4_identity(), mesh, &cache, sink, &st), htx::render::kDrawOk);
+  EXPECT_EQ(st.sent, 1u);
+  EXPECT_EQ(st.culled, 1u);
+  EXPECT_EQ(st.degenerate, 1u);
+  frame.cull_backfaces = false;
+  htx::render::DrawStats st2;
+  ASSERT_EQ(htx::render::draw_mesh(frame, htx::render::mat4_identity(), mesh, &cache, sink, &st2), htx::render::kDrawOk);
+  EXPECT_EQ(st2.sent, 2u);
+  EXPECT_EQ(st2.culled, 0u);
+  // Bad input is refused with a status, nothing drawn.
+  const uint16_t bad_idx[3] = {0, 1, 9};
+  mesh.indices = bad_idx;
+  mesh.triangle_count = 1;
+  EXPECT_EQ(htx::render::draw_mesh(frame, htx::render::mat4_identity(), mesh, &cache, sink, &st2),
+            htx::render::kDrawBadIndex);
+  cache.capacity = 2;
+  EXPECT_EQ(htx::render::draw_mesh(frame, htx::render::mat4_identity(), mesh, &cache, sink, &st2),
+            htx::render::kDrawCacheTooSmall);
+  EXPECT_EQ(states.size(), 3u);
+}
+
+// The fixed encoder against the double encoder fed with exactly the values the fixed one sees.
+TEST(RenderEncode, FixedEncoderWithinBoundsOfTheDoubleEncoder) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> w(0.1, 200), f(-1, 1), st(-40, 40), col(0, 1);
+  const htx::fw::RecordFormat formats[2] = {{16, 24, 32, 16}, {14, 16, 24, 13}};
+  int compared = 0;
+  for (const auto& fmt : formats) {
+    for (int i = 0; i < 4000; ++i) {
+      htx::render::ScreenVert sv[3];
+      htx::fw::VertexIn in[3];
+      const double s0 = st(rng), t0 = st(rng);
+      for (int k = 0; k < 3; ++k) {
+        const double ww = w(rng);
+        htx::render::ClipVert c = clip_vert(f(rng) * ww, f(rng) * ww, f(rng) * ww, ww, s0 + f(rng), t0 + f(rng), col(rng));
+        sv[k] = htx::render::project(c, {320, 240});
+        in[k].x = sv[k].x / 256.0;
+        in[k].y = sv[k].y / 256.0;
+        in[k].z = std::ldexp(static_cast<double>(sv[k].z), -32);
+        in[k].w = q16(sv[k].w);
+        in[k].u = q16(sv[k].s) * 64;
+        in[k].v = q16(sv[k].t) * 64;
+        in[k].r = q16(sv[k].c[0]) / 255;
+        in[k].g = in[k].b = in[k].a = 1.0;
+      }
+      const htx::render::ScreenVert* pv[3] = {&sv[0], &sv[1], &sv[2]};
+      htx::fw::TriangleRecord got, ref;
+      const auto gs = htx::render::encode_triangle_fx(fmt, pv, {6, 6}, &got);
+      const auto rs = htx::fw::encode_triangle(fmt, in, &ref);
+      ASSERT_EQ(gs, rs);
+      if (gs != htx::fw::kEncodeOk) continue;
+      ++compared;
+      ASSERT_EQ(got.u_offset, ref.u_offset);
+      ASSERT_EQ(got.v_offset, ref.v_offset);
+      ASSERT_EQ(got.q_exp, ref.q_exp);
+      for (int k = 0; k < 3; ++k) {
+        const htx::fw::VertexRecord &a = got.v[k], &b = ref.v[k];
+        ASSERT_EQ(a.x, b.x);
+        ASSERT_EQ(a.y, b.y);
+        ASSERT_LE(std::abs(static_cast<int64_t>(a.z) - static_cast<int64_t>(b.z)), 1);
+        // q: the reciprocal's 2^-30 relative error, at most 2 units of the largest q plus rounding.
+        const int64_t dq = static_cast<int64_t>(a.q) - static_cast<int64_t>(b.q);
+        ASSERT_LE(std::abs(dq), 3) << "q " << a.q << " vs " << b.q;
+        // uq = round(ul * q): off by |ul| * |dq| plus one rounding each.
+        const double ul = in[k].u - ref.u_offset, vl = in[k].v - ref.v_offset;
+        ASSERT_LE(std::fabs(static_cast<double>(a.uq - b.uq)), std::fabs(ul) * std::abs(dq) + 1.0);
+        ASSERT_LE(std::fabs(static_cast<double>(a.vq - b.vq)), std::fabs(vl) * std::abs(dq) + 1.0);
+        ASSERT_LE(std::abs(static_cast<int>(a.rgba & 0xFF) - static_cast<int>(b.rgba & 0xFF)), 1);
+        ASSERT_EQ(a.rgba >> 8, b.rgba >> 8);
+      }
+    }
+  }
+  EXPECT_GT(compared, 7000);
+}
+
+TEST(RenderEncode, RefusesWhatTheRecordCannotHold) {
+  htx::render::ScreenVert sv[3] = {};
+  for (auto& v : sv) {
+    v.w = htx::render::kOne;
+    v.inv_w = htx::render::reciprocal(static_cast<uint32_t>(v.w));
+  }
+  const htx::render::ScreenVert* pv[3] = {&sv[0], &sv[1], &sv[2]};
+  htx::fw::TriangleRecord rec;
+  const htx::fw::RecordFormat fmt{14, 16, 24, 13};
+  EXPECT_EQ(htx::render::encode_triangle_fx(fmt, pv, {}, &rec), htx::fw::kEncodeOk);
+  sv[1].x = 8192 * 256;  // +2^13 pixels: outside 14 integer bits
+  EXPECT_EQ(htx::render::encode_triangle_fx(fmt, pv, {}, &rec), htx::fw::kEncodeXyRange);
+  sv[1].x = 0;
+  sv[2].s = 9000 * htx::render::kOne;  // 9000 texels of span: +-4500 around the offset, beyond 13 bits
+  EXPECT_EQ(htx::render::encode_triangle_fx(fmt, pv, {}, &rec), htx::fw::kEncodeUvRange);
+  sv[2].s = 0;
+  sv[0].w = 0;
+  EXPECT_EQ(htx::render::encode_triangle_fx(fmt, pv, {}, &rec), htx::fw::kEncodeBadW);
+  const htx::fw::RecordFormat bad{14, 16, 40, 13};
+  EXPECT_EQ(htx::render::encode_triangle_fx(bad, pv, {}, &rec), htx::fw::kEncodeBadFormat);
+}
+
+TEST(RenderAuto, AffineBoundAgreesWithTheDoubleFormula) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> du(0, 300), w(0.1, 400), ratio(1, 1.2);
+  const double tol = 1.0 / 64;
+  int disagreements = 0, near = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const double d = i % 2 ? du(rng) : du(rng) / 300;
+    const double wmin = w(rng), wmax = wmin * ratio(rng);
+    const int64_t dfx = static_cast<int64_t>(std::floor(d * 65536 + 0.5));
+    const int32_t a = to_q16(wmin), b = to_q16(wmax);
+    const double sr = std::sqrt(q16(b) / q16(a));
+    const double err = (dfx * kQ) * (sr - 1) / (sr + 1);
+    const bool ref = err <= tol;
+    const bool got = htx::render::affine_within(dfx, to_q16(tol), a, b);
+    if (std::fabs(err - tol) < 1e-3 * tol) {
+      ++near;
+      continue;
+    }
+    disagreements += ref != got;
+  }
+  EXPECT_EQ(disagreements, 0);
+  EXPECT_LT(near, 1000);
+  EXPECT_TRUE(htx::render::affine_within(0, 1024, 65536, 65536 * 100));  // no texture span: always
+  EXPECT_FALSE(htx::render::affine_within(65536 * 64, 1024, 65536, 65536 * 2));
+}
+
+// The whole pipeline on the built-in scenes against prepare_screen_scene + the double encoder.
+void compare_scene(const char* name) {
+  const htx::Scene scene = htx::make_builtin_scene(name);
+  const int width = 320, height = 240;
+  const htx::ScreenScene ref = htx::prepare_screen_scene(scene, width, height);
+  const htx::test::RenderScene rs = htx::test::to_render_scene(scene, width, height);
+  const htx::fw::RecordFormat fmt{16, 24, 32, 16};
+  htx::render::DrawStats st;
+  const std::vector<htx::test::CapturedTriangle> got = htx::test::draw_scene(rs, fmt, 0x1F, &st);
+  ASSERT_EQ(got.size(), ref.tris.size());
+  EXPECT_GE(got.size(), 6u);
+  for (size_t i = 0; i < got.size(); ++i) {
+    htx::fw::VertexIn in[3];
+    for (int k = 0; k < 3; ++k) {
+      const htx::ScreenVertex& v = ref.tris[i].v[static_cast<size_t>(k)];
+      in[k] = {v.x, v.y, v.z, v.w, v.u, v.v, v.r, v.g, v.b, v.a};
+    }
+    htx::fw::TriangleRecord r;
+    ASSERT_EQ(htx::fw::encode_triangle(fmt, in, &r), htx::fw::kEncodeOk);
+    const htx::fw::TriangleRecord& g = got[i].record;
+    for (int k = 0; k < 3; ++k) {
+      // Vertices within 1/8 pixel: the Q16.16 scene and matrices against doubles.
+      EXPECT_LE(std::abs(g.v[k].x - r.v[k].x), 32) << name << " tri " << i;
+      EXPECT_LE(std::abs(g.v[k].y - r.v[k].y), 32) << name << " tri " << i;
+      // Depth within 2^-12, q within 2^-12 relative (24-bit z, 32-bit q).
+      EXPECT_LE(std::fabs(static_cast<double>(g.v[k].z) - r.v[k].z), 4096.0) << name << " tri " << i;
+      const double gq = std::ldexp(static_cast<double>(g.v[k].q), -(g.q_exp + 32));
+      const double rq = std::ldexp(static_cast<double>(r.v[k].q), -(r.q_exp + 32));
+      EXPECT_NEAR(gq / rq, 1.0, 1.0 / 4096) << name << " tri " << i;
+      // Texel coordinate u = uq / q + offset within 1/64 texel.
+      const double gu = static_cast<double>(g.v[k].uq) / g.v[k].q + g.u_offset;
+      const double ru = static_cast<double>(r.v[k].uq) / r.v[k].q + r.u_offset;
+      EXPECT_NEAR(gu, ru, 1.0 / 64) << name << " tri " << i;
+      EXPECT_EQ(g.v[k].rgba, r.v[k].rgba);
+    }
+  }
+}
+
+TEST(RenderPipeline, CubeMatchesTheDoubleGeometryStage) { compare_scene("cube"); }
+TEST(RenderPipeline, FloorMatchesTheDoubleGeometryStage) { compare_scene("floor"); }
+
+}  // namespace
