@@ -325,8 +325,8 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
     jv = cell_of(seed_v);
   }
   const size_t n = out->u.size();
-  const size_t slope_from = n > 65 ? n - 65 : 0;  // the slope spans at most the last 64 pixels
-  int64_t slope_ju = 0, slope_jv = 0;
+  const size_t slope_to = std::min<size_t>(n - 1, 64);  // the slope spans at most the first 64 pixels
+  int64_t first_ju = 0, first_jv = 0, slope_ju = 0, slope_jv = 0;
   uint64_t cycles = 1;
   // Move j toward the exact index one grid step at a time, at most `cap` steps: identical to
   // reference 004's loop "while N < 0: j -= 1; while M >= 0: j += 1" on the integer conditions
@@ -392,7 +392,11 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
       du = ju - prev_u;
       dv = jv - prev_v;
     }
-    if (k == slope_from) {
+    if (k == 0) {
+      first_ju = ju;
+      first_jv = jv;
+    }
+    if (k == slope_to) {
       slope_ju = ju;
       slope_jv = jv;
     }
@@ -403,11 +407,11 @@ void TriangleUnit::span_divfree(int64_t py, int x0, int x1, SpanCoords* out) con
     v += sv;
   }
   if (n >= 2) {
-    // The span measures the slope over its last (up to 64) pixels, with the reciprocal-of-length
-    // table of SUBDIV.
-    const int64_t len = static_cast<int64_t>(n - 1 - slope_from);
-    df_slope_u_ = (ju - slope_ju) * inverse_length(len);
-    df_slope_v_ = (jv - slope_jv) * inverse_length(len);
+    // The span measures the slope over its first (up to 64) pixels, next to where the following
+    // span starts, with the reciprocal-of-length table of SUBDIV.
+    const int64_t len = static_cast<int64_t>(slope_to);
+    df_slope_u_ = (slope_ju - first_ju) * inverse_length(len);
+    df_slope_v_ = (slope_jv - first_jv) * inverse_length(len);
   }
   out->cycles = cycles;
   (void)x1;
