@@ -14,6 +14,7 @@
 #include "htx/render/fixed.h"
 #include "htx/render/pipeline.h"
 #include "htx/render/transform.h"
+#include "htx/render/vertex_transform.h"
 #include "render_scene.hpp"
 
 namespace {
@@ -92,6 +93,34 @@ TEST(RenderTransform, PointsAndProductsWithinTheirRoundingBounds) {
   const htx::render::Mat4 vp = htx::render::mat4_mul(htx::test::to_mat4_fx(proj), htx::test::to_mat4_fx(view));
   const htx::Mat4 vpd = proj * view;
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(entry(vp, 2, c), vpd.m[2][static_cast<size_t>(c)], 1e-7);
+}
+
+TEST(RenderTransform, PerVertexHighProductsWithinThreeUlps) {
+  std::mt19937 rng(17);
+  const double ranges[3] = {1.5, 40, 400};
+  for (double range : ranges) {
+    std::uniform_real_distribution<double> coord(-range, range);
+    for (int i = 0; i < 2000; ++i) {
+      const htx::render::Mat4 mf = htx::test::to_mat4_fx(random_matrix(rng, 3));
+      int32_t pts[3][3];
+      for (auto& p : pts)
+        for (int32_t& c : p) c = to_q16(coord(rng));
+      const int bits = htx::render::position_int_bits(&pts[0][0], 3, 3);
+      ASSERT_LE(std::ldexp(std::fabs(coord.max()), 0), std::ldexp(1.0, bits + 1));
+      const htx::render::VertexTransform vt = htx::render::make_vertex_transform(mf, bits);
+      EXPECT_EQ(vt.out_shift, 0);
+      for (const auto& p : pts) {
+        const htx::render::Vec4 got = htx::render::apply(vt, p[0], p[1], p[2]);
+        const htx::render::Vec4 ref = htx::render::transform_point(mf, p[0], p[1], p[2]);
+        // Matrix entries requantised to F = 48 - P bits (half an ulp times |p| < 2^P: 1/2 ulp of
+        // Q16.16 per term) and three truncated products (< 1 ulp each).
+        EXPECT_LE(std::abs(got.x - ref.x), 5) << range;
+        EXPECT_LE(std::abs(got.y - ref.y), 5) << range;
+        EXPECT_LE(std::abs(got.z - ref.z), 5) << range;
+        EXPECT_LE(std::abs(got.w - ref.w), 5) << range;
+      }
+    }
+  }
 }
 
 htx::render::ClipVert clip_vert(double x, double y, double z, double w, double s, double t, double r) {
@@ -218,7 +247,8 @@ TEST(RenderProject, MatchesTheDoubleViewportWithinOneSubpixel) {
     for (int i = 0; i < 5000; ++i) {
       const double ww = w(rng);
       const htx::render::ClipVert v = clip_vert(f(rng) * ww, f(rng) * ww, f(rng) * ww, ww, 0, 0, 0);
-      const htx::render::ScreenVert s = htx::render::project(v, {size[0], size[1]});
+      htx::render::ScreenVert s;
+      htx::render::project(v, {size[0], size[1]}, &s);
       const htx::ScreenVertex d = htx::to_screen(to_double(v), size[0], size[1], 1, 1);
       // The double stage snaps to 1/256 (ties to even), ours rounds ties up after a 2^-30 divide.
       ASSERT_LE(std::fabs(s.x / 256.0 - d.x), 1.0 / 256 + 1e-9) << ww;
@@ -242,6 +272,7 @@ TEST(RenderCull, BackFacesAndDegenerateTrianglesAreNotSent) {
   mesh.triangle_count = 3;
   mesh.model = htx::render::mat4_identity();
   mesh.state.textured = false;
+  mesh.position_bits = static_cast<int8_t>(htx::render::mesh_position_bits(verts, 4));
   htx::render::ClipVert clip[4];
   htx::render::ScreenVert screen[4];
   uint8_t codes[4];
@@ -283,19 +314,20 @@ TEST(RenderEncode, FixedEncoderWithinBoundsOfTheDoubleEncoder) {
   for (const auto& fmt : formats) {
     for (int i = 0; i < 4000; ++i) {
       htx::render::ScreenVert sv[3];
+      htx::render::ClipVert cv[3];
       htx::fw::VertexIn in[3];
       const double s0 = st(rng), t0 = st(rng);
       for (int k = 0; k < 3; ++k) {
         const double ww = w(rng);
-        htx::render::ClipVert c = clip_vert(f(rng) * ww, f(rng) * ww, f(rng) * ww, ww, s0 + f(rng), t0 + f(rng), col(rng));
-        sv[k] = htx::render::project(c, {320, 240});
+        cv[k] = clip_vert(f(rng) * ww, f(rng) * ww, f(rng) * ww, ww, s0 + f(rng), t0 + f(rng), col(rng));
+        htx::render::project(cv[k], {320, 240}, &sv[k]);
         in[k].x = sv[k].x / 256.0;
         in[k].y = sv[k].y / 256.0;
         in[k].z = std::ldexp(static_cast<double>(sv[k].z), -32);
         in[k].w = q16(sv[k].w);
-        in[k].u = q16(sv[k].s) * 64;
-        in[k].v = q16(sv[k].t) * 64;
-        in[k].r = q16(sv[k].c[0]) / 255;
+        in[k].u = q16(cv[k].s) * 64;
+        in[k].v = q16(cv[k].t) * 64;
+        in[k].r = q16(cv[k].c[0]) / 255;
         in[k].g = in[k].b = in[k].a = 1.0;
       }
       const htx::render::ScreenVert* pv[3] = {&sv[0], &sv[1], &sv[2]};
@@ -330,9 +362,11 @@ TEST(RenderEncode, FixedEncoderWithinBoundsOfTheDoubleEncoder) {
 
 TEST(RenderEncode, RefusesWhatTheRecordCannotHold) {
   htx::render::ScreenVert sv[3] = {};
-  for (auto& v : sv) {
-    v.w = htx::render::kOne;
-    v.inv_w = htx::render::reciprocal(static_cast<uint32_t>(v.w));
+  htx::render::ClipVert cv[3] = {};
+  for (int k = 0; k < 3; ++k) {
+    sv[k].w = htx::render::kOne;
+    sv[k].inv_w = htx::render::reciprocal(static_cast<uint32_t>(sv[k].w));
+    sv[k].attr = &cv[k];
   }
   const htx::render::ScreenVert* pv[3] = {&sv[0], &sv[1], &sv[2]};
   htx::fw::TriangleRecord rec;
@@ -341,9 +375,9 @@ TEST(RenderEncode, RefusesWhatTheRecordCannotHold) {
   sv[1].x = 8192 * 256;  // +2^13 pixels: outside 14 integer bits
   EXPECT_EQ(htx::render::encode_triangle_fx(fmt, pv, {}, &rec), htx::fw::kEncodeXyRange);
   sv[1].x = 0;
-  sv[2].s = 9000 * htx::render::kOne;  // 9000 texels of span: +-4500 around the offset, beyond 13 bits
+  cv[2].s = 9000 * htx::render::kOne;  // 9000 texels of span: +-4500 around the offset, beyond 13 bits
   EXPECT_EQ(htx::render::encode_triangle_fx(fmt, pv, {}, &rec), htx::fw::kEncodeUvRange);
-  sv[2].s = 0;
+  cv[2].s = 0;
   sv[0].w = 0;
   EXPECT_EQ(htx::render::encode_triangle_fx(fmt, pv, {}, &rec), htx::fw::kEncodeBadW);
   const htx::fw::RecordFormat bad{14, 16, 40, 13};

@@ -97,6 +97,7 @@ RenderScene to_render_scene(const Scene& scene, int width, int height) {
     d.mesh.indices = d.indices.data();
     d.mesh.triangle_count = static_cast<uint32_t>(src.triangles.size());
     d.mesh.model = to_mat4_fx(src.model);
+    d.mesh.position_bits = static_cast<int8_t>(render::mesh_position_bits(d.vertices.data(), d.mesh.vertex_count));
     d.mesh.state = to_render_state(src.state);
     if (src.state.textured && src.state.texture >= 0 && static_cast<size_t>(src.state.texture) < scene.textures.size()) {
       const Texture& t = scene.textures[static_cast<size_t>(src.state.texture)];

@@ -19,14 +19,14 @@ bool affine_within(int64_t du, int64_t tol, int32_t w_min, int32_t w_max) {
 uint8_t auto_method(const ScreenVert* const v[3], uint8_t log2_width, uint8_t log2_height, int64_t tol,
                     uint32_t built) {
   int32_t w_min = v[0]->w, w_max = v[0]->w;
-  int64_t u_lo = v[0]->s, u_hi = v[0]->s, t_lo = v[0]->t, t_hi = v[0]->t;
+  int64_t u_lo = v[0]->attr->s, u_hi = v[0]->attr->s, t_lo = v[0]->attr->t, t_hi = v[0]->attr->t;
   for (int i = 1; i < 3; ++i) {
     if (v[i]->w < w_min) w_min = v[i]->w;
     if (v[i]->w > w_max) w_max = v[i]->w;
-    if (v[i]->s < u_lo) u_lo = v[i]->s;
-    if (v[i]->s > u_hi) u_hi = v[i]->s;
-    if (v[i]->t < t_lo) t_lo = v[i]->t;
-    if (v[i]->t > t_hi) t_hi = v[i]->t;
+    if (v[i]->attr->s < u_lo) u_lo = v[i]->attr->s;
+    if (v[i]->attr->s > u_hi) u_hi = v[i]->attr->s;
+    if (v[i]->attr->t < t_lo) t_lo = v[i]->attr->t;
+    if (v[i]->attr->t > t_hi) t_hi = v[i]->attr->t;
   }
   const int64_t du = (u_hi - u_lo) << log2_width;
   const int64_t dv = (t_hi - t_lo) << log2_height;

@@ -67,12 +67,6 @@ void clip_plane(ClipPolygon* poly, int p) {
 
 }  // namespace
 
-uint32_t outcode(const ClipVert& v) {
-  uint32_t code = 0;
-  for (int p = 0; p < 6; ++p) code |= static_cast<uint32_t>(distance(v, p) < 0) << p;
-  return code;
-}
-
 void clip_polygon(ClipPolygon* poly, uint32_t planes) {
   for (int p = 0; p < 6 && poly->count >= 3; ++p)
     if (planes & (1u << p)) clip_plane(poly, p);

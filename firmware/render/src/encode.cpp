@@ -48,8 +48,8 @@ fw::EncodeStatus encode_triangle_fx(const fw::RecordFormat& f, const ScreenVert*
   // u, v in level-0 texels, Q16.16 (64 bits: up to 2^15 normalised units times 2^15 texels).
   int64_t us[3], vs[3];
   for (int i = 0; i < 3; ++i) {
-    us[i] = static_cast<int64_t>(v[i]->s) << tex.log2_width;
-    vs[i] = static_cast<int64_t>(v[i]->t) << tex.log2_height;
+    us[i] = static_cast<int64_t>(v[i]->attr->s) << tex.log2_width;
+    vs[i] = static_cast<int64_t>(v[i]->attr->t) << tex.log2_height;
   }
   const int64_t ou = offset_of(us), ov = offset_of(vs);
   const int64_t off_limit = int64_t{1} << 30;
@@ -80,7 +80,8 @@ fw::EncodeStatus encode_triangle_fx(const fw::RecordFormat& f, const ScreenVert*
     // The products use the quantised q, so uq / q reproduces u at the vertex to 1/(2q) texel.
     r.uq = round_shift(static_cast<int64_t>(static_cast<int32_t>(ul)) * q, kFracBits);
     r.vq = round_shift(static_cast<int64_t>(static_cast<int32_t>(vl)) * q, kFracBits);
-    r.rgba = channel8(s.c[0]) | (channel8(s.c[1]) << 8) | (channel8(s.c[2]) << 16) | (channel8(s.c[3]) << 24);
+    const int32_t* c = s.attr->c;
+    r.rgba = channel8(c[0]) | (channel8(c[1]) << 8) | (channel8(c[2]) << 16) | (channel8(c[3]) << 24);
   }
   return fw::kEncodeOk;
 }

@@ -7,15 +7,19 @@ namespace htx::render {
 
 namespace {
 
-void to_clip(const Mat4& mvp, const MeshVertex& in, ClipVert* out) {
-  const Vec4 p = transform_point(mvp, in.x, in.y, in.z);
+void to_clip(const VertexTransform& vt, const MeshVertex& in, ClipVert* out) {
+  const Vec4 p = apply(vt, in.x, in.y, in.z);
   out->x = p.x;
   out->y = p.y;
   out->z = p.z;
   out->w = p.w;
   out->s = in.s;
   out->t = in.t;
-  for (int k = 0; k < 4; ++k) out->c[k] = static_cast<int32_t>((in.rgba >> (8 * k)) & 0xFFu) << kFracBits;
+  const uint32_t c = in.rgba;
+  out->c[0] = static_cast<int32_t>(c & 0xFFu) << kFracBits;
+  out->c[1] = static_cast<int32_t>((c >> 8) & 0xFFu) << kFracBits;
+  out->c[2] = static_cast<int32_t>((c >> 16) & 0xFFu) << kFracBits;
+  out->c[3] = static_cast<int32_t>(c >> 24) << kFracBits;
 }
 
 void emit_to_fifo(void*, uint32_t state_word, const uint32_t* words) { hal::raster_push_triangle(state_word, words); }
@@ -50,14 +54,20 @@ void finish_triangle(const FrameParams& frame, const Mesh& mesh, const ScreenVer
 
 TriangleSink raster_fifo_sink() { return TriangleSink{emit_to_fifo, nullptr}; }
 
-void process_vertices(const Mat4& mvp, const MeshVertex* vertices, uint32_t count, const Viewport& vp,
+int mesh_position_bits(const MeshVertex* vertices, uint32_t count) {
+  static_assert(sizeof(MeshVertex) % 4 == 0, "positions are read as a word stride");
+  if (count == 0) return 0;
+  return position_int_bits(&vertices[0].x, count, sizeof(MeshVertex) / 4);
+}
+
+void process_vertices(const VertexTransform& vt, const MeshVertex* vertices, uint32_t count, const Viewport& vp,
                       VertexCache* cache) {
   for (uint32_t i = 0; i < count; ++i) {
     ClipVert& c = cache->clip[i];
-    to_clip(mvp, vertices[i], &c);
+    to_clip(vt, vertices[i], &c);
     const uint32_t code = outcode(c);
     cache->outcode[i] = static_cast<uint8_t>(code);
-    if (code == 0) cache->screen[i] = project(c, vp);
+    if (code == 0) project(c, vp, &cache->screen[i]);
   }
 }
 
@@ -68,8 +78,9 @@ DrawStatus draw_mesh(const FrameParams& frame, const Mat4& view_proj, const Mesh
   if (mesh.vertex_count > cache->capacity) return kDrawCacheTooSmall;
   for (uint32_t i = 0; i < 3 * mesh.triangle_count; ++i)
     if (mesh.indices[i] >= mesh.vertex_count) return kDrawBadIndex;
-  const Mat4 mvp = mat4_mul(view_proj, mesh.model);
-  process_vertices(mvp, mesh.vertices, mesh.vertex_count, vp, cache);
+  if (mesh.position_bits < 0 || mesh.position_bits > 14) return kDrawBadPositions;
+  const VertexTransform vt = make_vertex_transform(mat4_mul(view_proj, mesh.model), mesh.position_bits);
+  process_vertices(vt, mesh.vertices, mesh.vertex_count, vp, cache);
 
   for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
     ++st->triangles;
@@ -88,10 +99,10 @@ DrawStatus draw_mesh(const FrameParams& frame, const Mat4& view_proj, const Mesh
     ClipPolygon poly;
     poly.count = 3;
     for (int k = 0; k < 3; ++k) poly.v[k] = cache->clip[idx[k]];
-    clip_polygon(&poly, c0 | c1 | c2);
+    clip_polygon(&poly, (c0 | c1 | c2) & kOutcodePlanes);
     if (poly.count == 0) continue;
     ScreenVert screen[kMaxClipVerts];
-    for (int k = 0; k < poly.count; ++k) screen[k] = project(poly.v[k], vp);
+    for (int k = 0; k < poly.count; ++k) project(poly.v[k], vp, &screen[k]);
     for (int k = 1; k + 1 < poly.count; ++k) {
       const ScreenVert* v[3] = {&screen[0], &screen[k], &screen[k + 1]};
       finish_triangle(frame, mesh, v, sink, st);

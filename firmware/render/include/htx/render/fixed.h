@@ -25,6 +25,16 @@ inline int32_t mul_q16(int32_t a, int32_t b) {
 
 // Number of leading zeros; 32 for zero.
 inline int clz32(uint32_t x) { return x ? __builtin_clz(x) : 32; }
+// The same without a library call (rv32im has no clz instruction), for x != 0.
+inline int clz32_inline(uint32_t x) {
+  int n = 0;
+  if (!(x & 0xFFFF0000u)) { n += 16; x <<= 16; }
+  if (!(x & 0xFF000000u)) { n += 8; x <<= 8; }
+  if (!(x & 0xF0000000u)) { n += 4; x <<= 4; }
+  if (!(x & 0xC0000000u)) { n += 2; x <<= 2; }
+  if (!(x & 0x80000000u)) n += 1;
+  return n;
+}
 
 // 1/x for x > 0 as mant * 2^-(63 - lz): mant in [2^31, 2^32) is 1/m for the normalised
 // m = x * 2^lz in [2^31, 2^32), with 32 significant bits (relative error below 2^-31).
@@ -33,7 +43,7 @@ struct Reciprocal {
   int lz = 0;
 };
 
-// One 32-bit division for a 16-bit estimate, then two Newton-Raphson steps (docs/firmware.md).
+// A 256-entry seed table, then two Newton-Raphson steps (docs/firmware.md).
 // x = 0 gives {0, 0} (callers never divide by zero: w > 0 after clipping).
 Reciprocal reciprocal(uint32_t x);
 

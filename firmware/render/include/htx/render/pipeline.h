@@ -13,6 +13,7 @@
 #include "htx/render/project.h"
 #include "htx/render/transform.h"
 #include "htx/render/tri_state.h"
+#include "htx/render/vertex_transform.h"
 
 namespace htx::render {
 
@@ -30,7 +31,12 @@ struct Mesh {
   Mat4 model;               // object -> world
   TriState state;           // state.method may be kMethodAuto
   TexSize tex;              // size of state.texture (u = s * width)
+  int8_t position_bits;     // integer bits of the largest |coordinate| (mesh_position_bits)
 };
+
+// The integer bits (0..14) the largest coordinate of a mesh needs; computed once per mesh. Positions
+// must stay below 2^14 in magnitude.
+int mesh_position_bits(const MeshVertex* vertices, uint32_t count);
 
 struct FrameParams {
   Viewport viewport;
@@ -72,11 +78,12 @@ enum DrawStatus : int {
   kDrawCacheTooSmall = 1,  // vertex_count > cache capacity: nothing drawn
   kDrawBadIndex = 2,       // an index >= vertex_count: nothing drawn
   kDrawBadViewport = 3,    // a viewport side outside 1..4096: nothing drawn
+  kDrawBadPositions = 4,   // position_bits outside 0..14: nothing drawn
 };
 
 // Per vertex: clip = mvp * (x, y, z, 1), the outcode, and the projection when the vertex is inside
 // every plane. The stage the geometry benchmark times.
-void process_vertices(const Mat4& mvp, const MeshVertex* vertices, uint32_t count, const Viewport& vp,
+void process_vertices(const VertexTransform& vt, const MeshVertex* vertices, uint32_t count, const Viewport& vp,
                       VertexCache* cache);
 
 // Draws a mesh with view_proj = projection * view. Triangles go to `sink` in mesh order (a clipped

@@ -1,0 +1,82 @@
+// Geometry benchmark: CPU cycles per vertex of the firmware geometry stage (transform, clip test,
+// and projection of the vertices inside the frustum: htx::render::process_vertices) over the
+// vertices of the built-in `cube` and `floor` scenes, and cycles per triangle of the whole pipeline
+// (draw_mesh without a raster unit: clipping, culling, AUTO, encoding), from the cycle CSR:
+//   geombench <scene> vertices <n> projected <p> cycles/vertex <c.cc>
+//   geombench <scene> triangles <n> sent <s> cycles/triangle <c>
+//   geombench all vertices <n> cycles/vertex <c.cc>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "htx/hal/timer.h"
+#include "htx/render/pipeline.h"
+#include "scenes.hpp"
+
+namespace {
+
+constexpr uint32_t kRuns = 8;
+constexpr uint32_t kMaxVertices = 81;
+
+htx::render::ClipVert g_clip[kMaxVertices];
+htx::render::ScreenVert g_screen[kMaxVertices];
+uint8_t g_codes[kMaxVertices];
+
+void count_triangle(void* context, uint32_t, const uint32_t*) { ++*static_cast<uint32_t*>(context); }
+
+// x.xx without floating point.
+void print_ratio(uint64_t num, uint64_t den) {
+  const uint64_t hundredths = (num * 100 + den / 2) / den;
+  printf("%lu.%02lu", static_cast<unsigned long>(hundredths / 100), static_cast<unsigned long>(hundredths % 100));
+}
+
+}  // namespace
+
+int main() {
+  uint32_t n = 0;
+  const geombench::BenchScene* scenes = geombench::bench_scenes(&n);
+  htx::render::VertexCache cache{g_clip, g_screen, g_codes, kMaxVertices};
+  const htx::render::Viewport vp{320, 240};
+  uint64_t all_cycles = 0, all_vertices = 0;
+  for (uint32_t s = 0; s < n; ++s) {
+    const geombench::BenchScene& sc = scenes[s];
+    const int bits = htx::render::mesh_position_bits(sc.vertices, sc.vertex_count);
+    const htx::render::VertexTransform vt =
+        htx::render::make_vertex_transform(htx::render::mat4_mul(sc.view_proj, sc.model), bits);
+    htx::render::process_vertices(vt, sc.vertices, sc.vertex_count, vp, &cache);  // warm up
+    const uint64_t t0 = htx::hal::cpu_cycles();
+    for (uint32_t r = 0; r < kRuns; ++r) htx::render::process_vertices(vt, sc.vertices, sc.vertex_count, vp, &cache);
+    const uint64_t cycles = htx::hal::cpu_cycles() - t0;
+    uint32_t projected = 0;
+    for (uint32_t i = 0; i < sc.vertex_count; ++i) projected += g_codes[i] == 0;
+    const uint64_t verts = uint64_t{kRuns} * sc.vertex_count;
+    printf("geombench %s vertices %lu projected %lu cycles/vertex ", sc.name, static_cast<unsigned long>(sc.vertex_count),
+           static_cast<unsigned long>(projected));
+    print_ratio(cycles, verts);
+    printf("\n");
+    all_cycles += cycles;
+    all_vertices += verts;
+
+    htx::render::Mesh mesh{sc.vertices, sc.vertex_count, sc.indices, sc.triangle_count, sc.model, {}, {6, 6},
+                           static_cast<int8_t>(bits)};
+    mesh.state.method = htx::render::kMethodAuto;
+    htx::render::FrameParams frame;
+    frame.viewport = vp;
+    uint32_t sent = 0;
+    htx::render::DrawStats st;
+    const uint64_t d0 = htx::hal::cpu_cycles();
+    const htx::render::DrawStatus status =
+        htx::render::draw_mesh(frame, sc.view_proj, mesh, &cache, {count_triangle, &sent}, &st);
+    const uint64_t dc = htx::hal::cpu_cycles() - d0;
+    if (status != htx::render::kDrawOk) {
+      printf("geombench %s: draw_mesh failed with status %d\n", sc.name, status);
+      return 1;
+    }
+    printf("geombench %s triangles %lu sent %lu clipped %lu cycles/triangle %lu\n", sc.name,
+           static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(sent),
+           static_cast<unsigned long>(st.clipped), static_cast<unsigned long>(dc / sc.triangle_count));
+  }
+  printf("geombench all vertices %lu cycles/vertex ", static_cast<unsigned long>(all_vertices));
+  print_ratio(all_cycles, all_vertices);
+  printf("\n");
+  return 0;
+}

@@ -1,0 +1,42 @@
+// The per-vertex transform of one mesh in the form the soft CPU evaluates cheaply: twelve 32x32
+// high-word products (mulh) and four additions per vertex, no 64-bit carries. Positions are
+// pre-shifted to P fraction bits (as many as the mesh's largest coordinate allows) and the linear
+// part of the matrix is held with F = 48 - P fraction bits, so each high word is already Q16.16
+// (docs/firmware.md, "Number formats").
+#pragma once
+
+#include <stdint.h>
+
+#include "htx/render/transform.h"
+
+namespace htx::render {
+
+struct VertexTransform {
+  int32_t m[4][3];    // linear part, F fraction bits
+  int32_t t[4];       // translation (and rounding bias), Q16.16
+  int32_t in_shift;   // positions: Q16.16 << in_shift = P fraction bits
+  int32_t out_shift;  // extra left shift of the sums when F + P < 48 (0 for sane scenes)
+};
+
+// Integer bits (0..15, sign excluded) the largest |coordinate| of the positions needs.
+int position_int_bits(const int32_t* xyz, uint32_t count, uint32_t stride_words);
+
+VertexTransform make_vertex_transform(const Mat4& mvp, int position_bits);
+
+// Row i of clip = M * (x, y, z, 1) for positions already shifted by in_shift. Each of the three
+// products truncates (< 1 ulp); the bias in t centres the sum's error in [-2, 1] ulps.
+inline int32_t apply_row(const VertexTransform& vt, int i, int32_t px, int32_t py, int32_t pz) {
+  const int32_t s = static_cast<int32_t>((static_cast<int64_t>(vt.m[i][0]) * px) >> 32) +
+                    static_cast<int32_t>((static_cast<int64_t>(vt.m[i][1]) * py) >> 32) +
+                    static_cast<int32_t>((static_cast<int64_t>(vt.m[i][2]) * pz) >> 32);
+  return (s << vt.out_shift) + vt.t[i];
+}
+
+// clip = M * (x, y, z, 1), Q16.16 in and out.
+inline Vec4 apply(const VertexTransform& vt, int32_t x, int32_t y, int32_t z) {
+  const int32_t px = x << vt.in_shift, py = y << vt.in_shift, pz = z << vt.in_shift;
+  return {apply_row(vt, 0, px, py, pz), apply_row(vt, 1, px, py, pz), apply_row(vt, 2, px, py, pz),
+          apply_row(vt, 3, px, py, pz)};
+}
+
+}  // namespace htx::render
