@@ -1,0 +1,286 @@
+// Sampling pipeline (docs/model.md §7, model sample()): texel addresses, one read of the four
+// banks per level, decode, bilinear blend, trilinear blend. Stages, each a valid/ready register:
+//   A  request: per-axis indices and weights at level l0 + pass, the four bank addresses; the read
+//      is issued when B takes the pass. A trilinear request with a non-zero level weight makes two
+//      passes (levels l0 and l0 + 1, one clock each); every other request one.
+//   B  bank data (held in the RAMs' output registers): select each footprint texel, decode.
+//   C  blend: Lanes = 4 blends all channels in one clock; Lanes = 1 one channel per clock (4 clocks
+//      a bilinear texel, nearest passes in one).
+//   D  output; the first pass of a trilinear request waits in D for the second, then
+//      (a (256 - w) + b w + 128) >> 8 per channel.
+// Nearest uses the same path with both indices equal and zero weights, which the blend returns
+// unchanged.
+module htx_tex_sampler #(
+  parameter int unsigned CoordW   = 48,
+  parameter int unsigned TF       = 16,
+  parameter logic [2:0]  Formats  = 3'b111,
+  parameter bit          HasTri   = 1'b1,
+  parameter int unsigned TexW     = 32,
+  parameter int unsigned BAW      = 15,
+  parameter int unsigned Lanes    = 4,      // 4 or 1
+  parameter bit          ShiftAdd = 1'b0,
+  parameter int unsigned TagW     = 32
+) (
+  input  logic              clk_i,
+  input  logic              rst_ni,
+
+  input  logic              in_valid_i,
+  output logic              in_ready_o,
+  input  logic [CoordW-1:0] in_u_i,
+  input  logic [CoordW-1:0] in_v_i,
+  input  logic              in_nearest_i,
+  input  logic [1:0]        in_wrap_u_i,
+  input  logic [1:0]        in_wrap_v_i,
+  input  logic [25:0]       in_desc_i,     // {format, log2_h, log2_w, base}
+  input  logic [3:0]        in_l0_i,       // finer level
+  input  logic [7:0]        in_wtri_i,     // weight of level l0 + 1; 0: one pass
+  input  logic [15:0]       in_lod_i,      // carried to the output
+  input  logic [TagW-1:0]   in_tag_i,
+
+  output logic              s_re_o,
+  output logic              s_hold_o,
+  output logic [4*BAW-1:0]  s_addr_o,
+  input  logic [4*TexW-1:0] s_rdata_i,
+
+  output logic              out_valid_o,
+  input  logic              out_ready_i,
+  output logic [31:0]       out_rgba_o,
+  output logic [3:0]        out_level_o,
+  output logic [15:0]       out_lod_o,
+  output logic [TagW-1:0]   out_tag_o,
+
+  output logic              err_format_o,
+  output logic              busy_o
+);
+  // ---- Stage A ---------------------------------------------------------------------------------
+  logic              a_valid_q, a_pass_q, a_nearest_q;
+  logic [CoordW-1:0] a_u_q, a_v_q;
+  logic [1:0]        a_wrap_u_q, a_wrap_v_q;
+  logic [25:0]       a_desc_q;
+  logic [3:0]        a_l0_q;
+  logic [7:0]        a_wtri_q;
+  logic [15:0]       a_lod_q;
+  logic [TagW-1:0]   a_tag_q;
+  logic              b_ready, a_issue, a_last, a_two;
+  logic [3:0]        level;
+
+  assign a_two   = HasTri && (a_wtri_q != 8'd0);
+  assign a_last  = !a_two || a_pass_q;
+  assign a_issue = a_valid_q && b_ready;
+  assign in_ready_o = !a_valid_q || (a_issue && a_last);
+  assign level   = HasTri ? a_l0_q + 4'(a_pass_q) : 4'd0;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      a_valid_q <= 1'b0;
+      a_pass_q  <= 1'b0;
+    end else if (in_ready_o) begin
+      a_valid_q <= in_valid_i;
+      a_pass_q  <= 1'b0;
+    end else if (a_issue) begin
+      a_pass_q  <= 1'b1;  // first of two passes issued
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (in_ready_o && in_valid_i) begin
+      a_u_q       <= in_u_i;
+      a_v_q       <= in_v_i;
+      a_nearest_q <= in_nearest_i;
+      a_wrap_u_q  <= in_wrap_u_i;
+      a_wrap_v_q  <= in_wrap_v_i;
+      a_desc_q    <= in_desc_i;
+      a_l0_q      <= HasTri ? in_l0_i : 4'd0;
+      a_wtri_q    <= HasTri ? in_wtri_i : 8'd0;
+      a_lod_q     <= in_lod_i;
+      a_tag_q     <= in_tag_i;
+    end
+  end
+
+  logic [7:0] x0, x1, y0, y1, wu, wv;
+  logic [3:0] lwu, lwv;
+  htx_tex_axis #(.CoordW(CoordW), .TF(TF)) u_axis_u (
+    .coord_i(a_u_q), .level_i(level), .log2_size_i(a_desc_q[19:16]), .wrap_i(a_wrap_u_q),
+    .nearest_i(a_nearest_q), .i0_o(x0), .i1_o(x1), .weight_o(wu), .log2_level_o(lwu));
+  htx_tex_axis #(.CoordW(CoordW), .TF(TF)) u_axis_v (
+    .coord_i(a_v_q), .level_i(level), .log2_size_i(a_desc_q[23:20]), .wrap_i(a_wrap_v_q),
+    .nearest_i(a_nearest_q), .i0_o(y0), .i1_o(y1), .weight_o(wv), .log2_level_o(lwv));
+
+  // Blocks (2x2 texels, one word per bank) before level lvl of a 2^a x 2^b chain.
+  function automatic logic [16:0] level_offset(input logic [3:0] a, input logic [3:0] b,
+                                               input logic [3:0] lvl);
+    logic [3:0] sa, sb;
+    level_offset = '0;
+    for (int l = 0; l < 8; l++) begin
+      sa = (a > 4'(l + 1)) ? a - 4'(l + 1) : 4'd0;
+      sb = (b > 4'(l + 1)) ? b - 4'(l + 1) : 4'd0;
+      if (4'(l) < lvl) level_offset = level_offset + (17'd1 << (sa + sb));
+    end
+  endfunction
+
+  logic [16:0] lvl_base;
+  logic [3:0]  row_shift;
+  assign lvl_base  = 17'(a_desc_q[15:0]) + (HasTri ? level_offset(a_desc_q[19:16], a_desc_q[23:20], level)
+                                                   : 17'd0);
+  assign row_shift = (lwu > 4'd0) ? lwu - 4'd1 : 4'd0;
+  for (genvar b = 0; b < 4; b++) begin : g_addr
+    logic [7:0]  xs, ys;
+    logic [16:0] a;
+    assign xs = (x0[0] == b[0]) ? x0 : x1;
+    assign ys = (y0[0] == b[1]) ? y0 : y1;
+    assign a  = lvl_base + (17'(ys[7:1]) << row_shift) + 17'(xs[7:1]);
+    assign s_addr_o[b*BAW +: BAW] = BAW'(a);  // beyond the memory: wraps (docs/texture.md)
+    logic unused_a;
+    assign unused_a = ^{a, xs[0], ys[0]};
+  end
+  assign s_re_o = a_issue;
+
+  // ---- Stage B ---------------------------------------------------------------------------------
+  logic            b_valid_q, b_first_q, b_second_q, b_nearest_q;
+  logic [3:0]      b_par_q;  // x0, x1, y0, y1 parities
+  logic [7:0]      b_wu_q, b_wv_q, b_wtri_q;
+  logic [1:0]      b_fmt_q;
+  logic [3:0]      b_l0_q;
+  logic [15:0]     b_lod_q;
+  logic [TagW-1:0] b_tag_q;
+  logic            c_ready;
+
+  assign b_ready  = !b_valid_q || c_ready;
+  assign s_hold_o = b_valid_q && !c_ready;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) b_valid_q <= 1'b0;
+    else if (b_ready) b_valid_q <= a_issue;
+  end
+  always_ff @(posedge clk_i) begin
+    if (a_issue) begin
+      b_first_q   <= a_two && !a_pass_q;
+      b_second_q  <= a_two && a_pass_q;
+      b_nearest_q <= a_nearest_q;
+      b_par_q     <= {y1[0], y0[0], x1[0], x0[0]};
+      b_wu_q      <= wu;
+      b_wv_q      <= wv;
+      b_wtri_q    <= a_wtri_q;
+      b_fmt_q     <= a_desc_q[25:24];
+      b_l0_q      <= a_l0_q;
+      b_lod_q     <= a_lod_q;
+      b_tag_q     <= a_tag_q;
+    end
+  end
+
+  logic [31:0] texel [4];  // c00, c10, c01, c11
+  logic [3:0]  bad;
+  for (genvar k = 0; k < 4; k++) begin : g_decode
+    logic [1:0] bk;
+    assign bk = {k[1] ? b_par_q[3] : b_par_q[2], k[0] ? b_par_q[1] : b_par_q[0]};
+    htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_decode (
+      .texel_i(s_rdata_i[32'(bk)*TexW +: TexW]), .format_i(b_fmt_q), .rgba_o(texel[k]), .bad_o(bad[k]));
+  end
+  assign err_format_o = b_valid_q && c_ready && bad[0];
+
+  // ---- Stage C ---------------------------------------------------------------------------------
+  logic            c_valid_q, c_first_q, c_second_q, c_nearest_q;
+  logic [31:0]     c_tex_q [4];
+  logic [7:0]      c_wu_q, c_wv_q, c_wtri_q;
+  logic [3:0]      c_l0_q;
+  logic [15:0]     c_lod_q;
+  logic [TagW-1:0] c_tag_q;
+  logic            c_done, c_take;
+  logic [31:0]     c_res;
+  logic            out_free;
+
+  assign out_free = !out_valid_o || out_ready_i;
+  assign c_take   = c_first_q || out_free;   // a first pass always fits in D's holding register
+  assign c_ready  = !c_valid_q || (c_done && c_take);
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) c_valid_q <= 1'b0;
+    else if (c_ready) c_valid_q <= b_valid_q;
+  end
+  always_ff @(posedge clk_i) begin
+    if (c_ready && b_valid_q) begin
+      c_first_q   <= b_first_q;
+      c_second_q  <= b_second_q;
+      c_nearest_q <= b_nearest_q;
+      for (int k = 0; k < 4; k++) c_tex_q[k] <= texel[k];
+      c_wu_q      <= b_wu_q;
+      c_wv_q      <= b_wv_q;
+      c_wtri_q    <= b_wtri_q;
+      c_l0_q      <= b_l0_q;
+      c_lod_q     <= b_lod_q;
+      c_tag_q     <= b_tag_q;
+    end
+  end
+
+  if (Lanes >= 4) begin : g_lanes4
+    for (genvar ch = 0; ch < 4; ch++) begin : g_ch
+      htx_tex_bilerp #(.ShiftAdd(ShiftAdd)) u_bilerp (
+        .c00_i(c_tex_q[0][8*ch +: 8]), .c10_i(c_tex_q[1][8*ch +: 8]),
+        .c01_i(c_tex_q[2][8*ch +: 8]), .c11_i(c_tex_q[3][8*ch +: 8]),
+        .wu_i(c_wu_q), .wv_i(c_wv_q), .c_o(c_res[8*ch +: 8]));
+    end
+    assign c_done = 1'b1;
+  end else begin : g_lane1
+    logic [1:0]  ch_q;
+    logic [7:0]  lane;
+    logic [23:0] part_q;
+    htx_tex_bilerp #(.ShiftAdd(ShiftAdd)) u_bilerp (
+      .c00_i(c_tex_q[0][8*ch_q +: 8]), .c10_i(c_tex_q[1][8*ch_q +: 8]),
+      .c01_i(c_tex_q[2][8*ch_q +: 8]), .c11_i(c_tex_q[3][8*ch_q +: 8]),
+      .wu_i(c_wu_q), .wv_i(c_wv_q), .c_o(lane));
+    assign c_done = c_nearest_q || (ch_q == 2'd3);
+    assign c_res  = c_nearest_q ? c_tex_q[0] : {lane, part_q};
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        ch_q <= '0;
+      end else if (c_ready) begin
+        ch_q <= '0;
+      end else if (c_valid_q && !c_done) begin
+        ch_q <= ch_q + 2'd1;
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (c_valid_q && !c_done) part_q[8*ch_q +: 8] <= lane;
+    end
+  end
+
+  // ---- Stage D ---------------------------------------------------------------------------------
+  logic        c_fire;
+  logic [31:0] first_q, tri_res;
+  assign c_fire = c_valid_q && c_done && c_take;
+
+  if (HasTri) begin : g_tri
+    for (genvar ch = 0; ch < 4; ch++) begin : g_ch
+      htx_tex_lerp #(.ShiftAdd(ShiftAdd)) u_lerp (
+        .a_i(first_q[8*ch +: 8]), .b_i(c_res[8*ch +: 8]), .w_i(c_wtri_q), .c_o(tri_res[8*ch +: 8]));
+    end
+  end else begin : g_no_tri
+    assign tri_res = c_res;
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (c_fire && c_first_q) first_q <= c_res;
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      out_valid_o <= 1'b0;
+    end else if (c_fire && !c_first_q) begin
+      out_valid_o <= 1'b1;
+    end else if (out_ready_i) begin
+      out_valid_o <= 1'b0;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (c_fire && !c_first_q) begin
+      out_rgba_o  <= (HasTri && c_second_q) ? tri_res : c_res;
+      out_level_o <= c_l0_q;
+      out_lod_o   <= c_lod_q;
+      out_tag_o   <= c_tag_q;
+    end
+  end
+
+  assign busy_o = a_valid_q || b_valid_q || c_valid_q || out_valid_o;
+
+  logic unused;
+  assign unused = ^{lwv, bad[3:1], c_nearest_q, c_wtri_q, first_q};
+endmodule
