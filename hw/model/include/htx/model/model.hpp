@@ -11,6 +11,9 @@
 // - Nearest and bilinear sample level 0; trilinear blends levels floor(lod) and floor(lod)+1.
 #pragma once
 
+#include <vector>
+
+#include "htx/fw/vertex_record.h"
 #include "htx/model/config.hpp"
 #include "htx/model/types.hpp"
 
@@ -20,5 +23,25 @@ namespace htx {
 // Throws std::invalid_argument when a triangle asks for a method, filter or texture format the
 // configuration does not build, names a missing texture, or the scene size is outside 1..4096.
 Frame render_model(const ScreenScene& scene, const ModelConfig& config);
+
+// A triangle as the firmware streams it: its vertex record and its state, method resolved.
+struct RecordTriangle {
+  fw::TriangleRecord record;
+  TriState state;
+};
+
+// Triangles given as vertex records (e.g. what the firmware streamed), in drawing order.
+struct RecordScene {
+  int width = 320, height = 240;
+  std::vector<Texture> textures;
+  std::vector<RecordTriangle> tris;
+  uint16_t clear_color = 0;
+  uint32_t clear_depth = 0xFFFFFFFFu;
+};
+
+// The model from the vertex records on (render_model without its encoder and AUTO): the frame for
+// records the firmware produced. Throws std::invalid_argument like render_model, and for a record
+// whose method is Auto.
+Frame render_model_records(const RecordScene& scene, const ModelConfig& config);
 
 }  // namespace htx
