@@ -1,10 +1,15 @@
 # RTL helpers: lint tests for every top, and Verilated libraries for the engines and tests.
 #
-# htx_rtl_top(NAME <top> SOURCES <sv files...> [REGS <peripheral names...>] [YOSYS_ARGS <...>])
+# htx_rtl_top(NAME <top> SOURCES <sv files...> [REGS <peripheral names...>] [YOSYS_ARGS <...>]
+#             [YOSYS_ELABORATE])
 #   Registers `lint.verilator.<top>` (verilator --lint-only -Wall) and `lint.yosys.<top>` (Debian
 #   Yosys 0.23, read_verilog -sv + synth_ice40) with the CTest label `lint`, and records the top's
 #   file list in the global properties HTX_RTL_<top>_SOURCES for synthesis reports and Verilation.
 #   REGS names the generated register packages (e.g. UART) that the top needs, which come first.
+#   YOSYS_ELABORATE: the lint test has Yosys read and elaborate the top (hierarchy -check, proc,
+#   flatten, check) instead of running synth_ice40 on it. For tops that are synthesised whole inside
+#   a larger linted top, and for `full` configurations whose synthesis takes minutes; those are
+#   synthesised by the `synth-report` target instead (docs/architecture.md, "Lint").
 # htx_verilate(<lib target> TOP <top> [ARGS <verilator args...>] [TRACE])
 #   Builds a static library holding the Verilated model of a top registered with htx_rtl_top.
 
@@ -22,7 +27,7 @@ function(htx_reg_pkg_files out)
 endfunction()
 
 function(htx_rtl_top)
-  cmake_parse_arguments(A "" "NAME" "SOURCES;REGS;YOSYS_ARGS" ${ARGN})
+  cmake_parse_arguments(A "YOSYS_ELABORATE" "NAME" "SOURCES;REGS;YOSYS_ARGS" ${ARGN})
   htx_reg_pkg_files(pkgs ${A_REGS})
   set(srcs)
   foreach(s IN LISTS A_SOURCES)
@@ -44,9 +49,14 @@ function(htx_rtl_top)
   endif()
   if(HTX_YOSYS_BIN)
     list(JOIN all " " files)
+    if(A_YOSYS_ELABORATE)
+      set(flow "hierarchy -check -top ${A_NAME}; proc; flatten; opt_clean; check")
+    else()
+      set(flow "synth_ice40 -dsp -top ${A_NAME} ${A_YOSYS_ARGS}")
+    endif()
     add_test(NAME lint.yosys.${A_NAME}
       COMMAND ${HTX_YOSYS_BIN} -q -l ${CMAKE_BINARY_DIR}/lint/${A_NAME}.yosys.log
-        -p "read_verilog -sv ${files}; synth_ice40 -dsp -top ${A_NAME} ${A_YOSYS_ARGS}")
+        -p "read_verilog -sv ${files}; ${flow}")
     set_tests_properties(lint.yosys.${A_NAME} PROPERTIES LABELS lint)
   endif()
   file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/lint)
