@@ -21,7 +21,8 @@ module htx_tex_regs #(
   output logic [31:0]        rsp_rdata_o,
   output logic               rsp_err_o,
 
-  output logic [NumSlots*26-1:0] desc_o,   // per slot {format[1:0], log2_h[3:0], log2_w[3:0], base[15:0]}
+  input  logic [7:0]          slot_i,    // taken modulo NumSlots
+  output logic [25:0]         desc_o,    // that slot's {format[1:0], log2_h[3:0], log2_w[3:0], base[15:0]}
   input  logic               busy_i,
   input  logic               err_format_i,
   input  logic               err_filter_i,
@@ -76,8 +77,10 @@ module htx_tex_regs #(
     end
   end
 
-  for (genvar s = 0; s < NumSlots; s++) begin : g_desc
-    assign desc_o[s*26 +: 26] = desc_q[s];
+  if (NumSlots > 1) begin : g_slot
+    assign desc_o = desc_q[slot_i[SW-1:0]];
+  end else begin : g_one_slot
+    assign desc_o = desc_q[0];
   end
 
   logic [31:0] rdata;
@@ -114,5 +117,5 @@ module htx_tex_regs #(
   assign rsp_err_o   = 1'b0;
 
   logic unused;
-  assign unused = ^{req_addr_i[31:12], req_wdata_i[31:26]};
+  assign unused = ^{req_addr_i[31:12], req_wdata_i[31:26], slot_i};
 endmodule

@@ -122,15 +122,23 @@ module htx_tex_sampler #(
   assign lvl_base  = 17'(a_desc_q[15:0]) + (HasTri ? level_offset(a_desc_q[19:16], a_desc_q[23:20], level)
                                                    : 17'd0);
   assign row_shift = (lwu > 4'd0) ? lwu - 4'd1 : 4'd0;
+  // Row offsets of the two footprint rows; a block column never reaches the row stride, so the
+  // column joins the row offset by OR.
+  logic [13:0] row0, row1;
+  assign row0 = 14'(y0[7:1]) << row_shift;
+  assign row1 = 14'(y1[7:1]) << row_shift;
   for (genvar b = 0; b < 4; b++) begin : g_addr
-    logic [7:0]  xs, ys;
+    logic [6:0]  xs;
+    logic [13:0] ro;
+    logic [13:0] rc;
     logic [16:0] a;
-    assign xs = (x0[0] == b[0]) ? x0 : x1;
-    assign ys = (y0[0] == b[1]) ? y0 : y1;
-    assign a  = lvl_base + (17'(ys[7:1]) << row_shift) + 17'(xs[7:1]);
+    assign xs = (x0[0] == b[0]) ? x0[7:1] : x1[7:1];
+    assign ro = (y0[0] == b[1]) ? row0 : row1;
+    assign rc = ro | 14'(xs);
+    assign a  = lvl_base + 17'(rc);
     assign s_addr_o[b*BAW +: BAW] = BAW'(a);  // beyond the memory: wraps (docs/texture.md)
     logic unused_a;
-    assign unused_a = ^{a, xs[0], ys[0]};
+    assign unused_a = ^a;
   end
   assign s_re_o = a_issue;
 

@@ -73,18 +73,17 @@ module htx_texture #(
   localparam bit          HasTri = Filters[2];
   localparam bit          HasBil = Filters[1];
   localparam int unsigned TexW   = Formats[2] ? 32 : 16;
-  localparam int unsigned SW     = (NumSlots > 1) ? $clog2(NumSlots) : 1;
   localparam int unsigned LodW   = 24;
 
   // ---- Registers and memory --------------------------------------------------------------------
-  logic [NumSlots*26-1:0] descs;
+  logic [25:0]            desc;
   logic                   err_format, err_filter, busy, sample;
   htx_tex_regs #(.Formats(Formats), .Filters(Filters), .NumSlots(NumSlots), .BAW(BAW), .TexW(TexW)) u_regs (
     .clk_i, .rst_ni,
     .req_valid_i(reg_req_valid_i), .req_ready_o(reg_req_ready_o), .req_addr_i(reg_req_addr_i),
     .req_we_i(reg_req_we_i), .req_be_i(reg_req_be_i), .req_wdata_i(reg_req_wdata_i),
     .rsp_valid_o(reg_rsp_valid_o), .rsp_rdata_o(reg_rsp_rdata_o), .rsp_err_o(reg_rsp_err_o),
-    .desc_o(descs), .busy_i(busy), .err_format_i(err_format), .err_filter_i(err_filter),
+    .slot_i(req_slot_i), .desc_o(desc), .busy_i(busy), .err_format_i(err_format), .err_filter_i(err_filter),
     .sample_i(sample));
 
   logic              s_re, s_hold;
@@ -98,10 +97,8 @@ module htx_texture #(
     .s_re_i(s_re), .s_hold_i(s_hold), .s_addr_i(s_addr), .s_rdata_o(s_rdata));
 
   // ---- Front: descriptor, filter actually built ------------------------------------------------
-  logic [25:0] desc;
   logic [1:0]  filter;
   logic        bad_filter;
-  assign desc = descs[32'(SW'(req_slot_i)) * 26 +: 26];
   always_comb begin
     bad_filter = 1'b0;
     unique case (req_filter_i)
@@ -203,7 +200,4 @@ module htx_texture #(
   assign busy   = s_busy || front_busy;
   assign busy_o = busy;
   assign sample = out_valid_o && out_ready_i;
-
-  logic unused_slot;
-  assign unused_slot = ^req_slot_i;  // slot numbers wrap modulo NumSlots
 endmodule

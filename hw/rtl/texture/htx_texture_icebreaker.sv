@@ -1,6 +1,6 @@
 // The texture unit in the `icebreaker` configuration (docs/texture.md): RGB565 and RGBA4444, nearest and
-// bilinear (no LOD unit: both sample level 0), one channel blended per clock with the products in
-// logic (no DSP), 24-bit coordinates with 10 fraction bits (the producer wraps or saturates them,
+// bilinear (no LOD unit: both sample level 0), one channel blended per clock (three products, one
+// iCE40 DSP each; ShiftAdd = 1 puts them in logic instead), 24-bit coordinates with 10 fraction bits (the producer wraps or saturates them,
 // docs/texture.md), 4 slots, 4 x 1K x 16-bit banks (4K texels, 16 EBR).
 module htx_texture_icebreaker #(
   parameter int unsigned CoordW   = 24,
@@ -11,7 +11,7 @@ module htx_texture_icebreaker #(
   parameter int unsigned NumSlots = 4,
   parameter int unsigned BAW      = 10,
   parameter int unsigned Lanes    = 1,
-  parameter bit          ShiftAdd = 1'b1,
+  parameter bit          ShiftAdd = 1'b0,
   parameter int unsigned TagW     = 8,
   parameter int unsigned QW       = 42,
   parameter int unsigned GradW    = 16,
