@@ -93,20 +93,25 @@ module htx_cpu #(
 
   // ------------------------------------------------------------------------------------------
   // Pipeline registers
-  logic        d_valid_q, d_first_q, d_err_q, d_pred_q;
+  logic        d_valid_q, d_first_q, d_err_q, d_pred_q, d_rs1_used_q, d_rs2_used_q;
+  logic        d_sub_q, d_signed_q, d_a_pc_q, d_a_zero_q, d_b_rs2_q;
+  logic [31:0] d_instr_q, d_timm_q;  // instruction, branch/JAL immediate
   logic [31:2] d_pc_q, d_npc_q;
 
   logic                    e_valid_q;
   htx_cpu_pkg::exec_t      e_q;
   logic [32:0]             e_a_q, e_b_q;                    // ALU operands (bit 32: see the ALU)
-  logic [31:0]             e_rs2_q, e_aux_q;                // store data, target/tval
+  logic [31:0]             e_rs2_q, e_aux_q;                // store data, target (or instruction)
   logic                    e_br_eq_q, e_br_inv_q;           // branch condition: use eq, invert
   logic [31:2]             e_pc_q, e_npc_q;
-  logic                    e_pred_q, e_xtrap_q, e_late_q, e_late_alu_q, e_sub_q;
+  logic                    e_illegal_q;
+  logic                    e_pred_q, e_xtrap_q, e_late_q, e_sub_q;
+  logic                    e_left_q, e_arith_q, e_fast_q;
   htx_cpu_pkg::exc_cause_e e_cause_q;
   logic [1:0]              e_lo_q;     // address bits [1:0] of a load/store
 
   logic        w_valid_q, w_rd_we_q, w_load_q, w_mem_q, w_store_q, w_nocount_q;
+  logic        w_reverse_q;  // w_result_q is a bit-reversed left shift
   logic [4:0]  w_rd_q;
   logic [2:0]  w_funct3_q;
   logic [31:0] w_result_q;   // result, or the address of a load/store
@@ -127,7 +132,17 @@ module htx_cpu #(
   assign w_ready  = !w_valid_q || !w_mem_q || dbus_rsp_valid_i;
   assign w_fault  = w_valid_q && w_mem_q && dbus_rsp_valid_i && dbus_rsp_err_i;
   assign rf_we    = w_valid_q && w_ready && !w_fault && w_rd_we_q;
-  assign rf_wdata = w_load_q ? w_load_value : w_result_q;
+  always_comb begin
+    if (w_load_q) begin
+      rf_wdata = w_load_value;
+    end else if (w_reverse_q) begin
+      for (int i = 0; i < 32; i++) begin
+        rf_wdata[i] = w_result_q[31-i];
+      end
+    end else begin
+      rf_wdata = w_result_q;
+    end
+  end
 
   // ------------------------------------------------------------------------------------------
   // Register file: read when D takes an instruction; while D holds its instruction the register
@@ -138,8 +153,8 @@ module htx_cpu #(
 
   htx_cpu_regfile u_regfile (
     .clk_i,
-    .raddr_a_i (d_free ? f_instr[19:15] : d_dec.rs1),
-    .raddr_b_i (d_free ? f_instr[24:20] : d_dec.rs2),
+    .raddr_a_i (d_free_nr ? f_instr[19:15] : d_instr_q[19:15]),
+    .raddr_b_i (d_free_nr ? f_instr[24:20] : d_instr_q[24:20]),
     .rdata_a_o (rf_rdata_a),
     .rdata_b_o (rf_rdata_b),
     .we_i      (rf_we),
@@ -148,55 +163,86 @@ module htx_cpu #(
   );
 
   // ------------------------------------------------------------------------------------------
-  // Decode: the decoder works on the instruction as D takes it and its outputs are registered, so
-  // the forwarding selects in D start from flip-flops.
-  htx_cpu_pkg::decoded_t f_dec, d_dec;
+  // Decode. The forwarding selects and the hazard check use the raw register fields and two bits
+  // predecoded as D takes the instruction, so they do not wait for the decoder.
+  htx_cpu_pkg::decoded_t d_dec;
+  logic [4:0] d_ra, d_rb;  // source register fields
 
   htx_cpu_decoder u_decoder (
-    .instr_i (f_instr),
-    .dec_o   (f_dec)
+    .instr_i (d_instr_q),
+    .dec_o   (d_dec)
   );
+  assign d_ra = d_instr_q[19:15];
+  assign d_rb = d_instr_q[24:20];
+
+  // Operand controls predecoded from the instruction bits as D takes the instruction, so the
+  // operand path in D does not wait for the decoder: subtract (SUB, SLT(I)(U), branches), signed
+  // compare (SLT(I), BLT, BGE), operand a = PC (AUIPC) or 0 (LUI, ECALL/EBREAK/MRET/WFI, so mtval
+  // is 0 + 0), operand b = rs2 (OP, BRANCH) or the immediate. Where they do not matter they are
+  // whatever is cheapest.
+  logic f_sub, f_signed, f_a_pc, f_a_zero, f_b_rs2;
+  assign f_a_pc   = (f_instr[6:2] == 5'b00101);
+  assign f_a_zero = (f_instr[6:2] == 5'b01101) || ((f_instr[6:2] == 5'b11100) && (f_instr[14:12] == 3'b000));
+  assign f_b_rs2  = (f_instr[6:2] == 5'b01100) || (f_instr[6:2] == 5'b11000);
+  assign f_sub    = (f_instr[6:2] == 5'b11000) ||
+                    ((((f_instr[6:2] == 5'b01100) && !f_instr[25]) || (f_instr[6:2] == 5'b00100)) &&
+                     (f_instr[14:13] == 2'b01)) ||
+                    ((f_instr[6:2] == 5'b01100) && (f_instr[14:12] == 3'b000) && f_instr[30] &&
+                     !f_instr[25]);
+  assign f_signed = ((f_instr[6:2] == 5'b11000) && !f_instr[13]) ||
+                    (((f_instr[6:2] == 5'b01100) || (f_instr[6:2] == 5'b00100)) &&
+                     (f_instr[14:12] == 3'b010));
+
+  // Sources possibly read (a superset is harmless: it can only add a stall).
+  logic f_rs1_used, f_rs2_used;
+  assign f_rs1_used = !f_instr[2] || (f_instr[6:2] == 5'b11001);               // all but LUI/AUIPC/JAL
+  assign f_rs2_used = (f_instr[6:2] == 5'b01100) || (f_instr[6:2] == 5'b01000) ||  // OP, STORE
+                      (f_instr[6:2] == 5'b11000);                               // BRANCH
 
   logic        e_live, e_accept;
   logic [31:0] e_fast_result;
 
   // Forwarding: E's adder/logic result, W's write data, the last write, the register file.
   logic fe_a, fe_b, fw_a, fw_b, fl_a, fl_b;
-  assign fe_a = e_live && e_q.rd_we && !e_late_q && (e_q.rd == d_dec.rs1);
-  assign fe_b = e_live && e_q.rd_we && !e_late_q && (e_q.rd == d_dec.rs2);
-  assign fw_a = w_valid_q && w_rd_we_q && (w_rd_q == d_dec.rs1);
-  assign fw_b = w_valid_q && w_rd_we_q && (w_rd_q == d_dec.rs2);
-  assign fl_a = lw_valid_q && (lw_rd_q == d_dec.rs1);
-  assign fl_b = lw_valid_q && (lw_rd_q == d_dec.rs2);
+  assign fe_a = e_live && e_q.rd_we && !e_late_q && (e_q.rd == d_ra);
+  assign fe_b = e_live && e_q.rd_we && !e_late_q && (e_q.rd == d_rb);
+  assign fw_a = w_valid_q && w_rd_we_q && (w_rd_q == d_ra);
+  assign fw_b = w_valid_q && w_rd_we_q && (w_rd_q == d_rb);
+  assign fl_a = lw_valid_q && (lw_rd_q == d_ra);
+  assign fl_b = lw_valid_q && (lw_rd_q == d_rb);
 
-  logic [31:0] d_rs1, d_rs2;
+  // The value from E comes last (end of the carry chain), so it enters at the final LUT level:
+  // every other choice is made first (_rest, kept as separate signals so synthesis does not fold
+  // the late value deeper into the mux tree).
+  (* keep *) logic [31:0] d_rs1_rest, d_rs2_rest, d_a_rest, d_b_rest;
   always_comb begin
-    if (fe_a) begin
-      d_rs1 = e_fast_result;
-    end else if (fw_a) begin
-      d_rs1 = rf_wdata;
+    if (fw_a) begin
+      d_rs1_rest = rf_wdata;
     end else if (fl_a) begin
-      d_rs1 = lw_data_q;
+      d_rs1_rest = lw_data_q;
     end else begin
-      d_rs1 = rf_rdata_a;
+      d_rs1_rest = rf_rdata_a;
     end
-    if (fe_b) begin
-      d_rs2 = e_fast_result;
-    end else if (fw_b) begin
-      d_rs2 = rf_wdata;
+    if (fw_b) begin
+      d_rs2_rest = rf_wdata;
     end else if (fl_b) begin
-      d_rs2 = lw_data_q;
+      d_rs2_rest = lw_data_q;
     end else begin
-      d_rs2 = rf_rdata_b;
+      d_rs2_rest = rf_rdata_b;
     end
   end
+
+  logic [1:0]  d_rs1_lo;
+  logic [31:0] d_rs2;
+  assign d_rs1_lo = fe_a ? e_fast_result[1:0] : d_rs1_rest[1:0];
+  assign d_rs2    = fe_b ? e_fast_result : d_rs2_rest;
 
   // A source written by the instruction in E whose result comes late (load, shift, link, CSR,
   // MUL/DIV) waits one cycle and then comes from W. W always completes when D moves on.
   logic d_hazard;
   assign d_hazard = e_live && e_q.rd_we && e_late_q &&
-                    ((d_dec.rs1_used && (e_q.rd == d_dec.rs1)) ||
-                     (d_dec.rs2_used && (e_q.rd == d_dec.rs2)));
+                    ((d_rs1_used_q && (e_q.rd == d_ra)) ||
+                     (d_rs2_used_q && (e_q.rd == d_rb)));
 
   logic late_alu_d, late_d, sub_d;
   assign late_alu_d = (d_dec.alu_op == htx_cpu_pkg::AluSll) || (d_dec.alu_op == htx_cpu_pkg::AluSrl) ||
@@ -204,28 +250,32 @@ module htx_cpu #(
                       (d_dec.alu_op == htx_cpu_pkg::AluSltu);
   assign late_d     = d_dec.load || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul || d_dec.div ||
                       late_alu_d;
-  assign sub_d      = (d_dec.alu_op == htx_cpu_pkg::AluSub) || (d_dec.alu_op == htx_cpu_pkg::AluSlt) ||
-                      (d_dec.alu_op == htx_cpu_pkg::AluSltu);
+  assign sub_d      = d_sub_q;
 
-  // ALU operands.
   // ALU operands, extended to 33 bits with the sign for a signed comparison (SLT, BLT, BGE) and
   // with zero otherwise; b is inverted for a subtraction.
   logic [31:0] d_a, d_b;
-  logic        signed_d;
+  logic        signed_d, fe_a_op, fe_b_op;
   always_comb begin
-    unique case (d_dec.op_a_sel)
-      htx_cpu_pkg::OpAPc:   d_a = {d_pc_q, 2'b00};
-      htx_cpu_pkg::OpAZero: d_a = 32'b0;
-      default:              d_a = d_rs1;
-    endcase
+    if (d_a_pc_q) begin
+      d_a_rest = {d_pc_q, 2'b00};
+    end else if (d_a_zero_q) begin
+      d_a_rest = 32'b0;
+    end else begin
+      d_a_rest = d_rs1_rest;
+    end
   end
-  assign d_b      = d_dec.op_b_imm ? d_dec.imm : d_rs2;
-  assign signed_d = (d_dec.branch && !d_dec.funct3[1]) || (d_dec.alu_op == htx_cpu_pkg::AluSlt);
+  assign d_b_rest = d_b_rs2_q ? d_rs2_rest : d_dec.imm;
+  assign fe_a_op  = fe_a && !d_a_pc_q && !d_a_zero_q;
+  assign fe_b_op  = fe_b && d_b_rs2_q;
+  assign d_a      = fe_a_op ? e_fast_result : d_a_rest;
+  assign d_b      = fe_b_op ? e_fast_result : d_b_rest;
+  assign signed_d = d_signed_q;
 
   // Address bits [1:0] of a load, store or JALR target, for the misalignment checks.
   logic [1:0] d_lo;
   logic       d_misaligned;
-  assign d_lo = d_rs1[1:0] + d_dec.imm[1:0];
+  assign d_lo = d_rs1_lo + d_dec.imm[1:0];
   always_comb begin
     unique case (d_dec.funct3[1:0])
       2'b00:   d_misaligned = 1'b0;
@@ -235,7 +285,7 @@ module htx_cpu #(
   end
 
   // Branch and JAL target.
-  assign d_target = {d_pc_q, 2'b00} + d_dec.imm;
+  assign d_target = {d_pc_q, 2'b00} + d_timm_q;
 
   // Traps known before E (everything except a taken branch to a misaligned target). mtval comes
   // from E's adder (decode sets it up to produce the PC, the instruction bits or 0 where that is
@@ -288,7 +338,19 @@ module htx_cpu #(
   assign d_go       = d_live && e_accept && !d_hazard;
   assign d_free     = !d_live || d_go;
   assign d_redirect = d_live && d_first_q && d_pred_q;
-  assign f_take     = d_free && !redirect_q && !d_redirect;
+
+  // The same hand-over decisions assuming no registered redirect (_nr): where a redirect makes
+  // the choice irrelevant (everything in D and E is squashed), these drive the wide enables and
+  // the fetch hand-shake, which keeps redirect_q off the front of those paths.
+  logic e_done_nr, e_accept_nr, d_free_nr;
+  assign e_done_nr   = e_valid_q && w_ready && !w_fault && !(e_q.csr && (w_valid_q || csr_counting)) &&
+                       !e_wait;
+  assign e_accept_nr = w_ready && (!e_valid_q || e_done_nr);
+  assign d_free_nr   = !d_valid_q ||
+                       (e_accept_nr && !(e_valid_q && e_q.rd_we && e_late_q &&
+                                         ((d_rs1_used_q && (e_q.rd == d_ra)) ||
+                                          (d_rs2_used_q && (e_q.rd == d_rb)))));
+  assign f_take      = d_free_nr && !redirect_q && !(d_valid_q && d_first_q && d_pred_q);
 
 
   // ------------------------------------------------------------------------------------------
@@ -299,6 +361,8 @@ module htx_cpu #(
   htx_cpu_alu u_alu (
     .op_i     (e_q.alu_op),
     .sub_i    (e_sub_q),
+    .left_i   (e_left_q),
+    .arith_i  (e_arith_q),
     .a_i      (e_a_q),
     .b_i      (e_b_q),
     .fast_o   (e_fast_result),
@@ -320,12 +384,12 @@ module htx_cpu #(
   htx_cpu_pkg::exc_cause_e e_cause;
   logic [31:0]             e_tval;
   assign e_cause = e_xtrap_q ? e_cause_q : htx_cpu_pkg::ExcInstrMisaligned;
-  assign e_tval  = (e_q.branch || e_q.jal) ? e_aux_q : {alu_sum[31:1], alu_sum[0] && !e_q.jalr};
+  assign e_tval  = (e_q.branch || e_q.jal || e_illegal_q) ? e_aux_q : {alu_sum[31:1], alu_sum[0] && !e_q.jalr};
 
   // ------------------------------------------------------------------------------------------
   // Execute: memory, multiply, divide, CSR
   logic        e_can_go, e_mem, e_mul, e_div, e_wait, e_done, e_commit;
-  logic        mul_done, mul_busy, div_done, div_busy;
+  logic        mul_done, mul_busy, div_done, div_busy, csr_counting;
   // A trap's CSR updates are applied one cycle after it is taken (together with the registered
   // redirect); nothing can read those CSRs in between, because the instruction then in E is squashed.
   logic                    trap_q;
@@ -336,9 +400,10 @@ module htx_cpu #(
   logic [31:2] mtvec, mepc;
 
   // E holds a live instruction unless it entered on the wrong path while a redirect was decided.
-  // A CSR instruction waits until W is empty, so the counters it reads are exact.
+  // A CSR instruction waits until W is empty and its retirement is counted, so the counters it
+  // reads are exact.
   assign e_live   = e_valid_q && !redirect_q;
-  assign e_can_go = e_live && w_ready && !w_fault && !(e_q.csr && w_valid_q);
+  assign e_can_go = e_live && w_ready && !w_fault && !(e_q.csr && (w_valid_q || csr_counting));
   assign e_mem    = (e_q.load || e_q.store) && !e_xtrap_q;
   assign e_mul    = e_q.mul && !e_xtrap_q;
   assign e_div    = e_q.div && !e_xtrap_q;
@@ -404,6 +469,7 @@ module htx_cpu #(
     .op_i      (e_q.funct3[1:0]),
     .src_i     (e_q.funct3[2] ? {27'b0, e_q.uimm} : e_a_q[31:0]),
     .retire_i  (w_valid_q && w_ready && !w_fault && !w_nocount_q),
+    .counting_o(csr_counting),
     .trap_i    (trap_q),
     .cause_i   (trap_cause_q),
     .trap_pc_i (trap_pc_q),
@@ -413,22 +479,23 @@ module htx_cpu #(
     .mepc_o    (mepc)
   );
 
+  // The adder/logic result comes last, so it enters at the final LUT level (see d_a_rest).
+  (* keep *) logic [31:0] e_result_rest;
   logic [31:0] e_result;
   always_comb begin
     if (e_q.jal || e_q.jalr) begin
-      e_result = {e_npc_q, 2'b00};
+      e_result_rest = {e_npc_q, 2'b00};
     end else if (e_q.csr) begin
-      e_result = csr_rdata;
+      e_result_rest = csr_rdata;
     end else if (e_q.mul) begin
-      e_result = mul_result;
+      e_result_rest = mul_result;
     end else if (e_q.div) begin
-      e_result = div_result;
-    end else if (e_late_alu_q) begin
-      e_result = alu_late;
+      e_result_rest = div_result;
     end else begin
-      e_result = e_fast_result;  // includes the address of a load/store
+      e_result_rest = alu_late;
     end
   end
+  assign e_result = e_fast_q ? e_fast_result : e_result_rest;  // fast: includes load/store address
 
   logic [3:0]  lsu_be;
   logic [31:0] lsu_wdata;
@@ -503,7 +570,7 @@ module htx_cpu #(
       if (d_free) begin
         d_valid_q <= f_take && f_valid;
       end
-      d_first_q <= d_free;
+      d_first_q <= f_take;
       e_valid_q <= e_accept ? d_go : (e_valid_q && !redirect_q);
       if (w_ready) begin
         w_valid_q <= e_commit;
@@ -515,21 +582,32 @@ module htx_cpu #(
   end
 
   always_ff @(posedge clk_i) begin
-    if (d_free) begin
-      d_dec      <= f_dec;
+    if (d_free_nr) begin
+      d_instr_q  <= f_instr;
+      d_timm_q   <= f_is_jal ?
+          {{11{f_instr[31]}}, f_instr[31], f_instr[19:12], f_instr[20], f_instr[30:21], 1'b0} :
+          {{19{f_instr[31]}}, f_instr[31], f_instr[7], f_instr[30:25], f_instr[11:8], 1'b0};
+      d_rs1_used_q <= f_rs1_used;
+      d_sub_q      <= f_sub;
+      d_a_pc_q     <= f_a_pc;
+      d_a_zero_q   <= f_a_zero;
+      d_b_rs2_q    <= f_b_rs2;
+      d_signed_q   <= f_signed;
+      d_rs2_used_q <= f_rs2_used;
       d_err_q    <= f_err;
       d_pc_q     <= f_pc;
       d_npc_q    <= f_npc;
       d_pred_q   <= f_predict;
     end
-    if (e_accept) begin
+    if (e_accept_nr) begin
       e_q       <= d_exec;
       e_a_q     <= {signed_d & d_a[31], d_a};
       e_b_q     <= {signed_d & d_b[31], d_b} ^ {33{sub_d}};
       e_br_eq_q <= !d_dec.funct3[2];
       e_br_inv_q <= d_dec.funct3[0];
       e_rs2_q   <= d_rs2;
-      e_aux_q   <= d_target;
+      e_aux_q   <= d_dec.illegal ? d_instr_q : d_target;
+      e_illegal_q <= d_dec.illegal;
       e_pc_q    <= d_pc_q;
       e_npc_q   <= d_npc_q;
       e_pred_q  <= d_pred_q;
@@ -537,7 +615,9 @@ module htx_cpu #(
       e_cause_q <= d_cause;
       e_late_q  <= late_d;
       e_sub_q   <= sub_d;
-      e_late_alu_q <= late_alu_d;
+      e_left_q  <= (d_dec.alu_op == htx_cpu_pkg::AluSll);
+      e_arith_q <= (d_dec.alu_op == htx_cpu_pkg::AluSra);
+      e_fast_q  <= !(late_alu_d || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul || d_dec.div);
       e_lo_q    <= d_lo;
     end
     if (w_ready) begin
@@ -548,6 +628,7 @@ module htx_cpu #(
       w_mem_q     <= e_q.load || e_q.store;
       w_funct3_q  <= e_q.funct3;
       w_result_q  <= e_result;
+      w_reverse_q <= e_left_q;
       w_pc_q      <= e_pc_q;
       w_nocount_q <= e_q.csr && e_q.csr_we && csr_instret_we;
     end

@@ -1,7 +1,8 @@
 // Integer ALU: one adder/subtractor (also the load/store address and JALR target adder), logic
 // operations, the branch comparisons, set-less-than and a barrel shifter (left shifts reuse the
 // right shifter on bit-reversed data). The results are split by when they are ready: fast_o (add,
-// sub, xor, or, and) is forwarded from E into D, late_o (shifts, slt, sltu) only from W.
+// sub, xor, or, and) is forwarded from E into D, late_o (shifts, slt, sltu) only from W. For a left
+// shift late_o is still bit-reversed: write-back puts it in order, which keeps a LUT level out of E.
 //
 // For a subtraction or comparison (sub_i) the operand b_i arrives already inverted (decode does it
 // together with the operand select), which keeps one LUT level off the carry chain's input. The
@@ -11,10 +12,12 @@
 module htx_cpu_alu (
   input  htx_cpu_pkg::alu_op_e op_i,
   input  logic                 sub_i,    // op_i is Sub, Slt or Sltu (decoded a cycle earlier)
+  input  logic                 left_i,   // op_i is Sll (decoded a cycle earlier)
+  input  logic                 arith_i,  // op_i is Sra (decoded a cycle earlier)
   input  logic [32:0]          a_i,      // bit 32: extension for comparisons
   input  logic [32:0]          b_i,      // b, or ~b when sub_i; bit 32 likewise
   output logic [31:0]          fast_o,   // add, sub, xor, or, and
-  output logic [31:0]          late_o,   // sll, srl, sra, slt, sltu
+  output logic [31:0]          late_o,   // sll (bit-reversed), srl, sra, slt, sltu
   output logic [31:0]          sum_o,    // a + b, or a - b when sub_i
   output logic                 eq_o,     // a == b (valid when sub_i)
   output logic                 lt_o      // a < b, signed or not as extended (valid when sub_i)
@@ -41,16 +44,12 @@ module htx_cpu_alu (
     end
   endfunction
 
-  logic        left;
   logic [31:0] shift_in;
   logic [32:0] shift_ext;
   logic [32:0] shift_r;
-  logic [31:0] shift_out;
-  assign left      = (op_i == htx_cpu_pkg::AluSll);
-  assign shift_in  = left ? reverse32(a_i[31:0]) : a_i[31:0];
-  assign shift_ext = {(op_i == htx_cpu_pkg::AluSra) & a_i[31], shift_in};
+  assign shift_in  = left_i ? reverse32(a_i[31:0]) : a_i[31:0];
+  assign shift_ext = {arith_i & a_i[31], shift_in};
   assign shift_r   = $unsigned($signed(shift_ext) >>> b_i[4:0]);
-  assign shift_out = left ? reverse32(shift_r[31:0]) : shift_r[31:0];
 
   logic unused_shift_sign;
   assign unused_shift_sign = shift_r[32];  // the sign-fill bit itself is never part of the result
@@ -61,7 +60,7 @@ module htx_cpu_alu (
     unique case (op_i)
       htx_cpu_pkg::AluSlt,
       htx_cpu_pkg::AluSltu: late_o = {31'b0, lt_o};
-      default:              late_o = shift_out;
+      default:              late_o = shift_r[31:0];
     endcase
   end
 

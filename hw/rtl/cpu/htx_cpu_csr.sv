@@ -13,6 +13,7 @@ module htx_cpu_csr (
   input  logic [31:0]             src_i,     // rs1 value or zero-extended uimm
   // instruction counting
   input  logic                    retire_i,   // an instruction leaves write-back without a fault
+  output logic                    counting_o, // a retirement is still being added to minstret
   // traps
   input  logic                    trap_i,
   input  htx_cpu_pkg::exc_cause_e cause_i,
@@ -33,6 +34,7 @@ module htx_cpu_csr (
   logic [63:0] cycle_q   /* verilator public_flat_rd */;
   logic [63:0] instret_q /* verilator public_flat_rd */;
   logic [63:0] cycle_inc, instret_inc;
+  logic        retire_q;
 
   always_comb begin
     unique case (sel_i)
@@ -67,17 +69,22 @@ module htx_cpu_csr (
   assign wr_instreth = we_i && (sel_i == htx_cpu_pkg::CsrInstreth);
 
   // A written counter takes the written value instead of counting in that cycle, so the next
-  // instruction reads what was written. The pipeline does not count the instruction that writes
-  // minstret(h), and runs a CSR instruction only when write-back is empty, so instret_q is exact
-  // when it is read and no retirement coincides with a write.
+  // instruction reads what was written. A retirement is added one cycle after it is reported (the
+  // 64-bit carry chain then starts at a flip-flop). The pipeline does not count the instruction
+  // that writes minstret(h), and runs a CSR instruction only when write-back is empty and
+  // counting_o is low, so instret_q is exact when it is read and no retirement coincides with a
+  // write.
   assign cycle_inc   = cycle_q + 64'd1;
-  assign instret_inc = instret_q + {63'b0, retire_i};
+  assign instret_inc = instret_q + {63'b0, retire_q};
+  assign counting_o  = retire_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       cycle_q    <= 64'b0;
       instret_q  <= 64'b0;
+      retire_q   <= 1'b0;
     end else begin
+      retire_q   <= retire_i;
       if (wr_cycle) begin
         cycle_q <= {cycle_q[63:32], wdata};
       end else if (wr_cycleh) begin

@@ -1,7 +1,6 @@
 // RV32IM + Zicsr instruction decoder (combinational). Every encoding that is not a legal RV32IM,
 // Zicsr, FENCE/FENCE.I, ECALL, EBREAK, MRET or WFI instruction for an implemented CSR comes out with
-// `illegal` set, every action flag clear and the ALU set up to add 0 and the raw instruction (the
-// sum becomes mtval).
+// `illegal` set and every action flag (including rd_we) clear.
 module htx_cpu_decoder (
   input  logic [31:0]               instr_i,
   output htx_cpu_pkg::decoded_t     dec_o
@@ -35,6 +34,20 @@ module htx_cpu_decoder (
   assign imm_b = {{19{instr_i[31]}}, instr_i[31], instr_i[7], instr_i[30:25], instr_i[11:8], 1'b0};
   assign imm_u = {instr_i[31:12], 12'b0};
   assign imm_j = {{11{instr_i[31]}}, instr_i[31], instr_i[19:12], instr_i[20], instr_i[30:21], 1'b0};
+
+  // The immediate straight from the opcode bits, so it does not wait for the rest of the decode.
+  // SYSTEM gets 0: mtval of ECALL and EBREAK is the adder's 0 + 0 (CSR instructions use uimm).
+  logic [31:0] imm;
+  always_comb begin
+    unique case (instr_i[6:2])
+      5'b01101, 5'b00101: imm = imm_u;   // LUI, AUIPC
+      5'b11011:           imm = imm_j;   // JAL
+      5'b11000:           imm = imm_b;   // BRANCH
+      5'b01000:           imm = imm_s;   // STORE
+      5'b11100:           imm = 32'b0;   // SYSTEM
+      default:            imm = imm_i;
+    endcase
+  end
 
   // CSR address -> selector; read_only covers the user counter aliases and the machine id registers.
   logic     csr_known;
@@ -74,69 +87,47 @@ module htx_cpu_decoder (
     d          = '0;
     d.funct3   = funct3;
     d.rs1      = instr_i[19:15];
-    d.rs2      = instr_i[24:20];
     d.rd       = instr_i[11:7];
-    d.op_a_sel = htx_cpu_pkg::OpARs1;
     d.alu_op   = htx_cpu_pkg::AluAdd;
     d.csr_sel  = csr_sel;
-    d.imm      = imm_i;
+    d.imm      = imm;
     legal      = 1'b0;
     if (instr_i[1:0] == 2'b11) begin
       unique case (opcode)
         OpcLui: begin
           legal      = 1'b1;
           d.rd_we    = 1'b1;
-          d.op_a_sel = htx_cpu_pkg::OpAZero;
-          d.op_b_imm = 1'b1;
-          d.imm      = imm_u;
         end
         OpcAuipc: begin
           legal      = 1'b1;
           d.rd_we    = 1'b1;
-          d.op_a_sel = htx_cpu_pkg::OpAPc;
-          d.op_b_imm = 1'b1;
-          d.imm      = imm_u;
         end
         OpcJal: begin
           legal   = 1'b1;
           d.jal   = 1'b1;
           d.rd_we = 1'b1;
-          d.imm   = imm_j;
         end
         OpcJalr: begin
           legal      = (funct3 == 3'b000);
           d.jalr     = 1'b1;
           d.rd_we    = 1'b1;
-          d.rs1_used = 1'b1;
-          d.op_b_imm = 1'b1;
         end
         OpcBranch: begin
           legal      = (funct3 != 3'b010) && (funct3 != 3'b011);
           d.branch   = 1'b1;
-          d.rs1_used = 1'b1;
-          d.rs2_used = 1'b1;
           d.alu_op   = htx_cpu_pkg::AluSub;
-          d.imm      = imm_b;
         end
         OpcLoad: begin
           legal      = (funct3 != 3'b011) && (funct3 != 3'b110) && (funct3 != 3'b111);
           d.load     = 1'b1;
           d.rd_we    = 1'b1;
-          d.rs1_used = 1'b1;
-          d.op_b_imm = 1'b1;
         end
         OpcStore: begin
           legal      = (funct3 == 3'b000) || (funct3 == 3'b001) || (funct3 == 3'b010);
           d.store    = 1'b1;
-          d.rs1_used = 1'b1;
-          d.rs2_used = 1'b1;
-          d.op_b_imm = 1'b1;
-          d.imm      = imm_s;
         end
         OpcOpImm: begin
           d.rd_we    = 1'b1;
-          d.rs1_used = 1'b1;
-          d.op_b_imm = 1'b1;
           legal      = 1'b1;
           unique case (funct3)
             3'b000: d.alu_op = htx_cpu_pkg::AluAdd;
@@ -157,8 +148,6 @@ module htx_cpu_decoder (
         end
         OpcOp: begin
           d.rd_we    = 1'b1;
-          d.rs1_used = 1'b1;
-          d.rs2_used = 1'b1;
           if (funct7 == 7'b0000001) begin
             legal = 1'b1;
             d.mul = ~funct3[2];
@@ -185,10 +174,7 @@ module htx_cpu_decoder (
         end
         OpcSystem: begin
           if (funct3 == 3'b000) begin
-            // mtval of ECALL and EBREAK is 0: the adder computes 0 + 0.
-            d.op_a_sel = htx_cpu_pkg::OpAZero;
-            d.op_b_imm = 1'b1;
-            d.imm      = 32'b0;
+            // mtval of ECALL and EBREAK is 0: the adder computes 0 + 0 (imm is 0 for SYSTEM).
             unique case (instr_i[31:7])
               25'h0000000: begin legal = 1'b1; d.ecall  = 1'b1; end
               25'h0002000: begin legal = 1'b1; d.ebreak = 1'b1; end
@@ -199,7 +185,6 @@ module htx_cpu_decoder (
           end else if (funct3 != 3'b100) begin
             d.csr      = 1'b1;
             d.rd_we    = 1'b1;
-            d.rs1_used = ~funct3[2];
             d.csr_we   = (funct3[1:0] == 2'b01) || (instr_i[19:15] != 5'd0);
             legal      = csr_known && !(csr_read_only && d.csr_we);
           end
@@ -210,14 +195,24 @@ module htx_cpu_decoder (
     if (d.rd == 5'd0) begin
       d.rd_we = 1'b0;
     end
+    // The operand fields (imm, alu_op, registers) stay as the opcode set them,
+    // so they do not wait for the legality check; only the actions are cancelled.
     if (!legal) begin
-      d         = '0;
       d.illegal = 1'b1;
-      d.imm     = instr_i;  // mtval: the adder computes 0 + instruction
-      d.op_a_sel = htx_cpu_pkg::OpAZero;
-      d.op_b_imm = 1'b1;
-      d.alu_op   = htx_cpu_pkg::AluAdd;
-      d.csr_sel  = htx_cpu_pkg::CsrZero;
+      d.ecall   = 1'b0;
+      d.ebreak  = 1'b0;
+      d.mret    = 1'b0;
+      d.fencei  = 1'b0;
+      d.branch  = 1'b0;
+      d.jal     = 1'b0;
+      d.jalr    = 1'b0;
+      d.load    = 1'b0;
+      d.store   = 1'b0;
+      d.mul     = 1'b0;
+      d.div     = 1'b0;
+      d.csr     = 1'b0;
+      d.csr_we  = 1'b0;
+      d.rd_we   = 1'b0;
     end
   end
 

@@ -15,12 +15,6 @@ package htx_cpu_pkg;
     AluAnd  = 4'd9
   } alu_op_e;
 
-  typedef enum logic [1:0] {
-    OpARs1  = 2'd0,
-    OpAPc   = 2'd1,
-    OpAZero = 2'd2
-  } op_a_sel_e;
-
   // CSRs the core implements. Anything else is an illegal instruction.
   typedef enum logic [3:0] {
     CsrMstatus  = 4'd0,
@@ -71,14 +65,9 @@ package htx_cpu_pkg;
     logic        csr_we;    // the CSR instruction writes (csrrw*, or csrrs/c* with rs1/uimm != 0)
     csr_sel_e    csr_sel;
     logic [2:0]  funct3;
-    logic [4:0]  rs1;
-    logic [4:0]  rs2;
+    logic [4:0]  rs1;       // also the CSRR*I immediate
     logic [4:0]  rd;
-    logic        rs1_used;
-    logic        rs2_used;
     logic        rd_we;     // writes a register other than x0
-    op_a_sel_e   op_a_sel;
-    logic        op_b_imm;
     alu_op_e     alu_op;
     logic [31:0] imm;
   } decoded_t;
