@@ -1,8 +1,9 @@
 // Sampling pipeline (docs/model.md §7, model sample()): texel addresses, one read of the four
 // banks per level, decode, bilinear blend, trilinear blend. Stages, each a valid/ready register:
-//   A  request: per-axis indices and weights at level l0 + pass, the four bank addresses; the read
-//      is issued when B takes the pass. A trilinear request with a non-zero level weight makes two
-//      passes (levels l0 and l0 + 1, one clock each); every other request one.
+//   R  request: per-axis indices and weights at level l0 + pass. A trilinear request with a
+//      non-zero level weight makes two passes (levels l0 and l0 + 1, one clock each); every other
+//      request one.
+//   A  the four bank addresses of a pass; the read is issued when B takes it.
 //   B  bank data (held in the RAMs' output registers): select each footprint texel, decode.
 //   C  blend: Lanes = 4 blends all channels in one clock; Lanes = 1 one channel per clock (4 clocks
 //      a bilinear texel, nearest passes in one).
@@ -52,58 +53,93 @@ module htx_tex_sampler #(
   output logic              err_format_o,
   output logic              busy_o
 );
-  // ---- Stage A ---------------------------------------------------------------------------------
-  logic              a_valid_q, a_pass_q, a_nearest_q;
-  logic [CoordW-1:0] a_u_q, a_v_q;
-  logic [1:0]        a_wrap_u_q, a_wrap_v_q;
-  logic [25:0]       a_desc_q;
-  logic [3:0]        a_l0_q;
-  logic [7:0]        a_wtri_q;
-  logic [15:0]       a_lod_q;
-  logic [TagW-1:0]   a_tag_q;
-  logic              b_ready, a_issue, a_last, a_two;
+  // ---- Stage R: request, passes, per-axis indices ---------------------------------------------------------------------------------
+  logic              r_valid_q, r_pass_q, r_nearest_q;
+  logic [CoordW-1:0] r_u_q, r_v_q;
+  logic [1:0]        r_wrap_u_q, r_wrap_v_q;
+  logic [25:0]       r_desc_q;
+  logic [3:0]        r_l0_q;
+  logic [7:0]        r_wtri_q;
+  logic [15:0]       r_lod_q;
+  logic [TagW-1:0]   r_tag_q;
+  logic              a_ready, r_issue, r_last, r_two;
   logic [3:0]        level;
 
-  assign a_two   = HasTri && (a_wtri_q != 8'd0);
-  assign a_last  = !a_two || a_pass_q;
-  assign a_issue = a_valid_q && b_ready;
-  assign in_ready_o = !a_valid_q || (a_issue && a_last);
-  assign level   = HasTri ? a_l0_q + 4'(a_pass_q) : 4'd0;
+  assign r_two   = HasTri && (r_wtri_q != 8'd0);
+  assign r_last  = !r_two || r_pass_q;
+  assign r_issue = r_valid_q && a_ready;
+  assign in_ready_o = !r_valid_q || (r_issue && r_last);
+  assign level   = HasTri ? r_l0_q + 4'(r_pass_q) : 4'd0;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      a_valid_q <= 1'b0;
-      a_pass_q  <= 1'b0;
+      r_valid_q <= 1'b0;
+      r_pass_q  <= 1'b0;
     end else if (in_ready_o) begin
-      a_valid_q <= in_valid_i;
-      a_pass_q  <= 1'b0;
-    end else if (a_issue) begin
-      a_pass_q  <= 1'b1;  // first of two passes issued
+      r_valid_q <= in_valid_i;
+      r_pass_q  <= 1'b0;
+    end else if (r_issue) begin
+      r_pass_q  <= 1'b1;  // first of two passes issued
     end
   end
   always_ff @(posedge clk_i) begin
     if (in_ready_o && in_valid_i) begin
-      a_u_q       <= in_u_i;
-      a_v_q       <= in_v_i;
-      a_nearest_q <= in_nearest_i;
-      a_wrap_u_q  <= in_wrap_u_i;
-      a_wrap_v_q  <= in_wrap_v_i;
-      a_desc_q    <= in_desc_i;
-      a_l0_q      <= HasTri ? in_l0_i : 4'd0;
-      a_wtri_q    <= HasTri ? in_wtri_i : 8'd0;
-      a_lod_q     <= in_lod_i;
-      a_tag_q     <= in_tag_i;
+      r_u_q       <= in_u_i;
+      r_v_q       <= in_v_i;
+      r_nearest_q <= in_nearest_i;
+      r_wrap_u_q  <= in_wrap_u_i;
+      r_wrap_v_q  <= in_wrap_v_i;
+      r_desc_q    <= in_desc_i;
+      r_l0_q      <= HasTri ? in_l0_i : 4'd0;
+      r_wtri_q    <= HasTri ? in_wtri_i : 8'd0;
+      r_lod_q     <= in_lod_i;
+      r_tag_q     <= in_tag_i;
     end
   end
 
   logic [7:0] x0, x1, y0, y1, wu, wv;
   logic [3:0] lwu, lwv;
   htx_tex_axis #(.CoordW(CoordW), .TF(TF)) u_axis_u (
-    .coord_i(a_u_q), .level_i(level), .log2_size_i(a_desc_q[19:16]), .wrap_i(a_wrap_u_q),
-    .nearest_i(a_nearest_q), .i0_o(x0), .i1_o(x1), .weight_o(wu), .log2_level_o(lwu));
+    .coord_i(r_u_q), .level_i(level), .log2_size_i(r_desc_q[19:16]), .wrap_i(r_wrap_u_q),
+    .nearest_i(r_nearest_q), .i0_o(x0), .i1_o(x1), .weight_o(wu), .log2_level_o(lwu));
   htx_tex_axis #(.CoordW(CoordW), .TF(TF)) u_axis_v (
-    .coord_i(a_v_q), .level_i(level), .log2_size_i(a_desc_q[23:20]), .wrap_i(a_wrap_v_q),
-    .nearest_i(a_nearest_q), .i0_o(y0), .i1_o(y1), .weight_o(wv), .log2_level_o(lwv));
+    .coord_i(r_v_q), .level_i(level), .log2_size_i(r_desc_q[23:20]), .wrap_i(r_wrap_v_q),
+    .nearest_i(r_nearest_q), .i0_o(y0), .i1_o(y1), .weight_o(wv), .log2_level_o(lwv));
+
+  // ---- Stage A: bank addresses, read issue ---------------------------------------------------------
+  logic              a_valid_q, a_first_q, a_second_q, a_nearest_q;
+  logic [7:0]        a_x0_q, a_x1_q, a_y0_q, a_y1_q, a_wu_q, a_wv_q, a_wtri_q;
+  logic [3:0]        a_lwu_q, a_level_q, a_l0_q;
+  logic [25:0]       a_desc_q;
+  logic [15:0]       a_lod_q;
+  logic [TagW-1:0]   a_tag_q;
+  logic              b_ready, a_issue;
+  assign a_ready = !a_valid_q || b_ready;
+  assign a_issue = a_valid_q && b_ready;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) a_valid_q <= 1'b0;
+    else if (a_ready) a_valid_q <= r_valid_q;
+  end
+  always_ff @(posedge clk_i) begin
+    if (r_issue) begin
+      a_first_q   <= r_two && !r_pass_q;
+      a_second_q  <= r_two && r_pass_q;
+      a_nearest_q <= r_nearest_q;
+      a_x0_q      <= x0;
+      a_x1_q      <= x1;
+      a_y0_q      <= y0;
+      a_y1_q      <= y1;
+      a_wu_q      <= wu;
+      a_wv_q      <= wv;
+      a_wtri_q    <= r_wtri_q;
+      a_lwu_q     <= lwu;
+      a_level_q   <= level;
+      a_l0_q      <= r_l0_q;
+      a_desc_q    <= r_desc_q;
+      a_lod_q     <= r_lod_q;
+      a_tag_q     <= r_tag_q;
+    end
+  end
 
   // Blocks (2x2 texels, one word per bank) before level lvl of a 2^a x 2^b chain.
   function automatic logic [16:0] level_offset(input logic [3:0] a, input logic [3:0] b,
@@ -119,21 +155,21 @@ module htx_tex_sampler #(
 
   logic [16:0] lvl_base;
   logic [3:0]  row_shift;
-  assign lvl_base  = 17'(a_desc_q[15:0]) + (HasTri ? level_offset(a_desc_q[19:16], a_desc_q[23:20], level)
+  assign lvl_base  = 17'(a_desc_q[15:0]) + (HasTri ? level_offset(a_desc_q[19:16], a_desc_q[23:20], a_level_q)
                                                    : 17'd0);
-  assign row_shift = (lwu > 4'd0) ? lwu - 4'd1 : 4'd0;
+  assign row_shift = (a_lwu_q > 4'd0) ? a_lwu_q - 4'd1 : 4'd0;
   // Row offsets of the two footprint rows; a block column never reaches the row stride, so the
   // column joins the row offset by OR.
   logic [13:0] row0, row1;
-  assign row0 = 14'(y0[7:1]) << row_shift;
-  assign row1 = 14'(y1[7:1]) << row_shift;
+  assign row0 = 14'(a_y0_q[7:1]) << row_shift;
+  assign row1 = 14'(a_y1_q[7:1]) << row_shift;
   for (genvar b = 0; b < 4; b++) begin : g_addr
     logic [6:0]  xs;
     logic [13:0] ro;
     logic [13:0] rc;
     logic [16:0] a;
-    assign xs = (x0[0] == b[0]) ? x0[7:1] : x1[7:1];
-    assign ro = (y0[0] == b[1]) ? row0 : row1;
+    assign xs = (a_x0_q[0] == b[0]) ? a_x0_q[7:1] : a_x1_q[7:1];
+    assign ro = (a_y0_q[0] == b[1]) ? row0 : row1;
     assign rc = ro | 14'(xs);
     assign a  = lvl_base + 17'(rc);
     assign s_addr_o[b*BAW +: BAW] = BAW'(a);  // beyond the memory: wraps (docs/texture.md)
@@ -161,12 +197,12 @@ module htx_tex_sampler #(
   end
   always_ff @(posedge clk_i) begin
     if (a_issue) begin
-      b_first_q   <= a_two && !a_pass_q;
-      b_second_q  <= a_two && a_pass_q;
+      b_first_q   <= a_first_q;
+      b_second_q  <= a_second_q;
       b_nearest_q <= a_nearest_q;
-      b_par_q     <= {y1[0], y0[0], x1[0], x0[0]};
-      b_wu_q      <= wu;
-      b_wv_q      <= wv;
+      b_par_q     <= {a_y1_q[0], a_y0_q[0], a_x1_q[0], a_x0_q[0]};
+      b_wu_q      <= a_wu_q;
+      b_wv_q      <= a_wv_q;
       b_wtri_q    <= a_wtri_q;
       b_fmt_q     <= a_desc_q[25:24];
       b_l0_q      <= a_l0_q;
@@ -287,8 +323,8 @@ module htx_tex_sampler #(
     end
   end
 
-  assign busy_o = a_valid_q || b_valid_q || c_valid_q || out_valid_o;
+  assign busy_o = r_valid_q || a_valid_q || b_valid_q || c_valid_q || out_valid_o;
 
   logic unused;
-  assign unused = ^{lwv, bad[3:1], c_nearest_q, c_wtri_q, first_q};
+  assign unused = ^{lwv, bad[3:1], c_nearest_q, c_wtri_q, first_q, a_x0_q[0], a_x1_q[0], a_y0_q[0], a_y1_q[0]};
 endmodule
