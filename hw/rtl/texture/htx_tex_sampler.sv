@@ -5,8 +5,8 @@
 //      request one.
 //   A  the four bank addresses of a pass; the read is issued when B takes it.
 //   B  bank data (held in the RAMs' output registers): select each footprint texel, decode.
-//   C  blend: Lanes = 4 blends all channels in one clock; Lanes = 1 one channel per clock (4 clocks
-//      a bilinear texel, nearest passes in one).
+//   C  blend: Lanes = 4 blends all channels in one clock; Lanes = 1 one channel per clock in two
+//      steps (C, C2; 4 clocks a bilinear texel, nearest passes in one).
 //   D  output; the first pass of a trilinear request waits in D for the second, then
 //      (a (256 - w) + b w + 128) >> 8 per channel.
 // Nearest uses the same path with both indices equal and zero weights, which the blend returns
@@ -228,13 +228,19 @@ module htx_tex_sampler #(
   logic [3:0]      c_l0_q;
   logic [15:0]     c_lod_q;
   logic [TagW-1:0] c_tag_q;
-  logic            c_done, c_take;
-  logic [31:0]     c_res;
+  logic            c_ready_l;
+  // Final item of stage C (Lanes = 4: C itself; Lanes = 1: its second half C2) and whether D takes it.
+  logic            f_valid, f_first, f_second, f_take;
+  logic [31:0]     f_res;
+  logic [7:0]      f_wtri;
+  logic [3:0]      f_l0;
+  logic [15:0]     f_lod;
+  logic [TagW-1:0] f_tag;
   logic            out_free;
 
   assign out_free = !out_valid_o || out_ready_i;
-  assign c_take   = c_first_q || out_free;   // a first pass always fits in D's holding register
-  assign c_ready  = !c_valid_q || (c_done && c_take);
+  assign f_take   = f_first || out_free;   // a first pass always fits in D's holding register
+  assign c_ready  = c_ready_l;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) c_valid_q <= 1'b0;
@@ -260,71 +266,138 @@ module htx_tex_sampler #(
       htx_tex_bilerp #(.ShiftAdd(ShiftAdd)) u_bilerp (
         .c00_i(c_tex_q[0][8*ch +: 8]), .c10_i(c_tex_q[1][8*ch +: 8]),
         .c01_i(c_tex_q[2][8*ch +: 8]), .c11_i(c_tex_q[3][8*ch +: 8]),
-        .wu_i(c_wu_q), .wv_i(c_wv_q), .c_o(c_res[8*ch +: 8]));
+        .wu_i(c_wu_q), .wv_i(c_wv_q), .c_o(f_res[8*ch +: 8]));
     end
-    assign c_done = 1'b1;
+    assign f_valid   = c_valid_q;
+    assign f_first   = c_first_q;
+    assign f_second  = c_second_q;
+    assign f_wtri    = c_wtri_q;
+    assign f_l0      = c_l0_q;
+    assign f_lod     = c_lod_q;
+    assign f_tag     = c_tag_q;
+    assign c_ready_l = !c_valid_q || f_take;
+    logic unused_l4;
+    assign unused_l4 = c_nearest_q;
   end else begin : g_lane1
-    logic [1:0]  ch_q;
-    logic [7:0]  lane;
-    logic [23:0] part_q;
-    htx_tex_bilerp #(.ShiftAdd(ShiftAdd)) u_bilerp (
-      .c00_i(c_tex_q[0][8*ch_q +: 8]), .c10_i(c_tex_q[1][8*ch_q +: 8]),
-      .c01_i(c_tex_q[2][8*ch_q +: 8]), .c11_i(c_tex_q[3][8*ch_q +: 8]),
-      .wu_i(c_wu_q), .wv_i(c_wv_q), .c_o(lane));
-    assign c_done = c_nearest_q || (ch_q == 2'd3);
-    assign c_res  = c_nearest_q ? c_tex_q[0] : {lane, part_q};
+    // One channel per clock, in two steps: C forms the row interpolations
+    // h = 256 c0 + wu (c1 - c0) of channel ch and hands them to C2, which forms
+    // (256 h0 + wv (h1 - h0) + 2^15) >> 16 the next clock. C takes a new texel quad as soon as it
+    // has handed on its last channel, so a bilinear texel costs 4 clocks and nearest 1.
+    logic [1:0]         ch_q;
+    logic               c_last, c_issue, c2_ready;
+    logic [7:0]         e00, e10, e01, e11;
+    logic signed [8:0]  d0, d1;
+    logic signed [17:0] p0, p1;
+    assign c_last  = c_nearest_q || (ch_q == 2'd3);
+    assign c_issue = c_valid_q && c2_ready;
+    assign c_ready_l = !c_valid_q || (c_issue && c_last);
+    assign e00 = c_tex_q[0][8*ch_q +: 8];
+    assign e10 = c_tex_q[1][8*ch_q +: 8];
+    assign e01 = c_tex_q[2][8*ch_q +: 8];
+    assign e11 = c_tex_q[3][8*ch_q +: 8];
+    assign d0  = $signed({1'b0, e10}) - $signed({1'b0, e00});
+    assign d1  = $signed({1'b0, e11}) - $signed({1'b0, e01});
+    htx_tex_mul #(.AW(9), .ShiftAdd(ShiftAdd)) u_m0 (.a_i(d0), .w_i(c_wu_q), .p_o(p0));
+    htx_tex_mul #(.AW(9), .ShiftAdd(ShiftAdd)) u_m1 (.a_i(d1), .w_i(c_wu_q), .p_o(p1));
     always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        ch_q <= '0;
-      end else if (c_ready) begin
-        ch_q <= '0;
-      end else if (c_valid_q && !c_done) begin
-        ch_q <= ch_q + 2'd1;
-      end
+      if (!rst_ni) ch_q <= '0;
+      else if (c_ready_l) ch_q <= '0;
+      else if (c_issue) ch_q <= ch_q + 2'd1;
+    end
+
+    logic               c2_valid_q, c2_last_q, c2_nearest_q, c2_first_q, c2_second_q;
+    logic [1:0]         c2_ch_q;
+    logic [15:0]        c2_h0_q, c2_h1_q;
+    logic [7:0]         c2_wv_q, c2_wtri_q;
+    logic [31:0]        c2_tex0_q;
+    logic [3:0]         c2_l0_q;
+    logic [15:0]        c2_lod_q;
+    logic [TagW-1:0]    c2_tag_q;
+    logic signed [16:0] dh;
+    logic signed [25:0] ph;
+    logic [23:0]        tot;
+    logic [24:0]        rnd;
+    logic [23:0]        part_q;
+    assign c2_ready = !c2_valid_q || !c2_last_q || f_take;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) c2_valid_q <= 1'b0;
+      else if (c2_ready) c2_valid_q <= c_issue;
     end
     always_ff @(posedge clk_i) begin
-      if (c_valid_q && !c_done) part_q[8*ch_q +: 8] <= lane;
+      if (c_issue && c2_ready) begin
+        c2_last_q    <= c_last;
+        c2_ch_q      <= ch_q;
+        c2_h0_q      <= 16'({e00, 8'd0} + 16'(p0));
+        c2_h1_q      <= 16'({e01, 8'd0} + 16'(p1));
+        c2_wv_q      <= c_wv_q;
+        c2_nearest_q <= c_nearest_q;
+        c2_tex0_q    <= c_tex_q[0];
+        c2_first_q   <= c_first_q;
+        c2_second_q  <= c_second_q;
+        c2_wtri_q    <= c_wtri_q;
+        c2_l0_q      <= c_l0_q;
+        c2_lod_q     <= c_lod_q;
+        c2_tag_q     <= c_tag_q;
+      end
     end
+    assign dh  = $signed({1'b0, c2_h1_q}) - $signed({1'b0, c2_h0_q});
+    htx_tex_mul #(.AW(17), .ShiftAdd(ShiftAdd)) u_m2 (.a_i(dh), .w_i(c2_wv_q), .p_o(ph));
+    assign tot = 24'({c2_h0_q, 8'd0} + 24'(ph));
+    assign rnd = 25'(tot) + 25'd32768;
+    always_ff @(posedge clk_i) begin
+      if (c2_valid_q && !c2_last_q) part_q[8*c2_ch_q +: 8] <= rnd[23:16];
+    end
+    assign f_valid  = c2_valid_q && c2_last_q;
+    assign f_res    = c2_nearest_q ? c2_tex0_q : {rnd[23:16], part_q};
+    assign f_first  = c2_first_q;
+    assign f_second = c2_second_q;
+    assign f_wtri   = c2_wtri_q;
+    assign f_l0     = c2_l0_q;
+    assign f_lod    = c2_lod_q;
+    assign f_tag    = c2_tag_q;
+    logic unused_l1;
+    assign unused_l1 = ^{p0[17:16], p1[17:16], ph[25:24], rnd[24], rnd[15:0], c_wtri_q, c_first_q,
+                         c_second_q, c_l0_q, c_lod_q, c_tag_q};
   end
 
   // ---- Stage D ---------------------------------------------------------------------------------
-  logic        c_fire;
+  logic        f_fire;
   logic [31:0] first_q, tri_res;
-  assign c_fire = c_valid_q && c_done && c_take;
+  assign f_fire = f_valid && f_take;
 
   if (HasTri) begin : g_tri
     for (genvar ch = 0; ch < 4; ch++) begin : g_ch
       htx_tex_lerp #(.ShiftAdd(ShiftAdd)) u_lerp (
-        .a_i(first_q[8*ch +: 8]), .b_i(c_res[8*ch +: 8]), .w_i(c_wtri_q), .c_o(tri_res[8*ch +: 8]));
+        .a_i(first_q[8*ch +: 8]), .b_i(f_res[8*ch +: 8]), .w_i(f_wtri), .c_o(tri_res[8*ch +: 8]));
     end
   end else begin : g_no_tri
-    assign tri_res = c_res;
+    assign tri_res = f_res;
   end
 
   always_ff @(posedge clk_i) begin
-    if (c_fire && c_first_q) first_q <= c_res;
+    if (f_fire && f_first) first_q <= f_res;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       out_valid_o <= 1'b0;
-    end else if (c_fire && !c_first_q) begin
+    end else if (f_fire && !f_first) begin
       out_valid_o <= 1'b1;
     end else if (out_ready_i) begin
       out_valid_o <= 1'b0;
     end
   end
   always_ff @(posedge clk_i) begin
-    if (c_fire && !c_first_q) begin
-      out_rgba_o  <= (HasTri && c_second_q) ? tri_res : c_res;
-      out_level_o <= c_l0_q;
-      out_lod_o   <= c_lod_q;
-      out_tag_o   <= c_tag_q;
+    if (f_fire && !f_first) begin
+      out_rgba_o  <= (HasTri && f_second) ? tri_res : f_res;
+      out_level_o <= f_l0;
+      out_lod_o   <= f_lod;
+      out_tag_o   <= f_tag;
     end
   end
 
   assign busy_o = r_valid_q || a_valid_q || b_valid_q || c_valid_q || out_valid_o;
 
   logic unused;
-  assign unused = ^{lwv, bad[3:1], c_nearest_q, c_wtri_q, first_q, a_x0_q[0], a_x1_q[0], a_y0_q[0], a_y1_q[0]};
+  assign unused = ^{lwv, bad[3:1], f_wtri, first_q, a_x0_q[0], a_x1_q[0], a_y0_q[0], a_y1_q[0]};
 endmodule
