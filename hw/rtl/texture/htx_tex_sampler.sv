@@ -97,6 +97,8 @@ module htx_tex_sampler #(
     end
   end
 
+  logic [3:0]  row_shift;
+  logic [13:0] row0, row1;
   logic [7:0] x0, x1, y0, y1, wu, wv;
   logic [3:0] lwu, lwv;
   htx_tex_axis #(.CoordW(CoordW), .TF(TF)) u_axis_u (
@@ -109,7 +111,8 @@ module htx_tex_sampler #(
   // ---- Stage A: bank addresses, read issue ---------------------------------------------------------
   logic              a_valid_q, a_first_q, a_second_q, a_nearest_q;
   logic [7:0]        a_x0_q, a_x1_q, a_y0_q, a_y1_q, a_wu_q, a_wv_q, a_wtri_q;
-  logic [3:0]        a_lwu_q, a_level_q, a_l0_q;
+  logic [3:0]        a_level_q, a_l0_q;
+  logic [13:0]       a_row0_q, a_row1_q;
   logic [25:0]       a_desc_q;
   logic [15:0]       a_lod_q;
   logic [TagW-1:0]   a_tag_q;
@@ -132,7 +135,8 @@ module htx_tex_sampler #(
       a_wu_q      <= wu;
       a_wv_q      <= wv;
       a_wtri_q    <= r_wtri_q;
-      a_lwu_q     <= lwu;
+      a_row0_q    <= row0;
+      a_row1_q    <= row1;
       a_level_q   <= level;
       a_l0_q      <= r_l0_q;
       a_desc_q    <= r_desc_q;
@@ -154,22 +158,20 @@ module htx_tex_sampler #(
   endfunction
 
   logic [16:0] lvl_base;
-  logic [3:0]  row_shift;
   assign lvl_base  = 17'(a_desc_q[15:0]) + (HasTri ? level_offset(a_desc_q[19:16], a_desc_q[23:20], a_level_q)
                                                    : 17'd0);
-  assign row_shift = (a_lwu_q > 4'd0) ? a_lwu_q - 4'd1 : 4'd0;
+  assign row_shift = (lwu > 4'd0) ? lwu - 4'd1 : 4'd0;
   // Row offsets of the two footprint rows; a block column never reaches the row stride, so the
   // column joins the row offset by OR.
-  logic [13:0] row0, row1;
-  assign row0 = 14'(a_y0_q[7:1]) << row_shift;
-  assign row1 = 14'(a_y1_q[7:1]) << row_shift;
+  assign row0 = 14'(y0[7:1]) << row_shift;   // computed in R, registered into A
+  assign row1 = 14'(y1[7:1]) << row_shift;
   for (genvar b = 0; b < 4; b++) begin : g_addr
     logic [6:0]  xs;
     logic [13:0] ro;
     logic [13:0] rc;
     logic [16:0] a;
     assign xs = (a_x0_q[0] == b[0]) ? a_x0_q[7:1] : a_x1_q[7:1];
-    assign ro = (a_y0_q[0] == b[1]) ? row0 : row1;
+    assign ro = (a_y0_q[0] == b[1]) ? a_row0_q : a_row1_q;
     assign rc = ro | 14'(xs);
     assign a  = lvl_base + 17'(rc);
     assign s_addr_o[b*BAW +: BAW] = BAW'(a);  // beyond the memory: wraps (docs/texture.md)
@@ -399,5 +401,5 @@ module htx_tex_sampler #(
   assign busy_o = r_valid_q || a_valid_q || b_valid_q || c_valid_q || out_valid_o;
 
   logic unused;
-  assign unused = ^{lwv, bad[3:1], f_wtri, first_q, a_x0_q[0], a_x1_q[0], a_y0_q[0], a_y1_q[0]};
+  assign unused = ^{lwv, bad[3:1], f_wtri, first_q, a_y0_q[7:1], a_y1_q[7:1], a_x0_q[0], a_x1_q[0], a_y0_q[0], a_y1_q[0]};
 endmodule
