@@ -6,7 +6,8 @@ module htx_tex_regs #(
   parameter logic [2:0]  Filters  = 3'b011,
   parameter int unsigned NumSlots = 2,
   parameter int unsigned BAW      = 10,
-  parameter int unsigned TexW     = 16
+  parameter int unsigned TexW     = 16,
+  parameter bit          Counters = 1'b1   // 0: CNT_* read 0 (saves two 32-bit counters)
 ) (
   input  logic               clk_i,
   input  logic               rst_ni,
@@ -71,8 +72,8 @@ module htx_tex_regs #(
         cnt_samples_q <= '0;
         cnt_busy_q    <= '0;
       end else begin
-        cnt_samples_q <= cnt_samples_q + 32'(sample_i);
-        cnt_busy_q    <= cnt_busy_q + 32'(busy_i);
+        cnt_samples_q <= Counters ? cnt_samples_q + 32'(sample_i) : 32'd0;
+        cnt_busy_q    <= Counters ? cnt_busy_q + 32'(busy_i) : 32'd0;
       end
     end
   end
@@ -91,7 +92,7 @@ module htx_tex_regs #(
     end else begin
       unique case (offset)
         htx_texture_reg_pkg::TEXTURE_CAPS_OFFSET:
-          rdata = {2'd0, 6'(TexW), 3'd0, 5'(BAW), 4'd0, 4'(NumSlots), 1'b0, Filters, 1'b0, Formats};
+          rdata = {2'd0, 6'(TexW), 3'd0, 5'(BAW), 4'd0, 4'(NumSlots), Counters, Filters, 1'b0, Formats};
         htx_texture_reg_pkg::TEXTURE_STATUS_OFFSET:
           rdata = {22'd0, err_filter_q, err_format_q, 7'd0, busy_i};
         htx_texture_reg_pkg::TEXTURE_CNT_SAMPLES_OFFSET: rdata = cnt_samples_q;

@@ -13,6 +13,7 @@ module htx_texture #(
   parameter int unsigned Lanes    = 4,        // blend channels per clock: 4 or 1
   parameter bit          ShiftAdd = 1'b0,     // filter products in logic instead of DSPs
   parameter int unsigned TagW     = 32,       // request sideband carried to the output
+  parameter bit          Counters = 1'b1,     // CNT_SAMPLES, CNT_BUSY built
   // LOD unit (trilinear only): q plane, gradients, local coordinates, log2 table.
   parameter int unsigned QW       = 58,
   parameter int unsigned GradW    = 24,
@@ -78,7 +79,8 @@ module htx_texture #(
   // ---- Registers and memory --------------------------------------------------------------------
   logic [25:0]            desc;
   logic                   err_format, err_filter, busy, sample;
-  htx_tex_regs #(.Formats(Formats), .Filters(Filters), .NumSlots(NumSlots), .BAW(BAW), .TexW(TexW)) u_regs (
+  htx_tex_regs #(.Formats(Formats), .Filters(Filters), .NumSlots(NumSlots), .BAW(BAW), .TexW(TexW),
+                 .Counters(Counters)) u_regs (
     .clk_i, .rst_ni,
     .req_valid_i(reg_req_valid_i), .req_ready_o(reg_req_ready_o), .req_addr_i(reg_req_addr_i),
     .req_we_i(reg_req_we_i), .req_be_i(reg_req_be_i), .req_wdata_i(reg_req_wdata_i),

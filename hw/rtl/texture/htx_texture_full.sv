@@ -11,6 +11,7 @@ module htx_texture_full #(
   parameter int unsigned BAW      = 15,
   parameter int unsigned Lanes    = 4,
   parameter bit          ShiftAdd = 1'b0,
+  parameter bit          Counters = 1'b1,
   parameter int unsigned TagW     = 32,
   parameter int unsigned QW       = 58,
   parameter int unsigned GradW    = 24,
@@ -64,7 +65,7 @@ module htx_texture_full #(
 );
   htx_texture #(
     .CoordW(CoordW), .TF(TF), .LF(LF), .Formats(Formats), .Filters(Filters), .NumSlots(NumSlots),
-    .BAW(BAW), .Lanes(Lanes), .ShiftAdd(ShiftAdd), .TagW(TagW), .QW(QW), .GradW(GradW),
+    .BAW(BAW), .Lanes(Lanes), .ShiftAdd(ShiftAdd), .TagW(TagW), .Counters(Counters), .QW(QW), .GradW(GradW),
     .LocW(LocW), .LogIdx(LogIdx)
   ) u_texture (.*);
 endmodule

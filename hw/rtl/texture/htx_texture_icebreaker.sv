@@ -1,7 +1,7 @@
 // The texture unit in the `icebreaker` configuration (docs/texture.md): RGB565 and RGBA4444, nearest and
 // bilinear (no LOD unit: both sample level 0), one channel blended per clock (three products, one
 // iCE40 DSP each; ShiftAdd = 1 puts them in logic instead), 24-bit coordinates with 10 fraction bits (the producer wraps or saturates them,
-// docs/texture.md), 4 slots, 4 x 1K x 16-bit banks (4K texels, 16 EBR).
+// docs/texture.md), 4 slots, 4 x 1K x 16-bit banks (4K texels, 16 EBR), no performance counters.
 module htx_texture_icebreaker #(
   parameter int unsigned CoordW   = 24,
   parameter int unsigned TF       = 10,
@@ -12,6 +12,7 @@ module htx_texture_icebreaker #(
   parameter int unsigned BAW      = 10,
   parameter int unsigned Lanes    = 1,
   parameter bit          ShiftAdd = 1'b0,
+  parameter bit          Counters = 1'b0,
   parameter int unsigned TagW     = 8,
   parameter int unsigned QW       = 42,
   parameter int unsigned GradW    = 16,
@@ -65,7 +66,7 @@ module htx_texture_icebreaker #(
 );
   htx_texture #(
     .CoordW(CoordW), .TF(TF), .LF(LF), .Formats(Formats), .Filters(Filters), .NumSlots(NumSlots),
-    .BAW(BAW), .Lanes(Lanes), .ShiftAdd(ShiftAdd), .TagW(TagW), .QW(QW), .GradW(GradW),
+    .BAW(BAW), .Lanes(Lanes), .ShiftAdd(ShiftAdd), .TagW(TagW), .Counters(Counters), .QW(QW), .GradW(GradW),
     .LocW(LocW), .LogIdx(LogIdx)
   ) u_texture (.*);
 endmodule

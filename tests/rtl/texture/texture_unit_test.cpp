@@ -270,6 +270,12 @@ TEST_P(TextureUnit, EveryFormatRandom) {
   }
   const Check k = run_and_compare(h, c, slots, reqs, 300, 5);
   EXPECT_EQ(k.bad, 0u) << k.first;
+  // The sample counter counts every result when built (CAPS.COUNTERS), and reads 0 otherwise.
+  const bool counters = (h.reg_read(0x000) >> 7) & 1;
+  EXPECT_EQ(counters, GetParam() == "full");
+  EXPECT_EQ(h.reg_read(0x010), counters ? reqs.size() : 0u);
+  h.reg_write(0x018, 1);
+  EXPECT_EQ(h.reg_read(0x010), 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Configs, TextureUnit, ::testing::Values("full", "icebreaker"),
