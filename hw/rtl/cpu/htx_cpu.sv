@@ -105,13 +105,14 @@ module htx_cpu #(
   logic                    e_br_eq_q, e_br_inv_q;           // branch condition: use eq, invert
   logic [31:2]             e_pc_q, e_npc_q;
   logic                    e_illegal_q;
-  logic                    e_pred_q, e_xtrap_q, e_late_q, e_sub_q;
-  logic                    e_left_q, e_arith_q, e_fast_q;
+  logic                    e_pred_q, e_xtrap_q, e_late_q, e_sub_q, e_fwd_q;
+  logic                    e_left_q, e_arith_q, e_fast_q, e_slt_q;
   htx_cpu_pkg::exc_cause_e e_cause_q;
   logic [1:0]              e_lo_q;     // address bits [1:0] of a load/store
 
   logic        w_valid_q, w_rd_we_q, w_load_q, w_mem_q, w_store_q, w_nocount_q;
   logic        w_reverse_q;  // w_result_q is a bit-reversed left shift
+  logic        w_wr_q;       // w_valid_q && w_rd_we_q
   logic [4:0]  w_rd_q;
   logic [2:0]  w_funct3_q;
   logic [31:0] w_result_q;   // result, or the address of a load/store
@@ -204,10 +205,11 @@ module htx_cpu #(
 
   // Forwarding: E's adder/logic result, W's write data, the last write, the register file.
   logic fe_a, fe_b, fw_a, fw_b, fl_a, fl_b;
-  assign fe_a = e_live && e_q.rd_we && !e_late_q && (e_q.rd == d_ra);
-  assign fe_b = e_live && e_q.rd_we && !e_late_q && (e_q.rd == d_rb);
-  assign fw_a = w_valid_q && w_rd_we_q && (w_rd_q == d_ra);
-  assign fw_b = w_valid_q && w_rd_we_q && (w_rd_q == d_rb);
+  // (Each compare starts from one registered enable; a squashed E or D makes the choice moot.)
+  assign fe_a = e_valid_q && e_fwd_q && (e_q.rd == d_ra);
+  assign fe_b = e_valid_q && e_fwd_q && (e_q.rd == d_rb);
+  assign fw_a = w_wr_q && (w_rd_q == d_ra);
+  assign fw_b = w_wr_q && (w_rd_q == d_rb);
   assign fl_a = lw_valid_q && (lw_rd_q == d_ra);
   assign fl_b = lw_valid_q && (lw_rd_q == d_rb);
 
@@ -414,7 +416,7 @@ module htx_cpu #(
     .start_i  (e_can_go && e_mul && !mul_busy),
     .op_i     (e_q.funct3[1:0]),
     .a_i      (e_a_q[31:0]),
-    .b_i      (e_b_q[31:0]),
+    .b_i      (e_rs2_q),
     .busy_o   (mul_busy),
     .done_o   (mul_done),
     .result_o (mul_result)
@@ -427,7 +429,7 @@ module htx_cpu #(
     .kill_i   (w_fault),
     .op_i     (e_q.funct3[1:0]),
     .a_i      (e_a_q[31:0]),
-    .b_i      (e_b_q[31:0]),
+    .b_i      (e_rs2_q),
     .busy_o   (div_busy),
     .done_o   (div_done),
     .result_o (div_result)
@@ -495,7 +497,9 @@ module htx_cpu #(
       e_result_rest = alu_late;
     end
   end
-  assign e_result = e_fast_q ? e_fast_result : e_result_rest;  // fast: includes load/store address
+  // fast: includes the load/store address; SLT(U) takes the comparison from the end of the chain.
+  assign e_result = e_fast_q ? e_fast_result :
+                    e_slt_q  ? {31'b0, alu_lt} : e_result_rest;
 
   logic [3:0]  lsu_be;
   logic [31:0] lsu_wdata;
@@ -565,6 +569,7 @@ module htx_cpu #(
       d_valid_q  <= 1'b0;
       e_valid_q  <= 1'b0;
       w_valid_q  <= 1'b0;
+      w_wr_q     <= 1'b0;
       lw_valid_q <= 1'b0;
     end else begin
       if (d_free) begin
@@ -574,6 +579,7 @@ module htx_cpu #(
       e_valid_q <= e_accept ? d_go : (e_valid_q && !redirect_q);
       if (w_ready) begin
         w_valid_q <= e_commit;
+        w_wr_q    <= e_commit && e_q.rd_we;
       end
       if (rf_we) begin
         lw_valid_q <= 1'b1;
@@ -614,10 +620,12 @@ module htx_cpu #(
       e_xtrap_q <= d_xtrap;
       e_cause_q <= d_cause;
       e_late_q  <= late_d;
+      e_fwd_q   <= d_dec.rd_we && !late_d;
       e_sub_q   <= sub_d;
       e_left_q  <= (d_dec.alu_op == htx_cpu_pkg::AluSll);
       e_arith_q <= (d_dec.alu_op == htx_cpu_pkg::AluSra);
       e_fast_q  <= !(late_alu_d || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul || d_dec.div);
+      e_slt_q   <= (d_dec.alu_op == htx_cpu_pkg::AluSlt) || (d_dec.alu_op == htx_cpu_pkg::AluSltu);
       e_lo_q    <= d_lo;
     end
     if (w_ready) begin

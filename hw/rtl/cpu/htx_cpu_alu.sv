@@ -1,7 +1,8 @@
 // Integer ALU: one adder/subtractor (also the load/store address and JALR target adder), logic
 // operations, the branch comparisons, set-less-than and a barrel shifter (left shifts reuse the
 // right shifter on bit-reversed data). The results are split by when they are ready: fast_o (add,
-// sub, xor, or, and) is forwarded from E into D, late_o (shifts, slt, sltu) only from W. For a left
+// sub, xor, or, and) is forwarded from E into D, late_o (shifts) and lt_o (slt, sltu) only from W
+// (lt_o comes from the end of the carry chain). For a left
 // shift late_o is still bit-reversed: write-back puts it in order, which keeps a LUT level out of E.
 //
 // For a subtraction or comparison (sub_i) the operand b_i arrives already inverted (decode does it
@@ -17,7 +18,7 @@ module htx_cpu_alu (
   input  logic [32:0]          a_i,      // bit 32: extension for comparisons
   input  logic [32:0]          b_i,      // b, or ~b when sub_i; bit 32 likewise
   output logic [31:0]          fast_o,   // add, sub, xor, or, and
-  output logic [31:0]          late_o,   // sll (bit-reversed), srl, sra, slt, sltu
+  output logic [31:0]          late_o,   // sll (bit-reversed), srl, sra
   output logic [31:0]          sum_o,    // a + b, or a - b when sub_i
   output logic                 eq_o,     // a == b (valid when sub_i)
   output logic                 lt_o      // a < b, signed or not as extended (valid when sub_i)
@@ -56,12 +57,6 @@ module htx_cpu_alu (
   logic unused_b_high;
   assign unused_b_high = ^b_i[32:5];       // shift amounts use b_i[4:0] only
 
-  always_comb begin
-    unique case (op_i)
-      htx_cpu_pkg::AluSlt,
-      htx_cpu_pkg::AluSltu: late_o = {31'b0, lt_o};
-      default:              late_o = shift_r[31:0];
-    endcase
-  end
+  assign late_o = shift_r[31:0];
 
 endmodule

@@ -1,5 +1,5 @@
 // Iterative divider for DIV/DIVU/REM/REMU: one restoring step per cycle on the magnitudes, signs
-// fixed at the end, 34 cycles from start_i to done_o. Division by zero gives quotient all ones and
+// fixed in a final cycle into a result register, 35 cycles from start_i to done_o. Division by zero gives quotient all ones and
 // remainder = dividend; -2^31 / -1 gives quotient -2^31 and remainder 0 (the RISC-V results).
 module htx_cpu_div (
   input  logic        clk_i,
@@ -17,7 +17,8 @@ module htx_cpu_div (
   typedef enum logic [1:0] {
     DivIdle = 2'd0,
     DivRun  = 2'd1,
-    DivDone = 2'd2
+    DivSign = 2'd2,
+    DivDone = 2'd3
   } div_state_e;
 
   div_state_e  state_q;
@@ -51,9 +52,10 @@ module htx_cpu_div (
         DivRun: begin
           count_q <= count_q + 5'd1;
           if (count_q == 5'd31) begin
-            state_q <= DivDone;
+            state_q <= DivSign;
           end
         end
+        DivSign: state_q <= DivDone;
         default: state_q <= DivIdle;
       endcase
     end
@@ -78,9 +80,14 @@ module htx_cpu_div (
     end
   end
 
-  logic [31:0] magnitude;
+  logic [31:0] magnitude, result_q;
   assign magnitude = want_rem_q ? rem_q : quo_q;
-  assign result_o  = neg_result_q ? (32'b0 - magnitude) : magnitude;
+  always_ff @(posedge clk_i) begin
+    if (state_q == DivSign) begin
+      result_q <= neg_result_q ? (32'b0 - magnitude) : magnitude;
+    end
+  end
+  assign result_o  = result_q;
   assign done_o    = (state_q == DivDone);
   assign busy_o    = (state_q != DivIdle);
 

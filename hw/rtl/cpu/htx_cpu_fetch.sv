@@ -107,7 +107,7 @@ module htx_cpu_fetch #(
         head_pc_q <= flush_pc;
         if (bypass) begin
           pend_q   <= 1'b0;
-          req_pc_q <= req_accepted ? (req_addr + 30'd1) : req_addr;
+          req_pc_q <= req_accepted ? (redirect_pc_i + 30'd1) : redirect_pc_i;
         end else if (ibus_req_valid_o && !ibus_req_ready_i) begin
           pend_q    <= 1'b1;
           pend_pc_q <= flush_pc;
@@ -129,7 +129,7 @@ module htx_cpu_fetch #(
         end
         if (req_accepted) begin
           pend_q   <= 1'b0;
-          req_pc_q <= pend_q ? pend_pc_q : (req_addr + 30'd1);
+          req_pc_q <= pend_q ? pend_pc_q : (req_pc_q + 30'd1);
         end
       end
     end
