@@ -28,6 +28,9 @@ uint64_t parse_number(const json& j, const std::string& where, const char* key) 
   if (v.is_number_unsigned()) return v.get<uint64_t>();
   if (v.is_string()) {
     const auto s = v.get<std::string>();
+    // stoull would accept a sign or leading blanks ("-1" becomes 2^64 - 1): digits only.
+    if (s.empty() || !std::isdigit(static_cast<unsigned char>(s[0])))
+      fail(where, std::string("\"") + key + "\" must be a non-negative number or a numeric string");
     size_t used = 0;
     uint64_t n = 0;
     try {
@@ -123,7 +126,7 @@ Peripheral load_peripheral(const std::filesystem::path& file) {
       if (!is_identifier(f.name)) fail(fwhere, "name must be an upper-case identifier");
       const uint64_t lsb = parse_number(jf, fwhere, "lsb");
       const uint64_t width = parse_number(jf, fwhere, "width");
-      if (width < 1 || lsb + width > 32) fail(fwhere, "field must have width >= 1 and fit in bits 31..0");
+      if (width < 1 || lsb >= 32 || width > 32 - lsb) fail(fwhere, "field must have width >= 1 and fit in bits 31..0");
       f.lsb = static_cast<unsigned>(lsb);
       f.width = static_cast<unsigned>(width);
       f.access = parse_access(get_string(jf, fwhere, "access", true), fwhere);

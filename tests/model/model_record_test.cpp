@@ -82,6 +82,13 @@ TEST(VertexRecord, RejectsWhatItCannotRepresent) {
   EXPECT_EQ(encode_triangle(f, in, &r), kEncodeXyRange);
   in[1].x = 8191.9;
   EXPECT_EQ(encode_triangle(f, in, &r), kEncodeOk);
+  in[1].x = 8191.999;  // below the limit, but rounds onto 2^13 pixels: out of range after rounding
+  EXPECT_EQ(encode_triangle(f, in, &r), kEncodeXyRange);
+  in[1].x = -8192.001;  // rounds onto -2^13 pixels, the most negative representable value
+  EXPECT_EQ(encode_triangle(f, in, &r), kEncodeXyRange);
+  in[1].x = -8191.999;
+  EXPECT_EQ(encode_triangle(f, in, &r), kEncodeOk);
+  in[1].x = 8191.9;
   in[1].u = 8192;  // spans 8192 texels: 4096 each side of the midpoint is out of range
   EXPECT_EQ(encode_triangle(f, in, &r), kEncodeUvRange);
   in[1].u = 8190;

@@ -65,6 +65,21 @@ TEST(RefIo, ObjErrorsAreClear) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("powers of two"), std::string::npos) << e.what();
   }
+  // A non-finite vertex in any mesh (here the second one) is rejected, not only in the first.
+  for (const char* f : {"quad.mtl", "checker8x16.png"})
+    std::filesystem::copy_file(kData + "/" + f, dir / f, std::filesystem::copy_options::overwrite_existing);
+  {
+    std::ifstream in(kData + "/quad.obj");
+    std::ofstream out(dir / "inf.obj");
+    std::string line;
+    while (std::getline(in, line)) out << (line == "v 0 0 -1" ? "v 1e308 0 -1" : line) << "\n";
+  }
+  try {
+    load_obj_scene((dir / "inf.obj").string());
+    FAIL() << "a vertex at 1e308 (infinite as float) must be rejected";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+  }
   std::filesystem::remove_all(dir);
 }
 

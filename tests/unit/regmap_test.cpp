@@ -74,6 +74,13 @@ TEST_F(RegmapTest, RejectsFieldPastBit31) {
   EXPECT_NE(error_of(periph(R"([{"name":"A","lsb":30,"width":4,"access":"rw"}])")).find("fit"), std::string::npos);
 }
 
+TEST_F(RegmapTest, RejectsSignedOrWrappingPositions) {
+  // "-1" must not parse as 2^64 - 1, and lsb + width must not wrap around.
+  EXPECT_NE(error_of(periph(R"([{"name":"A","lsb":"-1","width":1,"access":"rw"}])")).find("non-negative"), std::string::npos);
+  EXPECT_NE(error_of(periph(R"([{"name":"A","lsb":18446744073709551615,"width":1,"access":"rw"}])")).find("fit"), std::string::npos);
+  EXPECT_NE(error_of(periph(R"([{"name":"A","lsb":0,"width":" 4","access":"rw"}])")).find("non-negative"), std::string::npos);
+}
+
 TEST_F(RegmapTest, RejectsResetWiderThanField) {
   EXPECT_NE(error_of(periph(R"([{"name":"A","lsb":0,"width":2,"access":"rw","reset":4}])")).find("reset"), std::string::npos);
 }

@@ -56,8 +56,13 @@ EncodeStatus encode_triangle(const RecordFormat& f, const VertexIn in[3], Triang
     const VertexIn& v = in[i];
     VertexRecord& r = out->v[i];
     if (!(v.x > -xy_limit && v.x < xy_limit && v.y > -xy_limit && v.y < xy_limit)) return kEncodeXyRange;
-    r.x = static_cast<int32_t>(round_nearest(v.x * 256.0));
-    r.y = static_cast<int32_t>(round_nearest(v.y * 256.0));
+    // Range is checked again after rounding: a value just below the limit rounds up onto it.
+    const int64_t xy_units = INT64_C(1) << (f.xy_int_bits - 1 + kSubpixelBits);
+    const int64_t rx = round_nearest(v.x * 256.0);
+    const int64_t ry = round_nearest(v.y * 256.0);
+    if (rx < -xy_units || rx >= xy_units || ry < -xy_units || ry >= xy_units) return kEncodeXyRange;
+    r.x = static_cast<int32_t>(rx);
+    r.y = static_cast<int32_t>(ry);
     r.z = static_cast<uint32_t>(round_nearest(clamp_double(v.z, 0.0, 1.0) * static_cast<double>(z_max)));
     int64_t q = round_nearest(scale_by_pow2(1.0 / v.w, q_exp + f.q_bits));
     // A q below one unit (depth ratio beyond 2^q_bits inside one triangle) is raised to one unit.

@@ -113,9 +113,10 @@ Scene load_obj_scene(const std::string& path) {
     for (auto& [mat, mesh] : by_material) scene.meshes.push_back(std::move(mesh));
   }
   if (scene.meshes.empty()) throw std::runtime_error("OBJ '" + path + "' has no faces");
-  for (const Vertex& v : scene.meshes.front().vertices)
-    if (!std::isfinite(v.pos.x) || !std::isfinite(v.pos.y) || !std::isfinite(v.pos.z))
-      throw std::runtime_error("OBJ '" + path + "' has a non-finite vertex");
+  for (const auto& mesh : scene.meshes)
+    for (const Vertex& v : mesh.vertices)
+      if (!std::isfinite(v.pos.x) || !std::isfinite(v.pos.y) || !std::isfinite(v.pos.z))
+        throw std::runtime_error("OBJ '" + path + "' has a non-finite vertex");
 
   const Vec3 centre = (lo + hi) * 0.5;
   const double radius = std::max(length(hi - lo) * 0.5, 1e-6);
