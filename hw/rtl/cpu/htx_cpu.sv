@@ -106,7 +106,8 @@ module htx_cpu #(
   logic [31:2]             e_pc_q, e_npc_q;
   logic                    e_illegal_q;
   logic                    e_pred_q, e_xtrap_q, e_late_q, e_sub_q, e_fwd_q;
-  logic                    e_left_q, e_arith_q, e_fast_q, e_slt_q;
+  logic                    e_left_q, e_arith_q, e_fast_q, e_slt_q, e_shift_q;
+  logic                    e_mem_q, e_mul_q, e_div_q;
   htx_cpu_pkg::exc_cause_e e_cause_q;
   logic [1:0]              e_lo_q;     // address bits [1:0] of a load/store
 
@@ -406,9 +407,9 @@ module htx_cpu #(
   // reads are exact.
   assign e_live   = e_valid_q && !redirect_q;
   assign e_can_go = e_live && w_ready && !w_fault && !(e_q.csr && (w_valid_q || csr_counting));
-  assign e_mem    = (e_q.load || e_q.store) && !e_xtrap_q;
-  assign e_mul    = e_q.mul && !e_xtrap_q;
-  assign e_div    = e_q.div && !e_xtrap_q;
+  assign e_mem    = e_mem_q;  // (load || store) && no early trap, registered for the stall logic
+  assign e_mul    = e_mul_q;
+  assign e_div    = e_div_q;
 
   htx_cpu_mul u_mul (
     .clk_i,
@@ -481,9 +482,11 @@ module htx_cpu #(
     .mepc_o    (mepc)
   );
 
-  // The adder/logic result comes last, so it enters at the final LUT level (see d_a_rest).
+  // The adder/logic result, SLT (end of the carry chain) and the shifter come last, so they enter
+  // at the final two LUT levels; the other results are chosen first (kept as a separate signal so
+  // synthesis does not fold the late values deeper into the mux tree).
   (* keep *) logic [31:0] e_result_rest;
-  logic [31:0] e_result;
+  logic [31:0] e_result_late, e_result;
   always_comb begin
     if (e_q.jal || e_q.jalr) begin
       e_result_rest = {e_npc_q, 2'b00};
@@ -491,15 +494,15 @@ module htx_cpu #(
       e_result_rest = csr_rdata;
     end else if (e_q.mul) begin
       e_result_rest = mul_result;
-    end else if (e_q.div) begin
-      e_result_rest = div_result;
     end else begin
-      e_result_rest = alu_late;
+      e_result_rest = div_result;
     end
   end
-  // fast: includes the load/store address; SLT(U) takes the comparison from the end of the chain.
-  assign e_result = e_fast_q ? e_fast_result :
-                    e_slt_q  ? {31'b0, alu_lt} : e_result_rest;
+  assign e_result_late = e_slt_q   ? {31'b0, alu_lt} :
+                         e_shift_q ? alu_late : e_result_rest;
+  assign e_result      = e_fast_q ? e_fast_result : e_result_late;  // fast: includes the address
+  logic unused_e_div;
+  assign unused_e_div = e_q.div;  // DIV is the remaining choice of e_result_rest; E uses e_div_q
 
   logic [3:0]  lsu_be;
   logic [31:0] lsu_wdata;
@@ -618,6 +621,9 @@ module htx_cpu #(
       e_npc_q   <= d_npc_q;
       e_pred_q  <= d_pred_q;
       e_xtrap_q <= d_xtrap;
+      e_mem_q   <= (d_dec.load || d_dec.store) && !d_xtrap;
+      e_mul_q   <= d_dec.mul && !d_xtrap;
+      e_div_q   <= d_dec.div && !d_xtrap;
       e_cause_q <= d_cause;
       e_late_q  <= late_d;
       e_fwd_q   <= d_dec.rd_we && !late_d;
@@ -626,6 +632,8 @@ module htx_cpu #(
       e_arith_q <= (d_dec.alu_op == htx_cpu_pkg::AluSra);
       e_fast_q  <= !(late_alu_d || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul || d_dec.div);
       e_slt_q   <= (d_dec.alu_op == htx_cpu_pkg::AluSlt) || (d_dec.alu_op == htx_cpu_pkg::AluSltu);
+      e_shift_q <= (d_dec.alu_op == htx_cpu_pkg::AluSll) || (d_dec.alu_op == htx_cpu_pkg::AluSrl) ||
+                   (d_dec.alu_op == htx_cpu_pkg::AluSra);
       e_lo_q    <= d_lo;
     end
     if (w_ready) begin

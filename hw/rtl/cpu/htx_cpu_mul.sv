@@ -1,11 +1,11 @@
 // Three-cycle 32x32 multiplier for MUL/MULH/MULHSU/MULHU built from four unsigned 16x16 partial
 // products, so that synth_ice40 -dsp maps exactly four SB_MAC16. Signed high halves come from the
-// unsigned product: hi_signed = hi_unsigned - (a<0 ? b : 0) - (b<0 ? a : 0) (mod 2^32). The carry
-// chains are short enough for the result to be used in the cycle it is done:
+// unsigned product: hi_signed = hi_unsigned - (a<0 ? b : 0) - (b<0 ? a : 0) (mod 2^32).
 //   cycle 1 (start_i): the partial products and the signed correction are registered;
-//   cycle 2:           mid = lh + hl, the low word ll + mid[15:0] << 16 with its carry out, and
-//                      hh - correction are registered;
-//   cycle 3 (done_o):  the high word (hh - corr) + mid[32:16] + carry; the low word is ready.
+//   cycle 2:           mid = lh + hl, then the low word ll + mid[15:0] << 16 and the high word
+//                      (hh - corr) + mid[32:16] + the low word's carry are registered (two carry
+//                      chains in series, starting from the DSP output registers);
+//   cycle 3 (done_o):  the selected word comes straight from a register.
 module htx_cpu_mul (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -25,13 +25,12 @@ module htx_cpu_mul (
   assign corr_d   = ((a_signed && a_i[31]) ? b_i : 32'b0) + ((b_signed && b_i[31]) ? a_i : 32'b0);
 
   logic [31:0] p_ll_q, p_lh_q, p_hl_q, p_hh_q, corr_q;
-  logic [31:0] lo_q, hs_q;
-  logic [16:0] mid_hi_q;
-  logic        lo_carry_q;
+  logic [31:0] lo_q, hi_q, hs;
   logic [32:0] mid;
   logic [16:0] lo_upper;
   assign mid      = {1'b0, p_lh_q} + {1'b0, p_hl_q};
   assign lo_upper = {1'b0, p_ll_q[31:16]} + {1'b0, mid[15:0]};
+  assign hs       = p_hh_q - corr_q;
   logic        high_q;
   logic        step1_q, step2_q;
 
@@ -45,10 +44,8 @@ module htx_cpu_mul (
       high_q <= (op_i != 2'b00);
     end
     if (step1_q) begin
-      lo_q       <= {lo_upper[15:0], p_ll_q[15:0]};
-      lo_carry_q <= lo_upper[16];
-      mid_hi_q   <= mid[32:16];
-      hs_q       <= p_hh_q - corr_q;
+      lo_q <= {lo_upper[15:0], p_ll_q[15:0]};
+      hi_q <= hs + {15'b0, mid[32:16]} + {31'b0, lo_upper[16]};
     end
   end
 
@@ -62,11 +59,8 @@ module htx_cpu_mul (
     end
   end
 
-  logic [31:0] hi;
-  assign hi = hs_q + {15'b0, mid_hi_q} + {31'b0, lo_carry_q};
-
   assign busy_o   = step1_q || step2_q;
   assign done_o   = step2_q;
-  assign result_o = high_q ? hi : lo_q;
+  assign result_o = high_q ? hi_q : lo_q;
 
 endmodule
