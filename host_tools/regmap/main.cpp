@@ -50,9 +50,7 @@ int main(int argc, char** argv) {
       for (const auto& p : map) {
         std::ostringstream os;
         htx::regmap::emit_sv_package(os, p);
-        std::string lname = p.name;
-        for (auto& c : lname) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        write_if_changed(fs::path(sv_dir) / ("htx_" + lname + "_reg_pkg.sv"), os.str());
+        write_if_changed(fs::path(sv_dir) / (htx::regmap::sv_package_name(p) + ".sv"), os.str());
       }
     }
     if (!doc.empty()) {

@@ -73,6 +73,13 @@ const char* access_name(Access a) {
   return "?";
 }
 
+std::string lower_name(std::string name) {
+  for (auto& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return name;
+}
+
+std::string sv_package_name(const Peripheral& p) { return "htx_" + lower_name(p.name) + "_reg_pkg"; }
+
 uint32_t Register::reset() const {
   uint32_t r = 0;
   for (const auto& f : fields) r |= (f.reset << f.lsb) & f.mask();
@@ -95,8 +102,7 @@ Peripheral load_peripheral(const std::filesystem::path& file) {
   p.name = get_string(j, top, "name", true);
   if (!is_identifier(p.name)) fail(top, "peripheral name \"" + p.name + "\" must be an upper-case identifier");
   if (p.name.find('_') != std::string::npos) fail(top, "peripheral name \"" + p.name + "\" may not contain '_'");
-  std::string stem = p.name;
-  for (auto& c : stem) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string stem = lower_name(p.name);
   if (file.stem().string() != stem) fail(top, "file must be named " + stem + ".json after its peripheral");
   const uint64_t base = parse_number(j, top, "base");
   if (base > 0xFFFFFFFFu || (base & 0xFFFu) != 0) fail(top, "base must be a 4 KiB-aligned 32-bit address");

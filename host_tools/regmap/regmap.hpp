@@ -46,6 +46,10 @@ struct Error : std::runtime_error {
 };
 
 const char* access_name(Access a);
+// "UART" -> "uart": the file stem of a peripheral's JSON and of its generated names.
+std::string lower_name(std::string name);
+// "htx_uart_reg_pkg": the SV package name, also the generated file's stem.
+std::string sv_package_name(const Peripheral& p);
 
 // Parses and validates one file; throws Error naming the file and register on any problem.
 Peripheral load_peripheral(const std::filesystem::path& file);
