@@ -1,7 +1,12 @@
 // The raster unit (docs/raster.md): register block (hw/regs/raster.json), vertex FIFO with bus
 // back-pressure, input assembly, setup, traversal, interpolation output and the fragment stage with
 // the fast clear. The framebuffer and depth memories sit outside (hw/rtl/fb/htx_fb.sv).
-// Parameters are the fields of the model's ModelConfig (docs/model.md) that this slice builds.
+// Parameters are the fields of the model's ModelConfig (docs/model.md) that this unit builds.
+// Every fragment that leaves traversal gets its texel coordinates from the perspective method
+// (shade: AFFINE; divider: RECIP_LUT, RECIP_NR, SUBDIV's exact points, perspective colour; subdiv:
+// SUBDIV's inner pixels) and leaves on the texture request port (docs/raster.md, "Texture port",
+// /work contract); the texel comes back in order with the fragment in its tag, then htx_tex_combine
+// and the fragment stage.
 module htx_raster #(
   parameter int unsigned XyIntBits  = 16,
   parameter int unsigned ZBits      = 24,
@@ -13,7 +18,21 @@ module htx_raster #(
   parameter bit          Iterative  = 1'b0,  // setup multipliers: 0 one product per clock, 1 shift-add
   parameter int unsigned FifoDepth  = 64,
   parameter int unsigned FbPixels   = 76800,
-  parameter int unsigned AddrW      = 24
+  parameter int unsigned AddrW      = 24,
+  parameter int unsigned QBits      = 32,
+  parameter int unsigned UvIntBits  = 16,
+  parameter int unsigned TF         = 16,       // texcoord_frac_bits
+  parameter int unsigned PixelSteps = 2,        // pixel_nr_steps
+  parameter logic [4:0]  Methods    = 5'b01111, // bit m: htx::Method m built (DIVFREE: not yet)
+  parameter bit          PerspColor = 1'b1,     // perspective_color
+  parameter bit          PixelPipelined = 1'b1, // per-pixel divider: pipelined, else iterative
+  parameter bit          PixelMulIterative = 1'b0, // iterative divider's multiplier: shift-and-add
+  parameter int unsigned SubdivDepth = 128,     // SUBDIV fragment FIFO (>= 64)
+  parameter int unsigned CoordW     = 48,
+  parameter int unsigned QW         = QBits + GF + 2,
+  parameter int unsigned GradW      = 24,       // lod_grad_bits
+  parameter int unsigned LocW       = UvIntBits + TF,
+  parameter int unsigned TexTagW    = htx_raster_pkg::tex_tag_w(AddrW, ZBits)
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -37,13 +56,43 @@ module htx_raster #(
   output logic              wz_en_o,
   output logic [AddrW-1:0]  w_addr_o,
   output logic [15:0]       wc_data_o,
-  output logic [ZBits-1:0]  wz_data_o
+  output logic [ZBits-1:0]  wz_data_o,
+
+  // Texture request / response (gpu_join_contract.md §1; mirrors htx_texture's req_* / out_*).
+  output logic               tex_req_valid_o,
+  input  logic               tex_req_ready_i,
+  output logic [CoordW-1:0]  tex_req_u_o,
+  output logic [CoordW-1:0]  tex_req_v_o,
+  output logic [1:0]         tex_req_filter_o,
+  output logic [1:0]         tex_req_wrap_u_o,
+  output logic [1:0]         tex_req_wrap_v_o,
+  output logic [7:0]         tex_req_slot_o,
+  output logic               tex_req_lod_direct_o,
+  output logic [23:0]        tex_req_lod_o,
+  output logic [QW-1:0]      tex_req_lod_q_o,
+  output logic [GradW-1:0]   tex_req_lod_gux_o, tex_req_lod_guy_o, tex_req_lod_gvx_o,
+  output logic [GradW-1:0]   tex_req_lod_gvy_o, tex_req_lod_gqx_o, tex_req_lod_gqy_o,
+  output logic [7:0]         tex_req_lod_shift_o,
+  output logic [LocW-1:0]    tex_req_lod_u_o, tex_req_lod_v_o,
+  output logic [TexTagW-1:0] tex_req_tag_o,
+  input  logic               tex_out_valid_i,
+  output logic               tex_out_ready_o,
+  input  logic [31:0]        tex_out_rgba_i,
+  input  logic [TexTagW-1:0] tex_out_tag_i
 );
   localparam int unsigned XW   = XyIntBits + 8;
   localparam int unsigned DW   = XW + 1;
   localparam int unsigned EW   = 2 * DW + 2;
+  localparam int unsigned UQ   = QBits + UvIntBits;
+  localparam int unsigned CB   = PerspColor ? 8 + QBits : 8;
   localparam int unsigned AccZ = ZBits + GF + 2;
-  localparam int unsigned AccC = 8 + GF + 2;
+  localparam int unsigned AccC = CB + GF + 2;
+  localparam int unsigned AccQ = QBits + GF + 2;
+  localparam int unsigned AccU = UQ + GF + 2;
+  localparam int unsigned AW   = (AccU > AccC) ? ((AccU > AccZ) ? AccU : AccZ)
+                                               : ((AccC > AccZ) ? AccC : AccZ);
+  localparam int unsigned NP   = 9;
+  localparam int unsigned SideW = 136 + 6 * GradW;  // state, flat, u_off, v_off, LOD gradients, shift
   localparam int unsigned LvlW = $clog2(FifoDepth) + 1;
 
   // ---- Registers -------------------------------------------------------------------------------
@@ -87,11 +136,13 @@ module htx_raster #(
   );
 
   logic               rec_valid, rec_ready, in_partial, in_busy;
-  logic [31:0]        rec_state;
+  logic [31:0]        rec_state, rec_u_off, rec_v_off;
   logic [3*XW-1:0]    rec_x, rec_y;
   logic [3*ZBits-1:0] rec_z;
   logic [3*32-1:0]    rec_rgba;
-  htx_raster_input #(.XW(XW), .ZBits(ZBits)) u_input (
+  logic [3*QBits-1:0] rec_q;
+  logic [3*UQ-1:0]    rec_uq, rec_vq;
+  htx_raster_input #(.XW(XW), .ZBits(ZBits), .QBits(QBits), .UQ(UQ)) u_input (
     .clk_i, .rst_ni,
     .abort_i     (abort),
     .enable_i    (enable_q),
@@ -105,23 +156,31 @@ module htx_raster #(
     .rec_y_o     (rec_y),
     .rec_z_o     (rec_z),
     .rec_rgba_o  (rec_rgba),
+    .rec_q_o     (rec_q),
+    .rec_uq_o    (rec_uq),
+    .rec_vq_o    (rec_vq),
+    .rec_u_off_o (rec_u_off),
+    .rec_v_off_o (rec_v_off),
     .busy_o      (in_busy),
     .partial_o   (in_partial)
   );
 
   // ---- Setup -----------------------------------------------------------------------------------
   logic               tri_valid, tri_ready;
-  logic [31:0]        tri_state, tri_flat;
+  logic [31:0]        tri_state, tri_flat, tri_u_off, tri_v_off;
   logic [12:0]        tri_x_lo, tri_x_hi, tri_y_lo, tri_y_hi;
   logic [3*DW-1:0]    tri_a, tri_b;
   logic [2:0]         tri_thr;
   logic [3*EW-1:0]    tri_e;
-  logic [3*AccZ-1:0]  tri_z;
-  logic [9*AccC-1:0]  tri_c;
+  logic [3*NP*AW-1:0] tri_p;
+  logic [6*GradW-1:0] tri_lod_g;
+  logic [7:0]         tri_lod_shift;
   logic               setup_busy, setup_stall, setup_taken, setup_err;
   htx_raster_setup #(
     .XyIntBits(XyIntBits), .ZBits(ZBits), .GF(GF), .RecipW(RecipW), .RecipK(RecipK),
-    .RecipG(RecipG), .NrSteps(SetupSteps), .Iterative(Iterative)
+    .RecipG(RecipG), .NrSteps(SetupSteps), .Iterative(Iterative), .QBits(QBits),
+    .UvIntBits(UvIntBits), .TF(TF), .GradW(GradW), .Methods(Methods), .PerspColor(PerspColor),
+    .AW(AW), .NP(NP)
   ) u_setup (
     .clk_i, .rst_ni,
     .abort_i        (abort),
@@ -135,6 +194,11 @@ module htx_raster #(
     .rec_y_i        (rec_y),
     .rec_z_i        (rec_z),
     .rec_rgba_i     (rec_rgba),
+    .rec_q_i        (rec_q),
+    .rec_uq_i       (rec_uq),
+    .rec_vq_i       (rec_vq),
+    .rec_u_off_i    (rec_u_off),
+    .rec_v_off_i    (rec_v_off),
     .tri_valid_o    (tri_valid),
     .tri_ready_i    (tri_ready),
     .tri_state_o    (tri_state),
@@ -147,8 +211,11 @@ module htx_raster #(
     .tri_b_o        (tri_b),
     .tri_thr_o      (tri_thr),
     .tri_e_o        (tri_e),
-    .tri_z_o        (tri_z),
-    .tri_c_o        (tri_c),
+    .tri_p_o        (tri_p),
+    .tri_u_off_o    (tri_u_off),
+    .tri_v_off_o    (tri_v_off),
+    .tri_lod_g_o    (tri_lod_g),
+    .tri_lod_shift_o(tri_lod_shift),
     .busy_o         (setup_busy),
     .stall_o        (setup_stall),
     .taken_o        (setup_taken),
@@ -156,20 +223,18 @@ module htx_raster #(
   );
 
   // ---- Traversal -------------------------------------------------------------------------------
-  logic              tv_valid, tv_ready, trav_busy, trav_stall;
+  logic              tv_valid, tv_ready, trav_busy, trav_stall, tv_first, tv_last;
   logic [12:0]       tv_x, tv_y;
   logic [AddrW-1:0]  tv_addr;
-  logic [AccZ-1:0]   tv_z;
-  logic [3*AccC-1:0] tv_c;
-  logic [31:0]       tv_state, tv_flat;
-  htx_raster_traverse #(.DW(DW), .EW(EW), .AccZ(AccZ), .AccC(AccC), .AddrW(AddrW)) u_traverse (
+  logic [NP*AW-1:0]  tv_p;
+  logic [SideW-1:0]  tv_side;
+  htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NP), .AW(AW), .SideW(SideW), .AddrW(AddrW)) u_traverse (
     .clk_i, .rst_ni,
     .abort_i         (abort),
     .stride_i        (stride_q),
     .tri_valid_i     (tri_valid),
     .tri_ready_o     (tri_ready),
-    .tri_state_i     (tri_state),
-    .tri_flat_rgba_i (tri_flat),
+    .tri_side_i      ({tri_lod_shift, tri_lod_g, tri_v_off, tri_u_off, tri_flat, tri_state}),
     .tri_x_lo_i      (tri_x_lo),
     .tri_x_hi_i      (tri_x_hi),
     .tri_y_lo_i      (tri_y_lo),
@@ -178,60 +243,287 @@ module htx_raster #(
     .tri_b_i         (tri_b),
     .tri_thr_i       (tri_thr),
     .tri_e_i         (tri_e),
-    .tri_z_i         (tri_z),
-    .tri_c_i         (tri_c),
+    .tri_p_i         (tri_p),
     .frag_valid_o    (tv_valid),
     .frag_ready_i    (tv_ready),
     .frag_x_o        (tv_x),
     .frag_y_o        (tv_y),
     .frag_addr_o     (tv_addr),
-    .frag_z_o        (tv_z),
-    .frag_c_o        (tv_c),
-    .frag_state_o    (tv_state),
-    .frag_flat_rgba_o(tv_flat),
+    .frag_first_o    (tv_first),
+    .frag_last_o     (tv_last),
+    .frag_p_o        (tv_p),
+    .frag_side_o     (tv_side),
     .busy_o          (trav_busy),
     .stall_o         (trav_stall)
   );
 
-  // ---- Interpolation output, then the fragment stage (a texture stage goes between them) -------
-  logic              sh_valid, sh_ready;
-  logic [12:0]       sh_x, sh_y;
+  // ---- Shade: depth, linear colour, AFFINE coordinates, SUBDIV exact points --------------------
+  logic              sh_valid, sh_ready, sh_div_color, sh_exact;
+  logic [12:0]       sh_x;
   logic [AddrW-1:0]  sh_addr;
   logic [ZBits-1:0]  sh_z;
   logic [23:0]       sh_rgb;
-  logic [31:0]       sh_state;
-  htx_raster_shade #(.ZBits(ZBits), .GF(GF), .AddrW(AddrW)) u_shade (
+  logic [LocW-1:0]   sh_ua, sh_va;
+  logic [AccQ-1:0]   sh_q;
+  logic [AccU-1:0]   sh_u, sh_v;
+  logic [3*AccC-1:0] sh_c;
+  logic [SideW-1:0]  sh_side;
+  htx_raster_shade #(.ZBits(ZBits), .GF(GF), .NP(NP), .AW(AW), .SideW(SideW), .AccC(AccC),
+                     .AccQ(AccQ), .AccU(AccU), .LocW(LocW), .PerspColor(PerspColor),
+                     .AddrW(AddrW)) u_shade (
     .clk_i, .rst_ni,
-    .abort_i       (abort),
-    .in_valid_i    (tv_valid),
-    .in_ready_o    (tv_ready),
-    .in_x_i        (tv_x),
-    .in_y_i        (tv_y),
-    .in_addr_i     (tv_addr),
-    .in_z_i        (tv_z),
-    .in_c_i        (tv_c),
-    .in_state_i    (tv_state),
-    .in_flat_rgba_i(tv_flat),
-    .out_valid_o   (sh_valid),
-    .out_ready_i   (sh_ready),
-    .out_x_o       (sh_x),
-    .out_y_o       (sh_y),
-    .out_addr_o    (sh_addr),
-    .out_z_o       (sh_z),
-    .out_rgb_o     (sh_rgb),
-    .out_state_o   (sh_state)
+    .abort_i        (abort),
+    .in_valid_i     (tv_valid),
+    .in_ready_o     (tv_ready),
+    .in_addr_i      (tv_addr),
+    .in_x_i         (tv_x),
+    .in_first_i     (tv_first),
+    .in_last_i      (tv_last),
+    .in_p_i         (tv_p),
+    .in_side_i      (tv_side),
+    .out_valid_o    (sh_valid),
+    .out_ready_i    (sh_ready),
+    .out_addr_o     (sh_addr),
+    .out_x_o        (sh_x),
+    .out_z_o        (sh_z),
+    .out_rgb_o      (sh_rgb),
+    .out_div_color_o(sh_div_color),
+    .out_exact_o    (sh_exact),
+    .out_ua_o       (sh_ua),
+    .out_va_o       (sh_va),
+    .out_q_o        (sh_q),
+    .out_u_o        (sh_u),
+    .out_v_o        (sh_v),
+    .out_c_o        (sh_c),
+    .out_side_o     (sh_side)
   );
+
+  // ---- Per-pixel divider -----------------------------------------------------------------------
+  logic [2:0] sh_method;
+  logic       sh_need;
+  assign sh_method = sh_side[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
+  // Untextured fragments need no texel coordinates (the iterative divider skips them).
+  assign sh_need   = (sh_side[htx_raster_reg_pkg::RASTER_STATE_TEXTURED_LSB] &&
+                      ((sh_method == htx_raster_pkg::MethodRecipLut) ||
+                       (sh_method == htx_raster_pkg::MethodRecipNr) ||
+                       ((sh_method == htx_raster_pkg::MethodSubdiv) && sh_exact))) || sh_div_color;
+  // Payload past the divider: {side, addr, z, rgb, ua, va, q, exact, x, div_color}.
+  localparam int unsigned PayD = SideW + AddrW + ZBits + 24 + 2 * LocW + AccQ + 1 + 13 + 1;
+  logic              dv_valid, dv_ready;
+  logic [LocW-1:0]   dv_u, dv_v;
+  logic [23:0]       dv_rgb;
+  logic [PayD-1:0]   dv_pay;
+  htx_raster_divider #(
+    .AccQ(AccQ), .AccU(AccU), .AccC(AccC), .UvIntBits(UvIntBits), .W(RecipW), .K(RecipK), .G(RecipG),
+    .Steps(PixelSteps), .TF(TF), .LocW(LocW), .PayW(PayD), .Pipelined(PixelPipelined),
+    .Color(PerspColor), .MulIterative(PixelMulIterative)
+  ) u_divider (
+    .clk_i, .rst_ni,
+    .abort_i    (abort),
+    .in_valid_i (sh_valid),
+    .in_ready_o (sh_ready),
+    .in_need_i  (sh_need),
+    .in_lut_i   (sh_method == htx_raster_pkg::MethodRecipLut),
+    .in_q_i     (sh_q),
+    .in_u_i     (sh_u),
+    .in_v_i     (sh_v),
+    .in_c_i     (sh_c),
+    .in_pay_i   ({sh_side, sh_addr, sh_z, sh_rgb, sh_ua, sh_va, sh_q, sh_exact, sh_x, sh_div_color}),
+    .out_valid_o(dv_valid),
+    .out_ready_i(dv_ready),
+    .out_u_o    (dv_u),
+    .out_v_o    (dv_v),
+    .out_rgb_o  (dv_rgb),
+    .out_pay_o  (dv_pay)
+  );
+
+  logic [SideW-1:0] dv_side;
+  logic [AddrW-1:0] dv_addr;
+  logic [ZBits-1:0] dv_z;
+  logic [23:0]      dv_lin;
+  logic [LocW-1:0]  dv_ua, dv_va;
+  logic [AccQ-1:0]  dv_q;
+  logic             dv_exact, dv_div_color;
+  logic [12:0]      dv_x;
+  assign {dv_side, dv_addr, dv_z, dv_lin, dv_ua, dv_va, dv_q, dv_exact, dv_x, dv_div_color} = dv_pay;
+  logic [2:0] dv_method;
+  assign dv_method = dv_side[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
+
+  // ---- SUBDIV inner pixels ---------------------------------------------------------------------
+  localparam int unsigned PayS = SideW + AddrW + ZBits + 24 + AccQ;
+  logic             sd_valid, sd_ready;
+  logic [LocW-1:0]  sd_u, sd_v;
+  logic [PayS-1:0]  sd_pay;
+  logic             dv_affine;
+  assign dv_affine = (dv_method == htx_raster_pkg::MethodAffine);
+  if (Methods[1]) begin : g_subdiv
+    htx_raster_subdiv #(.LocW(LocW), .PayW(PayS), .Depth(SubdivDepth)) u_subdiv (
+      .clk_i, .rst_ni,
+      .abort_i    (abort),
+      .in_valid_i (dv_valid),
+      .in_ready_o (dv_ready),
+      .in_subdiv_i(dv_method == htx_raster_pkg::MethodSubdiv),
+      .in_exact_i (dv_exact),
+      .in_x_i     (dv_x),
+      .in_u_i     (dv_affine ? dv_ua : dv_u),
+      .in_v_i     (dv_affine ? dv_va : dv_v),
+      .in_pay_i   ({dv_side, dv_addr, dv_z, dv_div_color ? dv_rgb : dv_lin, dv_q}),
+      .out_valid_o(sd_valid),
+      .out_ready_i(sd_ready),
+      .out_u_o    (sd_u),
+      .out_v_o    (sd_v),
+      .out_pay_o  (sd_pay)
+    );
+  end else begin : g_no_subdiv
+    assign sd_valid = dv_valid;
+    assign dv_ready = sd_ready;
+    assign sd_u     = dv_affine ? dv_ua : dv_u;
+    assign sd_v     = dv_affine ? dv_va : dv_v;
+    assign sd_pay   = {dv_side, dv_addr, dv_z, dv_div_color ? dv_rgb : dv_lin, dv_q};
+    logic unused_sd;
+    assign unused_sd = ^{dv_exact, dv_x};
+  end
+
+  // ---- Texture request (registered) ------------------------------------------------------------
+  logic [SideW-1:0] sd_side;
+  logic [AddrW-1:0] sd_addr;
+  logic [ZBits-1:0] sd_z;
+  logic [23:0]      sd_rgb;
+  logic [AccQ-1:0]  sd_q;
+  assign {sd_side, sd_addr, sd_z, sd_rgb, sd_q} = sd_pay;
+  logic [31:0] sd_st;
+  assign sd_st = sd_side[31:0];
+
+  // Level-0 coordinate u_l + (u_offset << TF); clamp saturates it to CoordW bits, repeat and
+  // mirror keep its low CoordW bits (the period divides 2^CoordW; docs/texture.md).
+  localparam int unsigned CWide = 32 + TF + 2;
+  function automatic logic [CoordW-1:0] level0(input logic [LocW-1:0] loc, input logic [31:0] off,
+                                               input logic clamp);
+    logic signed [CWide-1:0] c;
+    c = CWide'($signed(loc)) + ($signed(CWide'($signed(off))) <<< TF);
+    if (CWide <= CoordW) level0 = CoordW'(c);
+    else if (clamp && (c > $signed(CWide'({1'b0, {(CoordW-1){1'b1}}})))) level0 = {1'b0, {(CoordW-1){1'b1}}};
+    else if (clamp && (c < -$signed(CWide'({1'b0, {(CoordW-1){1'b1}}})) - 1)) level0 = {1'b1, {(CoordW-1){1'b0}}};
+    else level0 = CoordW'(c);
+  endfunction
+
+  logic [1:0] sd_wrap_u, sd_wrap_v;
+  assign sd_wrap_u = sd_st[htx_raster_reg_pkg::RASTER_STATE_WRAP_U_LSB +: 2];
+  assign sd_wrap_v = sd_st[htx_raster_reg_pkg::RASTER_STATE_WRAP_V_LSB +: 2];
+
+  logic             rq_valid_q;
+  logic [CoordW-1:0] rq_u_q, rq_v_q;
+  logic [31:0]      rq_st_q;
+  logic [AccQ-1:0]  rq_q_q;
+  logic [6*GradW-1:0] rq_g_q;
+  logic [7:0]       rq_shift_q;
+  logic [LocW-1:0]  rq_lu_q, rq_lv_q;
+  logic [TexTagW-1:0] rq_tag_q;
+  assign sd_ready = !rq_valid_q || tex_req_ready_i;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      rq_valid_q <= 1'b0; rq_u_q <= '0; rq_v_q <= '0; rq_st_q <= '0; rq_q_q <= '0; rq_g_q <= '0;
+      rq_shift_q <= '0; rq_lu_q <= '0; rq_lv_q <= '0; rq_tag_q <= '0;
+    end else if (abort) begin
+      rq_valid_q <= 1'b0;
+    end else if (sd_ready) begin
+      rq_valid_q <= sd_valid;
+      if (sd_valid) begin
+        rq_u_q     <= level0(sd_u, sd_side[95:64], sd_wrap_u == 2'd1);
+        rq_v_q     <= level0(sd_v, sd_side[127:96], sd_wrap_v == 2'd1);
+        rq_st_q    <= sd_st;
+        rq_q_q     <= sd_q;
+        rq_g_q     <= sd_side[128 +: 6*GradW];
+        rq_shift_q <= sd_side[128 + 6*GradW +: 8];
+        rq_lu_q    <= sd_u;
+        rq_lv_q    <= sd_v;
+        rq_tag_q   <= {sd_st[htx_raster_reg_pkg::RASTER_STATE_DEPTH_WRITE_LSB],
+                       sd_st[htx_raster_reg_pkg::RASTER_STATE_DEPTH_FUNC_LSB +: 3],
+                       sd_st[htx_raster_reg_pkg::RASTER_STATE_COMBINE_LSB],
+                       sd_st[htx_raster_reg_pkg::RASTER_STATE_TEXTURED_LSB],
+                       sd_rgb, sd_z, sd_addr};
+      end
+    end
+  end
+  assign tex_req_valid_o      = rq_valid_q;
+  assign tex_req_u_o          = rq_u_q;
+  assign tex_req_v_o          = rq_v_q;
+  assign tex_req_filter_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_FILTER_LSB +: 2];
+  assign tex_req_wrap_u_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_WRAP_U_LSB +: 2];
+  assign tex_req_wrap_v_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_WRAP_V_LSB +: 2];
+  assign tex_req_slot_o       = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_TEXTURE_LSB +: 8];
+  assign tex_req_lod_direct_o = 1'b0;
+  assign tex_req_lod_o        = '0;
+  // The LOD's Q is max(Q, 1) (docs/model.md §6, lod_at).
+  assign tex_req_lod_q_o      = ($signed(rq_q_q) < $signed(AccQ'(1))) ? QW'(1) : QW'(rq_q_q);
+  assign tex_req_lod_gux_o    = rq_g_q[0*GradW +: GradW];
+  assign tex_req_lod_guy_o    = rq_g_q[1*GradW +: GradW];
+  assign tex_req_lod_gvx_o    = rq_g_q[2*GradW +: GradW];
+  assign tex_req_lod_gvy_o    = rq_g_q[3*GradW +: GradW];
+  assign tex_req_lod_gqx_o    = rq_g_q[4*GradW +: GradW];
+  assign tex_req_lod_gqy_o    = rq_g_q[5*GradW +: GradW];
+  assign tex_req_lod_shift_o  = rq_shift_q;
+  assign tex_req_lod_u_o      = rq_lu_q;
+  assign tex_req_lod_v_o      = rq_lv_q;
+  assign tex_req_tag_o        = rq_tag_q;
+
+  // ---- Texel back: drop what an abort left in the texture unit, combine, fragment stage ----------
+  logic       req_fire, ret_fire, ret_keep, frag_ready;
+  logic [7:0] out_cnt_q, drop_q, out_cnt_next;
+  logic [15:0] pend_q;
+  assign req_fire = tex_req_valid_o && tex_req_ready_i;
+  assign ret_fire = tex_out_valid_i && tex_out_ready_o;
+  assign out_cnt_next = out_cnt_q + 8'(req_fire) - 8'(ret_fire);
+  assign tex_out_ready_o = (drop_q != 0) || frag_ready;
+  assign ret_keep = tex_out_valid_i && (drop_q == 0) && !abort;
+
+  logic [AddrW-1:0] t_addr;
+  logic [ZBits-1:0] t_z;
+  logic [23:0]      t_rgb;
+  logic             t_textured, t_modulate, t_zwrite;
+  logic [2:0]       t_func;
+  logic [31:0]      t_rgba, t_state;
+  assign {t_zwrite, t_func, t_modulate, t_textured, t_rgb, t_z, t_addr} = tex_out_tag_i;
+  htx_tex_combine u_combine (
+    .textured_i(t_textured),
+    .modulate_i(t_modulate),
+    .texel_i   (tex_out_rgba_i),
+    .color_i   ({8'h00, t_rgb}),
+    .rgba_o    (t_rgba)
+  );
+  always_comb begin
+    t_state = '0;
+    t_state[htx_raster_reg_pkg::RASTER_STATE_DEPTH_FUNC_LSB +: 3] = t_func;
+    t_state[htx_raster_reg_pkg::RASTER_STATE_DEPTH_WRITE_LSB]     = t_zwrite;
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      out_cnt_q <= '0;
+      drop_q    <= '0;
+      pend_q    <= '0;
+    end else begin
+      out_cnt_q <= out_cnt_next;
+      if (abort) begin
+        drop_q <= out_cnt_next;
+        pend_q <= '0;
+      end else begin
+        if (ret_fire && (drop_q != 0)) drop_q <= drop_q - 8'd1;
+        pend_q <= pend_q + 16'(tv_valid && tv_ready) - 16'(req_fire);
+      end
+    end
+  end
 
   logic frag_busy, clearing, pixel, clear_start;
   htx_raster_fragment #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels)) u_fragment (
     .clk_i, .rst_ni,
     .abort_i       (abort),
-    .in_valid_i    (sh_valid),
-    .in_ready_o    (sh_ready),
-    .in_addr_i     (sh_addr),
-    .in_z_i        (sh_z),
-    .in_rgb_i      (sh_rgb),
-    .in_state_i    (sh_state),
+    .in_valid_i    (ret_keep),
+    .in_ready_o    (frag_ready),
+    .in_addr_i     (t_addr),
+    .in_z_i        (t_z),
+    .in_rgb_i      (t_rgba[23:0]),
+    .in_state_i    (t_state),
     .clear_start_i (clear_start),
     .clear_color_i (clr_color_q),
     .clear_depth_i (clr_depth_q),
@@ -249,12 +541,13 @@ module htx_raster #(
   // A clear waits until setup holds nothing and every later stage is empty; setup takes no new
   // triangle meanwhile (hold_i), so the clear lands between the triangles before and after it.
   logic pipe_idle;
-  assign pipe_idle   = !setup_busy && !tri_valid && !trav_busy && !sh_valid && !frag_busy;
+  assign pipe_idle   = !setup_busy && !tri_valid && !trav_busy && (pend_q == 0) && (out_cnt_q == 0) &&
+                       !frag_busy;
   assign clear_start = clr_pend_q && pipe_idle && !clearing;
 
   logic busy;
-  assign busy = !fifo_empty || in_busy || setup_busy || tri_valid || trav_busy || sh_valid ||
-                frag_busy || clr_pend_q;
+  assign busy = !fifo_empty || in_busy || setup_busy || tri_valid || trav_busy || (pend_q != 0) ||
+                (out_cnt_q != 0) || frag_busy || clr_pend_q;
 
   // ---- Counters --------------------------------------------------------------------------------
   logic [31:0] cnt_busy_q, cnt_stall_in_q, cnt_stall_setup_q, cnt_stall_frag_q, cnt_setup_q;
@@ -367,5 +660,6 @@ module htx_raster #(
   assign rsp_err_o   = 1'b0;
 
   logic unused;
-  assign unused = ^{req_addr_i[31:12], sh_x, sh_y, clearing};
+  assign unused = ^{req_addr_i[31:12], tv_y, clearing, t_rgba[31:24], tri_state, tri_flat,
+                    sd_side[63:32], rq_st_q[23:16], rq_st_q[9:0]};
 endmodule

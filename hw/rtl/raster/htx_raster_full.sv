@@ -27,7 +27,9 @@ module htx_raster_full #(
 );
   htx_raster_subsys #(
     .XyIntBits(16), .ZBits(24), .GF(24), .RecipW(32), .RecipK(10), .RecipG(2), .SetupSteps(2),
-    .Iterative(1'b0),
+    .Iterative(1'b0), .QBits(32), .UvIntBits(16), .TF(16), .PixelSteps(2), .Methods(5'b01111),
+    .PerspColor(1'b0), .PixelPipelined(1'b1), .PixelMulIterative(1'b0), .SubdivDepth(128),
+    .CoordW(48), .GradW(24),
     .FifoDepth(64), .FbPixels(FbPixels)
   ) u_subsys (
     .clk_i,

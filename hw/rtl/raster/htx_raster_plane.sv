@@ -1,18 +1,22 @@
-// Setup of one attribute plane (docs/model.md §2): from vertex values a0..a2 and the vertex deltas,
+// Setup of one attribute plane (docs/model.md §2): from vertex values a0..a2 (unsigned, or signed
+// with Signed) and the vertex deltas,
 //   n_x = da1 dy2 - da2 dy1,  n_y = da2 dx1 - da1 dx2   (before any vertex swap),
 //   g = round(n R 2^-(W + msb - GF))                     (negated when setup swapped vertices 1, 2),
 //   start = a0 2^GF + g_x dxs + g_y dys                  (value at the first pixel centre visited).
 // n_x, n_y do not depend on the determinant, so they are formed while the reciprocal unit works.
 // Gradients and the start value are kept modulo 2^AccW (AccW = VB + GF + 2): traversal only
-// evaluates the plane inside the triangle, where the true value fits (docs/model.md §3).
+// evaluates the plane inside the triangle, where the true value fits (docs/model.md §3). gxw_o and
+// gyw_o are the gradients at full precision (GW bits, signed) for the LOD unit's block shift.
 module htx_raster_plane #(
-  parameter int unsigned VB        = 8,    // value bits (unsigned vertex values)
+  parameter int unsigned VB        = 8,    // value bits
+  parameter bit          Signed    = 1'b0, // vertex values are signed
   parameter int unsigned DW        = 25,   // vertex coordinate delta width (signed)
   parameter int unsigned W         = 32,   // reciprocal width
   parameter int unsigned GF        = 24,   // gradient fraction bits
   parameter bit          Iterative = 1'b0,
   parameter int unsigned ShiftW    = 7,
-  parameter int unsigned AccW      = VB + GF + 2
+  parameter int unsigned AccW      = VB + GF + 2,
+  parameter int unsigned GW        = VB + DW + 2 + GF + 1  // bounds |n R 2^-shift| (msb(det) >= 0)
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -26,7 +30,8 @@ module htx_raster_plane #(
   input  logic [ShiftW-1:0]      shift_i,      // W + msb(det) - GF, at least 1
   input  logic                   det_neg_i,
   output logic                   done_o,
-  output logic [AccW-1:0]        gx_o, gy_o, start_o
+  output logic [AccW-1:0]        gx_o, gy_o, start_o,
+  output logic [GW-1:0]          gxw_o, gyw_o
 );
   localparam int unsigned NW = VB + DW + 2;
   localparam int unsigned MA = (NW > AccW) ? NW : AccW;
@@ -41,6 +46,8 @@ module htx_raster_plane #(
   logic signed [VB:0]   da1, da2;
   logic signed [NW-1:0] t_q, nx_q, ny_q, nsel;
   logic [AccW-1:0]      gx_q, gy_q, acc_q;
+  logic [GW-1:0]        gxw_q, gyw_q;
+  logic signed [VB:0]   a0e, a1e, a2e;
   logic signed [MA-1:0] mul_a;
   logic signed [MB-1:0] mul_b;
   logic signed [PW-1:0] mul_p, rounded;
@@ -49,8 +56,11 @@ module htx_raster_plane #(
 
   assign unused = ^rounded[PW-1:AccW];
 
-  assign da1 = $signed({1'b0, a1_i}) - $signed({1'b0, a0_i});
-  assign da2 = $signed({1'b0, a2_i}) - $signed({1'b0, a0_i});
+  assign a0e = Signed ? $signed({a0_i[VB-1], a0_i}) : $signed({1'b0, a0_i});
+  assign a1e = Signed ? $signed({a1_i[VB-1], a1_i}) : $signed({1'b0, a1_i});
+  assign a2e = Signed ? $signed({a2_i[VB-1], a2_i}) : $signed({1'b0, a2_i});
+  assign da1 = a1e - a0e;
+  assign da2 = a2e - a0e;
   assign nsel = (state_q == StGx) ? (det_neg_i ? -nx_q : nx_q) : (det_neg_i ? -ny_q : ny_q);
 
   always_comb begin
@@ -88,6 +98,8 @@ module htx_raster_plane #(
       ny_q    <= '0;
       gx_q    <= '0;
       gy_q    <= '0;
+      gxw_q   <= '0;
+      gyw_q   <= '0;
       acc_q   <= '0;
     end else if (abort_i) begin
       state_q <= StIdle;
@@ -99,10 +111,14 @@ module htx_raster_plane #(
         StNy0: if (mul_done) begin t_q <= NW'(mul_p); state_q <= StNy1; end
         StNy1: if (mul_done) begin ny_q <= t_q - NW'(mul_p); state_q <= StWait; end
         StWait: if (recip_valid_i) state_q <= StGx;
-        StGx: if (mul_done) begin gx_q <= AccW'(rounded); state_q <= StGy; end
-        StGy: if (mul_done) begin gy_q <= AccW'(rounded); state_q <= StSx; end
+        StGx: if (mul_done) begin
+          gx_q <= AccW'(rounded); gxw_q <= GW'(rounded); state_q <= StGy;
+        end
+        StGy: if (mul_done) begin
+          gy_q <= AccW'(rounded); gyw_q <= GW'(rounded); state_q <= StSx;
+        end
         StSx: if (mul_done) begin
-          acc_q   <= (AccW'(a0_i) << GF) + AccW'(mul_p);
+          acc_q   <= (AccW'(a0e) << GF) + AccW'(mul_p);
           state_q <= StSy;
         end
         StSy: if (mul_done) begin acc_q <= acc_q + AccW'(mul_p); state_q <= StDone; end
@@ -115,4 +131,6 @@ module htx_raster_plane #(
   assign gx_o    = gx_q;
   assign gy_o    = gy_q;
   assign start_o = acc_q;
+  assign gxw_o   = gxw_q;
+  assign gyw_o   = gyw_q;
 endmodule

@@ -1,7 +1,9 @@
 // Triangle setup (docs/model.md §2, docs/raster.md): determinant, winding (a negative determinant
 // swaps vertices 1 and 2: both windings are drawn), edge functions with the top-left rule, the pixel
-// box clipped to the screen, 1/det from the shared reciprocal unit, and the planes of z and the
-// colour channels. Edge values and plane values are delivered at the box's first pixel centre
+// box clipped to the screen, 1/det from the shared reciprocal unit, and the planes of z, the colour
+// channels (c q with PerspColor), q, uq, vq and, for AFFINE, the vertex texel coordinates
+// u_i = uq_i / q_i (three more reciprocals from the same unit, docs/model.md §5.1), and the LOD
+// unit's block-shifted gradients (§6). Edge values and plane values are delivered at the box's first pixel centre
 // (256 x_lo + 128, 256 y_lo + 128), where traversal starts. Zero-area triangles and triangles whose
 // box holds no pixel centre of the screen are consumed here and never reach traversal.
 module htx_raster_setup #(
@@ -13,12 +15,23 @@ module htx_raster_setup #(
   parameter int unsigned RecipG    = 2,
   parameter int unsigned NrSteps   = 2,
   parameter bit          Iterative = 1'b0,
+  parameter int unsigned QBits     = 32,
+  parameter int unsigned UvIntBits = 16,
+  parameter int unsigned TF        = 16,
+  parameter int unsigned GradW     = 24,       // lod_grad_bits
+  parameter logic [4:0]  Methods   = 5'b01111, // bit m: method m built (htx::Method order)
+  parameter bit          PerspColor = 1'b1,
   // Derived widths (docs/raster.md).
+  parameter int unsigned UQ   = QBits + UvIntBits,            // uq, vq vertex values (signed)
+  parameter int unsigned LocW = UvIntBits + TF,               // local texel coordinates (signed)
+  parameter int unsigned CB   = PerspColor ? 8 + QBits : 8,   // colour plane values
+  parameter int unsigned AW   = UQ + GF + 2,                  // widest plane accumulator
+  parameter int unsigned NP   = 9,                            // z, r, g, b, q, uq, vq, ua, va
   parameter int unsigned XW   = XyIntBits + 8,   // vertex x, y (signed, 1/256 pixel)
   parameter int unsigned DW   = XW + 1,          // coordinate deltas
   parameter int unsigned EW   = 2 * DW + 2,      // edge function values
   parameter int unsigned AccZ = ZBits + GF + 2,  // z plane
-  parameter int unsigned AccC = 8 + GF + 2       // colour planes
+  parameter int unsigned AccC = CB + GF + 2      // colour planes
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
@@ -35,6 +48,11 @@ module htx_raster_setup #(
   input  logic [3*XW-1:0]      rec_y_i,
   input  logic [3*ZBits-1:0]   rec_z_i,
   input  logic [3*32-1:0]      rec_rgba_i,
+  input  logic [3*QBits-1:0]   rec_q_i,
+  input  logic [3*UQ-1:0]      rec_uq_i,
+  input  logic [3*UQ-1:0]      rec_vq_i,
+  input  logic [31:0]          rec_u_off_i,
+  input  logic [31:0]          rec_v_off_i,
 
   // Set-up triangle to traversal; held until taken.
   output logic                 tri_valid_o,
@@ -45,8 +63,10 @@ module htx_raster_setup #(
   output logic [3*DW-1:0]      tri_a_o, tri_b_o,
   output logic [2:0]           tri_thr_o,
   output logic [3*EW-1:0]      tri_e_o,
-  output logic [3*AccZ-1:0]    tri_z_o,       // {start, gy, gx}
-  output logic [9*AccC-1:0]    tri_c_o,       // per channel r, g, b: {start, gy, gx}
+  output logic [3*NP*AW-1:0]   tri_p_o,       // plane p at 3 AW p: {start, gy, gx}, mod 2^AW
+  output logic [31:0]          tri_u_off_o, tri_v_off_o,
+  output logic [6*GradW-1:0]   tri_lod_g_o,   // g_ux, g_uy, g_vx, g_vy, g_qx, g_qy (block-shifted)
+  output logic [7:0]           tri_lod_shift_o,
 
   output logic                 busy_o,        // computing (not waiting for input or traversal)
   output logic                 stall_o,       // a finished triangle waits for traversal
@@ -66,6 +86,10 @@ module htx_raster_setup #(
   logic signed [XW-1:0]   y_q [3];
   logic [ZBits-1:0]       z_q [3];
   logic [31:0]            rgba_q [3];
+  logic [QBits-1:0]       q_q [3];
+  logic [UQ-1:0]          uq_q [3];
+  logic [UQ-1:0]          vq_q [3];
+  logic [31:0]            u_off_q, v_off_q;
   logic signed [DetW-1:0] det_q, p0_q;
   logic                   det_neg_q;
   logic [2:0]             edge_k_q;
@@ -74,10 +98,18 @@ module htx_raster_setup #(
   logic signed [EW-1:0]   e_part_q;
 
   // ---- Accept and check the state word --------------------------------------------------------
-  logic take, state_bad;
+  // A method this build leaves out, a subdivision length outside 2..64 or a depth function beyond
+  // `always` is consumed, draws nothing and raises ERR_STATE.
+  logic take, state_bad, method_bad;
+  logic [2:0] rec_method;
+  logic [6:0] rec_n;
+  assign rec_method  = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
+  assign rec_n       = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_SUBDIV_N_LSB +: 7];
+  assign method_bad  = (rec_method > 3'd4) || !Methods[rec_method] ||
+                       ((rec_method == htx_raster_pkg::MethodSubdiv) && ((rec_n < 7'd2) || (rec_n > 7'd64)));
   assign rec_ready_o = (state_q == StIdle) && !hold_i;
   assign take        = rec_valid_i && rec_ready_o;
-  assign state_bad   = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_TEXTURED_LSB] ||
+  assign state_bad   = method_bad ||
                        (rec_state_i[htx_raster_reg_pkg::RASTER_STATE_DEPTH_FUNC_LSB +: 3] > 3'd5);
   assign taken_o     = take;
   assign err_o       = take && state_bad;
@@ -176,39 +208,57 @@ module htx_raster_setup #(
   logic signed [DetW-1:0] det_next;
   assign det_next = p0_q - DetW'(emul_p);
 
-  // ---- Reciprocal of |det| ---------------------------------------------------------------------
-  logic                recip_start, recip_done, recip_busy, recip_valid_q;
-  logic [RecipW:0]     recip_r;
-  logic [MsbW-1:0]     recip_msb;
-  logic [DetW-1:0]     det_abs;
+  // ---- Reciprocals: 1/|det|, then (AFFINE) 1/q_i of each vertex -------------------------------
+  localparam bit HasAffine = Methods[0];
+  logic                recip_start, recip_done, recip_busy, recip_valid_q, det_pend_q;
+  logic [RecipW:0]     recip_r, recip_r0, rdet_q;
+  logic [MsbW-1:0]     recip_msb, msbdet_q;
+  logic [DetW-1:0]     det_abs, recip_x;
   logic [ShiftW-1:0]   grad_shift;
-  logic                planes_abort;
+  logic                planes_abort, det_start, av_start, affine_q;
+  logic [1:0]          av_i;
   assign det_abs = det_next[DetW-1] ? DetW'(-det_next) : DetW'(det_next);
-  assign recip_start = (state_q == StDet1) && emul_done && (det_next != 0) && !box_empty;
+  assign det_start = (state_q == StDet1) && emul_done && (det_next != 0) && !box_empty;
+  assign recip_start = det_start || av_start;
+  assign recip_x = det_start ? det_abs : DetW'(q_q[av_i]);
   assign planes_abort = abort_i || ((state_q == StDet1) && emul_done && ((det_next == 0) || box_empty));
-  assign grad_shift = ShiftW'(RecipW) + ShiftW'(recip_msb) - ShiftW'(GF);
+  assign grad_shift = ShiftW'(RecipW) + ShiftW'(msbdet_q) - ShiftW'(GF);
 
   htx_recip #(.XWidth(DetW), .W(RecipW), .K(RecipK), .G(RecipG), .Steps(NrSteps),
               .Iterative(Iterative)) u_recip (
     .clk_i, .rst_ni,
     .abort_i,
-    .start_i(recip_start),
-    .x_i    (det_abs),
-    .busy_o (recip_busy),
-    .done_o (recip_done),
-    .r_o    (recip_r),
-    .msb_o  (recip_msb)
+    .start_i     (recip_start),
+    .en_i        (1'b1),
+    .table_only_i(1'b0),
+    .x_i         (recip_x),
+    .busy_o      (recip_busy),
+    .done_o      (recip_done),
+    .r_o         (recip_r),
+    .r0_o        (recip_r0),
+    .msb_o       (recip_msb)
   );
 
-  // ---- Planes: z and r, g, b -------------------------------------------------------------------
+  // ---- Planes: z, r, g, b, q, uq, vq (and ua, va below) -----------------------------------------
   logic                 plane_start_q;
-  logic [3:0]           plane_done;
+  logic [NP-1:0]        plane_done;
   logic signed [DW-1:0] dxs, dys;
+  logic [AW-1:0]        pgx [NP];
+  logic [AW-1:0]        pgy [NP];
+  logic [AW-1:0]        pst [NP];
   assign dxs = pxs - DW'(x_q[0]);
   assign dys = pys - DW'(y_q[0]);
 
-  htx_raster_plane #(.VB(ZBits), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                     .ShiftW(ShiftW)) u_plane_z (
+  localparam int unsigned GWU = UQ + DW + 2 + GF + 1;     // full-precision gradient of uq, vq
+  localparam int unsigned GWQ = QBits + DW + 2 + GF + 1;  // and of q
+  logic [GWU-1:0] lg [6];                                  // uq x, uq y, vq x, vq y, q x, q y
+
+
+  logic [AccZ-1:0] gx_u_plane_z, gy_u_plane_z, st_u_plane_z;
+  logic [2:0]      unused_zw;
+  logic [ZBits+DW+2+GF+1-1:0] zgxw, zgyw;
+  htx_raster_plane #(.VB(ZBits), .Signed(1'b0), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
+                     .ShiftW(ShiftW), .GW(ZBits + DW + 2 + GF + 1)) u_plane_z (
     .clk_i, .rst_ni,
     .abort_i      (planes_abort),
     .start_i      (plane_start_q),
@@ -216,33 +266,240 @@ module htx_raster_setup #(
     .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
     .dxs_i(dxs), .dys_i(dys),
     .recip_valid_i(recip_valid_q),
-    .r_i          (recip_r),
+    .r_i          (rdet_q),
     .shift_i      (grad_shift),
     .det_neg_i    (det_neg_q),
     .done_o       (plane_done[0]),
-    .gx_o         (tri_z_o[0 +: AccZ]),
-    .gy_o         (tri_z_o[AccZ +: AccZ]),
-    .start_o      (tri_z_o[2*AccZ +: AccZ])
+    .gx_o(gx_u_plane_z), .gy_o(gy_u_plane_z), .start_o(st_u_plane_z),
+    .gxw_o(zgxw), .gyw_o(zgyw)
   );
+  assign pgx[0] = AW'(gx_u_plane_z);
+  assign pgy[0] = AW'(gy_u_plane_z);
+  assign pst[0] = AW'(st_u_plane_z);
+  assign unused_zw = {^zgxw, ^zgyw, 1'b0};
 
   for (genvar c = 0; c < 3; c++) begin : g_color_plane
-    htx_raster_plane #(.VB(8), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                       .ShiftW(ShiftW)) u_plane (
+    logic [CB-1:0] cv [3];
+    for (genvar i = 0; i < 3; i++) begin : g_v
+      if (PerspColor) begin : g_cq
+        assign cv[i] = CB'(rgba_q[i][8*c +: 8]) * CB'(q_q[i]);  // c q: 8 x q_bits at setup
+      end else begin : g_c
+        assign cv[i] = CB'(rgba_q[i][8*c +: 8]);
+      end
+    end
+    logic [AccC-1:0] gx_u_plane, gy_u_plane, st_u_plane;
+    logic [CB+DW+2+GF+1-1:0] cgxw, cgyw;
+    htx_raster_plane #(.VB(CB), .Signed(1'b0), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
+                     .ShiftW(ShiftW), .GW(CB + DW + 2 + GF + 1)) u_plane (
+    .clk_i, .rst_ni,
+    .abort_i      (planes_abort),
+    .start_i      (plane_start_q),
+    .a0_i(cv[0]), .a1_i(cv[1]), .a2_i(cv[2]),
+    .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+    .dxs_i(dxs), .dys_i(dys),
+    .recip_valid_i(recip_valid_q),
+    .r_i          (rdet_q),
+    .shift_i      (grad_shift),
+    .det_neg_i    (det_neg_q),
+    .done_o       (plane_done[c + 1]),
+    .gx_o(gx_u_plane), .gy_o(gy_u_plane), .start_o(st_u_plane),
+    .gxw_o(cgxw), .gyw_o(cgyw)
+  );
+    assign pgx[c+1] = AW'(gx_u_plane);
+    assign pgy[c+1] = AW'(gy_u_plane);
+    assign pst[c+1] = AW'(st_u_plane);
+    logic unused_cw;
+    assign unused_cw = ^{cgxw, cgyw};
+  end
+
+  logic [QBits+GF+2-1:0] gx_u_plane_q, gy_u_plane_q, st_u_plane_q;
+  logic [GWQ-1:0]        qgxw, qgyw;
+  htx_raster_plane #(.VB(QBits), .Signed(1'b0), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
+                     .ShiftW(ShiftW), .GW(GWQ)) u_plane_q (
+    .clk_i, .rst_ni,
+    .abort_i      (planes_abort),
+    .start_i      (plane_start_q),
+    .a0_i(q_q[0]), .a1_i(q_q[1]), .a2_i(q_q[2]),
+    .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+    .dxs_i(dxs), .dys_i(dys),
+    .recip_valid_i(recip_valid_q),
+    .r_i          (rdet_q),
+    .shift_i      (grad_shift),
+    .det_neg_i    (det_neg_q),
+    .done_o       (plane_done[4]),
+    .gx_o(gx_u_plane_q), .gy_o(gy_u_plane_q), .start_o(st_u_plane_q),
+    .gxw_o(qgxw), .gyw_o(qgyw)
+  );
+  assign pgx[4] = AW'(gx_u_plane_q);
+  assign pgy[4] = AW'(gy_u_plane_q);
+  assign pst[4] = AW'(st_u_plane_q);
+  assign lg[4] = GWU'($signed(qgxw));
+  assign lg[5] = GWU'($signed(qgyw));
+
+  logic [UQ+GF+2-1:0] gx_u_plane_uq, gy_u_plane_uq, st_u_plane_uq;
+  htx_raster_plane #(.VB(UQ), .Signed(1'b1), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
+                     .ShiftW(ShiftW), .GW(GWU)) u_plane_uq (
+    .clk_i, .rst_ni,
+    .abort_i      (planes_abort),
+    .start_i      (plane_start_q),
+    .a0_i(uq_q[0]), .a1_i(uq_q[1]), .a2_i(uq_q[2]),
+    .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+    .dxs_i(dxs), .dys_i(dys),
+    .recip_valid_i(recip_valid_q),
+    .r_i          (rdet_q),
+    .shift_i      (grad_shift),
+    .det_neg_i    (det_neg_q),
+    .done_o       (plane_done[5]),
+    .gx_o(gx_u_plane_uq), .gy_o(gy_u_plane_uq), .start_o(st_u_plane_uq),
+    .gxw_o(lg[0]), .gyw_o(lg[1])
+  );
+  assign pgx[5] = AW'(gx_u_plane_uq);
+  assign pgy[5] = AW'(gy_u_plane_uq);
+  assign pst[5] = AW'(st_u_plane_uq);
+
+  logic [UQ+GF+2-1:0] gx_u_plane_vq, gy_u_plane_vq, st_u_plane_vq;
+  htx_raster_plane #(.VB(UQ), .Signed(1'b1), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
+                     .ShiftW(ShiftW), .GW(GWU)) u_plane_vq (
+    .clk_i, .rst_ni,
+    .abort_i      (planes_abort),
+    .start_i      (plane_start_q),
+    .a0_i(vq_q[0]), .a1_i(vq_q[1]), .a2_i(vq_q[2]),
+    .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+    .dxs_i(dxs), .dys_i(dys),
+    .recip_valid_i(recip_valid_q),
+    .r_i          (rdet_q),
+    .shift_i      (grad_shift),
+    .det_neg_i    (det_neg_q),
+    .done_o       (plane_done[6]),
+    .gx_o(gx_u_plane_vq), .gy_o(gy_u_plane_vq), .start_o(st_u_plane_vq),
+    .gxw_o(lg[2]), .gyw_o(lg[3])
+  );
+  assign pgx[6] = AW'(gx_u_plane_vq);
+  assign pgy[6] = AW'(gy_u_plane_vq);
+  assign pst[6] = AW'(st_u_plane_vq);
+
+  // ---- LOD gradients: one block shift s_g = max(0, msb(max |g|) + 2 - GradW) for all six -------
+  logic [GWU-1:0] lg_or;
+  logic [7:0]     lg_msb1;  // msb + 1 (0: all gradients zero)
+  logic [7:0]     lg_shift;
+  always_comb begin
+    lg_or = '0;
+    for (int i = 0; i < 6; i++) lg_or = lg_or | (lg[i][GWU-1] ? GWU'(-lg[i]) : lg[i]);
+    lg_msb1 = '0;
+    for (int b = 0; b < GWU; b++) if (lg_or[b]) lg_msb1 = 8'(b + 1);
+    lg_shift = (lg_msb1 + 8'd1 > 8'(GradW)) ? lg_msb1 + 8'd1 - 8'(GradW) : 8'd0;
+  end
+  for (genvar i = 0; i < 6; i++) begin : g_lod
+    logic [GWU-1:0] sh;
+    assign sh = GWU'($signed(lg[i]) >>> lg_shift);
+    assign tri_lod_g_o[GradW*i +: GradW] = sh[GradW-1:0];
+    logic unused_sh;
+    assign unused_sh = ^sh[GWU-1:GradW];
+  end
+  assign tri_lod_shift_o = lg_shift;
+
+  // ---- AFFINE: u_i = round(uq_i R(q_i) 2^(TF - 2W + 1)) per vertex, then planes of u_i, v_i -----
+  // q_i < 2^W, so the numerator shift s = msb - (W - 1) is never positive: uq_i << (W - 1 - msb).
+  logic av_done;
+  if (HasAffine) begin : g_affine
+    localparam int unsigned NA = UQ + RecipW;      // shifted numerator
+    localparam int unsigned RS = 2 * RecipW - 1 - TF;
+    typedef enum logic [2:0] {AvIdle, AvStart, AvRecip, AvMulU, AvMulV, AvPlanes, AvWait, AvDone} av_e;
+    av_e av_q;
+    logic [1:0]           ai_q;
+    logic [RecipW:0]      r_q;
+    logic [MsbW-1:0]      m_q;
+    logic [LocW-1:0]      ua_q [3];
+    logic [LocW-1:0]      va_q [3];
+    logic                 amul_start, amul_done, apl_start_q;
+    logic signed [NA-1:0] amul_a;
+    logic signed [RecipW+1:0] amul_b;
+    logic signed [NA+RecipW+1:0] amul_p, arnd;
+    logic [1:0]           apl_done;
+    assign amul_a = (av_q == AvMulU) ? ($signed(NA'($signed(uq_q[ai_q]))) <<< (RecipW - 1 - 32'(m_q)))
+                                     : ($signed(NA'($signed(vq_q[ai_q]))) <<< (RecipW - 1 - 32'(m_q)));
+    assign amul_b = $signed({1'b0, r_q});
+    assign amul_start = (av_q == AvMulU) || (av_q == AvMulV);
+    htx_raster_mul #(.AWidth(NA), .BWidth(RecipW + 2), .Iterative(Iterative)) u_amul (
       .clk_i, .rst_ni,
-      .abort_i      (planes_abort),
-      .start_i      (plane_start_q),
-      .a0_i(rgba_q[0][8*c +: 8]), .a1_i(rgba_q[1][8*c +: 8]), .a2_i(rgba_q[2][8*c +: 8]),
-      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-      .dxs_i(dxs), .dys_i(dys),
-      .recip_valid_i(recip_valid_q),
-      .r_i          (recip_r),
-      .shift_i      (grad_shift),
-      .det_neg_i    (det_neg_q),
-      .done_o       (plane_done[c+1]),
-      .gx_o         (tri_c_o[3*AccC*c +: AccC]),
-      .gy_o         (tri_c_o[3*AccC*c + AccC +: AccC]),
-      .start_o      (tri_c_o[3*AccC*c + 2*AccC +: AccC])
+      .start_i(amul_start),
+      .a_i    (amul_a),
+      .b_i    (amul_b),
+      .done_o (amul_done),
+      .p_o    (amul_p)
     );
+    assign arnd = (amul_p + $signed((NA+RecipW+2)'(1) << (RS - 1))) >>> RS;
+    assign av_start = (av_q == AvStart);
+    assign av_i     = ai_q;
+
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        av_q <= AvIdle; ai_q <= '0; r_q <= '0; m_q <= '0; apl_start_q <= 1'b0;
+        for (int i = 0; i < 3; i++) begin ua_q[i] <= '0; va_q[i] <= '0; end
+      end else if (planes_abort) begin
+        av_q <= AvIdle; apl_start_q <= 1'b0;
+      end else begin
+        apl_start_q <= 1'b0;
+        unique case (av_q)
+          AvIdle: if (recip_done && det_pend_q && affine_q) begin ai_q <= '0; av_q <= AvStart; end
+          AvStart: av_q <= AvRecip;
+          AvRecip: if (recip_done) begin r_q <= recip_r; m_q <= recip_msb; av_q <= AvMulU; end
+          AvMulU: if (amul_done) begin ua_q[ai_q] <= LocW'(arnd); av_q <= AvMulV; end
+          AvMulV: if (amul_done) begin
+            va_q[ai_q] <= LocW'(arnd);
+            ai_q <= ai_q + 1'b1;
+            av_q <= (ai_q == 2'd2) ? AvPlanes : AvStart;
+          end
+          AvPlanes: begin apl_start_q <= 1'b1; av_q <= AvWait; end
+          AvWait: if (!apl_start_q && (&apl_done)) av_q <= AvDone;
+          AvDone: if (state_q == StOut && tri_ready_i) av_q <= AvIdle;
+          default: av_q <= AvIdle;
+        endcase
+      end
+    end
+    assign av_done = (av_q == AvDone);
+
+    for (genvar a = 0; a < 2; a++) begin : g_uv
+      logic [LocW+GF+2-1:0] gx_p, gy_p, st_p;
+      logic [LocW+DW+2+GF+1-1:0] gxw_p, gyw_p;
+      htx_raster_plane #(.VB(LocW), .Signed(1'b1), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
+                         .ShiftW(ShiftW)) u_plane (
+        .clk_i, .rst_ni,
+        .abort_i      (planes_abort),
+        .start_i      (apl_start_q),
+        .a0_i(a == 0 ? ua_q[0] : va_q[0]), .a1_i(a == 0 ? ua_q[1] : va_q[1]),
+        .a2_i(a == 0 ? ua_q[2] : va_q[2]),
+        .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+        .dxs_i(dxs), .dys_i(dys),
+        .recip_valid_i(recip_valid_q),
+        .r_i          (rdet_q),
+        .shift_i      (grad_shift),
+        .det_neg_i    (det_neg_q),
+        .done_o       (apl_done[a]),
+        .gx_o(gx_p), .gy_o(gy_p), .start_o(st_p),
+        .gxw_o(gxw_p), .gyw_o(gyw_p)
+      );
+      assign pgx[7+a] = AW'(gx_p);
+      assign pgy[7+a] = AW'(gy_p);
+      assign pst[7+a] = AW'(st_p);
+      logic unused_w;
+      assign unused_w = ^{gxw_p, gyw_p};
+    end
+    assign plane_done[8:7] = apl_done;
+    logic unused_a;
+    assign unused_a = ^{arnd, recip_r0};
+  end else begin : g_no_affine
+    assign av_start = 1'b0;
+    assign av_i     = 2'd0;
+    assign av_done  = 1'b0;
+    assign plane_done[8:7] = 2'b00;
+    for (genvar a = 0; a < 2; a++) begin : g_uv
+      assign pgx[7+a] = '0;
+      assign pgy[7+a] = '0;
+      assign pst[7+a] = '0;
+    end
+    logic unused_a;
+    assign unused_a = ^{recip_r0, affine_q};
   end
 
   // ---- Sequencer -------------------------------------------------------------------------------
@@ -252,7 +509,14 @@ module htx_raster_setup #(
       st_q          <= '0;
       for (int i = 0; i < 3; i++) begin
         x_q[i] <= '0; y_q[i] <= '0; z_q[i] <= '0; rgba_q[i] <= '0; e_q[i] <= '0;
+        q_q[i] <= '0; uq_q[i] <= '0; vq_q[i] <= '0;
       end
+      u_off_q       <= '0;
+      v_off_q       <= '0;
+      rdet_q        <= '0;
+      msbdet_q      <= '0;
+      det_pend_q    <= 1'b0;
+      affine_q      <= 1'b0;
       det_q         <= '0;
       p0_q          <= '0;
       det_neg_q     <= 1'b0;
@@ -265,9 +529,16 @@ module htx_raster_setup #(
       state_q       <= StIdle;
       plane_start_q <= 1'b0;
       recip_valid_q <= 1'b0;
+      det_pend_q    <= 1'b0;
     end else begin
       plane_start_q <= 1'b0;
-      if (recip_done) recip_valid_q <= 1'b1;
+      if (det_start) det_pend_q <= 1'b1;
+      if (recip_done && det_pend_q) begin
+        recip_valid_q <= 1'b1;
+        det_pend_q    <= 1'b0;
+        rdet_q        <= recip_r;
+        msbdet_q      <= recip_msb;
+      end
       unique case (state_q)
         StIdle: if (take && !state_bad) begin
           st_q <= rec_state_i;
@@ -276,7 +547,13 @@ module htx_raster_setup #(
             y_q[i]    <= rec_y_i[XW*i +: XW];
             z_q[i]    <= rec_z_i[ZBits*i +: ZBits];
             rgba_q[i] <= rec_rgba_i[32*i +: 32];
+            q_q[i]    <= rec_q_i[QBits*i +: QBits];
+            uq_q[i]   <= rec_uq_i[UQ*i +: UQ];
+            vq_q[i]   <= rec_vq_i[UQ*i +: UQ];
           end
+          u_off_q  <= rec_u_off_i;
+          v_off_q  <= rec_v_off_i;
+          affine_q <= HasAffine && (rec_method == htx_raster_pkg::MethodAffine);
           plane_start_q <= 1'b1;
           recip_valid_q <= 1'b0;
           state_q       <= StDet0;
@@ -300,7 +577,7 @@ module htx_raster_setup #(
             if (ek == 2'd2) state_q <= StWait;
           end
         end
-        StWait: if (&plane_done) state_q <= StOut;
+        StWait: if ((&plane_done[6:0]) && (!affine_q || av_done)) state_q <= StOut;
         StOut: if (tri_ready_i) state_q <= StIdle;
         default: state_q <= StIdle;
       endcase
@@ -309,7 +586,7 @@ module htx_raster_setup #(
 
   // ---- Outputs ---------------------------------------------------------------------------------
   logic unused;
-  assign unused = ^{det_q, recip_busy, rec_state_i};
+  assign unused = ^{det_q, recip_busy, rec_state_i, plane_done[8:7]};
 
   assign tri_valid_o     = (state_q == StOut);
   assign tri_state_o     = st_q;
@@ -323,6 +600,11 @@ module htx_raster_setup #(
     assign tri_b_o[DW*k +: DW] = eb[k];
     assign tri_e_o[EW*k +: EW] = e_q[k];
   end
+  for (genvar p = 0; p < NP; p++) begin : g_plane_out
+    assign tri_p_o[3*AW*p +: 3*AW] = {pst[p], pgy[p], pgx[p]};
+  end
+  assign tri_u_off_o = u_off_q;
+  assign tri_v_off_o = v_off_q;
   assign tri_thr_o = ethr;
   assign busy_o    = (state_q != StIdle) && (state_q != StOut);
   assign stall_o   = (state_q == StOut) && !tri_ready_i;

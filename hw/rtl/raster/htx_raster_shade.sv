@@ -1,14 +1,22 @@
-// Interpolation output (docs/model.md §3): rounds the raw plane values of a fragment to its depth,
-// z = clamp(round(Z 2^-GF), 0, 2^ZBits - 1), and its colour, per channel clamp(round(C 2^-GF), 0, 255)
-// (or vertex 0's colour for flat shading). This registered stage's output is where a texture stage
-// attaches: a fragment here carries x, y, its address, z, colour and the triangle's state.
-// Alpha has no plane in this slice: the framebuffer is RGB565, so alpha never reaches a pixel.
+// Interpolation output (docs/model.md §3, §5): takes a fragment's raw plane values and rounds what
+// needs no division: depth z = clamp(round(Z 2^-GF), 0, 2^ZBits - 1); the colour, per channel
+// clamp(round(C 2^-GF), 0, 255) when it is linear in screen space (or vertex 0's colour for flat
+// shading); AFFINE's coordinates round(U_a 2^-GF). It passes Q, U, V (and C q with PerspColor) on
+// to the divider, and marks SUBDIV's exact points: a span's first pixel, every n-th after it, and
+// its last pixel. Alpha has no plane: the framebuffer is RGB565, so alpha never reaches a pixel.
 module htx_raster_shade #(
-  parameter int unsigned ZBits = 24,
-  parameter int unsigned GF    = 24,
-  parameter int unsigned AccZ  = ZBits + GF + 2,
-  parameter int unsigned AccC  = 8 + GF + 2,
-  parameter int unsigned AddrW = 24
+  parameter int unsigned ZBits      = 24,
+  parameter int unsigned GF         = 24,
+  parameter int unsigned NP         = 9,
+  parameter int unsigned AW         = 74,
+  parameter int unsigned SideW      = 64,
+  parameter int unsigned AccZ       = ZBits + GF + 2,
+  parameter int unsigned AccC       = 8 + GF + 2,
+  parameter int unsigned AccQ       = 32 + GF + 2,
+  parameter int unsigned AccU       = 48 + GF + 2,
+  parameter int unsigned LocW       = 32,
+  parameter bit          PerspColor = 1'b1,
+  parameter int unsigned AddrW      = 24
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -16,30 +24,45 @@ module htx_raster_shade #(
 
   input  logic              in_valid_i,
   output logic              in_ready_o,
-  input  logic [12:0]       in_x_i, in_y_i,
   input  logic [AddrW-1:0]  in_addr_i,
-  input  logic [AccZ-1:0]   in_z_i,
-  input  logic [3*AccC-1:0] in_c_i,
-  input  logic [31:0]       in_state_i,
-  input  logic [31:0]       in_flat_rgba_i,
+  input  logic [12:0]       in_x_i,
+  input  logic              in_first_i,
+  input  logic              in_last_i,
+  input  logic [NP*AW-1:0]  in_p_i,        // z, r, g, b, q, uq, vq, ua, va
+  input  logic [SideW-1:0]  in_side_i,     // state word in 31:0, flat colour in 63:32
 
   output logic              out_valid_o,
   input  logic              out_ready_i,
-  output logic [12:0]       out_x_o, out_y_o,
   output logic [AddrW-1:0]  out_addr_o,
+  output logic [12:0]       out_x_o,
   output logic [ZBits-1:0]  out_z_o,
-  output logic [23:0]       out_rgb_o,     // r in 7:0, g 15:8, b 23:16
-  output logic [31:0]       out_state_o
+  output logic [23:0]       out_rgb_o,     // r in 7:0, g 15:8, b 23:16 (linear or flat)
+  output logic              out_div_color_o, // the colour comes from the divider (C q / Q)
+  output logic              out_exact_o,   // SUBDIV exact point
+  output logic [LocW-1:0]   out_ua_o, out_va_o,
+  output logic [AccQ-1:0]   out_q_o,
+  output logic [AccU-1:0]   out_u_o, out_v_o,
+  output logic [3*AccC-1:0] out_c_o,
+  output logic [SideW-1:0]  out_side_o
 );
   localparam int unsigned ZR = AccZ - GF;  // signed width after the shift
   localparam int unsigned CR = AccC - GF;
+  localparam int unsigned AccA = LocW + GF + 2;
 
+  logic [31:0] st, flat;
+  logic        gouraud;
+  assign st      = in_side_i[31:0];
+  assign flat    = in_side_i[63:32];
+  assign gouraud = st[htx_raster_reg_pkg::RASTER_STATE_GOURAUD_LSB];
+
+  logic [AccZ-1:0] zacc;
+  assign zacc = in_p_i[0 +: AccZ];
   logic signed [AccZ-1:0] z_round_full;
   logic signed [ZR-1:0]   z_round;
   logic [ZBits-1:0]       z_clamped;
   logic [23:0]            rgb;
 
-  assign z_round_full = ($signed(in_z_i) + $signed(AccZ'(1) << (GF - 1))) >>> GF;
+  assign z_round_full = ($signed(zacc) + $signed(AccZ'(1) << (GF - 1))) >>> GF;
   assign z_round      = ZR'(z_round_full);
   assign z_clamped    = z_round[ZR-1] ? '0 :
                         (z_round > $signed(ZR'({ZBits{1'b1}})) ? {ZBits{1'b1}} : ZBits'(z_round));
@@ -48,41 +71,75 @@ module htx_raster_shade #(
     logic signed [AccC-1:0] full;
     logic signed [CR-1:0]   r;
     logic unused;
-    assign full = ($signed(in_c_i[AccC*c +: AccC]) + $signed(AccC'(1) << (GF - 1))) >>> GF;
+    assign full = ($signed(in_p_i[AW*(c+1) +: AccC]) + $signed(AccC'(1) << (GF - 1))) >>> GF;
     assign r    = CR'(full);
     assign unused = ^full[AccC-1:CR];
-    assign rgb[8*c +: 8] = in_state_i[htx_raster_reg_pkg::RASTER_STATE_GOURAUD_LSB]
+    assign rgb[8*c +: 8] = (gouraud && !PerspColor)
                            ? (r[CR-1] ? 8'd0 : (r > $signed(CR'(255)) ? 8'd255 : 8'(r)))
-                           : in_flat_rgba_i[8*c +: 8];
+                           : flat[8*c +: 8];
   end
 
+  logic [LocW-1:0] ua, va;
+  for (genvar a = 0; a < 2; a++) begin : g_aff
+    logic signed [AccA-1:0] full;
+    assign full = ($signed(in_p_i[AW*(7+a) +: AccA]) + $signed(AccA'(1) << (GF - 1))) >>> GF;
+    if (a == 0) begin : g_u
+      assign ua = LocW'(full);
+    end else begin : g_v
+      assign va = LocW'(full);
+    end
+    logic unused;
+    assign unused = ^full[AccA-1:LocW];
+  end
+
+  // SUBDIV: position in the span modulo n.
+  logic [6:0] n, k_q, k;
+  assign n = st[htx_raster_reg_pkg::RASTER_STATE_SUBDIV_N_LSB +: 7];
+  assign k = in_first_i ? 7'd0 : k_q;
+
   logic unused;
-  assign unused = ^{z_round_full[AccZ-1:ZR], in_flat_rgba_i[31:24]};
+  assign unused = ^{z_round_full[AccZ-1:ZR], flat[31:24], in_p_i};
 
   logic valid_q;
   assign in_ready_o = !valid_q || out_ready_i;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      valid_q     <= 1'b0;
-      out_x_o     <= '0;
-      out_y_o     <= '0;
-      out_addr_o  <= '0;
-      out_z_o     <= '0;
-      out_rgb_o   <= '0;
-      out_state_o <= '0;
+      valid_q         <= 1'b0;
+      k_q             <= '0;
+      out_addr_o      <= '0;
+      out_x_o         <= '0;
+      out_z_o         <= '0;
+      out_rgb_o       <= '0;
+      out_div_color_o <= 1'b0;
+      out_exact_o     <= 1'b0;
+      out_ua_o        <= '0;
+      out_va_o        <= '0;
+      out_q_o         <= '0;
+      out_u_o         <= '0;
+      out_v_o         <= '0;
+      out_c_o         <= '0;
+      out_side_o      <= '0;
     end else if (abort_i) begin
       valid_q <= 1'b0;
     end else if (in_ready_o) begin
       valid_q <= in_valid_i;
       if (in_valid_i) begin
-        out_x_o     <= in_x_i;
-        out_y_o     <= in_y_i;
-        out_addr_o  <= in_addr_i;
-        out_z_o     <= z_clamped;
-        out_rgb_o   <= rgb;
-        out_state_o <= in_state_i;
+        k_q             <= (k + 7'd1 >= n) ? 7'd0 : k + 7'd1;
+        out_addr_o      <= in_addr_i;
+        out_x_o         <= in_x_i;
+        out_z_o         <= z_clamped;
+        out_rgb_o       <= rgb;
+        out_div_color_o <= gouraud && PerspColor;
+        out_exact_o     <= (k == 7'd0) || in_last_i;
+        out_ua_o        <= ua;
+        out_va_o        <= va;
+        out_q_o         <= in_p_i[AW*4 +: AccQ];
+        out_u_o         <= in_p_i[AW*5 +: AccU];
+        out_v_o         <= in_p_i[AW*6 +: AccU];
+        for (int c = 0; c < 3; c++) out_c_o[AccC*c +: AccC] <= in_p_i[AW*(c+1) +: AccC];
       end
+      if (in_valid_i) out_side_o <= in_side_i;
     end
   end
   assign out_valid_o = valid_q;

@@ -1,6 +1,9 @@
 // The raster subsystem as the `rtl` engine and the SoC see it: the raster unit and its framebuffer
 // and depth memories, with two bus slave ports (registers at RASTER, memories at the framebuffer
-// and depth windows; docs/contracts.md).
+// and depth windows; docs/contracts.md). Without a texture unit the raster's texture port is looped
+// back through a register slice with texel 0: only untextured fragments are meaningful here
+// (gpu_join_contract.md §1). The looped-back request signals are public to the Verilated model,
+// so the tests can record the texel coordinates of every fragment.
 module htx_raster_subsys #(
   parameter int unsigned XyIntBits  = 16,
   parameter int unsigned ZBits      = 24,
@@ -11,7 +14,18 @@ module htx_raster_subsys #(
   parameter int unsigned SetupSteps = 2,
   parameter bit          Iterative  = 1'b0,
   parameter int unsigned FifoDepth  = 64,
-  parameter int unsigned FbPixels   = 76800
+  parameter int unsigned FbPixels   = 76800,
+  parameter int unsigned QBits      = 32,
+  parameter int unsigned UvIntBits  = 16,
+  parameter int unsigned TF         = 16,
+  parameter int unsigned PixelSteps = 2,
+  parameter logic [4:0]  Methods    = 5'b01111,
+  parameter bit          PerspColor = 1'b1,
+  parameter bit          PixelPipelined = 1'b1,
+  parameter bit          PixelMulIterative = 1'b0,
+  parameter int unsigned SubdivDepth = 128,
+  parameter int unsigned CoordW     = 48,
+  parameter int unsigned GradW      = 24
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -36,7 +50,30 @@ module htx_raster_subsys #(
   output logic [31:0] mem_rsp_rdata_o,
   output logic        mem_rsp_err_o
 );
-  localparam int unsigned AddrW = 24;
+  localparam int unsigned AddrW   = 24;
+  localparam int unsigned QW      = QBits + GF + 2;
+  localparam int unsigned LocW    = UvIntBits + TF;
+  localparam int unsigned TexTagW = htx_raster_pkg::tex_tag_w(AddrW, ZBits);
+
+  // Texture port, looped back (public for the tests' fragment recorder).
+  logic               tex_req_valid /* verilator public_flat_rd */;
+  logic               tex_req_ready /* verilator public_flat_rd */;
+  logic [CoordW-1:0]  tex_req_u /* verilator public_flat_rd */;
+  logic [CoordW-1:0]  tex_req_v /* verilator public_flat_rd */;
+  logic [1:0]         tex_req_filter /* verilator public_flat_rd */;
+  logic [1:0]         tex_req_wrap_u /* verilator public_flat_rd */;
+  logic [1:0]         tex_req_wrap_v /* verilator public_flat_rd */;
+  logic [7:0]         tex_req_slot /* verilator public_flat_rd */;
+  logic               tex_req_lod_direct;
+  logic [23:0]        tex_req_lod;
+  logic [QW-1:0]      tex_req_lod_q /* verilator public_flat_rd */;
+  logic [GradW-1:0]   tex_req_lod_g [6] /* verilator public_flat_rd */;
+  logic [7:0]         tex_req_lod_shift /* verilator public_flat_rd */;
+  logic [LocW-1:0]    tex_req_lod_u /* verilator public_flat_rd */;
+  logic [LocW-1:0]    tex_req_lod_v /* verilator public_flat_rd */;
+  logic [TexTagW-1:0] tex_req_tag /* verilator public_flat_rd */;
+  logic               tex_out_valid, tex_out_ready;
+  logic [TexTagW-1:0] tex_out_tag;
 
   logic             zr_en, wc_en, wz_en;
   logic [AddrW-1:0] zr_addr, w_addr;
@@ -46,15 +83,54 @@ module htx_raster_subsys #(
   htx_raster #(
     .XyIntBits(XyIntBits), .ZBits(ZBits), .GF(GF), .RecipW(RecipW), .RecipK(RecipK),
     .RecipG(RecipG), .SetupSteps(SetupSteps), .Iterative(Iterative), .FifoDepth(FifoDepth),
-    .FbPixels(FbPixels), .AddrW(AddrW)
+    .FbPixels(FbPixels), .AddrW(AddrW), .QBits(QBits), .UvIntBits(UvIntBits), .TF(TF),
+    .PixelSteps(PixelSteps), .Methods(Methods), .PerspColor(PerspColor),
+    .PixelPipelined(PixelPipelined), .PixelMulIterative(PixelMulIterative),
+    .SubdivDepth(SubdivDepth), .CoordW(CoordW), .GradW(GradW)
   ) u_raster (
     .clk_i, .rst_ni,
     .req_valid_i(reg_req_valid_i), .req_ready_o(reg_req_ready_o), .req_addr_i(reg_req_addr_i),
     .req_we_i(reg_req_we_i), .req_be_i(reg_req_be_i), .req_wdata_i(reg_req_wdata_i),
     .rsp_valid_o(reg_rsp_valid_o), .rsp_rdata_o(reg_rsp_rdata_o), .rsp_err_o(reg_rsp_err_o),
     .zr_en_o(zr_en), .zr_addr_o(zr_addr), .zr_data_i(zr_data),
-    .wc_en_o(wc_en), .wz_en_o(wz_en), .w_addr_o(w_addr), .wc_data_o(wc_data), .wz_data_o(wz_data)
+    .wc_en_o(wc_en), .wz_en_o(wz_en), .w_addr_o(w_addr), .wc_data_o(wc_data), .wz_data_o(wz_data),
+    .tex_req_valid_o(tex_req_valid), .tex_req_ready_i(tex_req_ready),
+    .tex_req_u_o(tex_req_u), .tex_req_v_o(tex_req_v), .tex_req_filter_o(tex_req_filter),
+    .tex_req_wrap_u_o(tex_req_wrap_u), .tex_req_wrap_v_o(tex_req_wrap_v), .tex_req_slot_o(tex_req_slot),
+    .tex_req_lod_direct_o(tex_req_lod_direct), .tex_req_lod_o(tex_req_lod),
+    .tex_req_lod_q_o(tex_req_lod_q),
+    .tex_req_lod_gux_o(tex_req_lod_g[0]), .tex_req_lod_guy_o(tex_req_lod_g[1]),
+    .tex_req_lod_gvx_o(tex_req_lod_g[2]), .tex_req_lod_gvy_o(tex_req_lod_g[3]),
+    .tex_req_lod_gqx_o(tex_req_lod_g[4]), .tex_req_lod_gqy_o(tex_req_lod_g[5]),
+    .tex_req_lod_shift_o(tex_req_lod_shift), .tex_req_lod_u_o(tex_req_lod_u),
+    .tex_req_lod_v_o(tex_req_lod_v), .tex_req_tag_o(tex_req_tag),
+    .tex_out_valid_i(tex_out_valid), .tex_out_ready_o(tex_out_ready),
+    .tex_out_rgba_i(32'd0), .tex_out_tag_i(tex_out_tag)
   );
+
+  // Loop-back: a register slice returning each request's tag with texel 0.
+  logic               lb_valid_q;
+  logic [TexTagW-1:0] lb_tag_q;
+  assign tex_req_ready = !lb_valid_q || tex_out_ready;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      lb_valid_q <= 1'b0;
+      lb_tag_q   <= '0;
+    end else if (tex_req_ready) begin
+      lb_valid_q <= tex_req_valid;
+      if (tex_req_valid) lb_tag_q <= tex_req_tag;
+    end
+  end
+  assign tex_out_valid = lb_valid_q;
+  assign tex_out_tag   = lb_tag_q;
+
+  logic unused_tex;
+  always_comb begin
+    unused_tex = ^{tex_req_u, tex_req_v, tex_req_filter, tex_req_wrap_u, tex_req_wrap_v, tex_req_slot,
+                   tex_req_lod_direct, tex_req_lod, tex_req_lod_q, tex_req_lod_shift, tex_req_lod_u,
+                   tex_req_lod_v};
+    for (int i = 0; i < 6; i++) unused_tex = unused_tex ^ (^tex_req_lod_g[i]);
+  end
 
   htx_fb #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels)) u_fb (
     .clk_i, .rst_ni,

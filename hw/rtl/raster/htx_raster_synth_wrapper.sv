@@ -12,8 +12,16 @@ module htx_raster_synth_wrapper #(
 );
   localparam int unsigned ZBits  = Full ? 24 : 16;
   localparam int unsigned AddrW  = 24;
-  localparam int unsigned InBits = 1 + 32 + 1 + 4 + 32 + ZBits;
+  localparam int unsigned InBits = 1 + 32 + 1 + 4 + 32 + ZBits + 1;
   localparam int unsigned OutBits = 1 + 1 + 32 + 1 + 1 + AddrW + 1 + 1 + AddrW + 16 + ZBits;
+  localparam int unsigned CoordW  = Full ? 48 : 24;
+  localparam int unsigned QW      = Full ? 58 : 42;
+  localparam int unsigned GradW   = Full ? 24 : 16;
+  localparam int unsigned LocW    = Full ? 32 : 23;
+  localparam int unsigned TagW    = htx_raster_pkg::tex_tag_w(AddrW, ZBits);
+  // The texture port: requests are folded into the output; responses return the last request's
+  // tag one clock later with a texel from the input chain (a stand-in for the texture unit).
+  localparam int unsigned ReqBits = 2 * CoordW + 2 + 2 + 2 + 8 + 1 + 24 + QW + 6 * GradW + 8 + 2 * LocW + TagW;
 
   logic [InBits-1:0] in_q;
   always_ff @(posedge clk_i) in_q <= {in_q[InBits-2:0], din_i};
@@ -23,11 +31,18 @@ module htx_raster_synth_wrapper #(
   logic [AddrW-1:0] zr_addr, w_addr;
   logic [15:0]      wc_data;
   logic [ZBits-1:0] wz_data;
+  logic              tq_valid, tq_lod_direct, to_ready;
+  logic [ReqBits-1:0] tq_bits;
+  logic [TagW-1:0]   tq_tag, to_tag_q;
+  logic              to_valid_q;
 
   htx_raster #(
     .XyIntBits(Full ? 16 : 14), .ZBits(ZBits), .GF(Full ? 24 : 16), .RecipW(Full ? 32 : 24),
     .RecipK(Full ? 10 : 8), .RecipG(2), .SetupSteps(2), .Iterative(!Full), .FifoDepth(64),
-    .FbPixels(Full ? 76800 : 19200), .AddrW(AddrW)
+    .FbPixels(Full ? 76800 : 19200), .AddrW(AddrW),
+    .QBits(Full ? 32 : 24), .UvIntBits(Full ? 16 : 13), .TF(Full ? 16 : 10),
+    .PixelSteps(Full ? 2 : 1), .Methods(5'b01111), .PerspColor(Full), .PixelPipelined(Full),
+    .PixelMulIterative(1'b0), .SubdivDepth(Full ? 128 : 64), .CoordW(CoordW), .GradW(GradW)
   ) u_raster (
     .clk_i, .rst_ni,
     .req_valid_i(in_q[0]),
@@ -46,13 +61,49 @@ module htx_raster_synth_wrapper #(
     .wz_en_o    (wz_en),
     .w_addr_o   (w_addr),
     .wc_data_o  (wc_data),
-    .wz_data_o  (wz_data)
+    .wz_data_o  (wz_data),
+    .tex_req_valid_o(tq_valid),
+    .tex_req_ready_i(in_q[70 + ZBits]),
+    .tex_req_u_o(tq_bits[0 +: CoordW]),
+    .tex_req_v_o(tq_bits[CoordW +: CoordW]),
+    .tex_req_filter_o(tq_bits[2*CoordW +: 2]),
+    .tex_req_wrap_u_o(tq_bits[2*CoordW+2 +: 2]),
+    .tex_req_wrap_v_o(tq_bits[2*CoordW+4 +: 2]),
+    .tex_req_slot_o(tq_bits[2*CoordW+6 +: 8]),
+    .tex_req_lod_direct_o(tq_lod_direct),
+    .tex_req_lod_o(tq_bits[2*CoordW+15 +: 24]),
+    .tex_req_lod_q_o(tq_bits[2*CoordW+39 +: QW]),
+    .tex_req_lod_gux_o(tq_bits[2*CoordW+39+QW +: GradW]),
+    .tex_req_lod_guy_o(tq_bits[2*CoordW+39+QW+GradW +: GradW]),
+    .tex_req_lod_gvx_o(tq_bits[2*CoordW+39+QW+2*GradW +: GradW]),
+    .tex_req_lod_gvy_o(tq_bits[2*CoordW+39+QW+3*GradW +: GradW]),
+    .tex_req_lod_gqx_o(tq_bits[2*CoordW+39+QW+4*GradW +: GradW]),
+    .tex_req_lod_gqy_o(tq_bits[2*CoordW+39+QW+5*GradW +: GradW]),
+    .tex_req_lod_shift_o(tq_bits[2*CoordW+39+QW+6*GradW +: 8]),
+    .tex_req_lod_u_o(tq_bits[2*CoordW+47+QW+6*GradW +: LocW]),
+    .tex_req_lod_v_o(tq_bits[2*CoordW+47+QW+6*GradW+LocW +: LocW]),
+    .tex_req_tag_o(tq_tag),
+    .tex_out_valid_i(to_valid_q),
+    .tex_out_ready_o(to_ready),
+    .tex_out_rgba_i(in_q[38 +: 32]),
+    .tex_out_tag_i(to_tag_q)
   );
+  assign tq_bits[2*CoordW+14] = tq_lod_direct;
+  assign tq_bits[2*CoordW+47+QW+6*GradW+2*LocW +: TagW] = tq_tag;
+
+  always_ff @(posedge clk_i) begin
+    if (!to_valid_q || to_ready) begin
+      to_valid_q <= tq_valid;
+      to_tag_q   <= tq_tag;
+    end
+  end
 
   logic [OutBits-1:0] out_q;
+  logic [ReqBits-1:0] req_q;
   always_ff @(posedge clk_i) begin
     out_q  <= {req_ready, rsp_valid, rsp_rdata, rsp_err, zr_en, zr_addr, wc_en, wz_en, w_addr,
                wc_data, wz_data};
-    dout_o <= ^out_q;
+    req_q  <= tq_bits;
+    dout_o <= ^out_q ^ ^req_q ^ tq_valid;
   end
 endmodule

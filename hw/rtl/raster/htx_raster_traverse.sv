@@ -5,11 +5,14 @@
 // left to right, one per clock. Coverage of the pixel one column left and right is looked at in the
 // same clock, so a row costs its span length plus how far its start moved; an empty row costs one.
 // The covered set is exactly the model's: E_k >= threshold_k for all k, cov the clipped box.
+// Each fragment carries its plane values (NP planes, modulo 2^AW), the triangle's sideband (state,
+// flat colour, texel offsets, LOD gradients) and whether it is its span's first or last pixel.
 module htx_raster_traverse #(
   parameter int unsigned DW    = 25,
   parameter int unsigned EW    = 52,
-  parameter int unsigned AccZ  = 50,
-  parameter int unsigned AccC  = 34,
+  parameter int unsigned NP    = 9,
+  parameter int unsigned AW    = 74,
+  parameter int unsigned SideW = 64,
   parameter int unsigned AddrW = 24
 ) (
   input  logic              clk_i,
@@ -19,24 +22,22 @@ module htx_raster_traverse #(
 
   input  logic              tri_valid_i,
   output logic              tri_ready_o,
-  input  logic [31:0]       tri_state_i,
-  input  logic [31:0]       tri_flat_rgba_i,
+  input  logic [SideW-1:0]  tri_side_i,
   input  logic [12:0]       tri_x_lo_i, tri_x_hi_i, tri_y_lo_i, tri_y_hi_i,
   input  logic [3*DW-1:0]   tri_a_i, tri_b_i,
   input  logic [2:0]        tri_thr_i,
   input  logic [3*EW-1:0]   tri_e_i,
-  input  logic [3*AccZ-1:0] tri_z_i,
-  input  logic [9*AccC-1:0] tri_c_i,
+  input  logic [3*NP*AW-1:0] tri_p_i,
 
   // Fragment: pixel, framebuffer address, raw plane values and the triangle's state.
   output logic              frag_valid_o,
   input  logic              frag_ready_i,
   output logic [12:0]       frag_x_o, frag_y_o,
   output logic [AddrW-1:0]  frag_addr_o,
-  output logic [AccZ-1:0]   frag_z_o,
-  output logic [3*AccC-1:0] frag_c_o,
-  output logic [31:0]       frag_state_o,
-  output logic [31:0]       frag_flat_rgba_o,
+  output logic              frag_first_o,
+  output logic              frag_last_o,
+  output logic [NP*AW-1:0]  frag_p_o,
+  output logic [SideW-1:0]  frag_side_o,
 
   output logic              busy_o,
   output logic              stall_o   // a fragment is ready but the output is blocked
@@ -46,7 +47,7 @@ module htx_raster_traverse #(
   typedef enum logic [2:0] {StIdle, StSeek, StSeekL, StSeekR, StEmit} state_e;
 
   state_e state_q;
-  logic [31:0]             st_q, flat_q;
+  logic [SideW-1:0]        side_q;
   logic signed [XCW-1:0]   x_lo_q, x_hi_q, x_q, xs_q;
   logic [12:0]             y_q, y_hi_q;
   logic [AddrW-1:0]        row_base_q;
@@ -55,11 +56,10 @@ module htx_raster_traverse #(
   logic signed [DW-1:0]    b_q [3];
   logic signed [EW-1:0]    e_q [3];
   logic signed [EW-1:0]    es_q [3];
-  // Planes: 0 = z, 1..3 = r, g, b. Colour planes use the low AccC bits.
-  logic [AccZ-1:0]         gx_q [4];
-  logic [AccZ-1:0]         gy_q [4];
-  logic [AccZ-1:0]         acc_q [4];
-  logic [AccZ-1:0]         accs_q [4];
+  logic [AW-1:0]           gx_q [NP];
+  logic [AW-1:0]           gy_q [NP];
+  logic [AW-1:0]           acc_q [NP];
+  logic [AW-1:0]           accs_q [NP];
 
   // ---- Coverage at x - 1, x, x + 1 ---------------------------------------------------------------
   logic signed [EW-1:0] step_a [3];
@@ -90,7 +90,7 @@ module htx_raster_traverse #(
   // ---- Decision ---------------------------------------------------------------------------------
   typedef enum logic [2:0] {ActNone, ActLeft, ActRight, ActRowCur, ActRowSaved} act_e;
   act_e act;
-  logic emit, save, can_emit, want_emit, out_valid_q;
+  logic emit, save, can_emit, want_emit, out_valid_q, first;
   state_e mode_next;
   assign can_emit = !out_valid_q || frag_ready_i;
 
@@ -99,13 +99,15 @@ module htx_raster_traverse #(
     want_emit = 1'b0;
     emit      = 1'b0;
     save      = 1'b0;
+    first     = 1'b0;
     mode_next = state_q;
     unique case (state_q)
       StSeek, StSeekL, StSeekR: begin
         if (empty_row) begin
           act = ActRowCur;
         end else if (cov && !in_prev) begin
-          emit = 1'b1;
+          emit  = 1'b1;
+          first = 1'b1;
           if (in_next) begin
             save = 1'b1; act = ActRight; mode_next = StEmit;
           end else begin
@@ -143,8 +145,7 @@ module htx_raster_traverse #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       state_q    <= StIdle;
-      st_q       <= '0;
-      flat_q     <= '0;
+      side_q     <= '0;
       x_lo_q     <= '0;
       x_hi_q     <= '0;
       x_q        <= '0;
@@ -156,15 +157,14 @@ module htx_raster_traverse #(
       for (int k = 0; k < 3; k++) begin
         a_q[k] <= '0; b_q[k] <= '0; e_q[k] <= '0; es_q[k] <= '0;
       end
-      for (int p = 0; p < 4; p++) begin
+      for (int p = 0; p < NP; p++) begin
         gx_q[p] <= '0; gy_q[p] <= '0; acc_q[p] <= '0; accs_q[p] <= '0;
       end
     end else if (abort_i) begin
       state_q <= StIdle;
     end else if (state_q == StIdle) begin
       if (tri_valid_i) begin
-        st_q       <= tri_state_i;
-        flat_q     <= tri_flat_rgba_i;
+        side_q     <= tri_side_i;
         x_lo_q     <= XCW'(tri_x_lo_i);
         x_hi_q     <= XCW'(tri_x_hi_i);
         x_q        <= XCW'(tri_x_lo_i);
@@ -177,13 +177,10 @@ module htx_raster_traverse #(
           b_q[k] <= tri_b_i[DW*k +: DW];
           e_q[k] <= tri_e_i[EW*k +: EW];
         end
-        gx_q[0]  <= tri_z_i[0 +: AccZ];
-        gy_q[0]  <= tri_z_i[AccZ +: AccZ];
-        acc_q[0] <= tri_z_i[2*AccZ +: AccZ];
-        for (int c = 0; c < 3; c++) begin
-          gx_q[c+1]  <= AccZ'(tri_c_i[3*AccC*c +: AccC]);
-          gy_q[c+1]  <= AccZ'(tri_c_i[3*AccC*c + AccC +: AccC]);
-          acc_q[c+1] <= AccZ'(tri_c_i[3*AccC*c + 2*AccC +: AccC]);
+        for (int p = 0; p < NP; p++) begin
+          gx_q[p]  <= tri_p_i[3*AW*p +: AW];
+          gy_q[p]  <= tri_p_i[3*AW*p + AW +: AW];
+          acc_q[p] <= tri_p_i[3*AW*p + 2*AW +: AW];
         end
         state_q <= StSeek;
       end
@@ -191,14 +188,14 @@ module htx_raster_traverse #(
       if (save) begin
         xs_q <= x_q;
         for (int k = 0; k < 3; k++) es_q[k] <= e_q[k];
-        for (int p = 0; p < 4; p++) accs_q[p] <= acc_q[p];
+        for (int p = 0; p < NP; p++) accs_q[p] <= acc_q[p];
       end
       unique case (act)
         ActLeft, ActRight: begin
           x_q <= (act == ActRight) ? x_q + 1'b1 : x_q - 1'b1;
           for (int k = 0; k < 3; k++)
             e_q[k] <= (act == ActRight) ? e_q[k] + step_a[k] : e_q[k] - step_a[k];
-          for (int p = 0; p < 4; p++)
+          for (int p = 0; p < NP; p++)
             acc_q[p] <= (act == ActRight) ? acc_q[p] + (gx_q[p] << 8) : acc_q[p] - (gx_q[p] << 8);
           state_q <= mode_next;
         end
@@ -211,7 +208,7 @@ module htx_raster_traverse #(
             if (act == ActRowSaved) x_q <= xs_q;
             for (int k = 0; k < 3; k++)
               e_q[k] <= ((act == ActRowSaved) ? es_q[k] : e_q[k]) + step_b[k];
-            for (int p = 0; p < 4; p++)
+            for (int p = 0; p < NP; p++)
               acc_q[p] <= ((act == ActRowSaved) ? accs_q[p] : acc_q[p]) + (gy_q[p] << 8);
             state_q <= StSeek;
           end
@@ -224,19 +221,19 @@ module htx_raster_traverse #(
   // ---- Output register -------------------------------------------------------------------------
   logic [12:0]       out_x_q, out_y_q;
   logic [AddrW-1:0]  out_addr_q;
-  logic [AccZ-1:0]   out_z_q;
-  logic [3*AccC-1:0] out_c_q;
-  logic [31:0]       out_st_q, out_flat_q;
+  logic [NP*AW-1:0]  out_p_q;
+  logic [SideW-1:0]  out_side_q;
+  logic              out_first_q, out_last_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       out_valid_q <= 1'b0;
       out_x_q     <= '0;
       out_y_q     <= '0;
       out_addr_q  <= '0;
-      out_z_q     <= '0;
-      out_c_q     <= '0;
-      out_st_q    <= '0;
-      out_flat_q  <= '0;
+      out_p_q     <= '0;
+      out_side_q  <= '0;
+      out_first_q <= 1'b0;
+      out_last_q  <= 1'b0;
     end else if (abort_i) begin
       out_valid_q <= 1'b0;
     end else begin
@@ -246,26 +243,24 @@ module htx_raster_traverse #(
         out_x_q     <= 13'(x_q);
         out_y_q     <= y_q;
         out_addr_q  <= row_base_q + AddrW'(x_q);
-        out_z_q     <= acc_q[0];
-        out_c_q     <= {AccC'(acc_q[3]), AccC'(acc_q[2]), AccC'(acc_q[1])};
-        out_st_q    <= st_q;
-        out_flat_q  <= flat_q;
+        for (int p = 0; p < NP; p++) out_p_q[AW*p +: AW] <= acc_q[p];
+        out_side_q  <= side_q;
+        out_first_q <= first;
+        out_last_q  <= !in_next;
       end
     end
   end
 
-  logic unused;
-  assign unused = ^{acc_q[1][AccZ-1:AccC], acc_q[2][AccZ-1:AccC], acc_q[3][AccZ-1:AccC]};
 
   assign tri_ready_o      = (state_q == StIdle) && !abort_i;
   assign frag_valid_o     = out_valid_q;
   assign frag_x_o         = out_x_q;
   assign frag_y_o         = out_y_q;
   assign frag_addr_o      = out_addr_q;
-  assign frag_z_o         = out_z_q;
-  assign frag_c_o         = out_c_q;
-  assign frag_state_o     = out_st_q;
-  assign frag_flat_rgba_o = out_flat_q;
+  assign frag_p_o         = out_p_q;
+  assign frag_side_o      = out_side_q;
+  assign frag_first_o     = out_first_q;
+  assign frag_last_o      = out_last_q;
   assign busy_o           = (state_q != StIdle) || out_valid_q;
   assign stall_o          = want_emit && !can_emit;
 endmodule

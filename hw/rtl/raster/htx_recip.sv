@@ -4,6 +4,10 @@
 // Result: 1/X ~ r_o * 2^-(W + msb_o). Two multiplications per step go through one multiplier whose
 // Iterative parameter sets the throughput (one product per clock, or a shift-and-add unit).
 // start_i is taken while idle; done_o pulses once and r_o, msb_o hold until the next start.
+// table_only_i (sampled with start_i) stops after the table (RECIP_LUT); r0_o is the table value.
+// Pipelined = 1 (the per-pixel divider of `full`): no multiplier sharing, a new X every clock the
+// pipeline advances (en_i), the result 2 + 2 Steps advancing clocks later with done_o set (start_i is
+// the input's valid bit, table_only_i is ignored: r0_o carries the table value alongside).
 // X = 0 yields msb_o = 0 and an unspecified r_o (setup never asks: a zero determinant draws nothing).
 module htx_recip #(
   parameter int unsigned XWidth    = 51,
@@ -12,16 +16,20 @@ module htx_recip #(
   parameter int unsigned G         = 2,
   parameter int unsigned Steps     = 2,
   parameter bit          Iterative = 1'b0,
+  parameter bit          Pipelined = 1'b0,
   parameter int unsigned MsbWidth  = $clog2(XWidth)
 ) (
   input  logic                clk_i,
   input  logic                rst_ni,
   input  logic                abort_i,
   input  logic                start_i,
+  input  logic                en_i,          // Pipelined: the stages advance
+  input  logic                table_only_i,  // iterative: no Newton step this time
   input  logic [XWidth-1:0]   x_i,
   output logic                busy_o,
   output logic                done_o,
   output logic [W:0]          r_o,
+  output logic [W:0]          r0_o,
   output logic [MsbWidth-1:0] msb_o
 );
   localparam int unsigned EntryW = K + G + 1;
@@ -43,20 +51,8 @@ module htx_recip #(
     for (int unsigned i = 0; i < 2**K; i++) rom[i] = table_entry(i);
   end
 
-  state_e              state_q;
-  logic [StepW-1:0]    step_q;
-  logic [W-1:0]        m_q;
-  logic [W:0]          r_q;
-  logic [W+1:0]        c_q;
-  logic [MsbWidth-1:0] msb_q, msb;
+  logic [MsbWidth-1:0] msb;
   logic [W-1:0]        mant;
-  logic [EntryW-1:0]   entry_q;
-  logic                mul_start, mul_done;
-  logic signed [MulW-1:0]   mul_a, mul_b;
-  logic signed [2*MulW-1:0] mul_p;
-  logic [2*MulW-1:0]   prod;
-  logic [W+1:0]        e;
-
   always_comb begin
     msb = '0;
     for (int unsigned i = 0; i < XWidth; i++) begin
@@ -79,6 +75,91 @@ module htx_recip #(
     assign mant  = x_ext << ((W - 1) - 32'(msb));
   end
 
+  if (Pipelined) begin : g_pipe
+    // Stage 0 registers the normalised mantissa, stage 1 the table value, then two stages per
+    // Newton step (c = 2^(W+1) - (M R >> (W-1)); then R = (R c + 2^(W-1)) >> W).
+    localparam int unsigned Lat = 2 + 2 * Steps;
+    logic                v_p   [Lat];
+    logic [W-1:0]        m_p   [Lat];
+    logic [MsbWidth-1:0] msb_p [Lat];
+    logic [W:0]          r0_p  [1:Lat-1];
+    logic [W:0]          r1_q;
+    logic [(Steps+1)*(W+1)-1:0] r_chain;  // slice 0: the table value; slice t+1: after step t
+    assign r_chain[W:0] = r1_q;
+
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        for (int i = 0; i < Lat; i++) begin
+          v_p[i] <= 1'b0; m_p[i] <= '0; msb_p[i] <= '0;
+        end
+        for (int i = 1; i < Lat; i++) r0_p[i] <= '0;
+        r1_q <= '0;
+      end else if (abort_i) begin
+        for (int i = 0; i < Lat; i++) v_p[i] <= 1'b0;
+      end else if (en_i) begin
+        v_p[0]   <= start_i;
+        m_p[0]   <= mant;
+        msb_p[0] <= msb;
+        r1_q     <= (W + 1)'(rom[m_p[0][W-2 -: K]]) << (W - K - G - 1);
+        r0_p[1]  <= (W + 1)'(rom[m_p[0][W-2 -: K]]) << (W - K - G - 1);
+        for (int i = 1; i < Lat; i++) begin
+          v_p[i]   <= v_p[i-1];
+          m_p[i]   <= m_p[i-1];
+          msb_p[i] <= msb_p[i-1];
+        end
+        for (int i = 2; i < Lat; i++) r0_p[i] <= r0_p[i-1];
+      end
+    end
+
+    for (genvar t = 0; t < Steps; t++) begin : g_step
+      localparam int unsigned SE = 2 + 2 * t;  // stage holding c
+      logic [W+1:0]   c_q;
+      logic [W:0]     rm_q, ro_q, r_in;
+      logic [2*W:0]   pe;
+      logic [W+1:0]   ee;
+      logic [2*W+2:0] pr;
+      assign r_in = r_chain[t*(W+1) +: W+1];
+      assign pe = (2*W+1)'(m_p[SE-1]) * (2*W+1)'(r_in);
+      assign ee = (W + 2)'(pe >> (W - 1));
+      assign pr = (2*W+3)'(rm_q) * (2*W+3)'(c_q);
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          c_q  <= '0;
+          rm_q <= '0;
+          ro_q <= '0;
+        end else if (en_i) begin
+          c_q  <= ee[W+1] ? '0 : ((W + 2)'(1) << (W + 1)) - ee;
+          rm_q <= r_in;
+          ro_q <= (W + 1)'((pr + ((2*W+3)'(1) << (W - 1))) >> W);
+        end
+      end
+      assign r_chain[(t+1)*(W+1) +: W+1] = ro_q;
+      logic unused_p;
+      assign unused_p = ^{pe[2*W:2*W], pr[2*W+2:2*W+1]};
+    end
+
+    assign busy_o = 1'b0;
+    assign done_o = v_p[Lat-1];
+    assign r_o    = r_chain[Steps*(W+1) +: W+1];
+    assign r0_o   = r0_p[Lat-1];
+    assign msb_o  = msb_p[Lat-1];
+    logic unused_pipe;
+    assign unused_pipe = ^{table_only_i, m_p[Lat-1]};
+  end else begin : g_fsm
+  state_e              state_q;
+  logic [StepW-1:0]    step_q;
+  logic [W-1:0]        m_q;
+  logic [W:0]          r_q;
+  logic [W+1:0]        c_q;
+  logic [MsbWidth-1:0] msb_q;
+  logic [EntryW-1:0]   entry_q;
+  logic                mul_start, mul_done;
+  logic signed [MulW-1:0]   mul_a, mul_b;
+  logic signed [2*MulW-1:0] mul_p;
+  logic [2*MulW-1:0]   prod;
+  logic [W+1:0]        e;
+
+  logic                only_q;
   assign mul_start = (state_q == StMulE) || (state_q == StMulR);
   assign mul_a = (state_q == StMulE) ? MulW'(m_q) : MulW'(r_q);
   assign mul_b = (state_q == StMulE) ? MulW'(r_q) : MulW'(c_q);
@@ -103,11 +184,13 @@ module htx_recip #(
       c_q     <= '0;
       msb_q   <= '0;
       entry_q <= '0;
+      only_q  <= 1'b0;
     end else if (abort_i) begin
       state_q <= StIdle;
     end else begin
       unique case (state_q)
         StIdle: if (start_i) begin
+          only_q  <= table_only_i;
           m_q     <= mant;
           msb_q   <= msb;
           entry_q <= rom[mant[W-2 -: K]];
@@ -116,7 +199,7 @@ module htx_recip #(
         end
         StTable: begin
           r_q     <= (W + 1)'(entry_q) << (W - K - G - 1);
-          state_q <= (Steps == 0) ? StDone : StMulE;
+          state_q <= (Steps == 0 || only_q) ? StDone : StMulE;
         end
         StMulE: if (mul_done) begin
           // e < 2^(W+1) always (M < 2^W, R <= 2^W); the guard keeps 2 - m r non-negative anyway.
@@ -137,5 +220,9 @@ module htx_recip #(
   assign busy_o = (state_q != StIdle);
   assign done_o = (state_q == StDone);
   assign r_o    = r_q;
+  assign r0_o   = (W + 1)'(entry_q) << (W - K - G - 1);
   assign msb_o  = msb_q;
+  logic unused_en;
+  assign unused_en = en_i;
+  end
 endmodule

@@ -4,7 +4,9 @@
 #include <stdexcept>
 
 #include "Vhtx_raster_full.h"
+#include "Vhtx_raster_full___024root.h"
 #include "Vhtx_raster_icebreaker.h"
+#include "Vhtx_raster_icebreaker___024root.h"
 #include "htx_regs.h"
 #include "verilated.h"
 
@@ -29,9 +31,48 @@ class RasterPort {
   // Rising edge; returns the responses visible after it.
   virtual void rise(BusOut* reg, BusOut* mem) = 0;
   virtual void reset() = 0;
+  std::vector<TexRequest>* record = nullptr;
 };
 
 namespace {
+
+int64_t sext(uint64_t v, unsigned bits) {
+  const uint64_t m = uint64_t{1} << (bits - 1);
+  v &= (bits >= 64) ? ~uint64_t{0} : ((uint64_t{1} << bits) - 1);
+  return static_cast<int64_t>((v ^ m) - m);
+}
+
+// The public loop-back signals of htx_raster_subsys (their names carry the top's name). Widths:
+// CoordW, LocW, GradW of the configuration.
+#define HTX_READ_REQUEST(TOP, R, COORDW, LOCW, GRADW)                                      \
+  do {                                                                                     \
+    auto* root = (R);                                                                      \
+    if (!(root->TOP##__DOT__u_subsys__DOT__tex_req_valid &&                                \
+          root->TOP##__DOT__u_subsys__DOT__tex_req_ready))                                 \
+      return false;                                                                        \
+    t->u = sext(root->TOP##__DOT__u_subsys__DOT__tex_req_u, COORDW);                       \
+    t->v = sext(root->TOP##__DOT__u_subsys__DOT__tex_req_v, COORDW);                       \
+    t->filter = root->TOP##__DOT__u_subsys__DOT__tex_req_filter;                           \
+    t->wrap_u = root->TOP##__DOT__u_subsys__DOT__tex_req_wrap_u;                           \
+    t->wrap_v = root->TOP##__DOT__u_subsys__DOT__tex_req_wrap_v;                           \
+    t->slot = root->TOP##__DOT__u_subsys__DOT__tex_req_slot;                               \
+    t->lod_q = root->TOP##__DOT__u_subsys__DOT__tex_req_lod_q;                             \
+    for (int i = 0; i < 6; ++i)                                                            \
+      t->lod_g[i] = sext(root->TOP##__DOT__u_subsys__DOT__tex_req_lod_g[i], GRADW);        \
+    t->lod_shift = root->TOP##__DOT__u_subsys__DOT__tex_req_lod_shift;                     \
+    t->lod_u = sext(root->TOP##__DOT__u_subsys__DOT__tex_req_lod_u, LOCW);                 \
+    t->lod_v = sext(root->TOP##__DOT__u_subsys__DOT__tex_req_lod_v, LOCW);                 \
+    t->addr = root->TOP##__DOT__u_subsys__DOT__tex_req_tag[0] & 0xFFFFFFu;                 \
+    return true;                                                                           \
+  } while (0)
+
+bool read_request(Vhtx_raster_full& top, TexRequest* t) {
+  HTX_READ_REQUEST(htx_raster_full, top.rootp, 48, 32, 24);
+}
+bool read_request(Vhtx_raster_icebreaker& top, TexRequest* t) {
+  HTX_READ_REQUEST(htx_raster_icebreaker, top.rootp, 24, 23, 16);
+}
+#undef HTX_READ_REQUEST
 
 template <class V>
 class VerilatedPort final : public RasterPort {
@@ -54,6 +95,8 @@ class VerilatedPort final : public RasterPort {
     top_->eval();
     *reg_ready = top_->reg_req_ready_o;
     *mem_ready = top_->mem_req_ready_o;
+    TexRequest t;
+    if (record && read_request(*top_, &t)) record->push_back(t);
   }
   void rise(BusOut* r, BusOut* m) override {
     top_->clk_i = 1;
@@ -104,6 +147,8 @@ RasterSim::RasterSim(const std::string& config) {
 }
 
 RasterSim::~RasterSim() = default;
+
+void RasterSim::record_requests(std::vector<TexRequest>* out) { port_->record = out; }
 
 void RasterSim::tick() {
   bool rr = false, mr = false;

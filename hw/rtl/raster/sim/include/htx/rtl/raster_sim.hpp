@@ -12,6 +12,18 @@ namespace htx::rtl {
 
 class RasterPort;  // the Verilated top behind a common interface (raster_sim.cpp)
 
+// One fragment on the raster's texture request port (gpu_join_contract.md §1), as the loop-back of
+// htx_raster_subsys takes it; fields sign-extended from their RTL widths.
+struct TexRequest {
+  int64_t u = 0, v = 0;            // level-0 texels incl. the offset, TF fraction bits (CoordW bits)
+  uint8_t filter = 0, wrap_u = 0, wrap_v = 0, slot = 0;
+  uint64_t lod_q = 0;              // max(Q, 1)
+  int64_t lod_g[6] = {};           // g_ux, g_uy, g_vx, g_vy, g_qx, g_qy after the block shift
+  uint32_t lod_shift = 0;
+  int64_t lod_u = 0, lod_v = 0;    // local coordinates (before the offset)
+  uint32_t addr = 0;               // the fragment's framebuffer address (from the tag)
+};
+
 class RasterSim {
  public:
   // config: "full" or "icebreaker" (the Verilated configurations). Throws std::invalid_argument
@@ -48,6 +60,10 @@ class RasterSim {
   uint64_t cycles() const { return cycles_; }
   // Clocks a bus write to FIFO was held (not accepted) since construction.
   uint64_t fifo_stall_cycles() const { return fifo_stall_cycles_; }
+
+  // Records every texture request the loop-back accepts from now on (in order) into *out, or stops
+  // recording with nullptr.
+  void record_requests(std::vector<TexRequest>* out);
 
  private:
   void tick();
