@@ -1,8 +1,11 @@
 // The raster subsystem in the `full` configuration (wide, one setup product per clock): the parameters equal
 // htx::model_config("full") (hw/model/src/model/config.cpp) field by field; the `rtl` engine
 // checks that before it renders.
+// PerspColor is model_config("full").perspective_color; it stays 0 here (rtl_config("full"), what
+// the rtl engine renders) until the engine drops its switch; htx_raster_full_pc sets it.
 module htx_raster_full #(
-  parameter int unsigned FbPixels = 19200   // 160 x 120; the rtl engine uses 262144 (the depth window)
+  parameter int unsigned FbPixels   = 19200,  // 160 x 120; the rtl engine uses 262144 (the depth window)
+  parameter bit          PerspColor = 1'b0
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -28,7 +31,7 @@ module htx_raster_full #(
   htx_raster_subsys #(
     .XyIntBits(16), .ZBits(24), .GF(24), .RecipW(32), .RecipK(10), .RecipG(2), .SetupSteps(2),
     .Iterative(1'b0), .QBits(32), .UvIntBits(16), .TF(16), .PixelSteps(2), .Methods(5'b01111),
-    .PerspColor(1'b0), .PixelPipelined(1'b1), .PixelMulIterative(1'b0), .SubdivDepth(128),
+    .PerspColor(PerspColor), .PixelPipelined(1'b1), .PixelMulIterative(1'b0), .SubdivDepth(128),
     .CoordW(48), .GradW(24),
     .FifoDepth(64), .FbPixels(FbPixels)
   ) u_subsys (

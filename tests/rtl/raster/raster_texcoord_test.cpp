@@ -22,14 +22,19 @@
 #include "htx/rtl/raster_engine.hpp"
 #include "htx/rtl/raster_sim.hpp"
 #include "htx_regs.h"
+#include "raster_drive.hpp"
 
 namespace htx {
 namespace {
 
 using model::i128;
 
-constexpr uint32_t R(size_t o) { return static_cast<uint32_t>(o); }
-#define REG(name) R(offsetof(HTX_RASTER_Type, name))
+using raster_test::Tri;
+using raster_test::encode;
+
+std::vector<rtl::TexRequest> run_rtl(const std::string& name, const std::vector<Tri>& tris, int w, int h) {
+  return raster_test::draw(name, tris, w, h, 0, 0xFFFFFFFFu, 24).requests;
+}
 
 struct Port {  // the port widths of the named configurations (docs/raster.md)
   unsigned coord_w, loc_w, grad_w;
@@ -49,31 +54,6 @@ int64_t port_coord(int64_t c, Wrap wrap, unsigned bits) {
   const int64_t hi = (int64_t{1} << (bits - 1)) - 1, lo = -hi - 1;
   if (wrap == Wrap::Clamp) return std::clamp(c, lo, hi);
   return sext(c, bits);
-}
-
-struct Tri {
-  fw::TriangleRecord rec;
-  TriState state;
-};
-
-// Encodes a screen scene's triangles (AUTO resolved as render_model does); the encoder's rejects
-// are not sent.
-std::vector<Tri> encode(const ScreenScene& s, const ModelConfig& cfg) {
-  std::vector<Tri> out;
-  for (const ScreenTri& t : s.tris) {
-    fw::VertexIn in[3];
-    for (int i = 0; i < 3; ++i) {
-      const ScreenVertex& v = t.v[i];
-      in[i].x = v.x; in[i].y = v.y; in[i].z = v.z; in[i].w = v.w; in[i].u = v.u; in[i].v = v.v;
-      in[i].r = v.r; in[i].g = v.g; in[i].b = v.b; in[i].a = v.a;
-    }
-    Tri tri;
-    tri.state = t.state;
-    if (tri.state.method == Method::Auto) tri.state.method = model::auto_method(t, cfg);
-    if (fw::encode_triangle(cfg.record_format(), in, &tri.rec) != fw::kEncodeOk) continue;
-    out.push_back(tri);
-  }
-  return out;
 }
 
 std::vector<rtl::TexRequest> expected(const std::vector<Tri>& tris, const ModelConfig& cfg, int w, int h,
@@ -112,31 +92,6 @@ std::vector<rtl::TexRequest> expected(const std::vector<Tri>& tris, const ModelC
     }
   }
   return out;
-}
-
-// Draws the records on the RTL (textured: every fragment leaves on the port) and records the port.
-std::vector<rtl::TexRequest> run_rtl(const std::string& name, const std::vector<Tri>& tris, int w, int h,
-                                     uint64_t* busy_cycles = nullptr) {
-  std::vector<uint32_t> words;
-  for (const Tri& t : tris) {
-    uint32_t packed[fw::kTriangleWords];
-    fw::pack_triangle(t.rec, packed);
-    words.push_back(pack_state_word(t.state, t.state.method));
-    words.insert(words.end(), packed, packed + fw::kTriangleWords);
-  }
-  rtl::RasterSim sim(name);
-  sim.write_reg(REG(FB_SIZE), (static_cast<uint32_t>(w) << RASTER_FB_SIZE_WIDTH_Pos) |
-                                  (static_cast<uint32_t>(h) << RASTER_FB_SIZE_HEIGHT_Pos));
-  sim.write_reg(REG(FB_STRIDE), static_cast<uint32_t>(w));
-  sim.write_reg(REG(CTRL), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_COUNTERS_RESET_Msk);
-  std::vector<rtl::TexRequest> got;
-  sim.record_requests(&got);
-  sim.push_words(words);
-  sim.wait_idle(200'000'000);
-  sim.record_requests(nullptr);
-  EXPECT_EQ(sim.read_reg(REG(STATUS)) & RASTER_STATUS_ERR_STATE_Msk, 0u) << name;
-  if (busy_cycles) *busy_cycles = sim.read_reg(REG(CNT_BUSY));
-  return got;
 }
 
 // Compares the streams; reports the first difference.

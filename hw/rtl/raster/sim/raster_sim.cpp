@@ -5,6 +5,8 @@
 
 #include "Vhtx_raster_full.h"
 #include "Vhtx_raster_full___024root.h"
+#include "Vhtx_raster_full_pc.h"
+#include "Vhtx_raster_full_pc___024root.h"
 #include "Vhtx_raster_icebreaker.h"
 #include "Vhtx_raster_icebreaker___024root.h"
 #include "htx_regs.h"
@@ -44,33 +46,36 @@ int64_t sext(uint64_t v, unsigned bits) {
 
 // The public loop-back signals of htx_raster_subsys (their names carry the top's name). Widths:
 // CoordW, LocW, GradW of the configuration.
-#define HTX_READ_REQUEST(TOP, R, COORDW, LOCW, GRADW)                                      \
+#define HTX_READ_REQUEST(SUB, R, COORDW, LOCW, GRADW)                                      \
   do {                                                                                     \
     auto* root = (R);                                                                      \
-    if (!(root->TOP##__DOT__u_subsys__DOT__tex_req_valid &&                                \
-          root->TOP##__DOT__u_subsys__DOT__tex_req_ready))                                 \
+    if (!(root->SUB##__DOT__tex_req_valid &&                                \
+          root->SUB##__DOT__tex_req_ready))                                 \
       return false;                                                                        \
-    t->u = sext(root->TOP##__DOT__u_subsys__DOT__tex_req_u, COORDW);                       \
-    t->v = sext(root->TOP##__DOT__u_subsys__DOT__tex_req_v, COORDW);                       \
-    t->filter = root->TOP##__DOT__u_subsys__DOT__tex_req_filter;                           \
-    t->wrap_u = root->TOP##__DOT__u_subsys__DOT__tex_req_wrap_u;                           \
-    t->wrap_v = root->TOP##__DOT__u_subsys__DOT__tex_req_wrap_v;                           \
-    t->slot = root->TOP##__DOT__u_subsys__DOT__tex_req_slot;                               \
-    t->lod_q = root->TOP##__DOT__u_subsys__DOT__tex_req_lod_q;                             \
+    t->u = sext(root->SUB##__DOT__tex_req_u, COORDW);                       \
+    t->v = sext(root->SUB##__DOT__tex_req_v, COORDW);                       \
+    t->filter = root->SUB##__DOT__tex_req_filter;                           \
+    t->wrap_u = root->SUB##__DOT__tex_req_wrap_u;                           \
+    t->wrap_v = root->SUB##__DOT__tex_req_wrap_v;                           \
+    t->slot = root->SUB##__DOT__tex_req_slot;                               \
+    t->lod_q = root->SUB##__DOT__tex_req_lod_q;                             \
     for (int i = 0; i < 6; ++i)                                                            \
-      t->lod_g[i] = sext(root->TOP##__DOT__u_subsys__DOT__tex_req_lod_g[i], GRADW);        \
-    t->lod_shift = root->TOP##__DOT__u_subsys__DOT__tex_req_lod_shift;                     \
-    t->lod_u = sext(root->TOP##__DOT__u_subsys__DOT__tex_req_lod_u, LOCW);                 \
-    t->lod_v = sext(root->TOP##__DOT__u_subsys__DOT__tex_req_lod_v, LOCW);                 \
-    t->addr = root->TOP##__DOT__u_subsys__DOT__tex_req_tag[0] & 0xFFFFFFu;                 \
+      t->lod_g[i] = sext(root->SUB##__DOT__tex_req_lod_g[i], GRADW);        \
+    t->lod_shift = root->SUB##__DOT__tex_req_lod_shift;                     \
+    t->lod_u = sext(root->SUB##__DOT__tex_req_lod_u, LOCW);                 \
+    t->lod_v = sext(root->SUB##__DOT__tex_req_lod_v, LOCW);                 \
+    t->addr = root->SUB##__DOT__tex_req_tag[0] & 0xFFFFFFu;                 \
     return true;                                                                           \
   } while (0)
 
 bool read_request(Vhtx_raster_full& top, TexRequest* t) {
-  HTX_READ_REQUEST(htx_raster_full, top.rootp, 48, 32, 24);
+  HTX_READ_REQUEST(htx_raster_full__DOT__u_subsys, top.rootp, 48, 32, 24);
 }
 bool read_request(Vhtx_raster_icebreaker& top, TexRequest* t) {
-  HTX_READ_REQUEST(htx_raster_icebreaker, top.rootp, 24, 23, 16);
+  HTX_READ_REQUEST(htx_raster_icebreaker__DOT__u_subsys, top.rootp, 24, 23, 16);
+}
+bool read_request(Vhtx_raster_full_pc& top, TexRequest* t) {
+  HTX_READ_REQUEST(htx_raster_full_pc__DOT__u_full__DOT__u_subsys, top.rootp, 48, 32, 24);
 }
 #undef HTX_READ_REQUEST
 
@@ -137,11 +142,13 @@ constexpr uint32_t kDepthWindow = 0x30100000u;
 RasterSim::RasterSim(const std::string& config) {
   if (config == "full") {
     port_ = std::make_unique<VerilatedPort<Vhtx_raster_full>>();
+  } else if (config == "full_pc") {
+    port_ = std::make_unique<VerilatedPort<Vhtx_raster_full_pc>>();
   } else if (config == "icebreaker") {
     port_ = std::make_unique<VerilatedPort<Vhtx_raster_icebreaker>>();
   } else {
     throw std::invalid_argument("rtl engine: no Verilated raster for configuration '" + config +
-                                "' (built: full, icebreaker)");
+                                "' (built: full, full_pc, icebreaker)");
   }
   port_->reset();
 }

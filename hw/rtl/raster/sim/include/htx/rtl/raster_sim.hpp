@@ -26,8 +26,9 @@ struct TexRequest {
 
 class RasterSim {
  public:
-  // config: "full" or "icebreaker" (the Verilated configurations). Throws std::invalid_argument
-  // for any other name. Resets the subsystem.
+  // config: "full" or "icebreaker" (the Verilated configurations; "full" as rtl_config, without
+  // perspective-correct colour), or "full_pc" (model_config("full") exactly, perspective_color
+  // included). Throws std::invalid_argument for any other name. Resets the subsystem.
   explicit RasterSim(const std::string& config);
   ~RasterSim();
   RasterSim(const RasterSim&) = delete;

@@ -1,0 +1,96 @@
+// Drives the Verilated raster subsystem (RasterSim) directly for the tests in this directory:
+// encodes triangles exactly as render_model does (the encoder's rejects are not sent), pushes them
+// with their state words, records the texture request port and reads the memories back. Unlike
+// render_rtl it takes any built configuration name ("full_pc": perspective-correct colour).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "htx/fw/vertex_record.h"
+#include "htx/model/perspective.hpp"
+#include "htx/rtl/raster_engine.hpp"
+#include "htx/rtl/raster_sim.hpp"
+#include "htx_regs.h"
+
+namespace htx::raster_test {
+
+inline uint32_t reg_off(size_t o) { return static_cast<uint32_t>(o); }
+#define HTX_TEST_REG(name) ::htx::raster_test::reg_off(offsetof(HTX_RASTER_Type, name))
+
+struct Tri {
+  fw::TriangleRecord rec;
+  TriState state;
+};
+
+// Encodes a screen scene's triangles (AUTO resolved as render_model does); the encoder's rejects
+// are not sent.
+inline std::vector<Tri> encode(const ScreenScene& s, const ModelConfig& cfg) {
+  std::vector<Tri> out;
+  for (const ScreenTri& t : s.tris) {
+    fw::VertexIn in[3];
+    for (int i = 0; i < 3; ++i) {
+      const ScreenVertex& v = t.v[i];
+      in[i].x = v.x; in[i].y = v.y; in[i].z = v.z; in[i].w = v.w; in[i].u = v.u; in[i].v = v.v;
+      in[i].r = v.r; in[i].g = v.g; in[i].b = v.b; in[i].a = v.a;
+    }
+    Tri tri;
+    tri.state = t.state;
+    if (tri.state.method == Method::Auto) tri.state.method = model::auto_method(t, cfg);
+    if (fw::encode_triangle(cfg.record_format(), in, &tri.rec) != fw::kEncodeOk) continue;
+    out.push_back(tri);
+  }
+  return out;
+}
+
+struct RtlResult {
+  std::vector<rtl::TexRequest> requests;
+  std::vector<uint16_t> color;
+  std::vector<uint32_t> depth;
+  uint64_t busy = 0, fragments = 0, pixels = 0, setup_busy = 0, triangles = 0, divfree_steps = 0;
+};
+
+// Clears to clear_color / clear_depth, draws, records every request, reads both memories (depth
+// masked to z_bits).
+inline RtlResult draw(const std::string& name, const std::vector<Tri>& tris, int w, int h, uint16_t clear_color,
+                      uint32_t clear_depth, unsigned z_bits) {
+  std::vector<uint32_t> words;
+  for (const Tri& t : tris) {
+    uint32_t packed[fw::kTriangleWords];
+    fw::pack_triangle(t.rec, packed);
+    words.push_back(pack_state_word(t.state, t.state.method));
+    words.insert(words.end(), packed, packed + fw::kTriangleWords);
+  }
+  rtl::RasterSim sim(name);
+  sim.write_reg(HTX_TEST_REG(FB_SIZE), (static_cast<uint32_t>(w) << RASTER_FB_SIZE_WIDTH_Pos) |
+                                           (static_cast<uint32_t>(h) << RASTER_FB_SIZE_HEIGHT_Pos));
+  sim.write_reg(HTX_TEST_REG(FB_STRIDE), static_cast<uint32_t>(w));
+  sim.write_reg(HTX_TEST_REG(CLEAR_COLOR), clear_color);
+  sim.write_reg(HTX_TEST_REG(CLEAR_DEPTH), std::min<uint32_t>(clear_depth, 0xFFFFFFu));
+  sim.write_reg(HTX_TEST_REG(CTRL), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_CLEAR_COLOR_Msk | RASTER_CTRL_CLEAR_DEPTH_Msk);
+  sim.wait_idle();
+  sim.write_reg(HTX_TEST_REG(CTRL), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_COUNTERS_RESET_Msk);
+  RtlResult r;
+  sim.record_requests(&r.requests);
+  sim.push_words(words);
+  sim.wait_idle(200'000'000);
+  sim.record_requests(nullptr);
+  EXPECT_EQ(sim.read_reg(HTX_TEST_REG(STATUS)) & RASTER_STATUS_ERR_STATE_Msk, 0u) << name;
+  r.busy = sim.read_reg(HTX_TEST_REG(CNT_BUSY));
+  r.fragments = sim.read_reg(HTX_TEST_REG(CNT_FRAGMENTS));
+  r.pixels = sim.read_reg(HTX_TEST_REG(CNT_PIXELS));
+  r.setup_busy = sim.read_reg(HTX_TEST_REG(CNT_SETUP_BUSY));
+  r.triangles = sim.read_reg(HTX_TEST_REG(CNT_TRIANGLES));
+  r.divfree_steps = sim.read_reg(HTX_TEST_REG(CNT_DIVFREE_STEPS));
+  const uint32_t n = static_cast<uint32_t>(w) * static_cast<uint32_t>(h);
+  r.color = sim.read_color(n);
+  r.depth = sim.read_depth(n);
+  for (uint32_t& z : r.depth) z &= (uint32_t{1} << z_bits) - 1;
+  return r;
+}
+
+}  // namespace htx::raster_test
