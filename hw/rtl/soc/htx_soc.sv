@@ -1,12 +1,13 @@
 // The hypertex SoC: the RV32IM core on its instruction and data buses, and the fabric (interconnect,
-// RAM, SYSCTRL, UART, TIMER) behind them. Board tops and the simulation top instantiate this.
+// RAM, SYSCTRL, UART, TIMER, GPU) behind them. Board tops and the simulation top instantiate this.
 module htx_soc #(
   parameter int unsigned RamBytes    = 4096,
   parameter              RamInitFile = "",
   parameter int unsigned ClockHz     = 12_000_000,
   parameter logic [31:0] ResetVector = 32'h0000_0000,
   parameter bit          Sim         = 1'b0,
-  parameter bit          StallInject = 1'b0
+  parameter bit          StallInject = 1'b0,
+  parameter int unsigned FbPixels    = 19200   // the GPU's framebuffer, 160 x 120
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -46,7 +47,7 @@ module htx_soc #(
 
   htx_soc_fabric #(
     .RamBytes(RamBytes), .RamInitFile(RamInitFile), .ClockHz(ClockHz), .Sim(Sim),
-    .StallInject(StallInject)
+    .StallInject(StallInject), .FbPixels(FbPixels)
   ) u_fabric (
     .clk_i, .rst_ni,
     .ibus_req_valid_i(ibus_req_valid), .ibus_req_ready_o(ibus_req_ready),

@@ -1,22 +1,30 @@
-// Everything of the SoC except the CPU: the interconnect, the RAM and the peripherals, with the two
-// CPU bus ports (instruction, data) as slave ports. Tests drive these ports directly; htx_soc puts
-// the CPU on them.
+// Everything of the SoC except the CPU: the interconnect, the RAM, the peripherals and the GPU, with
+// the two CPU bus ports (instruction, data) as slave ports. Tests drive these ports directly; htx_soc
+// puts the CPU on them.
 //
 //   ibus -> demux --RAM port A
 //                 \-IO arbiter port 0 --+
 //   dbus -> demux --RAM port B          |
-//                 \-IO arbiter port 1 --+-> IO demux -> SYSCTRL, UART, TIMER
+//                 |-IO arbiter port 1 --+-> IO demux -> SYSCTRL, UART, TIMER, RASTER --> GPU reg port
+//                 \-framebuffer/depth window ------------------------------------------> GPU mem port
 //
-// Both masters see the same memory map (contracts.md). The RAM is dual-ported, so fetch and data
-// never wait for each other there; only IO accesses (0x2xxx_xxxx) share the arbiter. Each demux
-// answers addresses no slave claims with rsp_err. With StallInject, every slave sits behind an
-// htx_bus_stall whose random wait states are switched on by stall_en_i.
+// Register blocks (0x2xxx_xxxx) are the same for both masters (contracts.md). The RAM is dual-ported,
+// so fetch and data never wait for each other there; only IO accesses share the arbiter. The GPU's
+// memory windows are data only: an instruction fetch from them answers rsp_err (there is no code
+// there, and the fetch path stays as short as before). Each demux answers addresses no slave claims
+// with rsp_err. With StallInject, every slave sits behind an htx_bus_stall whose random wait states
+// are switched on by stall_en_i.
+//
+// The GPU is htx_raster_icebreaker (docs/soc.md, "GPU"): the raster unit in the `icebreaker`
+// configuration of the UP5K board with its framebuffer and depth memories of FbPixels pixels. It has
+// no texture unit yet, so the TEXTURE block and the texture window are unmapped (errors).
 module htx_soc_fabric #(
   parameter int unsigned RamBytes    = 4096,
   parameter              RamInitFile = "",
   parameter int unsigned ClockHz     = 12_000_000,
   parameter bit          Sim         = 1'b0,
-  parameter bit          StallInject = 1'b0
+  parameter bit          StallInject = 1'b0,
+  parameter int unsigned FbPixels    = 19200   // 160 x 120, even
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -58,7 +66,9 @@ module htx_soc_fabric #(
   localparam logic [31:0] IoBase  = 32'h2000_0000;
   localparam logic [31:0] IoMask  = 32'hF000_0000;
   localparam logic [31:0] RegMask = 32'hFFFF_F000;  // 4 KiB register blocks
-  localparam int unsigned NumIo   = 3;
+  localparam int unsigned NumIo   = 4;          // SYSCTRL, UART, TIMER, RASTER
+  localparam logic [31:0] FbBase  = 32'h3000_0000;  // colour 0x3000_0000, depth 0x3010_0000
+  localparam logic [31:0] FbMask  = 32'hFFE0_0000;
 
   // ---- CPU-side demuxes: slave 0 = RAM port, slave 1 = IO arbiter ----
   logic [1:0]  i_valid, i_ready, i_rsp_valid, i_rsp_err;
@@ -66,11 +76,12 @@ module htx_soc_fabric #(
   logic        i_we;
   logic [3:0]  i_be;
   logic [63:0] i_rsp_rdata;
-  logic [1:0]  d_valid, d_ready, d_rsp_valid, d_rsp_err;
+  // dbus: slave 2 = the GPU's memory windows.
+  logic [2:0]  d_valid, d_ready, d_rsp_valid, d_rsp_err;
   logic [31:0] d_addr, d_wdata;
   logic        d_we;
   logic [3:0]  d_be;
-  logic [63:0] d_rsp_rdata;
+  logic [95:0] d_rsp_rdata;
 
   htx_bus_demux #(
     .NumSlaves(2),
@@ -89,9 +100,9 @@ module htx_soc_fabric #(
   );
 
   htx_bus_demux #(
-    .NumSlaves(2),
-    .SlaveBase({IoBase, RamBase}),
-    .SlaveMask({IoMask, RamMask})
+    .NumSlaves(3),
+    .SlaveBase({FbBase, IoBase, RamBase}),
+    .SlaveMask({FbMask, IoMask, RamMask})
   ) u_dbus_demux (
     .clk_i, .rst_ni,
     .m_req_valid_i(dbus_req_valid_i), .m_req_ready_o(dbus_req_ready_o),
@@ -178,9 +189,9 @@ module htx_soc_fabric #(
 
   htx_bus_demux #(
     .NumSlaves(NumIo),
-    .SlaveBase({htx_timer_reg_pkg::TIMER_BASE_ADDR, htx_uart_reg_pkg::UART_BASE_ADDR,
-                htx_sysctrl_reg_pkg::SYSCTRL_BASE_ADDR}),
-    .SlaveMask({RegMask, RegMask, RegMask})
+    .SlaveBase({htx_raster_reg_pkg::RASTER_BASE_ADDR, htx_timer_reg_pkg::TIMER_BASE_ADDR,
+                htx_uart_reg_pkg::UART_BASE_ADDR, htx_sysctrl_reg_pkg::SYSCTRL_BASE_ADDR}),
+    .SlaveMask({RegMask, RegMask, RegMask, RegMask})
   ) u_io_demux (
     .clk_i, .rst_ni,
     .m_req_valid_i(io_valid), .m_req_ready_o(io_ready), .m_req_addr_i(io_addr),
@@ -232,5 +243,31 @@ module htx_soc_fabric #(
     .req_we_i(q_we[2]), .req_be_i(q_be[8 +: 4]), .req_wdata_i(q_wdata[64 +: 32]),
     .rsp_valid_o(q_rsp_valid[2]), .rsp_rdata_o(q_rsp_rdata[64 +: 32]), .rsp_err_o(q_rsp_err[2]),
     .irq_o(timer_irq_o)
+  );
+
+  // ---- GPU: register port behind the IO demux, memory port on the data bus ----
+  logic        g_valid, g_ready, g_we, g_rsp_valid, g_rsp_err;
+  logic [31:0] g_addr, g_wdata, g_rsp_rdata;
+  logic [3:0]  g_be;
+
+  htx_bus_stall #(.Present(StallInject), .Salt(32'h1234_5603)) u_stall_gpu_mem (
+    .clk_i, .rst_ni, .en_i(stall_en_i), .seed_i(stall_seed_i),
+    .m_req_valid_i(d_valid[2]), .m_req_ready_o(d_ready[2]), .m_req_addr_i(d_addr),
+    .m_req_we_i(d_we), .m_req_be_i(d_be), .m_req_wdata_i(d_wdata),
+    .m_rsp_valid_o(d_rsp_valid[2]), .m_rsp_rdata_o(d_rsp_rdata[64 +: 32]), .m_rsp_err_o(d_rsp_err[2]),
+    .s_req_valid_o(g_valid), .s_req_ready_i(g_ready), .s_req_addr_o(g_addr),
+    .s_req_we_o(g_we), .s_req_be_o(g_be), .s_req_wdata_o(g_wdata),
+    .s_rsp_valid_i(g_rsp_valid), .s_rsp_rdata_i(g_rsp_rdata), .s_rsp_err_i(g_rsp_err)
+  );
+
+  htx_raster_icebreaker #(.FbPixels(FbPixels)) u_gpu (
+    .clk_i, .rst_ni,
+    .reg_req_valid_i(q_valid[3]), .reg_req_ready_o(q_ready[3]), .reg_req_addr_i(q_addr[96 +: 32]),
+    .reg_req_we_i(q_we[3]), .reg_req_be_i(q_be[12 +: 4]), .reg_req_wdata_i(q_wdata[96 +: 32]),
+    .reg_rsp_valid_o(q_rsp_valid[3]), .reg_rsp_rdata_o(q_rsp_rdata[96 +: 32]),
+    .reg_rsp_err_o(q_rsp_err[3]),
+    .mem_req_valid_i(g_valid), .mem_req_ready_o(g_ready), .mem_req_addr_i(g_addr),
+    .mem_req_we_i(g_we), .mem_req_be_i(g_be), .mem_req_wdata_i(g_wdata),
+    .mem_rsp_valid_o(g_rsp_valid), .mem_rsp_rdata_o(g_rsp_rdata), .mem_rsp_err_o(g_rsp_err)
   );
 endmodule
