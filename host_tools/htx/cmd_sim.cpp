@@ -7,12 +7,16 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "commands.hpp"
 
 #if __has_include("htx/sim/soc_sim.hpp")
 #define HTX_HAVE_SOC_SIM 1
+#include "htx/model/image_io.hpp"
 #include "htx/sim/elf_image.hpp"
+#include "htx/sim/frame_crc.hpp"
 #include "htx/sim/serial_endpoint.hpp"
 #include "htx/sim/soc_sim.hpp"
 #else
@@ -33,7 +37,18 @@ struct SimArgs {
   std::string trace;
   std::optional<uint32_t> stall_seed;
   bool json = false;
+  std::string frame;                // PNG of the colour window at exit
+  std::string frame_size = "160x120";
 };
+
+// "WxH" -> (W, H); both 1..4096.
+std::pair<uint32_t, uint32_t> parse_frame_size(const std::string& s) {
+  unsigned w = 0, h = 0;
+  char tail = 0;
+  if (std::sscanf(s.c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 4096 || h > 4096)
+    throw std::runtime_error("--frame-size '" + s + "' is not WIDTHxHEIGHT with sides 1..4096");
+  return {w, h};
+}
 
 #if HTX_HAVE_SOC_SIM
 void write_signature(const sim::SocSim& soc, const sim::ElfImage& elf, const std::string& path) {
@@ -55,6 +70,10 @@ void write_signature(const sim::SocSim& soc, const sim::ElfImage& elf, const std
 
 #if HTX_HAVE_SOC_SIM
 int run_sim(const SimArgs& a) {
+  const auto [frame_w, frame_h] = parse_frame_size(a.frame_size);
+  if (uint64_t{frame_w} * frame_h > sim::SocSim::kFbPixels)
+    throw std::runtime_error("--frame-size " + a.frame_size + " exceeds the framebuffer of " +
+                             std::to_string(sim::SocSim::kFbPixels) + " pixels");
   const sim::ElfImage elf = sim::load_elf(a.elf);
   sim::SimOptions opt;
   opt.max_cycles = a.max_cycles;
@@ -75,6 +94,11 @@ int run_sim(const SimArgs& a) {
   const sim::SimResult r = soc.run();
   uart.reset();  // flushes the UART's last bytes before the summary
   if (!a.signature.empty()) write_signature(soc, elf, a.signature);
+  const std::vector<uint16_t> frame = soc.read_frame(frame_w, frame_h);
+  if (!a.frame.empty())
+    write_png(a.frame, image_from_rgb565(static_cast<int>(frame_w), static_cast<int>(frame_h), frame));
+  char crc_hex[16];
+  std::snprintf(crc_hex, sizeof crc_hex, "%08x", sim::frame_crc32(frame));
 
   const double cpi = r.instret ? static_cast<double>(r.cycles) / static_cast<double>(r.instret) : 0.0;
   const double rate = r.seconds > 0 ? static_cast<double>(r.cycles) / r.seconds : 0.0;
@@ -94,7 +118,7 @@ int run_sim(const SimArgs& a) {
     nlohmann::json j = {{"exit_code", status},       {"reason", sim::to_string(r.reason)},
                         {"cycles", r.cycles},        {"instret", r.instret},
                         {"cpi", cpi},                {"seconds", r.seconds},
-                        {"cycles_per_second", rate}};
+                        {"cycles_per_second", rate}, {"frame_crc32", crc_hex}};
     std::cout << j.dump() << std::endl;
   }
   return status;
@@ -119,8 +143,12 @@ void register_sim(CLI::App& app) {
                   "Write the words from begin_signature to end_signature, 8 hex digits a line");
   cmd->add_option("--trace", args->trace, "Write an FST waveform to this file");
   cmd->add_option("--stall-seed", args->stall_seed, "Insert random wait states on every bus slave, seeded");
+  cmd->add_option("--frame", args->frame,
+                  "At exit, write the framebuffer's colour window (--frame-size pixels) as a PNG");
+  cmd->add_option("--frame-size", args->frame_size,
+                  "Size of the frame in the colour window, WIDTHxHEIGHT with stride WIDTH (default 160x120)");
   cmd->add_flag("--json", args->json,
-                "Print one JSON object (exit_code, cycles, instret, cpi, ...) as the last line of stdout");
+                "Print one JSON object (exit_code, cycles, instret, cpi, ..., frame_crc32) as the last line of stdout");
   cmd->callback([args]() {
     int status = 1;
     try {

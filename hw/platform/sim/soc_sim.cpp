@@ -49,6 +49,11 @@ struct SocSim::Impl {
         rx_decoder(kClockHz / o.baud), tx_encoder(kClockHz / o.baud) {}
 
   auto& ram() { return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_ram__DOT__mem_q; }
+  // The framebuffer's colour memory, two pixels a word (the lower pixel in bits 15:0).
+  auto& fb_color() {
+    return top->rootp
+        ->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_gpu__DOT__u_subsys__DOT__u_fb__DOT__u_color__DOT__mem_q;
+  }
 
   void half_cycle(bool clk) {
     top->clk_i = clk;
@@ -164,6 +169,17 @@ std::vector<uint32_t> SocSim::read_words(uint32_t begin, uint32_t end) const {
   std::vector<uint32_t> out;
   auto& ram = impl_->ram();
   for (uint32_t a = begin; a < end; a += 4) out.push_back(ram[a / 4]);
+  return out;
+}
+
+std::vector<uint16_t> SocSim::read_frame(uint32_t width, uint32_t height) const {
+  if (width == 0 || height == 0 || uint64_t{width} * height > kFbPixels) {
+    throw std::runtime_error("frame of " + std::to_string(width) + "x" + std::to_string(height) +
+                             " pixels does not fit the framebuffer of " + std::to_string(kFbPixels) + " pixels");
+  }
+  auto& mem = impl_->fb_color();
+  std::vector<uint16_t> out(size_t{width} * height);
+  for (size_t i = 0; i < out.size(); ++i) out[i] = static_cast<uint16_t>(mem[i / 2] >> (16 * (i % 2)));
   return out;
 }
 

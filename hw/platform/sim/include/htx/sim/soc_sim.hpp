@@ -38,6 +38,7 @@ class SocSim {
  public:
   static constexpr uint32_t kClockHz = 12'000'000;  // htx_soc_sim_top's ClockHz (SYSCTRL.CLOCK_HZ)
   static constexpr uint32_t kRamBytes = 65536;
+  static constexpr uint32_t kFbPixels = 19200;  // the GPU's framebuffer (htx_soc_fabric's FbPixels)
 
   // Throws std::runtime_error if a segment does not fit in RAM or the trace cannot be opened.
   // `uart` may be null (the RX line stays idle, TX bytes are dropped); SIM_PUTCHAR goes to `console`.
@@ -49,6 +50,9 @@ class SocSim {
   SimResult run();
   // RAM words in [begin, end) (byte addresses, 4-aligned); throws if outside RAM.
   std::vector<uint32_t> read_words(uint32_t begin, uint32_t end) const;
+  // The colour window as the raster unit wrote it: width x height RGB565 pixels with stride `width`,
+  // pixel i at window half-word i (docs/contracts.md). Throws if width * height exceeds kFbPixels.
+  std::vector<uint16_t> read_frame(uint32_t width, uint32_t height) const;
 
  private:
   struct Impl;
