@@ -1,0 +1,22 @@
+// What the render firmware assumes about the SoC's raster unit: the `icebreaker` configuration
+// (docs/soc.md, "GPU"). The raster unit has no capability register for these yet, so they are
+// compiled in; the system test checks them against htx::rtl_config("icebreaker").
+#pragma once
+
+#include <stdint.h>
+
+#include "htx/fw/vertex_record.h"
+
+namespace render_app {
+
+// Vertex-record field widths of the icebreaker raster unit (ModelConfig::record_format()).
+inline constexpr htx::fw::RecordFormat kRecordFormat{14, 16, 24, 13};
+// Methods the icebreaker raster unit builds (bit i = method i).
+inline constexpr uint32_t kMethodsBuilt = 0x3F;
+// Screen: 160 x 120 fits the SoC's framebuffer of 19,200 pixels.
+inline constexpr int32_t kWidth = 160;
+inline constexpr int32_t kHeight = 120;
+inline constexpr uint16_t kClearColor = 0x1234;  // RGB565
+inline constexpr uint32_t kClearDepth = 0xFFFFFF;
+
+}  // namespace render_app

@@ -1,0 +1,233 @@
+// The render firmware (firmware/app/render) on the simulated SoC: its compiled-in scenes are the
+// model's built-in scenes, its configuration constants are the icebreaker raster unit's, and the
+// frame it draws on `htx sim` has the checksum of the cosim frame: the same firmware render code
+// compiled for the host over hal/sim, on the Verilated icebreaker raster subsystem, with the same
+// scenes and render state (whose frame equals the model's for the same vertex records).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "htx/hal/framebuffer.h"
+#include "htx/hal/raster.h"
+#include "htx/hal/sim/raster_sim_bus.hpp"
+#include "htx/model/image_io.hpp"
+#include "htx/model/model.hpp"
+#include "htx/model/scenes.hpp"
+#include "htx/render/frame.h"
+#include "htx/rtl/raster_engine.hpp"
+#include "render_scene.hpp"
+#include "render_state.hpp"
+#include "scenes.hpp"
+#include "soc_config.hpp"
+#include "subprocess.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+
+// Bitwise CRC-32 (IEEE, zlib's), written apart from the firmware's and the harness's table versions.
+uint32_t crc32_bitwise(const std::vector<uint16_t>& pixels) {
+  uint32_t crc = 0xFFFFFFFFu;
+  for (uint16_t p : pixels)
+    for (uint32_t byte : {uint32_t{p} & 0xFFu, uint32_t{p} >> 8}) {
+      crc ^= byte;
+      for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ ((crc & 1u) ? 0xEDB88320u : 0u);
+    }
+  return ~crc;
+}
+
+std::string hex8(uint32_t v) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%08x", v);
+  return buf;
+}
+
+uint32_t field(uint32_t word, uint32_t pos, uint32_t mask) { return (word & mask) >> pos; }
+
+htx::TriState unpack_state_word(uint32_t w) {
+  htx::TriState s;
+  s.method = static_cast<htx::Method>(field(w, RASTER_STATE_METHOD_Pos, RASTER_STATE_METHOD_Msk));
+  s.subdiv_n = field(w, RASTER_STATE_SUBDIV_N_Pos, RASTER_STATE_SUBDIV_N_Msk);
+  s.filter = static_cast<htx::Filter>(field(w, RASTER_STATE_FILTER_Pos, RASTER_STATE_FILTER_Msk));
+  s.wrap_u = static_cast<htx::Wrap>(field(w, RASTER_STATE_WRAP_U_Pos, RASTER_STATE_WRAP_U_Msk));
+  s.wrap_v = static_cast<htx::Wrap>(field(w, RASTER_STATE_WRAP_V_Pos, RASTER_STATE_WRAP_V_Msk));
+  s.depth_func = static_cast<htx::DepthFunc>(field(w, RASTER_STATE_DEPTH_FUNC_Pos, RASTER_STATE_DEPTH_FUNC_Msk));
+  s.depth_write = field(w, RASTER_STATE_DEPTH_WRITE_Pos, RASTER_STATE_DEPTH_WRITE_Msk) != 0;
+  s.textured = field(w, RASTER_STATE_TEXTURED_Pos, RASTER_STATE_TEXTURED_Msk) != 0;
+  s.gouraud = field(w, RASTER_STATE_GOURAUD_Pos, RASTER_STATE_GOURAUD_Msk) != 0;
+  s.combine = static_cast<htx::Combine>(field(w, RASTER_STATE_COMBINE_Pos, RASTER_STATE_COMBINE_Msk));
+  s.texture = static_cast<int>(field(w, RASTER_STATE_TEXTURE_Pos, RASTER_STATE_TEXTURE_Msk));
+  return s;
+}
+
+// The cosim frame of a built-in scene: the model's scene converted as the cosim tests do, the
+// firmware's render state, firmware/render over hal/sim on the Verilated icebreaker subsystem.
+struct CosimFrame {
+  std::vector<uint16_t> color;
+  uint32_t raster_busy = 0;
+  uint32_t sent = 0;
+};
+
+CosimFrame cosim_frame(const std::string& scene_name) {
+  using namespace htx;
+  constexpr int kW = render_app::kWidth, kH = render_app::kHeight;
+  test::RenderScene rs = test::to_render_scene(make_builtin_scene(scene_name), kW, kH);
+  std::vector<render::Mesh> meshes;
+  uint32_t max_vertices = 0;
+  for (auto& d : rs.meshes) {
+    render_app::apply_soc_render_state(&d.mesh);
+    meshes.push_back(d.mesh);
+    max_vertices = std::max(max_vertices, d.mesh.vertex_count);
+  }
+  const ModelConfig cfg = rtl_config("icebreaker");
+  hal::sim::RasterSimBus bus("icebreaker");
+  hal::sim::ScopedBus attach(bus);
+  render::FrameParams frame;
+  frame.viewport = {kW, kH};
+  frame.format = cfg.record_format();
+  frame.methods_built = cfg.methods;
+  frame.cull_backfaces = rs.cull_backfaces;
+  std::vector<render::ClipVert> clip(max_vertices);
+  std::vector<render::ScreenVert> screen(max_vertices);
+  std::vector<uint8_t> codes(max_vertices);
+  render::VertexCache cache{clip.data(), screen.data(), codes.data(), max_vertices};
+  render::DrawStats stats;
+  render::DrawStatus mesh_status = render::kDrawOk;
+  const render::FrameStatus st =
+      render::render_frame(frame, {render_app::kClearColor, render_app::kClearDepth}, rs.view_proj, meshes.data(),
+                           static_cast<uint32_t>(meshes.size()), &cache, 20'000'000, &stats, &mesh_status);
+  if (st != render::kFrameOk) throw std::runtime_error("cosim render_frame failed: " + std::to_string(st));
+  CosimFrame out;
+  out.color.resize(static_cast<size_t>(kW) * kH);
+  for (int y = 0; y < kH; ++y)
+    hal::fb_read_row(kW, static_cast<uint32_t>(y), 0, kW, &out.color[static_cast<size_t>(y) * kW]);
+  hal::RasterCounters counters;
+  hal::raster_read_counters(&counters);
+  out.raster_busy = counters.busy;
+  out.sent = stats.sent;
+
+  // The cosim frame is the model's frame for the records the firmware code streamed.
+  RecordScene records;
+  records.width = kW;
+  records.height = kH;
+  records.clear_color = render_app::kClearColor;
+  records.clear_depth = render_app::kClearDepth;
+  for (const test::CapturedTriangle& t : test::split_fifo_stream(bus.fifo_words()))
+    records.tris.push_back({t.record, unpack_state_word(t.state_word)});
+  const Frame model = render_model_records(records, cfg);
+  if (model.color != out.color) throw std::runtime_error("cosim frame differs from the model's frame");
+  return out;
+}
+
+struct SceneReport {
+  std::map<std::string, std::string> fields;  // "vertices" -> "24", ...
+};
+
+// Parses the firmware's "render <scene> key value key value ..." lines.
+std::map<std::string, SceneReport> parse_report(const std::string& out) {
+  std::map<std::string, SceneReport> r;
+  std::istringstream in(out);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string tag, scene, key, value;
+    if (!(words >> tag >> scene) || tag != "render") continue;
+    SceneReport& s = r[scene];
+    while (words >> key >> value) s.fields[key] = value;
+  }
+  return r;
+}
+
+TEST(SystemRender, CompiledInScenesEqualTheModelsScenes) {
+  uint32_t n = 0;
+  const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
+  ASSERT_EQ(n, 2u);
+  for (uint32_t s = 0; s < n; ++s) {
+    const render_app::SceneData& fw = scenes[s];
+    SCOPED_TRACE(fw.name);
+    const htx::test::RenderScene rs =
+        htx::test::to_render_scene(htx::make_builtin_scene(fw.name), render_app::kWidth, render_app::kHeight);
+    EXPECT_EQ(fw.cull_backfaces, rs.cull_backfaces);
+    EXPECT_EQ(0, std::memcmp(&fw.view_proj, &rs.view_proj, sizeof fw.view_proj));
+    ASSERT_EQ(fw.mesh_count, rs.meshes.size());
+    for (uint32_t m = 0; m < fw.mesh_count; ++m) {
+      const htx::render::Mesh& a = fw.meshes[m];
+      const htx::render::Mesh& b = rs.meshes[m].mesh;
+      ASSERT_EQ(a.vertex_count, b.vertex_count);
+      ASSERT_EQ(a.triangle_count, b.triangle_count);
+      for (uint32_t i = 0; i < a.vertex_count; ++i) {
+        const auto &va = a.vertices[i], &vb = b.vertices[i];
+        EXPECT_TRUE(va.x == vb.x && va.y == vb.y && va.z == vb.z && va.s == vb.s && va.t == vb.t && va.rgba == vb.rgba)
+            << "vertex " << i;
+      }
+      for (uint32_t i = 0; i < 3 * a.triangle_count; ++i) EXPECT_EQ(a.indices[i], b.indices[i]) << "index " << i;
+      EXPECT_EQ(0, std::memcmp(&a.model, &b.model, sizeof a.model));
+      EXPECT_EQ(a.position_bits, b.position_bits);
+      EXPECT_EQ(a.tex.log2_width, b.tex.log2_width);
+      EXPECT_EQ(a.tex.log2_height, b.tex.log2_height);
+      // The firmware overrides textured, gouraud and method (render_state.hpp); the rest is the scene's.
+      EXPECT_EQ(a.state.subdiv_n, b.state.subdiv_n);
+      EXPECT_EQ(a.state.filter, b.state.filter);
+      EXPECT_EQ(a.state.depth_func, b.state.depth_func);
+      EXPECT_EQ(a.state.depth_write, b.state.depth_write);
+      EXPECT_EQ(a.state.combine, b.state.combine);
+    }
+  }
+}
+
+TEST(SystemRender, SocConfigIsTheIcebreakerRasterUnit) {
+  const htx::ModelConfig cfg = htx::rtl_config("icebreaker");
+  const htx::fw::RecordFormat f = cfg.record_format();
+  EXPECT_EQ(render_app::kRecordFormat.xy_int_bits, f.xy_int_bits);
+  EXPECT_EQ(render_app::kRecordFormat.z_bits, f.z_bits);
+  EXPECT_EQ(render_app::kRecordFormat.q_bits, f.q_bits);
+  EXPECT_EQ(render_app::kRecordFormat.uv_int_bits, f.uv_int_bits);
+  EXPECT_EQ(render_app::kMethodsBuilt, cfg.methods);
+}
+
+TEST(SystemRender, FirmwareFrameOnTheSocEqualsTheCosimFrame) {
+  const std::filesystem::path png = std::filesystem::path(::testing::TempDir()) / "htx_render_system_test.png";
+  std::filesystem::remove(png);
+  const auto r = htx::test::run_program({HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/render.elf", "--max-cycles",
+                                         "50000000", "--json", "--frame", png.string()},
+                                        120s);
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  const auto report = parse_report(r.out);
+  ASSERT_TRUE(report.count("cube")) << r.out;
+  ASSERT_TRUE(report.count("floor")) << r.out;
+  const auto json = nlohmann::json::parse(r.out.substr(r.out.rfind('{')));
+  EXPECT_EQ(json.at("reason"), "exit");
+
+  const CosimFrame cube = cosim_frame("cube");
+  const std::string want = hex8(crc32_bitwise(cube.color));
+  const auto& fw = report.at("cube").fields;
+  EXPECT_EQ(fw.at("crc32"), want) << "the firmware's checksum of its cube frame";
+  EXPECT_EQ(fw.at("sent"), std::to_string(cube.sent));
+  // The cube is drawn last, so it is in the colour window the harness reads at exit.
+  EXPECT_EQ(json.at("frame_crc32"), want) << "htx sim's frame_crc32";
+
+  // --frame wrote that frame as a PNG (RGB565 expanded by bit replication).
+  const htx::Image img = htx::load_image(png.string());
+  ASSERT_EQ(img.width, render_app::kWidth);
+  ASSERT_EQ(img.height, render_app::kHeight);
+  EXPECT_EQ(img.rgba, htx::image_from_rgb565(img.width, img.height, cube.color).rgba);
+
+  for (const char* scene : {"floor", "cube"}) {
+    const auto& f = report.at(scene).fields;
+    std::printf("SoC render %s: %s cycles/vertex (geometry), frame %s CPU cycles, raster %s cycles, crc32 %s\n",
+                scene, f.at("geometry_cycles_per_vertex").c_str(), f.at("frame_cycles").c_str(),
+                f.at("raster_cycles").c_str(), f.at("crc32").c_str());
+  }
+  std::printf("cosim cube: raster %u cycles, crc32 %s\nwhole run: %s\n", cube.raster_busy, want.c_str(),
+              json.dump().c_str());
+}
+
+}  // namespace
