@@ -1,6 +1,7 @@
-// htx_soc_fabric (interconnect, RAM, SYSCTRL, UART, TIMER) driven directly on the CPU's two bus
+// htx_soc_fabric (interconnect, RAM, SYSCTRL, UART, TIMER, GPU) driven directly on the CPU's two bus
 // ports: unmapped accesses, RAM throughput and byte lanes, each peripheral, the UART's serial line
-// (internal loopback and the real pins), the timer compare, and random wait states on every slave.
+// (internal loopback and the real pins), the timer compare, the GPU's registers and memory windows,
+// and random wait states on every slave.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -19,7 +20,10 @@ using htx::test::FabricHarness;
 constexpr uint32_t kSys = HTX_SYSCTRL_BASE;
 constexpr uint32_t kUart = HTX_UART_BASE;
 constexpr uint32_t kTimer = HTX_TIMER_BASE;
+constexpr uint32_t kRaster = HTX_RASTER_BASE;
 constexpr uint32_t kRamBytes = 65536;  // the Verilated fabric's RamBytes
+constexpr uint32_t kFbColor = 0x3000'0000, kFbDepth = 0x3010'0000, kTexMem = 0x4000'0000;
+constexpr uint32_t kFbPixels = 19200;  // the fabric's default FbPixels (160 x 120)
 
 uint32_t lcg(uint32_t& s) { return s = s * 1664525u + 1013904223u; }
 
@@ -57,6 +61,45 @@ TEST_P(FabricTest, UnmappedAccessesCompleteWithErrorAndNothingHangs) {
   EXPECT_FALSE(soc.dbus.responses[base + 1].err);
   EXPECT_EQ(soc.dbus.responses[base + 2].rdata, 77u);
   EXPECT_TRUE(soc.dbus.responses[base + 3].err);
+}
+
+TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
+  // RASTER registers on the data port and, like every register block, on the instruction port.
+  EXPECT_EQ(soc.read(kRaster + RASTER_FB_SIZE_Offset).rdata, RASTER_FB_SIZE_RESET);
+  soc.ibus.pending.push_back({kRaster + RASTER_FB_STRIDE_Offset});
+  ASSERT_TRUE(soc.drain());
+  ASSERT_FALSE(soc.ibus.responses.back().err);
+  EXPECT_EQ(soc.ibus.responses.back().rdata, RASTER_FB_STRIDE_RESET);
+  // Colour window: words of two RGB565 pixels, half-word lanes; depth window: one pixel a word, 16 bits.
+  ASSERT_FALSE(soc.write(kFbColor + 8, 0x1111'2222).err);
+  soc.write(kFbColor + 8, 0xAAAA'0000, 0xC);
+  EXPECT_EQ(soc.read(kFbColor + 8).rdata, 0xAAAA'2222u);
+  soc.write(kFbColor + 2 * kFbPixels - 4, 0xBEEF'CAFE);  // the last word
+  EXPECT_EQ(soc.read(kFbColor + 2 * kFbPixels - 4).rdata, 0xBEEF'CAFEu);
+  ASSERT_FALSE(soc.write(kFbDepth + 4 * 17, 0x0001'2345).err);
+  EXPECT_EQ(soc.read(kFbDepth + 4 * 17).rdata & 0xFFFFu, 0x2345u);
+  // Beyond the memories, holes of the windows, and what is not in the SoC yet answer errors.
+  for (uint32_t a : {kFbColor + 2 * kFbPixels, kFbDepth + 4 * kFbPixels, 0x3020'0000u, kTexMem, 0x2000'4000u}) {
+    const auto r = soc.read(a);
+    EXPECT_TRUE(r.err) << std::hex << a;
+    EXPECT_EQ(r.rdata, 0u) << std::hex << a;
+  }
+  // The memory windows are data only: a fetch from them answers an error.
+  soc.ibus.pending.push_back({kFbColor + 8});
+  ASSERT_TRUE(soc.drain());
+  EXPECT_TRUE(soc.ibus.responses.back().err);
+  // The raster unit draws into the memory the windows show: a fast clear of a 16 x 4 screen.
+  soc.write(kRaster + RASTER_FB_SIZE_Offset, 16u | (4u << RASTER_FB_SIZE_HEIGHT_Pos));
+  soc.write(kRaster + RASTER_FB_STRIDE_Offset, 16u);
+  soc.write(kRaster + RASTER_CLEAR_COLOR_Offset, 0x5A5Au);
+  soc.write(kRaster + RASTER_CLEAR_DEPTH_Offset, 0x0123u);
+  soc.write(kRaster + RASTER_CTRL_Offset, RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_CLEAR_COLOR_Msk | RASTER_CTRL_CLEAR_DEPTH_Msk);
+  bool idle = false;
+  for (int i = 0; i < 2000 && !idle; ++i) idle = !(soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_BUSY_Msk);
+  ASSERT_TRUE(idle);
+  for (uint32_t w = 0; w < 32; ++w) EXPECT_EQ(soc.read(kFbColor + 4 * w).rdata, 0x5A5A'5A5Au) << w;
+  EXPECT_EQ(soc.read(kFbColor + 4 * 32).rdata, 0u);  // pixel 64: outside the 16 x 4 screen
+  EXPECT_EQ(soc.read(kFbDepth + 4 * 63).rdata & 0xFFFFu, 0x0123u);
 }
 
 TEST_P(FabricTest, RamByteLanes) {
