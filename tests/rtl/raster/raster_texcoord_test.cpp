@@ -166,7 +166,7 @@ std::vector<Tri> random_tris(uint32_t seed, int n, int w, int h, const ModelConf
   for (int i = 0; i < n; ++i) {
     ScreenTri t;
     const int cls = static_cast<int>(rng() % 8);
-    const double spread = cls < 4 ? 5.0 : (cls < 7 ? 40.0 : 600.0);
+    const double spread = cls < 5 ? 5.0 : (cls < 7 ? 24.0 : (rng() % 4 == 0 ? 600.0 : 40.0));
     const double cx = unit(rng) * (w + 20) - 10, cy = unit(rng) * (h + 20) - 10;
     const double ubase = (unit(rng) - 0.5) * (rng() % 4 == 0 ? 60000.0 : 600.0);
     const double vbase = (unit(rng) - 0.5) * (rng() % 4 == 0 ? 60000.0 : 600.0);

@@ -23,8 +23,11 @@ const Method kBuilt[] = {Method::Affine, Method::Subdiv, Method::RecipLut, Metho
 TEST(RasterThroughput, BigtriPixelsPerClockPerMethod) {
   for (const char* name : {"full", "full_pc", "icebreaker"}) {
     const ModelConfig& cfg = model_config(name == std::string("icebreaker") ? "icebreaker" : "full");
-    ScreenScene s = prepare_screen_scene(make_builtin_scene("bigtri"), 160, 120);
+    // icebreaker divides slowly: a quarter of the pixels is enough for its figure.
+    const bool ice = name == std::string("icebreaker");
+    ScreenScene s = prepare_screen_scene(make_builtin_scene("bigtri"), ice ? 80 : 160, ice ? 60 : 120);
     for (Method m : kBuilt) {
+      if (name == std::string("full_pc") && m != Method::RecipNr) continue;  // colour: any method divides
       for (ScreenTri& t : s.tris) {
         t.state.textured = true;
         t.state.gouraud = true;
@@ -33,9 +36,9 @@ TEST(RasterThroughput, BigtriPixelsPerClockPerMethod) {
       }
       const raster_test::RtlResult r =
           raster_test::draw(name, raster_test::encode(s, cfg), s.width, s.height, 0, 0xFFFFFFFFu, cfg.z_bits);
-      ASSERT_GT(r.fragments, 10000u);
+      ASSERT_GT(r.fragments, ice ? 2000u : 10000u);
       const double ppc = static_cast<double>(r.fragments) / static_cast<double>(r.busy);
-      std::printf("bigtri 160x120 %s %s: %llu fragments, %llu busy clocks, %.3f px/clk\n", name,
+      std::printf("bigtri %dx%d %s %s: %llu fragments, %llu busy clocks, %.3f px/clk\n", s.width, s.height, name,
                   method_name(m, 8).c_str(), static_cast<unsigned long long>(r.fragments),
                   static_cast<unsigned long long>(r.busy), ppc);
       if (name != std::string("icebreaker")) EXPECT_GE(ppc, 0.9) << name << " " << method_name(m, 8);
