@@ -9,6 +9,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "htx/fw/auto_scene.h"
 #include "htx/model/geometry.hpp"
 #include "htx/model/image_io.hpp"
 #include "htx/model/metrics.hpp"
@@ -34,6 +35,7 @@ struct RenderArgs {
   std::string size = "320x240";
   std::string out;
   std::string metrics;
+  double tolerance = 1.0 / 64;
   bool untextured = false;
 };
 
@@ -75,6 +77,9 @@ void run_render(const RenderArgs& a) {
 #else
   const ModelConfig& config = model_config(a.config);
 #endif
+  // AUTO: the firmware's per-triangle choice (docs/auto.md) within --tolerance texels.
+  if (!(a.tolerance > 0)) throw std::invalid_argument("--tolerance must be > 0 texels");
+  fw::resolve_auto_methods(screen, config, static_cast<float>(a.tolerance));
   RefOptions ref_options;
   ref_options.depth_bits = config.z_bits;
 
@@ -96,6 +101,7 @@ void run_render(const RenderArgs& a) {
     MetricsLabels labels{a.engine, a.scene, a.method.empty() ? "scene" : a.method,
                          a.filter.empty() ? "scene" : a.filter, a.engine == "ref" ? "-" : a.config};
     nlohmann::json j = metrics_to_json(compute_metrics(frame, ref, labels));
+    if (a.engine == "model") j["cycles"] = frame.counters.cycles;  // the model's estimate (docs/model.md §9)
 #ifdef HTX_HAVE_RTL_ENGINE
     if (a.engine == "rtl") {
       j["cycles"] = rtl_stats.cycles;
@@ -125,6 +131,8 @@ void register_render(CLI::App& app) {
   cmd->add_option("--method", args->method,
                   "override every triangle's perspective method: affine, subdivN (2..64), recip_lut, recip_nr, "
                   "divfree, quadratic, auto");
+  cmd->add_option("--tolerance", args->tolerance, "AUTO: largest predicted texel-coordinate error (texels)")
+      ->capture_default_str();
   cmd->add_option("--filter", args->filter, "override every triangle's filter: nearest, bilinear, trilinear");
   cmd->add_option("--config", args->config, "model configuration: full | icebreaker")->capture_default_str();
   cmd->add_option("--size", args->size, "frame size WxH")->capture_default_str();

@@ -8,7 +8,6 @@
 #include "htx/fw/vertex_record.h"
 #include "htx/model/geometry.hpp"
 #include "htx/model/scenes.hpp"
-#include "htx/render/auto_method.h"
 #include "htx/render/clip.h"
 #include "htx/render/encode.h"
 #include "htx/render/fixed.h"
@@ -382,32 +381,6 @@ TEST(RenderEncode, RefusesWhatTheRecordCannotHold) {
   EXPECT_EQ(htx::render::encode_triangle_fx(fmt, pv, {}, &rec), htx::fw::kEncodeBadW);
   const htx::fw::RecordFormat bad{14, 16, 40, 13};
   EXPECT_EQ(htx::render::encode_triangle_fx(bad, pv, {}, &rec), htx::fw::kEncodeBadFormat);
-}
-
-TEST(RenderAuto, AffineBoundAgreesWithTheDoubleFormula) {
-  std::mt19937 rng(13);
-  std::uniform_real_distribution<double> du(0, 300), w(0.1, 400), ratio(1, 1.2);
-  const double tol = 1.0 / 64;
-  int disagreements = 0, near = 0;
-  for (int i = 0; i < 100000; ++i) {
-    const double d = i % 2 ? du(rng) : du(rng) / 300;
-    const double wmin = w(rng), wmax = wmin * ratio(rng);
-    const int64_t dfx = static_cast<int64_t>(std::floor(d * 65536 + 0.5));
-    const int32_t a = to_q16(wmin), b = to_q16(wmax);
-    const double sr = std::sqrt(q16(b) / q16(a));
-    const double err = (dfx * kQ) * (sr - 1) / (sr + 1);
-    const bool ref = err <= tol;
-    const bool got = htx::render::affine_within(dfx, to_q16(tol), a, b);
-    if (std::fabs(err - tol) < 1e-3 * tol) {
-      ++near;
-      continue;
-    }
-    disagreements += ref != got;
-  }
-  EXPECT_EQ(disagreements, 0);
-  EXPECT_LT(near, 1000);
-  EXPECT_TRUE(htx::render::affine_within(0, 1024, 65536, 65536 * 100));  // no texture span: always
-  EXPECT_FALSE(htx::render::affine_within(65536 * 64, 1024, 65536, 65536 * 2));
 }
 
 // The whole pipeline on the built-in scenes against prepare_screen_scene + the double encoder.

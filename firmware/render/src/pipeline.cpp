@@ -36,9 +36,16 @@ void finish_triangle(const FrameParams& frame, const Mesh& mesh, const ScreenVer
     ++st->culled;
     return;
   }
-  uint8_t method = mesh.state.method;
-  if (method == kMethodAuto)
-    method = auto_method(v, mesh.tex.log2_width, mesh.tex.log2_height, frame.auto_tolerance, frame.methods_built);
+  TriState state = mesh.state;
+  if (state.method == kMethodAuto) {
+    const uint8_t top = mesh.tex.log2_width > mesh.tex.log2_height ? mesh.tex.log2_width : mesh.tex.log2_height;
+    // An untextured triangle has no texel error: any method will do, so the cheapest.
+    const int64_t tol = state.textured ? frame.auto_tolerance : int64_t{1} << 40;
+    const fw::AutoChoice c = auto_method(v, mesh.tex, frame.auto_config, fw::AutoSampling{state.filter, top}, tol,
+                                         frame.methods_built);
+    state.method = c.method;
+    state.subdiv_n = c.subdiv_n;
+  }
   fw::TriangleRecord rec;
   if (encode_triangle_fx(frame.format, v, mesh.tex, &rec) != fw::kEncodeOk) {
     ++st->encode_errors;
@@ -46,7 +53,7 @@ void finish_triangle(const FrameParams& frame, const Mesh& mesh, const ScreenVer
   }
   uint32_t words[fw::kTriangleWords];
   fw::pack_triangle(rec, words);
-  sink.emit(sink.context, pack_state_word(mesh.state, method), words);
+  sink.emit(sink.context, pack_state_word(state, state.method), words);
   ++st->sent;
 }
 

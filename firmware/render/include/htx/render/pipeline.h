@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "htx/fw/auto_select.h"
 #include "htx/fw/vertex_record.h"
 #include "htx/render/clip.h"
 #include "htx/render/encode.h"
@@ -43,6 +44,7 @@ struct FrameParams {
   fw::RecordFormat format;
   uint32_t methods_built = 0x1F;           // bit i = method i built by the raster unit
   int64_t auto_tolerance = kOne / 64;      // AUTO: largest predicted texel error, Q16.16 texels
+  fw::AutoConfig auto_config{};            // AUTO: the raster configuration's bounds and costs (full)
   bool cull_backfaces = true;              // front faces are counter-clockwise in NDC
 };
 

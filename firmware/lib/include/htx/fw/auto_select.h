@@ -1,0 +1,94 @@
+// AUTO: per triangle, the cheapest perspective method whose predicted texel-coordinate error bound
+// is within a tolerance (docs/auto.md has the bounds, their derivation and the cost model). Shared by
+// the firmware pipeline (firmware/render, fixed-point vertices converted here) and the host
+// (`htx render --method auto --tolerance T`), so both pick with the same code.
+//
+// Single-precision float on purpose: the bounds need products of screen and texture quantities whose
+// ranges do not fit a fixed-point format, and only + - * / and comparisons are used (no libm), all
+// correctly rounded IEEE operations, so the rv32im soft float and the host give identical choices.
+// Freestanding C++17.
+#pragma once
+
+#include <stdint.h>
+
+namespace htx::fw {
+
+// Method numbers of the RASTER STATE word (and of htx::Method).
+enum AutoMethod : uint8_t {
+  kAutoAffine = 0,
+  kAutoSubdiv = 1,
+  kAutoRecipLut = 2,
+  kAutoRecipNr = 3,
+  kAutoDivFree = 4,
+};
+
+// The fields of a raster configuration the bounds and costs depend on (names of htx::ModelConfig;
+// docs/model.md's table). The defaults are `full`; kAutoConfigIcebreaker is the SoC's unit.
+struct AutoConfig {
+  uint8_t recip_table_bits = 10;     // k
+  uint8_t recip_guard_bits = 2;      // g
+  uint8_t recip_width = 32;          // W
+  uint8_t pixel_nr_steps = 2;        // Newton steps of RECIP_NR and the exact points of SUBDIV
+  uint8_t recip_issue_interval = 1;  // clocks between divisions of the shared reciprocal unit
+  uint8_t texcoord_frac_bits = 16;   // TF
+  uint8_t divfree_frac_bits = 4;     // f
+};
+inline constexpr AutoConfig kAutoConfigFull{10, 2, 32, 2, 1, 16, 4};
+inline constexpr AutoConfig kAutoConfigIcebreaker{8, 2, 24, 1, 3, 10, 2};
+
+// Any configuration type with the ModelConfig field names (the host's htx::ModelConfig).
+template <class Config>
+AutoConfig auto_config_of(const Config& c) {
+  AutoConfig a;
+  a.recip_table_bits = static_cast<uint8_t>(c.recip_table_bits);
+  a.recip_guard_bits = static_cast<uint8_t>(c.recip_guard_bits);
+  a.recip_width = static_cast<uint8_t>(c.recip_width);
+  a.pixel_nr_steps = static_cast<uint8_t>(c.pixel_nr_steps);
+  a.recip_issue_interval = static_cast<uint8_t>(c.recip_issue_interval);
+  a.texcoord_frac_bits = static_cast<uint8_t>(c.texcoord_frac_bits);
+  a.divfree_frac_bits = static_cast<uint8_t>(c.divfree_frac_bits);
+  return a;
+}
+
+// A screen triangle: x, y in pixels, clip w (> 0, any common unit), u, v in level-0 texels.
+struct AutoTriangle {
+  float x[3], y[3], w[3], u[3], v[3];
+};
+
+// What the triangle is drawn with (texture filter and the texture's last mip level, for DIVFREE's
+// cell size).
+struct AutoSampling {
+  uint8_t filter = 1;     // 0 nearest, 1 bilinear, 2 trilinear
+  uint8_t top_level = 0;  // max(log2 width, log2 height) of the texture
+};
+
+struct AutoChoice {
+  uint8_t method = kAutoRecipNr;
+  uint8_t subdiv_n = 16;  // for kAutoSubdiv (2..64)
+  bool within = false;    // the predicted bound is within the tolerance (else: the fallback)
+  float bound = 0;        // predicted max texel-coordinate error of the choice (texels)
+  float cycles = 0;       // predicted raster cycles of the triangle (docs/model.md §9 estimate)
+};
+
+// Predicted error bounds (texels) of each method for one triangle; bound_subdiv(n) per span length.
+struct AutoBounds {
+  float affine, recip_lut, recip_nr, divfree;
+  float subdiv_slope;      // max |du/dx| over the triangle (texels per pixel), the larger axis
+  float subdiv_curvature;  // max |d2u/dx2| over the triangle (texels per pixel^2), the larger axis
+  float span_limit;        // longest possible span: the x extent in pixels, + 1
+  float du;                // largest u or v difference between the vertices (texels)
+};
+AutoBounds auto_bounds(const AutoTriangle& t, const AutoConfig& cfg, const AutoSampling& s);
+float auto_bound_subdiv(const AutoBounds& b, const AutoConfig& cfg, unsigned n);
+
+// Predicted raster cycles (docs/model.md §9) of drawing the triangle with `method` (n for SUBDIV).
+float auto_cycles(const AutoTriangle& t, const AutoConfig& cfg, uint8_t method, unsigned n);
+
+// The cheapest built method (bit i of `built` = method i) whose bound is within `tolerance`
+// texels; among equal costs the smaller bound. When none is within it (or the triangle is
+// degenerate or not finite): RECIP_NR if built, else RECIP_LUT, else SUBDIV with n = 2, else AFFINE,
+// with within = false.
+AutoChoice choose_method(const AutoTriangle& t, const AutoConfig& cfg, const AutoSampling& s, uint32_t built,
+                         float tolerance);
+
+}  // namespace htx::fw

@@ -1,0 +1,35 @@
+// Texture upload: a level-0 image encoded into its format, its whole mip chain generated (the box
+// filter of htx/fw/mip_chain.h, bit-exact with the model) and written into the texture memory
+// window through the HAL, then the slot's descriptor pointed at it.
+#pragma once
+
+#include <stdint.h>
+
+#include "htx/hal/texture.h"
+
+namespace htx::render {
+
+struct TextureImage {
+  const uint32_t* rgba8;   // 2^log2_width x 2^log2_height pixels, row-major (row 0 = v = 0), r in bits 7:0
+  uint8_t log2_width = 6, log2_height = 6;  // 3..8 each
+  uint8_t format = 0;      // 0 RGB565, 1 RGBA4444, 2 RGBA8888
+};
+
+// Scratch words upload_texture needs: level 1's texel count (max(1, w/2) * max(1, h/2)).
+inline uint32_t texture_upload_scratch_words(uint32_t log2_w, uint32_t log2_h) {
+  return (log2_w > 0 ? 1u << (log2_w - 1) : 1u) * (log2_h > 0 ? 1u << (log2_h - 1) : 1u);
+}
+
+enum UploadStatus : int {
+  kUploadOk = 0,
+  kUploadBadTexture = 1,     // hal::texture_check refused slot, size, format or placement (*hal_status says why)
+  kUploadScratchTooSmall = 2,
+  kUploadTimeout = 3,        // the texture unit stayed busy (the descriptor was not written)
+};
+
+// Uploads img's chain at base_block and points `slot` at it. Waits (max_polls STATUS reads) for the
+// unit to be idle before writing the descriptor. Blocks used: hal::texture_chain_blocks.
+UploadStatus upload_texture(uint32_t slot, uint32_t base_block, const TextureImage& img, uint32_t* scratch,
+                            uint32_t scratch_words, uint32_t max_polls, hal::TextureStatus* hal_status = nullptr);
+
+}  // namespace htx::render

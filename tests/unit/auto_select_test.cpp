@@ -1,0 +1,232 @@
+// AUTO's error bounds (firmware/lib auto_select.h, docs/auto.md) against the true errors of the
+// interpolation schemes they bound, computed in doubles on random triangles, and the choice rule
+// (cheapest within the tolerance; the documented fallback).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "htx/fw/auto_select.h"
+#include "htx/render/auto_method.h"
+
+namespace {
+
+using htx::fw::AutoBounds;
+using htx::fw::AutoConfig;
+using htx::fw::AutoTriangle;
+
+// Perspective-correct u, v at screen point (px, py) from barycentrics of the screen triangle.
+struct Persp {
+  const AutoTriangle& t;
+  double det;
+  explicit Persp(const AutoTriangle& tri)
+      : t(tri), det((tri.x[1] - tri.x[0]) * (tri.y[2] - tri.y[0]) - (tri.x[2] - tri.x[0]) * (tri.y[1] - tri.y[0])) {}
+  void bary(double px, double py, double l[3]) const {
+    l[1] = ((px - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (py - t.y[0])) / det;
+    l[2] = ((t.x[1] - t.x[0]) * (py - t.y[0]) - (px - t.x[0]) * (t.y[1] - t.y[0])) / det;
+    l[0] = 1 - l[1] - l[2];
+  }
+  // Exact (perspective) value of axis a at a screen point.
+  double exact(const float a[3], double px, double py) const {
+    double l[3], num = 0, den = 0;
+    bary(px, py, l);
+    for (int i = 0; i < 3; ++i) {
+      num += l[i] * a[i] / t.w[i];
+      den += l[i] / t.w[i];
+    }
+    return num / den;
+  }
+  double affine(const float a[3], double px, double py) const {
+    double l[3];
+    bary(px, py, l);
+    return l[0] * a[0] + l[1] * a[1] + l[2] * a[2];
+  }
+  bool inside(double px, double py) const {
+    double l[3];
+    bary(px, py, l);
+    return l[0] >= 0 && l[1] >= 0 && l[2] >= 0;
+  }
+};
+
+AutoTriangle random_triangle(std::mt19937& rng) {
+  std::uniform_real_distribution<float> pos(0, 200), logr(0, 4), texel(-300, 300), scale(0, 1);
+  AutoTriangle t;
+  const float s = std::pow(10.0f, -2 * scale(rng));  // texel spans from 300 down to 3
+  const float r = std::pow(10.0f, logr(rng) * scale(rng));
+  for (int i = 0; i < 3; ++i) {
+    t.x[i] = pos(rng);
+    t.y[i] = pos(rng);
+    t.u[i] = texel(rng) * s;
+    t.v[i] = texel(rng) * s;
+    t.w[i] = 1 + (r - 1) * scale(rng);
+  }
+  const unsigned near = rng() % 3, far = (near + 1 + rng() % 2) % 3;  // the extremes of w at two vertices
+  t.w[near] = 1;
+  t.w[far] = r;
+  return t;
+}
+
+// Largest error over both axes of a SUBDIV-like scheme in exact arithmetic: per pixel row, exact
+// values at the span's first pixel, every n pixels, and its last pixel, linear in between.
+double subdiv_true_error(const AutoTriangle& t, unsigned n) {
+  const Persp p(t);
+  const float* axes[2] = {t.u, t.v};
+  double worst = 0;
+  const int y0 = static_cast<int>(std::floor(std::min({t.y[0], t.y[1], t.y[2]})));
+  const int y1 = static_cast<int>(std::ceil(std::max({t.y[0], t.y[1], t.y[2]})));
+  const int x0 = static_cast<int>(std::floor(std::min({t.x[0], t.x[1], t.x[2]})));
+  const int x1 = static_cast<int>(std::ceil(std::max({t.x[0], t.x[1], t.x[2]})));
+  for (int y = y0; y <= y1; ++y) {
+    const double py = y + 0.5;
+    int first = -1, last = -1;
+    for (int x = x0; x <= x1; ++x)
+      if (p.inside(x + 0.5, py)) {
+        if (first < 0) first = x;
+        last = x;
+      }
+    if (first < 0) continue;
+    for (const float* a : axes)
+      for (int s = first; s < last; s += static_cast<int>(n)) {
+        const int e = std::min(last, s + static_cast<int>(n));
+        const double ua = p.exact(a, s + 0.5, py), ub = p.exact(a, e + 0.5, py);
+        for (int x = s; x <= e; ++x) {
+          const double lin = ua + (ub - ua) * (x - s) / static_cast<double>(e - s);
+          worst = std::max(worst, std::fabs(lin - p.exact(a, x + 0.5, py)));
+        }
+      }
+  }
+  return worst;
+}
+
+double affine_true_error(const AutoTriangle& t) {
+  const Persp p(t);
+  double worst = 0;
+  for (int i = 0; i <= 60; ++i)
+    for (int j = 0; i + j <= 60; ++j) {
+      const double l1 = i / 60.0, l2 = j / 60.0, l0 = 1 - l1 - l2;
+      const double px = l0 * t.x[0] + l1 * t.x[1] + l2 * t.x[2], py = l0 * t.y[0] + l1 * t.y[1] + l2 * t.y[2];
+      worst = std::max(worst, std::fabs(p.exact(t.u, px, py) - p.affine(t.u, px, py)));
+      worst = std::max(worst, std::fabs(p.exact(t.v, px, py) - p.affine(t.v, px, py)));
+    }
+  return worst;
+}
+
+TEST(AutoBounds, AffineAndSubdivBoundsHoldOnRandomTriangles) {
+  std::mt19937 rng(2026);
+  const AutoConfig cfg = htx::fw::kAutoConfigIcebreaker;
+  int tight_affine = 0, tight_subdiv = 0, checked = 0;
+  for (int k = 0; k < 300; ++k) {
+    const AutoTriangle t = random_triangle(rng);
+    const double det = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
+    if (std::fabs(det) < 50) continue;
+    ++checked;
+    const AutoBounds b = htx::fw::auto_bounds(t, cfg, {});
+    const double aff = affine_true_error(t);
+    ASSERT_LE(aff, b.affine) << "triangle " << k;
+    tight_affine += aff > 0.5 * b.affine;
+    for (const unsigned n : {4u, 16u, 64u}) {
+      const double sub = subdiv_true_error(t, n);
+      ASSERT_LE(sub, htx::fw::auto_bound_subdiv(b, cfg, n)) << "triangle " << k << " n " << n;
+      tight_subdiv += sub > 0.1 * htx::fw::auto_bound_subdiv(b, cfg, n);
+    }
+  }
+  EXPECT_GT(checked, 200);
+  // The bounds are not vacuous: the affine one is within 2x of the truth on most triangles, and the
+  // SUBDIV one within 10x on a good share (it takes the extremes of slope and 1/q jointly).
+  EXPECT_GT(tight_affine, checked / 2);
+  EXPECT_GT(tight_subdiv, checked / 4);
+}
+
+TEST(AutoChoose, CheapestWithinToleranceAmongEveryCandidate) {
+  std::mt19937 rng(77);
+  for (const AutoConfig& cfg : {htx::fw::kAutoConfigIcebreaker, htx::fw::kAutoConfigFull}) {
+    int per_method[5] = {};
+    for (int k = 0; k < 2000; ++k) {
+      const AutoTriangle t = random_triangle(rng);
+      const float tol = (k % 3 == 0) ? 1.0f / 64 : (k % 3 == 1 ? 1.0f / 16 : 0.5f);
+      const htx::fw::AutoSampling s{1, 6};
+      const htx::fw::AutoChoice c = htx::fw::choose_method(t, cfg, s, 0x1F, tol);
+      ASSERT_LT(c.method, 5);
+      ++per_method[c.method];
+      if (!c.within) {
+        EXPECT_EQ(c.method, htx::fw::kAutoRecipNr);
+        continue;
+      }
+      EXPECT_LE(c.bound, tol);
+      // No candidate within the tolerance is cheaper.
+      const AutoBounds b = htx::fw::auto_bounds(t, cfg, s);
+      const float plain[5] = {b.affine, 0, b.recip_lut, b.recip_nr, b.divfree};
+      for (uint8_t m : {0, 2, 3, 4})
+        if (plain[m] <= tol) {
+          EXPECT_GE(htx::fw::auto_cycles(t, cfg, m, 0), c.cycles) << "method " << int(m);
+        }
+      for (unsigned n = 2; n <= 64; ++n)
+        if (htx::fw::auto_bound_subdiv(b, cfg, n) <= tol) {
+          EXPECT_GE(htx::fw::auto_cycles(t, cfg, htx::fw::kAutoSubdiv, n), c.cycles) << "subdiv " << n;
+        }
+    }
+    // Every method of the choice is exercised by these triangles, except DIVFREE (half a cell).
+    if (cfg.recip_issue_interval > 1) {
+      EXPECT_GT(per_method[htx::fw::kAutoAffine], 0);
+      EXPECT_GT(per_method[htx::fw::kAutoSubdiv], 0);
+      EXPECT_GT(per_method[htx::fw::kAutoRecipLut], 0);
+      EXPECT_GT(per_method[htx::fw::kAutoRecipNr], 0);
+    } else {
+      // A pipelined divider makes RECIP_NR as cheap as AFFINE and more accurate.
+      EXPECT_EQ(per_method[htx::fw::kAutoRecipNr], 2000);
+    }
+  }
+}
+
+TEST(AutoChoose, FallbackAndBadInput) {
+  AutoTriangle t{{0, 100, 0}, {0, 0, 100}, {1, 4, 2}, {0, 200, 0}, {0, 0, 200}};
+  const AutoConfig cfg = htx::fw::kAutoConfigIcebreaker;
+  htx::fw::AutoChoice c = htx::fw::choose_method(t, cfg, {}, 0x1F, 1e-9f);
+  EXPECT_FALSE(c.within);
+  EXPECT_EQ(c.method, htx::fw::kAutoRecipNr);
+  c = htx::fw::choose_method(t, cfg, {}, 0x17, 1e-9f);  // no RECIP_NR
+  EXPECT_EQ(c.method, htx::fw::kAutoRecipLut);
+  c = htx::fw::choose_method(t, cfg, {}, 0x13, 1e-9f);  // no divider at all but SUBDIV
+  EXPECT_EQ(c.method, htx::fw::kAutoSubdiv);
+  EXPECT_EQ(c.subdiv_n, 2);
+  c = htx::fw::choose_method(t, cfg, {}, 0x1F, 1e6f);  // anything goes: the cheapest, the more accurate of the two
+  EXPECT_TRUE(c.within);
+  EXPECT_TRUE(c.method == htx::fw::kAutoAffine || c.method == htx::fw::kAutoRecipLut);
+  t.w[1] = NAN;
+  c = htx::fw::choose_method(t, cfg, {}, 0x1F, 1.0f);
+  EXPECT_FALSE(c.within);
+  EXPECT_EQ(c.method, htx::fw::kAutoRecipNr);
+  t.w[1] = -1;
+  EXPECT_FALSE(htx::fw::choose_method(t, cfg, {}, 0x1F, 1.0f).within);
+  t.w[1] = 4;
+  EXPECT_FALSE(htx::fw::choose_method(t, cfg, {}, 0x1F, 0.0f).within);  // tolerance must be > 0
+  // A degenerate triangle (zero area) never divides by its determinant.
+  AutoTriangle line{{0, 10, 20}, {0, 10, 20}, {1, 2, 3}, {0, 5, 9}, {0, 1, 2}};
+  EXPECT_TRUE(htx::fw::choose_method(line, cfg, {}, 0x1F, 1.0f / 16).method < 5);
+}
+
+TEST(AutoChoose, FirmwareAdapterSeesPixelsAndTexels) {
+  htx::render::ClipVert cv[3] = {};
+  htx::render::ScreenVert sv[3] = {};
+  const int32_t xs[3] = {0, 100, 0}, ys[3] = {0, 0, 100};
+  for (int i = 0; i < 3; ++i) {
+    cv[i].s = i == 1 ? 65536 : 0;  // s = 1.0: one texture width
+    cv[i].t = i == 2 ? 32768 : 0;
+    sv[i].x = xs[i] * 256;
+    sv[i].y = ys[i] * 256;
+    sv[i].w = 65536 * (i + 1);
+    sv[i].attr = &cv[i];
+  }
+  const htx::render::ScreenVert* pv[3] = {&sv[0], &sv[1], &sv[2]};
+  const AutoTriangle t = htx::render::auto_triangle(pv, {6, 5});
+  EXPECT_EQ(t.x[1], 100.0f);
+  EXPECT_EQ(t.y[2], 100.0f);
+  EXPECT_EQ(t.w[2], 3.0f);
+  EXPECT_EQ(t.u[1], 64.0f);
+  EXPECT_EQ(t.v[2], 16.0f);
+  const htx::fw::AutoChoice c = htx::render::auto_method(pv, {6, 5}, htx::fw::kAutoConfigIcebreaker, {}, 4096, 0x1F);
+  EXPECT_EQ(c.method, htx::fw::choose_method(t, htx::fw::kAutoConfigIcebreaker, {}, 0x1F, 1.0f / 16).method);
+}
+
+}  // namespace

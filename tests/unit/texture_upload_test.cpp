@@ -1,0 +1,211 @@
+// The texel formats and the mip chain of firmware/lib against the model (hw/model texture.cpp,
+// make_texture), and the texture driver (hal/include/htx/hal/texture.h) with the upload of
+// firmware/render over the FakeBus: every level lands at the documented layout (docs/texture.md),
+// the descriptor reads as documented, bad input is refused without a write.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "htx/fw/mip_chain.h"
+#include "htx/fw/texel.h"
+#include "htx/hal/sim/fake_bus.hpp"
+#include "htx/hal/texture.h"
+#include "htx/model/texture.hpp"
+#include "htx/render/texture_upload.h"
+
+namespace {
+
+using htx::hal::sim::FakeBus;
+using htx::hal::sim::ScopedBus;
+
+uint32_t pack(const htx::Rgba8& c) {
+  return uint32_t{c.r} | (uint32_t{c.g} << 8) | (uint32_t{c.b} << 16) | (uint32_t{c.a} << 24);
+}
+
+std::vector<uint32_t> random_image(std::mt19937& rng, unsigned lw, unsigned lh) {
+  std::vector<uint32_t> img(size_t{1} << (lw + lh));
+  for (uint32_t& p : img) p = rng();
+  return img;
+}
+
+std::vector<uint8_t> bytes_of(const std::vector<uint32_t>& img) {
+  std::vector<uint8_t> b;
+  for (uint32_t p : img)
+    for (int k = 0; k < 4; ++k) b.push_back(static_cast<uint8_t>(p >> (8 * k)));
+  return b;
+}
+
+constexpr htx::TexFormat kFormats[] = {htx::TexFormat::RGB565, htx::TexFormat::RGBA4444, htx::TexFormat::RGBA8888};
+
+TEST(Texel, EncodeAndDecodeEqualTheModelForEveryChannelValue) {
+  for (const htx::TexFormat f : kFormats) {
+    const uint8_t fmt = static_cast<uint8_t>(f);
+    for (uint32_t c = 0; c < 256; ++c) {
+      const htx::Rgba8 rgba{static_cast<uint8_t>(c), static_cast<uint8_t>(255 - c), static_cast<uint8_t>(c * 7),
+                            static_cast<uint8_t>(c * 13)};
+      ASSERT_EQ(htx::fw::encode_texel(fmt, pack(rgba)), htx::encode_texel(f, rgba)) << int(fmt) << " " << c;
+    }
+    const uint32_t n = f == htx::TexFormat::RGBA8888 ? 70000 : 65536;
+    std::mt19937 rng(5);
+    for (uint32_t t = 0; t < n; ++t) {
+      const uint32_t texel = f == htx::TexFormat::RGBA8888 ? rng() : t;
+      ASSERT_EQ(htx::fw::decode_texel(fmt, texel), pack(htx::decode_texel(f, texel))) << int(fmt) << " " << texel;
+    }
+  }
+  EXPECT_EQ(htx::fw::encode_texel(3, 0xFFFFFFFFu), 0u);  // unknown format: documented 0
+  EXPECT_EQ(htx::fw::decode_texel(3, 0xFFFFu), 0u);
+}
+
+// The whole chain, level by level, equals make_texture's for every format and shape.
+TEST(MipChain, EqualsTheModelChainForEveryFormatAndShape) {
+  std::mt19937 rng(11);
+  const unsigned sizes[][2] = {{3, 3}, {6, 6}, {8, 3}, {3, 8}, {5, 7}, {8, 8}};
+  for (const htx::TexFormat f : kFormats)
+    for (const auto& sz : sizes) {
+      const unsigned lw = sz[0], lh = sz[1];
+      const std::vector<uint32_t> img = random_image(rng, lw, lh);
+      const htx::Texture model = htx::make_texture(f, lw, lh, bytes_of(img));
+      const unsigned levels = htx::fw::mip_level_count(lw, lh);
+      ASSERT_EQ(levels, model.levels.size());
+      std::vector<uint32_t> level(size_t{1} << (lw + lh - 2));
+      for (unsigned l = 1; l < levels; ++l) {
+        const unsigned aw = htx::fw::mip_level_log2(lw, l - 1), ah = htx::fw::mip_level_log2(lh, l - 1);
+        if (l == 1)
+          htx::fw::mip_next_level(static_cast<uint8_t>(f), img.data(), htx::fw::kMipSourceRgba8, aw, ah, level.data());
+        else
+          htx::fw::mip_next_level(static_cast<uint8_t>(f), level.data(), htx::fw::kMipSourceTexels, aw, ah,
+                                  level.data());  // in place
+        const size_t count = size_t{1} << (htx::fw::mip_level_log2(lw, l) + htx::fw::mip_level_log2(lh, l));
+        ASSERT_EQ(model.levels[l].size(), count);
+        for (size_t k = 0; k < count; ++k)
+          ASSERT_EQ(level[k], model.levels[l][k]) << "format " << int(f) << " " << lw << "x" << lh << " level " << l
+                                                  << " texel " << k;
+      }
+      // The levels are not trivially equal: a random image has distinct texels at level 1.
+      EXPECT_NE(model.levels[1][0], model.levels[1][1]);
+    }
+}
+
+// docs/texture.md's layout written independently of the driver: levels one after the other, each
+// row-major in 2x2 blocks of four consecutive words.
+uint32_t doc_word(uint32_t base, unsigned lw0, unsigned lh0, unsigned level, uint32_t i, uint32_t j) {
+  uint32_t offset = 0;
+  for (unsigned l = 0; l < level; ++l) {
+    const uint32_t w = std::max(1u, (1u << lw0) >> l), h = std::max(1u, (1u << lh0) >> l);
+    offset += std::max(1u, w / 2) * std::max(1u, h / 2);
+  }
+  const uint32_t wl = std::max(1u, (1u << lw0) >> level);
+  return 4 * (base + offset + (j >> 1) * std::max(1u, wl / 2) + (i >> 1)) + 2 * (j & 1) + (i & 1);
+}
+
+TEST(TextureDriver, UploadWritesEveryLevelAtTheDocumentedLayoutThenTheDescriptor) {
+  std::mt19937 rng(3);
+  struct Case {
+    htx::TexFormat f;
+    unsigned lw, lh, slot, base;
+  };
+  for (const Case c : {Case{htx::TexFormat::RGB565, 6, 6, 0, 0}, Case{htx::TexFormat::RGBA4444, 5, 3, 3, 1366},
+                       Case{htx::TexFormat::RGBA8888, 3, 7, 7, 40000}}) {
+    FakeBus bus;
+    ScopedBus attach(bus);
+    const std::vector<uint32_t> img = random_image(rng, c.lw, c.lh);
+    const htx::Texture model = htx::make_texture(c.f, c.lw, c.lh, bytes_of(img));
+    std::vector<uint32_t> scratch(htx::render::texture_upload_scratch_words(c.lw, c.lh));
+    const htx::render::TextureImage tex{img.data(), static_cast<uint8_t>(c.lw), static_cast<uint8_t>(c.lh),
+                                        static_cast<uint8_t>(c.f)};
+    ASSERT_EQ(htx::render::upload_texture(c.slot, c.base, tex, scratch.data(), static_cast<uint32_t>(scratch.size()),
+                                          100),
+              htx::render::kUploadOk);
+    // The descriptor is the last write: BASE, LOG2_WIDTH, LOG2_HEIGHT, FORMAT of hw/regs/texture.json.
+    const uint32_t desc = HTX_TEXTURE_BASE + TEXTURE_TEX0_Offset + 4 * c.slot;
+    const std::vector<uint32_t> d = bus.writes_to(desc);
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_EQ(d[0], c.base | (c.lw << 16) | (c.lh << 20) | (static_cast<uint32_t>(c.f) << 24));
+    EXPECT_TRUE(bus.log().back().write);
+    EXPECT_EQ(bus.log().back().addr, desc);
+    // Exactly one write per texel of the chain, each inside the chain's blocks.
+    size_t window_writes = 0;
+    const uint32_t chain_end = htx::hal::kTexWindowBase + 16 * (c.base + htx::hal::texture_chain_blocks(c.lw, c.lh));
+    for (const FakeBus::Access& a : bus.log())
+      if (a.write && a.addr >= htx::hal::kTexWindowBase) {
+        ++window_writes;
+        EXPECT_GE(a.addr, htx::hal::kTexWindowBase + 16 * c.base);
+        EXPECT_LT(a.addr, chain_end);
+      }
+    size_t texels = 0;
+    for (unsigned l = 0; l < model.levels.size(); ++l) {
+      const uint32_t w = 1u << htx::fw::mip_level_log2(c.lw, l), h = 1u << htx::fw::mip_level_log2(c.lh, l);
+      for (uint32_t j = 0; j < h; ++j)
+        for (uint32_t i = 0; i < w; ++i) {
+          const uint32_t addr = htx::hal::kTexWindowBase + 4 * doc_word(c.base, c.lw, c.lh, l, i, j);
+          ASSERT_EQ(bus.peek(addr), model.levels[l][j * w + i]) << "level " << l << " (" << i << ", " << j << ")";
+          ASSERT_EQ(htx::hal::texture_read_texel(c.base, c.lw, c.lh, l, i, j), model.levels[l][j * w + i]);
+          ++texels;
+        }
+    }
+    EXPECT_EQ(window_writes, texels);
+  }
+  // 64x64: 1366 blocks (docs/texture.md).
+  EXPECT_EQ(htx::hal::texture_chain_blocks(6, 6), 1366u);
+}
+
+TEST(TextureDriver, BadInputIsRefusedWithoutAWrite) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  std::vector<uint32_t> img(64 * 64, 0x80808080u), scratch(32 * 32);
+  htx::render::TextureImage tex{img.data(), 6, 6, 0};
+  const auto upload = [&](uint32_t slot, uint32_t base, uint32_t scratch_words, htx::hal::TextureStatus* why) {
+    return htx::render::upload_texture(slot, base, tex, scratch.data(), scratch_words, 10, why);
+  };
+  htx::hal::TextureStatus why = htx::hal::kTextureOk;
+  EXPECT_EQ(upload(8, 0, 1024, &why), htx::render::kUploadBadTexture);
+  EXPECT_EQ(why, htx::hal::kTextureBadSlot);
+  EXPECT_EQ(upload(0, 65536, 1024, &why), htx::render::kUploadBadTexture);
+  EXPECT_EQ(why, htx::hal::kTextureBadBase);
+  EXPECT_EQ(upload(0, 65536 - 1000, 1024, &why), htx::render::kUploadBadTexture);  // runs past the 1 MiB window
+  EXPECT_EQ(why, htx::hal::kTextureTooLarge);
+  EXPECT_EQ(upload(0, 0, 1023, &why), htx::render::kUploadScratchTooSmall);
+  tex.format = 3;
+  EXPECT_EQ(upload(0, 0, 1024, &why), htx::render::kUploadBadTexture);
+  EXPECT_EQ(why, htx::hal::kTextureBadFormat);
+  tex.format = 0;
+  tex.log2_width = 9;
+  EXPECT_EQ(upload(0, 0, 1 << 16, &why), htx::render::kUploadBadTexture);
+  EXPECT_EQ(why, htx::hal::kTextureBadSize);
+  tex.log2_width = 2;
+  EXPECT_EQ(upload(0, 0, 1 << 16, &why), htx::render::kUploadBadTexture);
+  EXPECT_TRUE(bus.log().empty());
+
+  // A unit that never goes idle: the chain is written, the descriptor is not, and the wait ends.
+  tex.log2_width = 6;
+  bus.poke(HTX_TEXTURE_BASE + TEXTURE_STATUS_Offset, TEXTURE_STATUS_BUSY_Msk);
+  EXPECT_EQ(upload(0, 0, 1024, &why), htx::render::kUploadTimeout);
+  EXPECT_EQ(why, htx::hal::kTextureTimeout);
+  EXPECT_EQ(bus.reads_of(HTX_TEXTURE_BASE + TEXTURE_STATUS_Offset), 10u);
+  EXPECT_TRUE(bus.writes_to(HTX_TEXTURE_BASE + TEXTURE_TEX0_Offset).empty());
+}
+
+TEST(TextureDriver, CapsStatusAndCounters) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  bus.poke(HTX_TEXTURE_BASE + TEXTURE_CAPS_Offset, 0x3u | (0x3u << 4) | (4u << 8) | (10u << 16) | (16u << 24));
+  const htx::hal::TextureCaps caps = htx::hal::texture_caps();
+  EXPECT_EQ(caps.formats, 3u);
+  EXPECT_EQ(caps.filters, 3u);
+  EXPECT_FALSE(caps.counters);
+  EXPECT_EQ(caps.slots, 4u);
+  EXPECT_EQ(caps.block_bits, 10u);
+  EXPECT_EQ(caps.texel_bits, 16u);
+  bus.poke(HTX_TEXTURE_BASE + TEXTURE_STATUS_Offset, TEXTURE_STATUS_ERR_FILTER_Msk);
+  EXPECT_EQ(htx::hal::texture_errors(), TEXTURE_STATUS_ERR_FILTER_Msk);
+  htx::hal::texture_clear_errors();
+  EXPECT_EQ(bus.writes_to(HTX_TEXTURE_BASE + TEXTURE_STATUS_Offset),
+            std::vector<uint32_t>{TEXTURE_STATUS_ERR_FORMAT_Msk | TEXTURE_STATUS_ERR_FILTER_Msk});
+  htx::hal::texture_reset_counters();
+  EXPECT_EQ(bus.writes_to(HTX_TEXTURE_BASE + TEXTURE_CNT_RESET_Offset), std::vector<uint32_t>{1u});
+  bus.poke(HTX_TEXTURE_BASE + TEXTURE_CNT_SAMPLES_Offset, 1234);
+  EXPECT_EQ(htx::hal::texture_samples(), 1234u);
+}
+
+}  // namespace
