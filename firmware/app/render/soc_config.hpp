@@ -11,8 +11,8 @@ namespace render_app {
 
 // Vertex-record field widths of the icebreaker raster unit (ModelConfig::record_format()).
 inline constexpr htx::fw::RecordFormat kRecordFormat{14, 16, 24, 13};
-// Methods the icebreaker raster unit builds (bit i = method i).
-inline constexpr uint32_t kMethodsBuilt = 0x3F;
+// Methods the raster unit builds (bit i = method i): AFFINE, SUBDIV, RECIP_LUT, RECIP_NR.
+inline constexpr uint32_t kMethodsBuilt = 0x0F;
 // Screen: 160 x 120 fits the SoC's framebuffer of 19,200 pixels.
 inline constexpr int32_t kWidth = 160;
 inline constexpr int32_t kHeight = 120;
