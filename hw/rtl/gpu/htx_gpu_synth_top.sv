@@ -1,0 +1,52 @@
+// Place-and-route harness for the GPU (raster unit + texture unit with both bus ports): the bus
+// inputs come from a shift register fed by one pin, the outputs fold into one registered pin, so
+// the design fits the UP5K package while no input is a constant. The framebuffer and depth
+// memories shrink to 4 pixels (on a board they are SPRAM or external; docs/gpu.md, Synthesis), so
+// the cells counted are the two units, the bus decode and the fragment-side memory ports.
+// Full selects htx_gpu_full, else htx_gpu_icebreaker (board texture memory in both).
+module htx_gpu_synth_top #(
+  parameter bit Full = 1'b0
+) (
+  input  logic clk_i,
+  input  logic rst_ni,
+  input  logic sdi_i,
+  output logic sdo_o
+);
+  localparam int unsigned InBits = 2 * (1 + 32 + 1 + 4 + 32);
+  logic [InBits-1:0] sr_q;
+  always_ff @(posedge clk_i) sr_q <= {sr_q[InBits-2:0], sdi_i};
+
+  logic        reg_valid, reg_we, mem_valid, mem_we;
+  logic [3:0]  reg_be, mem_be;
+  logic [31:0] reg_addr, reg_wdata, mem_addr, mem_wdata;
+  assign {reg_valid, reg_addr, reg_we, reg_be, reg_wdata, mem_valid, mem_addr, mem_we, mem_be,
+          mem_wdata} = sr_q;
+
+  logic        reg_ready, reg_rsp_valid, reg_rsp_err, mem_ready, mem_rsp_valid, mem_rsp_err;
+  logic [31:0] reg_rdata, mem_rdata;
+  if (Full) begin : g_full
+    htx_gpu_full #(.FbPixels(4)) u_gpu (
+      .clk_i, .rst_ni,
+      .reg_req_valid_i(reg_valid), .reg_req_ready_o(reg_ready), .reg_req_addr_i(reg_addr),
+      .reg_req_we_i(reg_we), .reg_req_be_i(reg_be), .reg_req_wdata_i(reg_wdata),
+      .reg_rsp_valid_o(reg_rsp_valid), .reg_rsp_rdata_o(reg_rdata), .reg_rsp_err_o(reg_rsp_err),
+      .mem_req_valid_i(mem_valid), .mem_req_ready_o(mem_ready), .mem_req_addr_i(mem_addr),
+      .mem_req_we_i(mem_we), .mem_req_be_i(mem_be), .mem_req_wdata_i(mem_wdata),
+      .mem_rsp_valid_o(mem_rsp_valid), .mem_rsp_rdata_o(mem_rdata), .mem_rsp_err_o(mem_rsp_err));
+  end else begin : g_icebreaker
+    // One perspective method besides AFFINE on the board: RECIP_LUT (table reciprocal, no Newton step).
+    htx_gpu_icebreaker #(.FbPixels(4), .Methods(5'b00101)) u_gpu (
+      .clk_i, .rst_ni,
+      .reg_req_valid_i(reg_valid), .reg_req_ready_o(reg_ready), .reg_req_addr_i(reg_addr),
+      .reg_req_we_i(reg_we), .reg_req_be_i(reg_be), .reg_req_wdata_i(reg_wdata),
+      .reg_rsp_valid_o(reg_rsp_valid), .reg_rsp_rdata_o(reg_rdata), .reg_rsp_err_o(reg_rsp_err),
+      .mem_req_valid_i(mem_valid), .mem_req_ready_o(mem_ready), .mem_req_addr_i(mem_addr),
+      .mem_req_we_i(mem_we), .mem_req_be_i(mem_be), .mem_req_wdata_i(mem_wdata),
+      .mem_rsp_valid_o(mem_rsp_valid), .mem_rsp_rdata_o(mem_rdata), .mem_rsp_err_o(mem_rsp_err));
+  end
+
+  always_ff @(posedge clk_i) begin
+    sdo_o <= ^{reg_ready, reg_rsp_valid, reg_rsp_err, reg_rdata, mem_ready, mem_rsp_valid,
+               mem_rsp_err, mem_rdata};
+  end
+endmodule
