@@ -1,5 +1,6 @@
-// Engine `rtl` (docs/raster.md): encode exactly as render_model does, push the words through the
-// FIFO register, wait for idle, read the memories back.
+// Engine `rtl` (docs/raster.md, docs/gpu.md): encode exactly as render_model does, upload the
+// textures through the texture memory window and their descriptors through TEXTURE, push the words
+// through RASTER.FIFO of the Verilated GPU, wait for idle, read the memories back.
 #include "htx/rtl/raster_engine.hpp"
 
 #include <algorithm>
@@ -11,7 +12,9 @@
 #include "htx/fw/vertex_record.h"
 #include "htx/model/names.hpp"
 #include "htx/model/perspective.hpp"
-#include "htx/rtl/raster_sim.hpp"
+#include "htx/model/texture.hpp"
+#include "htx/rtl/gpu_sim.hpp"
+#include "htx/rtl/texture_layout.hpp"
 #include "htx_regs.h"
 
 namespace htx {
@@ -19,10 +22,15 @@ namespace htx {
 namespace {
 
 constexpr uint32_t off(size_t o) { return static_cast<uint32_t>(o); }
-#define HTX_RASTER_OFF(reg) off(offsetof(HTX_RASTER_Type, reg))
+#define HTX_RASTER_REG(reg) (HTX_RASTER_BASE + off(offsetof(HTX_RASTER_Type, reg)))
+#define HTX_TEXTURE_REG(reg) (HTX_TEXTURE_BASE + off(offsetof(HTX_TEXTURE_Type, reg)))
+
+// Perspective methods the Verilated GPU builds (htx_gpu_full / htx_gpu_icebreaker `Methods`):
+// AFFINE, SUBDIV, RECIP_LUT, RECIP_NR in both configurations.
+constexpr uint32_t kRtlMethods = 0x0F;
 
 // The RTL builds exactly the named configurations; every field that changes a bit of the frame
-// must match.
+// must match, and the methods must be ones it builds.
 void check_config(const ModelConfig& c) {
   const ModelConfig* named = nullptr;
   for (const std::string& n : model_config_names())
@@ -33,13 +41,69 @@ void check_config(const ModelConfig& c) {
                     c.uv_int_bits == n.uv_int_bits && c.grad_frac_bits == n.grad_frac_bits &&
                     c.recip_table_bits == n.recip_table_bits && c.recip_guard_bits == n.recip_guard_bits &&
                     c.recip_width == n.recip_width && c.setup_nr_steps == n.setup_nr_steps &&
-                    c.methods == n.methods;
+                    c.pixel_nr_steps == n.pixel_nr_steps && c.texcoord_frac_bits == n.texcoord_frac_bits &&
+                    c.lod_frac_bits == n.lod_frac_bits && c.lod_log_index_bits == n.lod_log_index_bits &&
+                    c.lod_grad_bits == n.lod_grad_bits && c.filters == n.filters && c.formats == n.formats;
   if (c.perspective_color)
     throw std::invalid_argument(
         "rtl engine: perspective-correct Gouraud colour (perspective_color) is not built yet; render with it off");
+  if (c.methods & ~kRtlMethods)
+    throw std::invalid_argument("rtl engine: the configuration names methods the RTL does not build (it builds "
+                                "affine, subdiv, recip_lut, recip_nr)");
   if (!same)
     throw std::invalid_argument("rtl engine: configuration '" + c.name +
-                                "' differs from the built one in a width, table or method set");
+                                "' differs from the built one in a width, table, filter or format set");
+}
+
+// What the model refuses for a textured triangle, the RTL refuses too (the same messages' sense).
+void check_texture_state(const std::vector<Texture>& textures, const TriState& st, const ModelConfig& cfg) {
+  if (!cfg.has_filter(st.filter))
+    throw std::invalid_argument("rtl engine: filter " + std::string(filter_name(st.filter)) + " is not built in '" +
+                                cfg.name + "'");
+  if (st.texture < 0 || static_cast<size_t>(st.texture) >= textures.size())
+    throw std::invalid_argument("rtl engine: triangle names missing texture " + std::to_string(st.texture));
+  const Texture& tex = textures[static_cast<size_t>(st.texture)];
+  if (!cfg.has_format(tex.format))
+    throw std::invalid_argument("rtl engine: texture format " + std::string(tex_format_name(tex.format)) +
+                                " is not built in '" + cfg.name + "'");
+  if (tex.log2_width < kMinTexLog2 || tex.log2_width > kMaxTexLog2 || tex.log2_height < kMinTexLog2 ||
+      tex.log2_height > kMaxTexLog2 || tex.levels.size() != level_count(tex))
+    throw std::invalid_argument("rtl engine: texture " + std::to_string(st.texture) + " has a bad size or mip chain");
+  for (unsigned l = 0; l < tex.levels.size(); ++l)
+    if (tex.levels[l].size() != (size_t{1} << (level_log2_width(tex, l) + level_log2_height(tex, l))))
+      throw std::invalid_argument("rtl engine: texture " + std::to_string(st.texture) + " level " +
+                                  std::to_string(l) + " has the wrong texel count");
+}
+
+// Uploads every texture a textured triangle names into slot = its index, the chains one after the
+// other from block 0, each level through the texture memory window and the descriptor through
+// TEXTURE.TEXn. Throws when an index exceeds the slots built or the chains exceed the memory.
+void upload_textures(rtl::GpuSim& sim, const ScreenScene& scene) {
+  std::vector<bool> used(scene.textures.size(), false);
+  for (const ScreenTri& tri : scene.tris)
+    if (tri.state.textured) used[static_cast<size_t>(tri.state.texture)] = true;
+  const uint32_t caps = sim.read_reg(HTX_TEXTURE_REG(CAPS));
+  const uint32_t slots = (caps & TEXTURE_CAPS_SLOTS_Msk) >> TEXTURE_CAPS_SLOTS_Pos;
+  std::vector<std::pair<uint32_t, uint32_t>> words;
+  std::vector<std::pair<uint32_t, uint32_t>> descriptors;
+  uint32_t base = 0;
+  for (size_t t = 0; t < used.size(); ++t) {
+    if (!used[t]) continue;
+    if (t >= slots)
+      throw std::invalid_argument("rtl engine: texture " + std::to_string(t) + " needs slot " + std::to_string(t) +
+                                  ", but this configuration builds " + std::to_string(slots) + " texture slots");
+    const Texture& tex = scene.textures[t];
+    const uint32_t blocks = rtl::texture_chain_blocks(tex);
+    if (uint64_t{base} + blocks > sim.texture_blocks() || base > (TEXTURE_TEX0_BASE_Msk >> TEXTURE_TEX0_BASE_Pos))
+      throw std::invalid_argument("rtl engine: the scene's textures need more than the " +
+                                  std::to_string(sim.texture_blocks() * 4) + " texels of texture memory");
+    rtl::append_texture_words(tex, base, rtl::GpuSim::kTextureWindow, words);
+    descriptors.emplace_back(HTX_TEXTURE_REG(TEX0) + 4 * static_cast<uint32_t>(t), rtl::texture_descriptor(tex, base));
+    base += blocks;
+  }
+  if (sim.mem_write_burst(words) != 0)
+    throw std::logic_error("rtl engine: the texture memory refused a texel write inside its range");
+  for (const auto& [addr, value] : descriptors) sim.write_reg(addr, value);
 }
 
 fw::VertexIn to_vertex_in(const ScreenVertex& v) {
@@ -64,6 +128,7 @@ uint32_t field(uint32_t value, uint32_t pos, uint32_t msk) { return (value << po
 ModelConfig rtl_config(const std::string& name) {
   ModelConfig c = model_config(name);
   c.perspective_color = false;
+  c.methods &= kRtlMethods;
   return c;
 }
 
@@ -94,10 +159,10 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
   cfg.validate();
   check_config(cfg);
   if (scene.width < 1 || scene.height < 1 || scene.width > 4096 || scene.height > 4096 ||
-      static_cast<uint64_t>(scene.width) * static_cast<uint64_t>(scene.height) > rtl::RasterSim::kFbPixels)
+      static_cast<uint64_t>(scene.width) * static_cast<uint64_t>(scene.height) > rtl::GpuSim::kFbPixels)
     throw std::invalid_argument("rtl engine: frame " + std::to_string(scene.width) + "x" +
                                 std::to_string(scene.height) + " exceeds the " +
-                                std::to_string(rtl::RasterSim::kFbPixels) + "-pixel memories or 4096 per side");
+                                std::to_string(rtl::GpuSim::kFbPixels) + "-pixel memories or 4096 per side");
 
   // Encode first, so a bad triangle is reported before any simulation.
   const fw::RecordFormat format = cfg.record_format();
@@ -110,9 +175,7 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
       throw std::invalid_argument("rtl engine: method " + method_name(method, st.subdiv_n) + " is not built");
     if ((method == Method::Subdiv || method == Method::Quadratic) && (st.subdiv_n < 2 || st.subdiv_n > 64))
       throw std::invalid_argument("rtl engine: subdiv_n " + std::to_string(st.subdiv_n) + " outside 2..64");
-    if (st.textured)
-      throw std::invalid_argument(
-          "rtl engine: textured triangles need the texture unit, which this build does not have (render untextured)");
+    if (st.textured) check_texture_state(scene.textures, st, cfg);
     const fw::VertexIn in[3] = {to_vertex_in(tri.v[0]), to_vertex_in(tri.v[1]), to_vertex_in(tri.v[2])};
     fw::TriangleRecord rec;
     const fw::EncodeStatus status = fw::encode_triangle(format, in, &rec);
@@ -125,19 +188,20 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
     ++sent;
   }
 
-  rtl::RasterSim sim(cfg.name);
+  rtl::GpuSim sim(cfg.name);
+  upload_textures(sim, scene);
   const uint32_t z_max = (uint32_t{1} << cfg.z_bits) - 1;
-  sim.write_reg(HTX_RASTER_OFF(FB_SIZE), (static_cast<uint32_t>(scene.width) << RASTER_FB_SIZE_WIDTH_Pos) |
+  sim.write_reg(HTX_RASTER_REG(FB_SIZE), (static_cast<uint32_t>(scene.width) << RASTER_FB_SIZE_WIDTH_Pos) |
                                              (static_cast<uint32_t>(scene.height) << RASTER_FB_SIZE_HEIGHT_Pos));
-  sim.write_reg(HTX_RASTER_OFF(FB_STRIDE), static_cast<uint32_t>(scene.width));
-  sim.write_reg(HTX_RASTER_OFF(CLEAR_COLOR), scene.clear_color);
-  sim.write_reg(HTX_RASTER_OFF(CLEAR_DEPTH), std::min<uint32_t>(scene.clear_depth, 0xFFFFFFu));
+  sim.write_reg(HTX_RASTER_REG(FB_STRIDE), static_cast<uint32_t>(scene.width));
+  sim.write_reg(HTX_RASTER_REG(CLEAR_COLOR), scene.clear_color);
+  sim.write_reg(HTX_RASTER_REG(CLEAR_DEPTH), std::min<uint32_t>(scene.clear_depth, 0xFFFFFFu));
   const uint64_t clear_start = sim.cycles();
-  sim.write_reg(HTX_RASTER_OFF(CTRL),
+  sim.write_reg(HTX_RASTER_REG(CTRL),
                 RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_CLEAR_COLOR_Msk | RASTER_CTRL_CLEAR_DEPTH_Msk);
   sim.wait_idle();
   const uint64_t clear_cycles = sim.cycles() - clear_start;
-  sim.write_reg(HTX_RASTER_OFF(CTRL), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_COUNTERS_RESET_Msk);
+  sim.write_reg(HTX_RASTER_REG(CTRL), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_COUNTERS_RESET_Msk);
 
   const uint64_t feed_start = sim.cycles();
   sim.push_words(words);
@@ -145,22 +209,24 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
   const uint64_t feed_cycles = sim.cycles() - feed_start;
 
   RtlStats s;
-  s.cycles = sim.read_reg(HTX_RASTER_OFF(CNT_BUSY));
+  s.cycles = sim.read_reg(HTX_RASTER_REG(CNT_BUSY));
   s.feed_cycles = feed_cycles;
-  s.covered_pixels = sim.read_reg(HTX_RASTER_OFF(CNT_FRAGMENTS));
-  s.pixels_written = sim.read_reg(HTX_RASTER_OFF(CNT_PIXELS));
-  s.triangles = sim.read_reg(HTX_RASTER_OFF(CNT_TRIANGLES));
+  s.covered_pixels = sim.read_reg(HTX_RASTER_REG(CNT_FRAGMENTS));
+  s.pixels_written = sim.read_reg(HTX_RASTER_REG(CNT_PIXELS));
+  s.triangles = sim.read_reg(HTX_RASTER_REG(CNT_TRIANGLES));
   s.triangles_sent = sent;
-  s.setup_busy_cycles = sim.read_reg(HTX_RASTER_OFF(CNT_SETUP_BUSY));
-  s.stall_input = sim.read_reg(HTX_RASTER_OFF(CNT_STALL_INPUT));
-  s.stall_setup = sim.read_reg(HTX_RASTER_OFF(CNT_STALL_SETUP));
-  s.stall_fragment = sim.read_reg(HTX_RASTER_OFF(CNT_STALL_FRAGMENT));
+  s.setup_busy_cycles = sim.read_reg(HTX_RASTER_REG(CNT_SETUP_BUSY));
+  s.stall_input = sim.read_reg(HTX_RASTER_REG(CNT_STALL_INPUT));
+  s.stall_setup = sim.read_reg(HTX_RASTER_REG(CNT_STALL_SETUP));
+  s.stall_fragment = sim.read_reg(HTX_RASTER_REG(CNT_STALL_FRAGMENT));
   s.clear_cycles = clear_cycles;
   s.px_per_clk = s.cycles ? static_cast<double>(s.covered_pixels) / static_cast<double>(s.cycles) : 0.0;
   s.setup_cycles_per_triangle =
       s.triangles ? static_cast<double>(s.setup_busy_cycles) / static_cast<double>(s.triangles) : 0.0;
-  if (sim.read_reg(HTX_RASTER_OFF(STATUS)) & RASTER_STATUS_ERR_STATE_Msk)
+  if (sim.read_reg(HTX_RASTER_REG(STATUS)) & RASTER_STATUS_ERR_STATE_Msk)
     throw std::logic_error("rtl engine: the raster unit flagged a triangle state it does not build");
+  if (sim.read_reg(HTX_TEXTURE_REG(STATUS)) & (TEXTURE_STATUS_ERR_FORMAT_Msk | TEXTURE_STATUS_ERR_FILTER_Msk))
+    throw std::logic_error("rtl engine: the texture unit flagged a format or filter it does not build");
 
   Frame frame;
   frame.width = scene.width;

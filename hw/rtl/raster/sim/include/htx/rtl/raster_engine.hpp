@@ -1,6 +1,8 @@
 // Engine `rtl`: the same ScreenScene the `model` engine takes, encoded into vertex records by the
-// firmware's encoder exactly as the model encodes them, pushed through the Verilated raster unit's
-// FIFO register, and read back from its framebuffer and depth memories.
+// firmware's encoder exactly as the model encodes them, its textures uploaded through the texture
+// memory window and TEXTURE descriptors, the records pushed through RASTER.FIFO of the Verilated GPU
+// (htx_gpu_full / htx_gpu_icebreaker, docs/gpu.md), and read back from its framebuffer and depth
+// memories.
 #pragma once
 
 #include <cstdint>
@@ -25,15 +27,18 @@ struct RtlStats {
   double setup_cycles_per_triangle = 0;
 };
 
-// Renders untextured triangles (flat and Gouraud linear in screen space; the texture slice comes
-// later). Throws std::invalid_argument when the configuration is not one the RTL builds (the named
-// `full` and `icebreaker` with their exact field values, except that perspective_color must be off:
-// `full` sets it, and its per-pixel colour division is not built yet; rtl_config() gives the
-// configuration the RTL renders), when a triangle is textured, asks for a method the
-// configuration does not build, or the frame exceeds the 262144-pixel memories or 4096 per side.
+// Renders textured and untextured triangles (Gouraud colour linear in screen space). Texture t goes
+// to slot t. Throws std::invalid_argument when the configuration is not one the RTL builds (the
+// named `full` and `icebreaker` with their exact field values, except that perspective_color must be
+// off and the methods a subset of the built ones; rtl_config() gives the configuration the RTL
+// renders), when a triangle asks for a method, filter or format the configuration does not build,
+// names a texture beyond the built slots (8 / 4) or a bad texture, when the textures exceed the
+// Verilated texture memory (128K / 16K texels), or the frame exceeds the 262144-pixel memories or
+// 4096 per side.
 Frame render_rtl(const ScreenScene& scene, const ModelConfig& config, RtlStats* stats = nullptr);
 
-// The named configuration as the RTL builds it (perspective_color off). Throws like model_config.
+// The named configuration as the RTL builds it (perspective_color off, the built methods: affine,
+// subdiv, recip_lut, recip_nr). Throws like model_config.
 ModelConfig rtl_config(const std::string& name);
 
 // The per-triangle state word (hw/regs/raster.json register STATE) of a triangle.
