@@ -1,0 +1,88 @@
+// The GPU's two bus ports (docs/gpu.md): the register port decodes RASTER and TEXTURE and answers
+// anything else with an error; the memory port reaches the framebuffer, depth and texture windows;
+// a texture uploaded through the window reads back word for word in the documented layout.
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <stdexcept>
+
+#include "htx/model/texture.hpp"
+#include "htx/rtl/gpu_sim.hpp"
+#include "htx/rtl/texture_layout.hpp"
+#include "htx_regs.h"
+
+namespace htx {
+namespace {
+
+using rtl::GpuSim;
+
+class GpuBus : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(GpuBus, RegisterPortDecodesBothBlocksAndRejectsTheRest) {
+  GpuSim sim(GetParam());
+  const uint32_t caps = sim.read_reg(HTX_TEXTURE_BASE + offsetof(HTX_TEXTURE_Type, CAPS));
+  const bool full = std::string(GetParam()) == "full";
+  EXPECT_EQ((caps & TEXTURE_CAPS_SLOTS_Msk) >> TEXTURE_CAPS_SLOTS_Pos, full ? 8u : 4u);
+  EXPECT_EQ((caps & TEXTURE_CAPS_FORMATS_Msk) >> TEXTURE_CAPS_FORMATS_Pos, full ? 7u : 3u);
+  EXPECT_EQ(sim.texture_blocks(), full ? 1u << 15 : 1u << 12);
+  // RASTER answers its registers: FB_STRIDE is read/write.
+  const uint32_t stride = HTX_RASTER_BASE + offsetof(HTX_RASTER_Type, FB_STRIDE);
+  sim.write_reg(stride, 123);
+  EXPECT_EQ(sim.read_reg(stride), 123u);
+  // TEXTURE answers its registers: a descriptor is read/write.
+  const uint32_t tex1 = HTX_TEXTURE_BASE + offsetof(HTX_TEXTURE_Type, TEX1);
+  sim.write_reg(tex1, 0x01550042u);
+  EXPECT_EQ(sim.read_reg(tex1), 0x01550042u);
+  // Anything else on the register port answers with an error (no hang).
+  EXPECT_THROW(sim.read_reg(0x20005000u), std::runtime_error);
+  EXPECT_THROW(sim.write_reg(0x20002000u, 1), std::runtime_error);
+  EXPECT_EQ(sim.read_reg(stride), 123u);  // and the port still works afterwards
+}
+
+TEST_P(GpuBus, MemoryPortReachesFramebufferDepthAndTextureWindows) {
+  GpuSim sim(GetParam());
+  uint32_t v = 0;
+  EXPECT_FALSE(sim.mem_write(GpuSim::kColorWindow + 8, 0xBEEF1234u));
+  EXPECT_FALSE(sim.mem_write(GpuSim::kDepthWindow + 12, 0x1234u));
+  EXPECT_FALSE(sim.mem_write(GpuSim::kTextureWindow + 16, 0x0000A5A5u));
+  EXPECT_FALSE(sim.mem_read(GpuSim::kColorWindow + 8, &v));
+  EXPECT_EQ(v, 0xBEEF1234u);
+  EXPECT_FALSE(sim.mem_read(GpuSim::kDepthWindow + 12, &v));
+  EXPECT_EQ(v, 0x1234u);
+  EXPECT_FALSE(sim.mem_read(GpuSim::kTextureWindow + 16, &v));
+  EXPECT_EQ(v & 0xFFFFu, 0xA5A5u);
+  // Beyond the texture memory and outside the fb windows: errors, nothing hangs.
+  EXPECT_TRUE(sim.mem_write(GpuSim::kTextureWindow + 16 * sim.texture_blocks(), 1));
+  EXPECT_TRUE(sim.mem_read(0x30200000u, &v));
+}
+
+TEST_P(GpuBus, TextureUploadReadsBackInTheDocumentedLayout) {
+  GpuSim sim(GetParam());
+  std::vector<uint8_t> px(32 * 16 * 4);
+  for (size_t i = 0; i < px.size(); ++i) px[i] = static_cast<uint8_t>(i * 37 + 11);
+  const Texture tex = make_texture(TexFormat::RGBA4444, 5, 4, px);
+  std::vector<std::pair<uint32_t, uint32_t>> words;
+  rtl::append_texture_words(tex, 7, GpuSim::kTextureWindow, words);
+  size_t texels = 0;
+  for (const auto& level : tex.levels) texels += level.size();
+  ASSERT_EQ(words.size(), texels);
+  EXPECT_EQ(rtl::texture_chain_blocks(tex), 128u + 32 + 8 + 2 + 1 + 1);
+  EXPECT_EQ(sim.mem_write_burst(words), 0u);
+  for (const auto& [addr, value] : words) {
+    uint32_t got = 0;
+    ASSERT_FALSE(sim.mem_read(addr, &got));
+    ASSERT_EQ(got & 0xFFFFu, value) << "address " << addr;
+    // Every word of the chain lies in blocks 7 .. 7 + chain - 1.
+    const uint32_t block = (addr - GpuSim::kTextureWindow) / 16;
+    ASSERT_GE(block, 7u);
+    ASSERT_LT(block, 7u + rtl::texture_chain_blocks(tex));
+  }
+  EXPECT_EQ(rtl::texture_descriptor(tex, 7), 7u | (5u << 16) | (4u << 20) | (1u << 24));
+}
+
+TEST(GpuSimConfig, UnknownConfigurationIsAnError) { EXPECT_THROW(GpuSim("tiny"), std::invalid_argument); }
+
+INSTANTIATE_TEST_SUITE_P(Configs, GpuBus, ::testing::Values("full", "icebreaker"));
+
+}  // namespace
+}  // namespace htx

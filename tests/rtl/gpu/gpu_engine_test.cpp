@@ -1,0 +1,90 @@
+// The `rtl` engine's texture handling (docs/gpu.md): what it refuses before simulating, untextured
+// fragments whatever filter their state names, several textures in their slots, and the metrics it
+// reports on bigtri (pixel rate of the full configuration's bilinear path).
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "htx/model/geometry.hpp"
+#include "htx/model/model.hpp"
+#include "htx/model/scenes.hpp"
+#include "htx/model/texture.hpp"
+#include "htx/rtl/raster_engine.hpp"
+
+namespace htx {
+namespace {
+
+ScreenScene scene(const std::string& spec, int w = 96, int h = 72) {
+  ScreenScene s = prepare_screen_scene(make_builtin_scene(spec), w, h);
+  s.clear_color = 0x0841;
+  return s;
+}
+
+uint64_t mismatches(const ScreenScene& s, const std::string& config, RtlStats* stats = nullptr) {
+  const ModelConfig cfg = rtl_config(config);
+  return frame_mismatch_pixels(render_rtl(s, cfg, stats), render_model(s, cfg));
+}
+
+TEST(GpuEngine, RefusesWhatTheConfigurationDoesNotBuild) {
+  ScreenScene s = scene("cube");
+  for (ScreenTri& t : s.tris) t.state.filter = Filter::Trilinear;
+  EXPECT_THROW(render_rtl(s, rtl_config("icebreaker")), std::invalid_argument);
+
+  ScreenScene f = scene("cube");
+  std::vector<uint8_t> px(8 * 8 * 4, 200);
+  f.textures[0] = make_texture(TexFormat::RGBA8888, 3, 3, px);
+  EXPECT_THROW(render_rtl(f, rtl_config("icebreaker")), std::invalid_argument);
+
+  // Texture t goes to slot t: icebreaker builds 4 slots.
+  ScreenScene slots = scene("cube");
+  while (slots.textures.size() < 6) slots.textures.push_back(slots.textures[0]);
+  for (ScreenTri& t : slots.tris) t.state.texture = 5;
+  EXPECT_THROW(render_rtl(slots, rtl_config("icebreaker")), std::invalid_argument);
+
+  // Chains beyond the Verilated texture memory (icebreaker: 2^12 blocks).
+  ScreenScene big = scene("cube");
+  std::vector<uint8_t> px256(256 * 256 * 4, 90);
+  big.textures[0] = make_texture(TexFormat::RGB565, 8, 8, px256);
+  EXPECT_THROW(render_rtl(big, rtl_config("icebreaker")), std::invalid_argument);
+
+  ScreenScene missing = scene("cube");
+  for (ScreenTri& t : missing.tris) t.state.texture = 3;
+  EXPECT_THROW(render_rtl(missing, rtl_config("full")), std::invalid_argument);
+}
+
+TEST(GpuEngine, UntexturedTrianglesIgnoreTheirFilter) {
+  // An untextured triangle may name a filter the configuration does not build: the texture unit
+  // samples its fragments nearest and the combine ignores the texel.
+  for (const char* cfg : {"full", "icebreaker"}) {
+    ScreenScene s = scene("tunnel");
+    for (ScreenTri& t : s.tris) {
+      t.state.textured = false;
+      t.state.filter = Filter::Trilinear;
+    }
+    EXPECT_EQ(mismatches(s, cfg), 0u) << cfg;
+  }
+}
+
+TEST(GpuEngine, SeveralTexturesInTheirSlots) {
+  // bigtri and nearclip use two textures (slots 0 and 1); mixed textured and untextured triangles.
+  for (const char* cfg : {"full", "icebreaker"})
+    for (const char* spec : {"nearclip", "bigtri:size=10"}) {
+      ScreenScene s = scene(spec);
+      for (size_t i = 0; i < s.tris.size(); i += 3) s.tris[i].state.textured = false;
+      EXPECT_EQ(mismatches(s, cfg), 0u) << cfg << " " << spec;
+    }
+}
+
+TEST(GpuEngine, FullBilinearSustainsOnePixelPerClockOnBigtri) {
+  ScreenScene s = scene("bigtri", 160, 120);
+  for (ScreenTri& t : s.tris) t.state.filter = Filter::Bilinear;
+  RtlStats st;
+  EXPECT_EQ(mismatches(s, "full", &st), 0u);
+  EXPECT_GT(st.covered_pixels, 15000u);
+  EXPECT_GE(st.px_per_clk, 0.95);
+  EXPECT_EQ(st.triangles, st.triangles_sent);
+}
+
+}  // namespace
+}  // namespace htx
