@@ -1,6 +1,6 @@
-// Render firmware: draws the compiled-in built-in scenes (`floor`, then `cube`) on the SoC's raster
-// unit with the firmware render pipeline (firmware/render over hal/target) and reports, one line per
-// scene on the UART:
+// Render firmware: draws the compiled-in built-in scenes (`floor`, then `cube`; an image may select
+// fewer, scene_selection.hpp) on the SoC's raster unit with the firmware render pipeline
+// (firmware/render over hal/target) and reports, one line per scene on the UART:
 //   render <scene> vertices <n> geometry_cycles_per_vertex <c.cc> triangles <t> sent <s> clipped <k>
 //     culled <u> frame_cycles <f> raster_cycles <r> fragments <g> crc32 <8 hex digits>
 // geometry_cycles_per_vertex: CPU cycles of process_vertices (transform, clip test, projection) per
@@ -16,6 +16,7 @@
 #include "htx/render/frame.h"
 #include "htx/render/pipeline.h"
 #include "render_state.hpp"
+#include "scene_selection.hpp"
 #include "scenes.hpp"
 #include "soc_config.hpp"
 
@@ -109,6 +110,6 @@ int main() {
   uint32_t n = 0;
   const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
   for (uint32_t s = 0; s < n; ++s)
-    if (!render_scene(scenes[s])) return 1;
+    if (render_app::draw_scene_named(scenes[s].name) && !render_scene(scenes[s])) return 1;
   return 0;
 }
