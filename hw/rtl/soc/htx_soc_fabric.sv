@@ -5,8 +5,8 @@
 //   ibus -> demux --RAM port A
 //                 \-IO arbiter port 0 --+
 //   dbus -> demux --RAM port B          |
-//                 |-IO arbiter port 1 --+-> IO demux -> SYSCTRL, UART, TIMER, RASTER --> GPU reg port
-//                 \-framebuffer/depth window ------------------------------------------> GPU mem port
+//                 |-IO arbiter port 1 --+-> IO demux -> SYSCTRL, UART, TIMER, RASTER + TEXTURE -> GPU reg
+//                 \-framebuffer/depth window + texture window ---------------------------------> GPU mem
 //
 // Register blocks (0x2xxx_xxxx) are the same for both masters (contracts.md). The RAM is dual-ported,
 // so fetch and data never wait for each other there; only IO accesses share the arbiter. The GPU's
@@ -15,9 +15,12 @@
 // with rsp_err. With StallInject, every slave sits behind an htx_bus_stall whose random wait states
 // are switched on by stall_en_i.
 //
-// The GPU is htx_raster_icebreaker (docs/soc.md, "GPU"): the raster unit in the `icebreaker`
-// configuration of the UP5K board with its framebuffer and depth memories of FbPixels pixels. It has
-// no texture unit yet, so the TEXTURE block and the texture window are unmapped (errors).
+// The GPU is htx_gpu_icebreaker (docs/soc.md, "GPU"): raster and texture units in the `icebreaker`
+// configuration of the UP5K board, with framebuffer and depth memories of FbPixels pixels. Its two
+// register blocks and its memory windows are each claimed by their own demux entry (so every other
+// address answers an error here) and joined onto the GPU's two ports: a demux sends requests to one
+// target at a time and takes responses only from that target, so two windows of one slave can share
+// its link (valid ORed, ready and response fanned out).
 module htx_soc_fabric #(
   parameter int unsigned RamBytes    = 4096,
   parameter              RamInitFile = "",
@@ -66,9 +69,12 @@ module htx_soc_fabric #(
   localparam logic [31:0] IoBase  = 32'h2000_0000;
   localparam logic [31:0] IoMask  = 32'hF000_0000;
   localparam logic [31:0] RegMask = 32'hFFFF_F000;  // 4 KiB register blocks
-  localparam int unsigned NumIo   = 4;          // SYSCTRL, UART, TIMER, RASTER
+  localparam int unsigned NumIo   = 5;          // SYSCTRL, UART, TIMER, RASTER, TEXTURE
+  localparam int unsigned NumLink = 4;          // SYSCTRL, UART, TIMER, GPU registers
   localparam logic [31:0] FbBase  = 32'h3000_0000;  // colour 0x3000_0000, depth 0x3010_0000
   localparam logic [31:0] FbMask  = 32'hFFE0_0000;
+  localparam logic [31:0] TexBase = 32'h4000_0000;  // texture memory, 1 MiB
+  localparam logic [31:0] TexMask = 32'hFFF0_0000;
 
   // ---- CPU-side demuxes: slave 0 = RAM port, slave 1 = IO arbiter ----
   logic [1:0]  i_valid, i_ready, i_rsp_valid, i_rsp_err;
@@ -76,12 +82,12 @@ module htx_soc_fabric #(
   logic        i_we;
   logic [3:0]  i_be;
   logic [63:0] i_rsp_rdata;
-  // dbus: slave 2 = the GPU's memory windows.
-  logic [2:0]  d_valid, d_ready, d_rsp_valid, d_rsp_err;
-  logic [31:0] d_addr, d_wdata;
-  logic        d_we;
-  logic [3:0]  d_be;
-  logic [95:0] d_rsp_rdata;
+  // dbus: slaves 2 and 3 = the GPU's memory windows (framebuffer/depth, texture).
+  logic [3:0]   d_valid, d_ready, d_rsp_valid, d_rsp_err;
+  logic [31:0]  d_addr, d_wdata;
+  logic         d_we;
+  logic [3:0]   d_be;
+  logic [127:0] d_rsp_rdata;
 
   htx_bus_demux #(
     .NumSlaves(2),
@@ -100,9 +106,9 @@ module htx_soc_fabric #(
   );
 
   htx_bus_demux #(
-    .NumSlaves(3),
-    .SlaveBase({FbBase, IoBase, RamBase}),
-    .SlaveMask({FbMask, IoMask, RamMask})
+    .NumSlaves(4),
+    .SlaveBase({TexBase, FbBase, IoBase, RamBase}),
+    .SlaveMask({TexMask, FbMask, IoMask, RamMask})
   ) u_dbus_demux (
     .clk_i, .rst_ni,
     .m_req_valid_i(dbus_req_valid_i), .m_req_ready_o(dbus_req_ready_o),
@@ -189,9 +195,10 @@ module htx_soc_fabric #(
 
   htx_bus_demux #(
     .NumSlaves(NumIo),
-    .SlaveBase({htx_raster_reg_pkg::RASTER_BASE_ADDR, htx_timer_reg_pkg::TIMER_BASE_ADDR,
-                htx_uart_reg_pkg::UART_BASE_ADDR, htx_sysctrl_reg_pkg::SYSCTRL_BASE_ADDR}),
-    .SlaveMask({RegMask, RegMask, RegMask, RegMask})
+    .SlaveBase({htx_texture_reg_pkg::TEXTURE_BASE_ADDR, htx_raster_reg_pkg::RASTER_BASE_ADDR,
+                htx_timer_reg_pkg::TIMER_BASE_ADDR, htx_uart_reg_pkg::UART_BASE_ADDR,
+                htx_sysctrl_reg_pkg::SYSCTRL_BASE_ADDR}),
+    .SlaveMask({RegMask, RegMask, RegMask, RegMask, RegMask})
   ) u_io_demux (
     .clk_i, .rst_ni,
     .m_req_valid_i(io_valid), .m_req_ready_o(io_ready), .m_req_addr_i(io_addr),
@@ -202,18 +209,28 @@ module htx_soc_fabric #(
     .s_rsp_valid_i(p_rsp_valid), .s_rsp_rdata_i(p_rsp_rdata), .s_rsp_err_i(p_rsp_err)
   );
 
-  // Peripheral-side links after the stall injectors.
-  logic [NumIo-1:0]    q_valid, q_ready, q_we, q_rsp_valid, q_rsp_err;
-  logic [NumIo*32-1:0] q_addr, q_wdata, q_rsp_rdata;
-  logic [NumIo*4-1:0]  q_be;
+  // RASTER and TEXTURE join onto the GPU's register link (see the header).
+  logic [NumLink-1:0]    l_valid, l_ready, l_rsp_valid, l_rsp_err;
+  logic [NumLink*32-1:0] l_rsp_rdata;
+  assign l_valid[2:0]             = p_valid[2:0];
+  assign l_valid[3]               = p_valid[3] | p_valid[4];
+  assign p_ready                  = {l_ready[3], l_ready};
+  assign p_rsp_valid              = {l_rsp_valid[3], l_rsp_valid};
+  assign p_rsp_err                = {l_rsp_err[3], l_rsp_err};
+  assign p_rsp_rdata              = {l_rsp_rdata[96 +: 32], l_rsp_rdata};
 
-  for (genvar k = 0; k < NumIo; k++) begin : g_io_stall
+  // Peripheral-side links after the stall injectors.
+  logic [NumLink-1:0]    q_valid, q_ready, q_we, q_rsp_valid, q_rsp_err;
+  logic [NumLink*32-1:0] q_addr, q_wdata, q_rsp_rdata;
+  logic [NumLink*4-1:0]  q_be;
+
+  for (genvar k = 0; k < NumLink; k++) begin : g_io_stall
     htx_bus_stall #(.Present(StallInject), .Salt(32'h1234_5610 + 32'(k))) u_stall (
       .clk_i, .rst_ni, .en_i(stall_en_i), .seed_i(stall_seed_i),
-      .m_req_valid_i(p_valid[k]), .m_req_ready_o(p_ready[k]), .m_req_addr_i(p_addr),
+      .m_req_valid_i(l_valid[k]), .m_req_ready_o(l_ready[k]), .m_req_addr_i(p_addr),
       .m_req_we_i(p_we), .m_req_be_i(p_be), .m_req_wdata_i(p_wdata),
-      .m_rsp_valid_o(p_rsp_valid[k]), .m_rsp_rdata_o(p_rsp_rdata[k*32 +: 32]),
-      .m_rsp_err_o(p_rsp_err[k]),
+      .m_rsp_valid_o(l_rsp_valid[k]), .m_rsp_rdata_o(l_rsp_rdata[k*32 +: 32]),
+      .m_rsp_err_o(l_rsp_err[k]),
       .s_req_valid_o(q_valid[k]), .s_req_ready_i(q_ready[k]), .s_req_addr_o(q_addr[k*32 +: 32]),
       .s_req_we_o(q_we[k]), .s_req_be_o(q_be[k*4 +: 4]), .s_req_wdata_o(q_wdata[k*32 +: 32]),
       .s_rsp_valid_i(q_rsp_valid[k]), .s_rsp_rdata_i(q_rsp_rdata[k*32 +: 32]),
@@ -246,21 +263,30 @@ module htx_soc_fabric #(
   );
 
   // ---- GPU: register port behind the IO demux, memory port on the data bus ----
+  // The framebuffer/depth and texture windows join onto the GPU's memory link (see the header).
+  logic        dg_valid, dg_ready, dg_rsp_valid, dg_rsp_err;
+  logic [31:0] dg_rsp_rdata;
+  assign dg_valid                = d_valid[2] | d_valid[3];
+  assign d_ready[3:2]            = {2{dg_ready}};
+  assign d_rsp_valid[3:2]        = {2{dg_rsp_valid}};
+  assign d_rsp_err[3:2]          = {2{dg_rsp_err}};
+  assign d_rsp_rdata[64 +: 64]   = {2{dg_rsp_rdata}};
+
   logic        g_valid, g_ready, g_we, g_rsp_valid, g_rsp_err;
   logic [31:0] g_addr, g_wdata, g_rsp_rdata;
   logic [3:0]  g_be;
 
   htx_bus_stall #(.Present(StallInject), .Salt(32'h1234_5603)) u_stall_gpu_mem (
     .clk_i, .rst_ni, .en_i(stall_en_i), .seed_i(stall_seed_i),
-    .m_req_valid_i(d_valid[2]), .m_req_ready_o(d_ready[2]), .m_req_addr_i(d_addr),
+    .m_req_valid_i(dg_valid), .m_req_ready_o(dg_ready), .m_req_addr_i(d_addr),
     .m_req_we_i(d_we), .m_req_be_i(d_be), .m_req_wdata_i(d_wdata),
-    .m_rsp_valid_o(d_rsp_valid[2]), .m_rsp_rdata_o(d_rsp_rdata[64 +: 32]), .m_rsp_err_o(d_rsp_err[2]),
+    .m_rsp_valid_o(dg_rsp_valid), .m_rsp_rdata_o(dg_rsp_rdata), .m_rsp_err_o(dg_rsp_err),
     .s_req_valid_o(g_valid), .s_req_ready_i(g_ready), .s_req_addr_o(g_addr),
     .s_req_we_o(g_we), .s_req_be_o(g_be), .s_req_wdata_o(g_wdata),
     .s_rsp_valid_i(g_rsp_valid), .s_rsp_rdata_i(g_rsp_rdata), .s_rsp_err_i(g_rsp_err)
   );
 
-  htx_raster_icebreaker #(.FbPixels(FbPixels)) u_gpu (
+  htx_gpu_icebreaker #(.FbPixels(FbPixels)) u_gpu (
     .clk_i, .rst_ni,
     .reg_req_valid_i(q_valid[3]), .reg_req_ready_o(q_ready[3]), .reg_req_addr_i(q_addr[96 +: 32]),
     .reg_req_we_i(q_we[3]), .reg_req_be_i(q_be[12 +: 4]), .reg_req_wdata_i(q_wdata[96 +: 32]),

@@ -21,6 +21,7 @@ constexpr uint32_t kSys = HTX_SYSCTRL_BASE;
 constexpr uint32_t kUart = HTX_UART_BASE;
 constexpr uint32_t kTimer = HTX_TIMER_BASE;
 constexpr uint32_t kRaster = HTX_RASTER_BASE;
+constexpr uint32_t kTexture = HTX_TEXTURE_BASE;
 constexpr uint32_t kRamBytes = 65536;  // the Verilated fabric's RamBytes
 constexpr uint32_t kFbColor = 0x3000'0000, kFbDepth = 0x3010'0000, kTexMem = 0x4000'0000;
 constexpr uint32_t kFbPixels = 19200;  // the fabric's default FbPixels (160 x 120)
@@ -78,16 +79,31 @@ TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
   EXPECT_EQ(soc.read(kFbColor + 2 * kFbPixels - 4).rdata, 0xBEEF'CAFEu);
   ASSERT_FALSE(soc.write(kFbDepth + 4 * 17, 0x0001'2345).err);
   EXPECT_EQ(soc.read(kFbDepth + 4 * 17).rdata & 0xFFFFu, 0x2345u);
-  // Beyond the memories, holes of the windows, and what is not in the SoC yet answer errors.
-  for (uint32_t a : {kFbColor + 2 * kFbPixels, kFbDepth + 4 * kFbPixels, 0x3020'0000u, kTexMem, 0x2000'4000u}) {
+  // TEXTURE registers and the texture memory (4 words per 2x2 block, TEXEL_BITS stored per word).
+  const auto caps = soc.read(kTexture + TEXTURE_CAPS_Offset);
+  ASSERT_FALSE(caps.err);
+  EXPECT_EQ((caps.rdata & TEXTURE_CAPS_SLOTS_Msk) >> TEXTURE_CAPS_SLOTS_Pos, 4u);  // icebreaker
+  const uint32_t tex_bytes = 16u << ((caps.rdata & TEXTURE_CAPS_BLOCK_BITS_Msk) >> TEXTURE_CAPS_BLOCK_BITS_Pos);
+  const uint32_t texel_bits = (caps.rdata & TEXTURE_CAPS_TEXEL_BITS_Msk) >> TEXTURE_CAPS_TEXEL_BITS_Pos;
+  ASSERT_GE(texel_bits, 16u);
+  const uint32_t texel_mask = texel_bits >= 32 ? 0xFFFF'FFFFu : (1u << texel_bits) - 1;
+  ASSERT_FALSE(soc.write(kTexMem + 4, 0x0000'1234).err);
+  ASSERT_FALSE(soc.write(kTexMem + tex_bytes - 4, 0x0000'ABCD).err);
+  EXPECT_EQ(soc.read(kTexMem + 4).rdata & texel_mask, 0x1234u);
+  EXPECT_EQ(soc.read(kTexMem + tex_bytes - 4).rdata & texel_mask, 0xABCDu);
+  // Beyond the memories and holes of the windows answer errors.
+  for (uint32_t a : {kFbColor + 2 * kFbPixels, kFbDepth + 4 * kFbPixels, 0x3020'0000u, kTexMem + tex_bytes,
+                     kTexMem + 0x10'0000u, 0x2000'5000u}) {
     const auto r = soc.read(a);
     EXPECT_TRUE(r.err) << std::hex << a;
     EXPECT_EQ(r.rdata, 0u) << std::hex << a;
   }
   // The memory windows are data only: a fetch from them answers an error.
-  soc.ibus.pending.push_back({kFbColor + 8});
-  ASSERT_TRUE(soc.drain());
-  EXPECT_TRUE(soc.ibus.responses.back().err);
+  for (uint32_t a : {kFbColor + 8, kTexMem + 4}) {
+    soc.ibus.pending.push_back({a});
+    ASSERT_TRUE(soc.drain());
+    EXPECT_TRUE(soc.ibus.responses.back().err) << std::hex << a;
+  }
   // The raster unit draws into the memory the windows show: a fast clear of a 16 x 4 screen.
   soc.write(kRaster + RASTER_FB_SIZE_Offset, 16u | (4u << RASTER_FB_SIZE_HEIGHT_Pos));
   soc.write(kRaster + RASTER_FB_STRIDE_Offset, 16u);
