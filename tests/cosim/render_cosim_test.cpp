@@ -4,6 +4,7 @@
 // (render_model_records), give the same frame bit for bit.
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -20,28 +21,13 @@
 namespace htx {
 namespace {
 
-uint32_t field(uint32_t word, uint32_t pos, uint32_t mask) { return (word & mask) >> pos; }
-
-TriState unpack_state_word(uint32_t w) {
-  TriState s;
-  s.method = static_cast<Method>(field(w, RASTER_STATE_METHOD_Pos, RASTER_STATE_METHOD_Msk));
-  s.subdiv_n = field(w, RASTER_STATE_SUBDIV_N_Pos, RASTER_STATE_SUBDIV_N_Msk);
-  s.filter = static_cast<Filter>(field(w, RASTER_STATE_FILTER_Pos, RASTER_STATE_FILTER_Msk));
-  s.wrap_u = static_cast<Wrap>(field(w, RASTER_STATE_WRAP_U_Pos, RASTER_STATE_WRAP_U_Msk));
-  s.wrap_v = static_cast<Wrap>(field(w, RASTER_STATE_WRAP_V_Pos, RASTER_STATE_WRAP_V_Msk));
-  s.depth_func = static_cast<DepthFunc>(field(w, RASTER_STATE_DEPTH_FUNC_Pos, RASTER_STATE_DEPTH_FUNC_Msk));
-  s.depth_write = field(w, RASTER_STATE_DEPTH_WRITE_Pos, RASTER_STATE_DEPTH_WRITE_Msk) != 0;
-  s.textured = field(w, RASTER_STATE_TEXTURED_Pos, RASTER_STATE_TEXTURED_Msk) != 0;
-  s.gouraud = field(w, RASTER_STATE_GOURAUD_Pos, RASTER_STATE_GOURAUD_Msk) != 0;
-  s.combine = static_cast<Combine>(field(w, RASTER_STATE_COMBINE_Pos, RASTER_STATE_COMBINE_Msk));
-  s.texture = static_cast<int>(field(w, RASTER_STATE_TEXTURE_Pos, RASTER_STATE_TEXTURE_Msk));
-  return s;
-}
-
 struct Case {
   std::string config, scene;
   bool gouraud;
 };
+
+// Readable parameter names in test listings (instead of the object's bytes).
+void PrintTo(const Case& c, std::ostream* os) { *os << c.config << " " << c.scene; }
 
 class RenderCosim : public ::testing::TestWithParam<Case> {};
 
@@ -109,7 +95,7 @@ TEST_P(RenderCosim, FirmwareFrameEqualsModelFrameForTheSameRecords) {
   records.height = kH;
   records.clear_color = kClear;
   records.clear_depth = 0xFFFFFF;
-  for (const test::CapturedTriangle& t : streamed) records.tris.push_back({t.record, unpack_state_word(t.state_word)});
+  for (const test::CapturedTriangle& t : streamed) records.tris.push_back({t.record, test::from_state_word(t.state_word)});
   const Frame model = render_model_records(records, cfg);
 
   uint64_t bad = 0, drawn = 0;

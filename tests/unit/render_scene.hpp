@@ -34,6 +34,8 @@ struct RenderScene {
 RenderScene to_render_scene(const Scene& scene, int width, int height);
 
 render::TriState to_render_state(const TriState& s);
+// The host TriState a STATE word (hw/regs/raster.json) stands for.
+TriState from_state_word(uint32_t word);
 
 struct CapturedTriangle {
   uint32_t state_word = 0;

@@ -1,0 +1,188 @@
+// Textured cosim: the firmware render code (firmware/render), compiled for the host over the
+// simulation HAL, uploads the scene's textures with their mip chains (upload_texture: the chain
+// generated in firmware) and renders `cube` and `floor` with AUTO through the Verilated GPU
+// (GpuSimBus: raster + texture units, every register, framebuffer and texture access a bus
+// transaction). The frame read back through the HAL equals, bit for bit, the model's frame for the
+// records the firmware streamed and the model's own mip chains.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "htx/fw/auto_select.h"
+#include "htx/hal/framebuffer.h"
+#include "htx/hal/raster.h"
+#include "htx/hal/sim/gpu_sim_bus.hpp"
+#include "htx/hal/texture.h"
+#include "htx/model/model.hpp"
+#include "htx/model/scenes.hpp"
+#include "htx/model/texture.hpp"
+#include "htx/render/frame.h"
+#include "htx/render/texture_upload.h"
+#include "htx/rtl/raster_engine.hpp"
+#include "render_scene.hpp"
+
+namespace htx {
+namespace {
+
+struct Case {
+  std::string config, scene;
+  bool trilinear = false;  // samples the mip levels (nearest and bilinear read level 0 only)
+};
+
+// Readable parameter names in test listings (instead of the object's bytes).
+void PrintTo(const Case& c, std::ostream* os) { *os << c.config << " " << c.scene; }
+
+class TexturedCosim : public ::testing::TestWithParam<Case> {};
+
+// Level 0 of a model texture as the 8-bit image the firmware uploads.
+std::vector<uint32_t> level0_rgba8(const Texture& tex) {
+  std::vector<uint32_t> img;
+  for (uint32_t t : tex.levels[0]) {
+    const Rgba8 c = decode_texel(tex.format, t);
+    img.push_back(uint32_t{c.r} | (uint32_t{c.g} << 8) | (uint32_t{c.b} << 16) | (uint32_t{c.a} << 24));
+  }
+  return img;
+}
+
+TEST_P(TexturedCosim, FirmwareFrameEqualsModelFrameBitForBit) {
+  const Case& c = GetParam();
+  constexpr int kW = 160, kH = 120;
+  constexpr uint16_t kClear = 0x1234;
+  Scene scene = make_builtin_scene(c.scene);
+  for (Mesh& m : scene.meshes) {
+    m.state.method = Method::Auto;
+    if (c.trilinear) m.state.filter = Filter::Trilinear;
+  }
+  const test::RenderScene rs = test::to_render_scene(scene, kW, kH);
+  const ModelConfig cfg = rtl_config(c.config);
+
+  hal::sim::GpuSimBus bus(c.config);
+  hal::sim::ScopedBus attach(bus);
+
+  // Upload every texture into slot = its index, the chains one after the other.
+  const hal::TextureCaps caps = hal::texture_caps();
+  ASSERT_GE(caps.slots, scene.textures.size());
+  uint32_t base = 0;
+  for (size_t t = 0; t < scene.textures.size(); ++t) {
+    const Texture& tex = scene.textures[t];
+    const std::vector<uint32_t> img = level0_rgba8(tex);
+    std::vector<uint32_t> scratch(render::texture_upload_scratch_words(tex.log2_width, tex.log2_height));
+    const render::TextureImage image{img.data(), static_cast<uint8_t>(tex.log2_width),
+                                     static_cast<uint8_t>(tex.log2_height), static_cast<uint8_t>(tex.format)};
+    ASSERT_EQ(render::upload_texture(static_cast<uint32_t>(t), base, image, scratch.data(),
+                                     static_cast<uint32_t>(scratch.size()), 1000),
+              render::kUploadOk);
+    // The texture memory holds the model's chain (read back through the window; 16-bit formats
+    // occupy the low half of each word).
+    const uint32_t mask = tex.format == TexFormat::RGBA8888 ? 0xFFFFFFFFu : 0xFFFFu;
+    for (unsigned l = 0; l < tex.levels.size(); ++l) {
+      const uint32_t w = 1u << level_log2_width(tex, l), h = 1u << level_log2_height(tex, l);
+      for (uint32_t j = 0; j < h; j += (l == 0 ? 7 : 1))
+        for (uint32_t i = 0; i < w; ++i)
+          ASSERT_EQ(hal::texture_read_texel(base, tex.log2_width, tex.log2_height, l, i, j) & mask,
+                    tex.levels[l][j * w + i])
+              << "texture " << t << " level " << l << " (" << i << ", " << j << ")";
+    }
+    base += hal::texture_chain_blocks(tex.log2_width, tex.log2_height);
+  }
+  ASSERT_LE(base, 1u << caps.block_bits);
+
+  render::FrameParams frame;
+  frame.viewport = {kW, kH};
+  frame.format = cfg.record_format();
+  frame.methods_built = cfg.methods;
+  frame.auto_config = fw::auto_config_of(cfg);
+  frame.auto_tolerance = render::kOne / 16;
+  frame.cull_backfaces = rs.cull_backfaces;
+  std::vector<render::Mesh> meshes;
+  size_t max_vertices = 0;
+  for (const auto& d : rs.meshes) {
+    meshes.push_back(d.mesh);
+    max_vertices = std::max(max_vertices, d.vertices.size());
+  }
+  std::vector<render::ClipVert> clip(max_vertices);
+  std::vector<render::ScreenVert> screen(max_vertices);
+  std::vector<uint8_t> codes(max_vertices);
+  render::VertexCache cache{clip.data(), screen.data(), codes.data(), static_cast<uint32_t>(max_vertices)};
+  render::DrawStats stats;
+  render::DrawStatus mesh_status = render::kDrawOk;
+  hal::texture_clear_errors();
+  const uint64_t start = bus.cycles();
+  ASSERT_EQ(render::render_frame(frame, {kClear, 0xFFFFFF}, rs.view_proj, meshes.data(),
+                                 static_cast<uint32_t>(meshes.size()), &cache, 10'000'000, &stats, &mesh_status),
+            render::kFrameOk)
+      << "mesh status " << mesh_status;
+  ASSERT_TRUE(hal::texture_wait_idle(1000));
+  const uint64_t frame_cycles = bus.cycles() - start;
+  EXPECT_FALSE(hal::raster_state_error());
+  EXPECT_EQ(hal::texture_errors(), 0u);
+  hal::RasterCounters counters;
+  hal::raster_read_counters(&counters);
+  EXPECT_EQ(counters.triangles, stats.sent);
+
+  Frame rtl;
+  rtl.width = kW;
+  rtl.height = kH;
+  rtl.color.resize(static_cast<size_t>(kW) * kH);
+  for (int y = 0; y < kH; ++y)
+    hal::fb_read_row(kW, static_cast<uint32_t>(y), 0, kW, &rtl.color[static_cast<size_t>(y) * kW]);
+  const uint32_t z_max = (uint32_t{1} << cfg.z_bits) - 1;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      rtl.depth.push_back(hal::fb_read_depth(kW, static_cast<uint32_t>(x), static_cast<uint32_t>(y)) & z_max);
+
+  // The model: the streamed records, the model's own texture chains.
+  const std::vector<test::CapturedTriangle> streamed = test::split_fifo_stream(bus.fifo_words());
+  ASSERT_EQ(streamed.size(), stats.sent);
+  ASSERT_GT(stats.sent, 0u);
+  RecordScene records;
+  records.width = kW;
+  records.height = kH;
+  records.clear_color = kClear;
+  records.clear_depth = 0xFFFFFF;
+  records.textures = scene.textures;
+  unsigned per_method[8] = {};
+  unsigned textured = 0;
+  for (const test::CapturedTriangle& t : streamed) {
+    const TriState st = test::from_state_word(t.state_word);
+    ++per_method[static_cast<unsigned>(st.method) & 7];
+    textured += st.textured;
+    records.tris.push_back({t.record, st});
+  }
+  EXPECT_EQ(textured, stats.sent);
+  const Frame model = render_model_records(records, cfg);
+
+  uint64_t bad = 0, drawn = 0;
+  size_t first = 0;
+  for (size_t i = 0; i < model.color.size(); ++i) {
+    drawn += model.color[i] != kClear;
+    if (rtl.color[i] != model.color[i] || rtl.depth[i] != model.depth[i]) {
+      if (!bad) first = i;
+      ++bad;
+    }
+  }
+  EXPECT_GT(drawn, 1000u);
+  EXPECT_EQ(bad, 0u) << "first mismatch at pixel (" << first % kW << ", " << first / kW << "): rtl colour "
+                     << rtl.color[first] << " depth " << rtl.depth[first] << ", model colour " << model.color[first]
+                     << " depth " << model.depth[first];
+  EXPECT_EQ(counters.fragments, model.counters.fragments);
+  EXPECT_EQ(counters.pixels, model.counters.pixels_written);
+  std::printf("textured cosim %s %s%s: %u triangles (affine %u subdiv %u recip_lut %u recip_nr %u), %llu texture words "
+              "written, frame %llu simulated clocks, raster busy %u, %llu differing pixels\n",
+              c.config.c_str(), c.scene.c_str(), c.trilinear ? " trilinear" : "", stats.sent, per_method[0], per_method[1], per_method[2], per_method[3],
+              static_cast<unsigned long long>(bus.texture_writes()), static_cast<unsigned long long>(frame_cycles),
+              counters.busy, static_cast<unsigned long long>(bad));
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, TexturedCosim,
+                         ::testing::Values(Case{"icebreaker", "cube"}, Case{"full", "cube"}, Case{"icebreaker", "floor"},
+                                           Case{"full", "floor"}, Case{"full", "floor", true}),
+                         [](const ::testing::TestParamInfo<Case>& i) {
+                           return i.param.config + "_" + i.param.scene + (i.param.trilinear ? "_trilinear" : "");
+                         });
+
+}  // namespace
+}  // namespace htx
