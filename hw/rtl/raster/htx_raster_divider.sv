@@ -177,7 +177,6 @@ module htx_raster_divider #(
     typedef enum logic [1:0] {StIdle, StRecip, StMul, StOut} state_e;
     state_e              state_q;
     logic                lut_q, take;
-    logic [AccQ-1:0]     q_q;
     logic [NIN-1:0]      n_q [NN];
     logic [PayW-1:0]     pay_q;
     logic [2:0]          k_q;
@@ -189,12 +188,14 @@ module htx_raster_divider #(
 
     assign in_ready_o = (state_q == StIdle) || ((state_q == StOut) && out_ready_i);
     assign take       = in_valid_i && in_ready_o;
-    assign r_start    = (state_q == StRecip) && !r_busy && (k_q == 3'd0);
+    // The reciprocal starts as the fragment is taken (it is idle then: the last one finished before
+    // the products).
+    assign r_start    = take && in_need_i;
 
     htx_recip #(.XWidth(AccQ), .W(W), .K(K), .G(G), .Steps(Steps), .Iterative(MulIterative),
                 .Pipelined(1'b0)) u_recip (
       .clk_i, .rst_ni, .abort_i,
-      .start_i(r_start), .en_i(1'b1), .table_only_i(lut_q && !Color), .x_i(q_q),
+      .start_i(r_start), .en_i(1'b1), .table_only_i(in_lut_i && !Color), .x_i(q_eff),
       .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb)
     );
 
@@ -224,11 +225,11 @@ module htx_raster_divider #(
     assign m_ru = (m_p + $signed((MA+W+2)'(1) << (RSU - 1))) >>> RSU;
     assign m_rc = (m_p + $signed((MA+W+2)'(1) << (RSC - 1))) >>> RSC;
     logic unused_m;
-    assign unused_m = ^{shn, m_ru};
+    assign unused_m = ^{shn, m_ru, r_busy};
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
-        state_q <= StIdle; lut_q <= 1'b0; q_q <= '0; pay_q <= '0; k_q <= '0;
+        state_q <= StIdle; lut_q <= 1'b0; pay_q <= '0; k_q <= '0;
         for (int i = 0; i < NN; i++) n_q[i] <= '0;
         u_q <= '0; v_q <= '0; rgb_q <= '0;
       end else if (abort_i) begin
@@ -236,7 +237,6 @@ module htx_raster_divider #(
       end else begin
         if (take) begin
           lut_q <= in_lut_i;
-          q_q   <= q_eff;
           pay_q <= in_pay_i;
           k_q   <= '0;
           for (int i = 0; i < NN; i++) n_q[i] <= nin[i];
