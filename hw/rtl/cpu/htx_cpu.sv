@@ -93,7 +93,7 @@ module htx_cpu #(
 
   // ------------------------------------------------------------------------------------------
   // Pipeline registers
-  logic        d_valid_q, d_first_q, d_err_q, d_pred_q, d_rs1_used_q, d_rs2_used_q;
+  logic        d_valid_q, d_first_q, d_err_q, d_pred_q;
   logic        d_sub_q, d_signed_q, d_a_pc_q, d_a_zero_q, d_b_rs2_q;
   logic [31:0] d_instr_q, d_timm_q;  // instruction, branch/JAL immediate
   logic [31:2] d_pc_q, d_npc_q;
@@ -235,17 +235,17 @@ module htx_cpu #(
     end
   end
 
-  logic [1:0]  d_rs1_lo;
   logic [31:0] d_rs2;
-  assign d_rs1_lo = fe_a ? e_fast_result[1:0] : d_rs1_rest[1:0];
   assign d_rs2    = fe_b ? e_fast_result : d_rs2_rest;
 
   // A source written by the instruction in E whose result comes late (load, shift, link, CSR,
   // MUL/DIV) waits one cycle and then comes from W. W always completes when D moves on.
-  logic d_hazard;
-  assign d_hazard = e_live && e_q.rd_we && e_late_q &&
-                    ((d_rs1_used_q && (e_q.rd == d_ra)) ||
-                     (d_rs2_used_q && (e_q.rd == d_rb)));
+  // hz_q is that register compare, computed a cycle early for whatever E's and D's registers will
+  // hold (it keeps the 5-bit compares off the stall chain): E's registers load on e_accept_nr
+  // (from D), D's on d_free_nr (from fetch). When E loads while D holds, E's new instruction is
+  // a bubble (D held because of a hazard), so the value does not matter then.
+  logic d_hazard, hz_q, hz_d;
+  assign d_hazard = e_live && hz_q;
 
   logic late_alu_d, late_d, sub_d;
   assign late_alu_d = (d_dec.alu_op == htx_cpu_pkg::AluSll) || (d_dec.alu_op == htx_cpu_pkg::AluSrl) ||
@@ -275,10 +275,16 @@ module htx_cpu #(
   assign d_b      = fe_b_op ? e_fast_result : d_b_rest;
   assign signed_d = d_signed_q;
 
-  // Address bits [1:0] of a load, store or JALR target, for the misalignment checks.
-  logic [1:0] d_lo;
+  // Address bits [1:0] of a load, store or JALR target, for the misalignment checks. The two-bit
+  // sum is formed for every forwarding source and the forwarding selects come last, so the
+  // register compares and the trap logic behind them are not in series with the adder.
+  logic [1:0] d_lo, lo_e, lo_w, lo_l, lo_r;
   logic       d_misaligned;
-  assign d_lo = d_rs1_lo + d_dec.imm[1:0];
+  assign lo_e = e_fast_result[1:0] + d_dec.imm[1:0];
+  assign lo_w = rf_wdata[1:0] + d_dec.imm[1:0];
+  assign lo_l = lw_data_q[1:0] + d_dec.imm[1:0];
+  assign lo_r = rf_rdata_a[1:0] + d_dec.imm[1:0];
+  assign d_lo = fe_a ? lo_e : fw_a ? lo_w : fl_a ? lo_l : lo_r;
   always_comb begin
     unique case (d_dec.funct3[1:0])
       2'b00:   d_misaligned = 1'b0;
@@ -291,8 +297,9 @@ module htx_cpu #(
   assign d_target = {d_pc_q, 2'b00} + d_timm_q;
 
   // Traps known before E (everything except a taken branch to a misaligned target). mtval comes
-  // from E's adder (decode sets it up to produce the PC, the instruction bits or 0 where that is
-  // the value), or for a branch from the target.
+  // from E's adder (decode sets it up to produce the PC or 0 where that is the value), for a branch
+  // or JAL from the target, and is 0 for an illegal instruction (allowed by the privileged spec; a
+  // handler can read the instruction at mepc; this saves a 32-bit multiplexer).
   logic                    d_xtrap;
   htx_cpu_pkg::exc_cause_e d_cause;
   always_comb begin
@@ -349,10 +356,18 @@ module htx_cpu #(
   assign e_done_nr   = e_valid_q && w_ready && !w_fault && !(e_q.csr && (w_valid_q || csr_counting)) &&
                        !e_wait;
   assign e_accept_nr = w_ready && (!e_valid_q || e_done_nr);
-  assign d_free_nr   = !d_valid_q ||
-                       (e_accept_nr && !(e_valid_q && e_q.rd_we && e_late_q &&
-                                         ((d_rs1_used_q && (e_q.rd == d_ra)) ||
-                                          (d_rs2_used_q && (e_q.rd == d_rb)))));
+  assign d_free_nr   = !d_valid_q || (e_accept_nr && !(e_valid_q && hz_q));
+  always_comb begin
+    if (e_accept_nr) begin
+      hz_d = d_dec.rd_we && late_d &&
+             ((f_rs1_used && (d_dec.rd == f_instr[19:15])) || (f_rs2_used && (d_dec.rd == f_instr[24:20])));
+    end else if (d_free_nr) begin
+      hz_d = e_q.rd_we && e_late_q &&
+             ((f_rs1_used && (e_q.rd == f_instr[19:15])) || (f_rs2_used && (e_q.rd == f_instr[24:20])));
+    end else begin
+      hz_d = hz_q;
+    end
+  end
   assign f_take      = d_free_nr && !redirect_q && !(d_valid_q && d_first_q && d_pred_q);
 
 
@@ -387,7 +402,8 @@ module htx_cpu #(
   htx_cpu_pkg::exc_cause_e e_cause;
   logic [31:0]             e_tval;
   assign e_cause = e_xtrap_q ? e_cause_q : htx_cpu_pkg::ExcInstrMisaligned;
-  assign e_tval  = (e_q.branch || e_q.jal || e_illegal_q) ? e_aux_q : {alu_sum[31:1], alu_sum[0] && !e_q.jalr};
+  assign e_tval  = e_illegal_q ? 32'b0 :
+                   (e_q.branch || e_q.jal) ? e_aux_q : {alu_sum[31:1], alu_sum[0] && !e_q.jalr};
 
   // ------------------------------------------------------------------------------------------
   // Execute: memory, multiply, divide, CSR
@@ -418,6 +434,7 @@ module htx_cpu #(
     .op_i     (e_q.funct3[1:0]),
     .a_i      (e_a_q[31:0]),
     .b_i      (e_rs2_q),
+    .sum_i    (alu_sum),     // a + b: the operands of a MUL-class instruction are rs1 and rs2
     .busy_o   (mul_busy),
     .done_o   (mul_done),
     .result_o (mul_result)
@@ -467,6 +484,7 @@ module htx_cpu #(
     .clk_i,
     .rst_ni,
     .sel_i     (e_q.csr_sel),
+    .read_i    (e_q.csr),
     .rdata_o   (csr_rdata),
     .we_i      (csr_we),
     .op_i      (e_q.funct3[1:0]),
@@ -487,22 +505,12 @@ module htx_cpu #(
   // synthesis does not fold the late values deeper into the mux tree).
   (* keep *) logic [31:0] e_result_rest;
   logic [31:0] e_result_late, e_result;
-  always_comb begin
-    if (e_q.jal || e_q.jalr) begin
-      e_result_rest = {e_npc_q, 2'b00};
-    end else if (e_q.csr) begin
-      e_result_rest = csr_rdata;
-    end else if (e_q.mul) begin
-      e_result_rest = mul_result;
-    end else begin
-      e_result_rest = div_result;
-    end
-  end
+  // An AND-OR of the registered one-hot kinds (csr_rdata is already 0 unless a CSR instruction).
+  assign e_result_rest = ({32{e_q.jal || e_q.jalr}} & {e_npc_q, 2'b00}) | csr_rdata |
+                         ({32{e_q.mul}} & mul_result) | ({32{e_q.div}} & div_result);
   assign e_result_late = e_slt_q   ? {31'b0, alu_lt} :
                          e_shift_q ? alu_late : e_result_rest;
   assign e_result      = e_fast_q ? e_fast_result : e_result_late;  // fast: includes the address
-  logic unused_e_div;
-  assign unused_e_div = e_q.div;  // DIV is the remaining choice of e_result_rest; E uses e_div_q
 
   logic [3:0]  lsu_be;
   logic [31:0] lsu_wdata;
@@ -591,18 +599,17 @@ module htx_cpu #(
   end
 
   always_ff @(posedge clk_i) begin
+    hz_q <= hz_d;
     if (d_free_nr) begin
       d_instr_q  <= f_instr;
       d_timm_q   <= f_is_jal ?
           {{11{f_instr[31]}}, f_instr[31], f_instr[19:12], f_instr[20], f_instr[30:21], 1'b0} :
           {{19{f_instr[31]}}, f_instr[31], f_instr[7], f_instr[30:25], f_instr[11:8], 1'b0};
-      d_rs1_used_q <= f_rs1_used;
       d_sub_q      <= f_sub;
       d_a_pc_q     <= f_a_pc;
       d_a_zero_q   <= f_a_zero;
       d_b_rs2_q    <= f_b_rs2;
       d_signed_q   <= f_signed;
-      d_rs2_used_q <= f_rs2_used;
       d_err_q    <= f_err;
       d_pc_q     <= f_pc;
       d_npc_q    <= f_npc;
@@ -615,7 +622,7 @@ module htx_cpu #(
       e_br_eq_q <= !d_dec.funct3[2];
       e_br_inv_q <= d_dec.funct3[0];
       e_rs2_q   <= d_rs2;
-      e_aux_q   <= d_dec.illegal ? d_instr_q : d_target;
+      e_aux_q   <= d_target;
       e_illegal_q <= d_dec.illegal;
       e_pc_q    <= d_pc_q;
       e_npc_q   <= d_npc_q;

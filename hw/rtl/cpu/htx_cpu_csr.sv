@@ -7,6 +7,7 @@ module htx_cpu_csr (
   input  logic                    rst_ni,
   // CSR instruction in execute
   input  htx_cpu_pkg::csr_sel_e   sel_i,
+  input  logic                    read_i,    // a CSR instruction is in execute (else rdata_o = 0)
   output logic [31:0]             rdata_o,
   input  logic                    we_i,      // commit the CSR write this cycle
   input  logic [1:0]              op_i,      // funct3[1:0]: 01 write, 10 set, 11 clear
@@ -36,29 +37,31 @@ module htx_cpu_csr (
   logic [63:0] cycle_inc, instret_inc;
   logic        retire_q;
 
-  always_comb begin
-    unique case (sel_i)
-      htx_cpu_pkg::CsrMstatus:  rdata_o = {19'b0, 2'b11, 3'b0, mpie_q, 3'b0, mie_q, 3'b0};
-      htx_cpu_pkg::CsrMisa:     rdata_o = MisaValue;
-      htx_cpu_pkg::CsrMtvec:    rdata_o = {mtvec_q, 2'b00};
-      htx_cpu_pkg::CsrMscratch: rdata_o = mscratch_q;
-      htx_cpu_pkg::CsrMepc:     rdata_o = {mepc_q, 2'b00};
-      htx_cpu_pkg::CsrMcause:   rdata_o = {28'b0, mcause_q};
-      htx_cpu_pkg::CsrMtval:    rdata_o = mtval_q;
-      htx_cpu_pkg::CsrCycle:    rdata_o = cycle_q[31:0];
-      htx_cpu_pkg::CsrCycleh:   rdata_o = cycle_q[63:32];
-      htx_cpu_pkg::CsrInstret:  rdata_o = instret_q[31:0];
-      htx_cpu_pkg::CsrInstreth: rdata_o = instret_q[63:32];
-      default:                  rdata_o = 32'b0;  // mie, mip, id registers
-    endcase
-  end
+  // The read value as an AND-OR of the selected registers, zero unless read_i: execute ORs it with
+  // its other multi-cycle results instead of multiplexing once more.
+  function automatic logic [31:0] pick(input logic en, input logic [31:0] v);
+    pick = {32{en}} & v;
+  endfunction
+  logic [31:0] rdata_raw;
+  assign rdata_raw = pick(sel_i == htx_cpu_pkg::CsrMstatus, {19'b0, 2'b11, 3'b0, mpie_q, 3'b0, mie_q, 3'b0}) |
+                     pick(sel_i == htx_cpu_pkg::CsrMisa, MisaValue) |
+                     pick(sel_i == htx_cpu_pkg::CsrMtvec, {mtvec_q, 2'b00}) |
+                     pick(sel_i == htx_cpu_pkg::CsrMscratch, mscratch_q) |
+                     pick(sel_i == htx_cpu_pkg::CsrMepc, {mepc_q, 2'b00}) |
+                     pick(sel_i == htx_cpu_pkg::CsrMcause, {28'b0, mcause_q}) |
+                     pick(sel_i == htx_cpu_pkg::CsrMtval, mtval_q) |
+                     pick(sel_i == htx_cpu_pkg::CsrCycle, cycle_q[31:0]) |
+                     pick(sel_i == htx_cpu_pkg::CsrCycleh, cycle_q[63:32]) |
+                     pick(sel_i == htx_cpu_pkg::CsrInstret, instret_q[31:0]) |
+                     pick(sel_i == htx_cpu_pkg::CsrInstreth, instret_q[63:32]);
+  assign rdata_o = pick(read_i, rdata_raw);
 
   logic [31:0] wdata;
   always_comb begin
     unique case (op_i)
       2'b01:   wdata = src_i;
-      2'b10:   wdata = rdata_o | src_i;
-      default: wdata = rdata_o & ~src_i;
+      2'b10:   wdata = rdata_raw | src_i;
+      default: wdata = rdata_raw & ~src_i;
     endcase
   end
 

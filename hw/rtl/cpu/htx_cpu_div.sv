@@ -1,6 +1,16 @@
-// Iterative divider for DIV/DIVU/REM/REMU: one restoring step per cycle on the magnitudes, signs
-// fixed in a final cycle into a result register, 35 cycles from start_i to done_o. Division by zero gives quotient all ones and
-// remainder = dividend; -2^31 / -1 gives quotient -2^31 and remainder 0 (the RISC-V results).
+// Iterative divider for DIV/DIVU/REM/REMU: one restoring step per cycle on the magnitudes, 37
+// cycles from start_i to done_o. Division by zero gives quotient all ones and remainder = dividend;
+// -2^31 / -1 gives quotient -2^31 and remainder 0 (the RISC-V results).
+//
+// One 33-bit adder does all the arithmetic: sum = {partial remainder, next dividend bit} +
+// {1, addend_q} + carry_q. The two sign negations go through it as well, each in a cycle of its own
+// with the remainder cleared (so the first operand is 0 and sum is (x ^ mask) + carry, i.e. x or
+// -x): |a| before the steps and the signed result after them. The divisor is never negated: addend_q
+// holds the 33-bit value that subtracts its magnitude (-|b| is b itself when b < 0, ~b plus a
+// carry-in of 1 otherwise). Compared with separate negators this saves about 100 LUT4 for two
+// cycles per division.
+//
+// a_i, b_i and op_i must stay unchanged from start_i until done_o (execute holds the instruction).
 module htx_cpu_div (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -14,16 +24,20 @@ module htx_cpu_div (
   output logic [31:0] result_o
 );
 
-  typedef enum logic [1:0] {
-    DivIdle = 2'd0,
-    DivRun  = 2'd1,
-    DivSign = 2'd2,
-    DivDone = 2'd3
+  typedef enum logic [2:0] {
+    DivIdle = 3'd0,
+    DivAbsA = 3'd1,  // quo_q <= |a|, addend_q <= -|b|
+    DivRun  = 3'd2,  // 32 restoring steps
+    DivSign = 3'd3,  // addend_q <= magnitude with the result's sign mask, remainder cleared
+    DivFix  = 3'd4,  // quo_q <= signed result
+    DivDone = 3'd5
   } div_state_e;
 
   div_state_e  state_q;
   logic [4:0]  count_q;
-  logic [31:0] rem_q, quo_q, divisor_q;
+  logic [31:0] rem_q, quo_q;
+  logic [31:0] addend_q;
+  logic        carry_q;
   logic        neg_result_q, want_rem_q;
 
   logic        is_signed, a_neg, b_neg;
@@ -31,64 +45,85 @@ module htx_cpu_div (
   assign a_neg     = is_signed & a_i[31];
   assign b_neg     = is_signed & b_i[31];
 
-  // One restoring step: shift the next dividend bit into the partial remainder and subtract.
-  logic [32:0] trial;
+  // During the steps: shift the next dividend bit into the partial remainder and subtract |b|.
+  logic [32:0] sum;
   logic [31:0] shifted;
   assign shifted = {rem_q[30:0], quo_q[31]};
-  assign trial   = {rem_q[31], shifted} - {1'b0, divisor_q};
+  assign sum     = {rem_q[31], shifted} + {1'b1, addend_q} + {32'b0, carry_q};
+
+  // done_o comes straight from a flip-flop: it feeds execute's stall logic.
+  logic done_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       state_q <= DivIdle;
       count_q <= 5'd0;
+      done_q  <= 1'b0;
     end else if (kill_i) begin
       state_q <= DivIdle;
+      done_q  <= 1'b0;
     end else begin
+      done_q <= (state_q == DivFix);
       unique case (state_q)
         DivIdle: if (start_i) begin
-          state_q <= DivRun;
+          state_q <= DivAbsA;
           count_q <= 5'd0;
         end
+        DivAbsA: state_q <= DivRun;
         DivRun: begin
           count_q <= count_q + 5'd1;
           if (count_q == 5'd31) begin
             state_q <= DivSign;
           end
         end
-        DivSign: state_q <= DivDone;
+        DivSign: state_q <= DivFix;
+        DivFix:  state_q <= DivDone;
         default: state_q <= DivIdle;
       endcase
     end
   end
 
+  logic [31:0] magnitude;
+  assign magnitude = want_rem_q ? rem_q : quo_q;
+
   always_ff @(posedge clk_i) begin
-    if (state_q == DivIdle && start_i) begin
-      rem_q        <= 32'b0;
-      quo_q        <= a_neg ? (32'b0 - a_i) : a_i;
-      divisor_q    <= b_neg ? (32'b0 - b_i) : b_i;
-      want_rem_q   <= op_i[1];
-      // Remainder takes the dividend's sign; a quotient of a division by zero stays all ones.
-      neg_result_q <= op_i[1] ? a_neg : ((a_neg ^ b_neg) && (b_i != 32'b0));
-    end else if (state_q == DivRun) begin
-      if (!trial[32]) begin
-        rem_q <= trial[31:0];
-        quo_q <= {quo_q[30:0], 1'b1};
-      end else begin
-        rem_q <= shifted;
-        quo_q <= {quo_q[30:0], 1'b0};
+    unique case (state_q)
+      DivIdle: if (start_i) begin
+        rem_q        <= 32'b0;
+        quo_q        <= 32'b0;
+        addend_q     <= a_i ^ {32{a_neg}};
+        carry_q      <= a_neg;
+        want_rem_q   <= op_i[1];
+        // Remainder takes the dividend's sign; a quotient of a division by zero stays all ones.
+        neg_result_q <= op_i[1] ? a_neg : ((a_neg ^ b_neg) && (b_i != 32'b0));
       end
-    end
+      DivAbsA: begin
+        quo_q    <= sum[31:0];
+        addend_q <= b_neg ? b_i : ~b_i;
+        carry_q  <= !b_neg;
+      end
+      DivRun: begin
+        if (!sum[32]) begin
+          rem_q <= sum[31:0];
+          quo_q <= {quo_q[30:0], 1'b1};
+        end else begin
+          rem_q <= shifted;
+          quo_q <= {quo_q[30:0], 1'b0};
+        end
+      end
+      DivSign: begin
+        rem_q    <= 32'b0;
+        quo_q    <= 32'b0;
+        addend_q <= magnitude ^ {32{neg_result_q}};
+        carry_q  <= neg_result_q;
+      end
+      DivFix: quo_q <= sum[31:0];
+      default: ;
+    endcase
   end
 
-  logic [31:0] magnitude, result_q;
-  assign magnitude = want_rem_q ? rem_q : quo_q;
-  always_ff @(posedge clk_i) begin
-    if (state_q == DivSign) begin
-      result_q <= neg_result_q ? (32'b0 - magnitude) : magnitude;
-    end
-  end
-  assign result_o  = result_q;
-  assign done_o    = (state_q == DivDone);
-  assign busy_o    = (state_q != DivIdle);
+  assign result_o = quo_q;
+  assign done_o   = done_q;  // state_q == DivDone
+  assign busy_o   = (state_q != DivIdle);
 
 endmodule

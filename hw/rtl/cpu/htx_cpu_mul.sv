@@ -1,6 +1,9 @@
 // Three-cycle 32x32 multiplier for MUL/MULH/MULHSU/MULHU built from four unsigned 16x16 partial
 // products, so that synth_ice40 -dsp maps exactly four SB_MAC16. Signed high halves come from the
 // unsigned product: hi_signed = hi_unsigned - (a<0 ? b : 0) - (b<0 ? a : 0) (mod 2^32).
+// The correction needs no adder of its own: when both terms are present (MULH of two negative
+// operands) it is a + b, which execute's ALU adder computes anyway for a MUL-class instruction
+// (sum_i), so it is one 4:1 choice among 0, a, b and a + b.
 //   cycle 1 (start_i): the partial products and the signed correction are registered;
 //   cycle 2:           mid = lh + hl, then the low word ll + mid[15:0] << 16 and the high word
 //                      (hh - corr) + mid[32:16] + the low word's carry are registered (two carry
@@ -13,16 +16,24 @@ module htx_cpu_mul (
   input  logic [1:0]  op_i,     // funct3[1:0]: 00 MUL, 01 MULH, 10 MULHSU, 11 MULHU
   input  logic [31:0] a_i,
   input  logic [31:0] b_i,
+  input  logic [31:0] sum_i,    // a_i + b_i (execute's adder)
   output logic        busy_o,   // an operation is in flight: start_i is ignored
   output logic        done_o,
   output logic [31:0] result_o
 );
 
-  logic        a_signed, b_signed;
+  logic        a_corr, b_corr;  // a < 0 as a signed operand (subtract b), likewise b
   logic [31:0] corr_d;
-  assign a_signed = (op_i == 2'b01) || (op_i == 2'b10);
-  assign b_signed = (op_i == 2'b01);
-  assign corr_d   = ((a_signed && a_i[31]) ? b_i : 32'b0) + ((b_signed && b_i[31]) ? a_i : 32'b0);
+  assign a_corr = ((op_i == 2'b01) || (op_i == 2'b10)) && a_i[31];
+  assign b_corr = (op_i == 2'b01) && b_i[31];
+  always_comb begin
+    unique case ({a_corr, b_corr})
+      2'b11:   corr_d = sum_i;
+      2'b10:   corr_d = b_i;
+      2'b01:   corr_d = a_i;
+      default: corr_d = 32'b0;
+    endcase
+  end
 
   logic [31:0] p_ll_q, p_lh_q, p_hl_q, p_hh_q, corr_q;
   logic [31:0] lo_q, hi_q, hs;

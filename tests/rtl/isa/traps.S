@@ -1,7 +1,8 @@
 // Every trap cause with mcause, mepc and mtval checked, and MRET: ECALL (11), EBREAK (3), illegal
-// instruction (2, mtval = the instruction), instruction address misaligned on JAL/JALR/taken branch
-// (0, mtval = target; not-taken branches do not trap), load/store address misaligned (4/6, mtval =
-// address), load/store access fault (5/7, mtval = address) and instruction access fault (1).
+// instruction (2, mtval = 0: a handler finds the instruction at mepc), instruction address
+// misaligned on JAL/JALR/taken branch (0, mtval = target; not-taken branches do not trap),
+// load/store address misaligned (4/6, mtval = address), load/store access fault (5/7, mtval =
+// address) and instruction access fault (1).
 // A trapping instruction has no other effect.
 #include "htx_test.h"
 
@@ -26,19 +27,19 @@ misaligned_back:          // 2 mod 4: a target for backward branches and jumps
   la t0, trap_handler; csrw mtvec, t0
   TEST_TRAP(1, 11, 0, ecall)
   TEST_TRAP(2, 3, 0, ebreak)
-  TEST_TRAP(3, 2, 0x00000000, .word 0x00000000)
-  TEST_TRAP(4, 2, 0xffffffff, .word 0xffffffff)
-  TEST_TRAP(5, 2, 0x40001033, .word 0x40001033)   // SLL with funct7 0100000
-  TEST_TRAP(6, 2, 0x02001013, .word 0x02001013)   // SLLI with shamt[5] set (RV64 only)
-  TEST_TRAP(7, 2, 0x0000b003, .word 0x0000b003)   // LD (RV64 only)
-  TEST_TRAP(8, 2, 0x00003023, .word 0x00003023)   // SD (RV64 only)
-  TEST_TRAP(9, 2, 0x00002063, .word 0x00002063)   // branch funct3 010
-  TEST_TRAP(10, 2, 0x00001067, .word 0x00001067)  // JALR funct3 001
-  TEST_TRAP(11, 2, 0x10200073, .word 0x10200073)  // SRET: no supervisor mode
-  TEST_TRAP(12, 2, 0x00004073, .word 0x00004073)  // SYSTEM funct3 100
-  TEST_TRAP(13, 2, 0x00000007, .word 0x00000007)  // FLW opcode: no F extension
-  TEST_TRAP(14, 2, 0x00000001, .word 0x00000001)  // compressed encoding: no C extension
-  TEST_TRAP(15, 2, 0x0200402b, .word 0x0200402b)  // custom-1 opcode
+  TEST_TRAP(3, 2, 0, .word 0x00000000)
+  TEST_TRAP(4, 2, 0, .word 0xffffffff)
+  TEST_TRAP(5, 2, 0, .word 0x40001033)   // SLL with funct7 0100000
+  TEST_TRAP(6, 2, 0, .word 0x02001013)   // SLLI with shamt[5] set (RV64 only)
+  TEST_TRAP(7, 2, 0, .word 0x0000b003)   // LD (RV64 only)
+  TEST_TRAP(8, 2, 0, .word 0x00003023)   // SD (RV64 only)
+  TEST_TRAP(9, 2, 0, .word 0x00002063)   // branch funct3 010
+  TEST_TRAP(10, 2, 0, .word 0x00001067)  // JALR funct3 001
+  TEST_TRAP(11, 2, 0, .word 0x10200073)  // SRET: no supervisor mode
+  TEST_TRAP(12, 2, 0, .word 0x00004073)  // SYSTEM funct3 100
+  TEST_TRAP(13, 2, 0, .word 0x00000007)  // FLW opcode: no F extension
+  TEST_TRAP(14, 2, 0, .word 0x00000001)  // compressed encoding: no C extension
+  TEST_TRAP(15, 2, 0, .word 0x0200402b)  // custom-1 opcode
   // Misaligned loads and stores; byte accesses never trap.
   la a0, tdata
   TEST_TRAP(16, 4, tdata + 1, lw a1, 1(a0))
