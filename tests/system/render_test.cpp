@@ -93,6 +93,8 @@ CosimFrame cosim_frame(const std::string& scene_name) {
   frame.viewport = {kW, kH};
   frame.format = cfg.record_format();
   frame.methods_built = cfg.methods;
+  frame.auto_config = fw::auto_config_of(cfg);
+  frame.auto_tolerance = render::kOne / 16;  // issue 7's tolerance
   frame.cull_backfaces = rs.cull_backfaces;
   std::vector<render::ClipVert> clip(max_vertices);
   std::vector<render::ScreenVert> screen(max_vertices);
@@ -190,6 +192,9 @@ TEST(SystemRender, SocConfigIsTheIcebreakerRasterUnit) {
   EXPECT_EQ(render_app::kRecordFormat.q_bits, f.q_bits);
   EXPECT_EQ(render_app::kRecordFormat.uv_int_bits, f.uv_int_bits);
   EXPECT_EQ(render_app::kMethodsBuilt, cfg.methods);
+  const htx::fw::AutoConfig a = htx::fw::auto_config_of(cfg);
+  EXPECT_EQ(0, std::memcmp(&render_app::kAutoConfig, &a, sizeof a)) << "AUTO's configuration";
+  EXPECT_EQ(render_app::kAutoTolerance, htx::render::kOne / 16);
 }
 
 TEST(SystemRender, FirmwareFrameOnTheSocEqualsTheCosimFrame) {

@@ -68,6 +68,8 @@ bool render_scene(const render_app::SceneData& sc) {
   frame.viewport = {render_app::kWidth, render_app::kHeight};
   frame.format = render_app::kRecordFormat;
   frame.methods_built = render_app::kMethodsBuilt;
+  frame.auto_config = render_app::kAutoConfig;
+  frame.auto_tolerance = render_app::kAutoTolerance;
   frame.cull_backfaces = sc.cull_backfaces;
 
   uint64_t geo_cycles = 0, geo_vertices = 0;

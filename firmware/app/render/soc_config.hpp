@@ -5,7 +5,9 @@
 
 #include <stdint.h>
 
+#include "htx/fw/auto_select.h"
 #include "htx/fw/vertex_record.h"
+#include "htx/render/fixed.h"
 
 namespace render_app {
 
@@ -13,6 +15,10 @@ namespace render_app {
 inline constexpr htx::fw::RecordFormat kRecordFormat{14, 16, 24, 13};
 // Methods the raster unit builds (bit i = method i): AFFINE, SUBDIV, RECIP_LUT, RECIP_NR.
 inline constexpr uint32_t kMethodsBuilt = 0x0F;
+// AUTO: the icebreaker raster unit's reciprocal bounds and costs, and issue 7's tolerance of 1/16
+// texel (Q16.16).
+inline constexpr htx::fw::AutoConfig kAutoConfig = htx::fw::kAutoConfigIcebreaker;
+inline constexpr int64_t kAutoTolerance = htx::render::kOne / 16;
 // Screen: 160 x 120 fits the SoC's framebuffer of 19,200 pixels.
 inline constexpr int32_t kWidth = 160;
 inline constexpr int32_t kHeight = 120;

@@ -9,19 +9,27 @@ float maxf(float a, float b) { return a > b ? a : b; }
 float minf(float a, float b) { return a < b ? a : b; }
 bool finitef(float x) { return x == x && x < 3.0e38f && x > -3.0e38f; }
 
-// 2^e for small |e| by repeated exact multiplication (no libm).
+// 2^e for -126 <= e <= 127, built from its exponent bits (exact; no libm, no loop: this runs per
+// triangle on a CPU without floating point).
 float pow2f(int e) {
-  float r = 1.0f;
-  for (; e > 0; --e) r *= 2.0f;
-  for (; e < 0; ++e) r *= 0.5f;
+  const uint32_t bits = static_cast<uint32_t>(e + 127) << 23;
+  float r;
+  __builtin_memcpy(&r, &bits, sizeof r);
   return r;
 }
 
-// sqrt(x) for x >= 1 by Newton's method from x itself (monotone from above, 30 steps reach
-// float precision for any x below 2^60; the loop stops as soon as it no longer decreases).
+// sqrt(x) for x >= 1: a first guess from halving the exponent (within a factor of 1.5), then
+// Newton's method, which from the second step on decreases monotonically; it stops when it no
+// longer does (float precision), at most 8 steps.
 float sqrt_ge1(float x) {
-  float y = x > 1.0f ? 0.5f * (x + 1.0f) : 1.0f;
-  for (int i = 0; i < 40; ++i) {
+  uint32_t bits;
+  __builtin_memcpy(&bits, &x, sizeof bits);
+  const uint32_t guess_bits = ((bits >> 23) - 127) / 2 + 127;
+  float y;
+  const uint32_t g = guess_bits << 23;
+  __builtin_memcpy(&y, &g, sizeof y);
+  y = 0.5f * (y + x / y);
+  for (int i = 0; i < 8; ++i) {
     const float next = 0.5f * (y + x / y);
     if (!(next < y)) break;
     y = next;

@@ -1,13 +1,18 @@
 // The `rtl` engine's texture handling (docs/gpu.md): what it refuses before simulating, untextured
 // fragments whatever filter their state names, several textures in their slots, and the metrics it
-// reports on bigtri (pixel rate of the full configuration's bilinear path).
+// reports on bigtri (pixel rate of the full configuration's bilinear path), and AUTO's measured
+// raster clocks on the icebreaker unit (issue 7's acceptance figures).
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
+#include "htx/fw/auto_scene.h"
 #include "htx/model/geometry.hpp"
+#include "htx/model/metrics.hpp"
 #include "htx/model/model.hpp"
+#include "htx/model/ref.hpp"
 #include "htx/model/scenes.hpp"
 #include "htx/model/texture.hpp"
 #include "htx/rtl/raster_engine.hpp"
@@ -84,6 +89,36 @@ TEST(GpuEngine, FullBilinearSustainsOnePixelPerClockOnBigtri) {
   EXPECT_GT(st.covered_pixels, 15000u);
   EXPECT_GE(st.px_per_clk, 0.95);
   EXPECT_EQ(st.triangles, st.triangles_sent);
+}
+
+// AUTO within 1/16 texel on `floor` and `cube` takes fewer clocks on the Verilated icebreaker GPU
+// (shared iterative reciprocal unit) than RECIP_NR for every triangle; the frames equal the model's,
+// whose texel error against `ref` is within the tolerance.
+TEST(GpuEngine, AutoTakesFewerClocksThanRecipNrOnIcebreaker) {
+  constexpr float kTolerance = 1.0f / 16;
+  const ModelConfig cfg = rtl_config("icebreaker");
+  for (const char* spec : {"floor", "cube"}) {
+    ScreenScene nr = scene(spec, 160, 120);
+    ScreenScene au = nr;
+    for (ScreenTri& t : nr.tris) t.state.method = Method::RecipNr;
+    for (ScreenTri& t : au.tris) t.state.method = Method::Auto;
+    const fw::AutoSceneSummary sum = fw::resolve_auto_methods(au, cfg, kTolerance);
+    EXPECT_EQ(sum.not_within, 0u) << spec;
+    EXPECT_LT(sum.per_method[fw::kAutoRecipNr], sum.resolved) << spec << ": AUTO must pick cheaper methods too";
+    RtlStats st_nr, st_au;
+    EXPECT_EQ(mismatches(nr, "icebreaker", &st_nr), 0u) << spec;
+    EXPECT_EQ(mismatches(au, "icebreaker", &st_au), 0u) << spec;
+    EXPECT_EQ(st_nr.covered_pixels, st_au.covered_pixels) << spec;
+    EXPECT_LT(st_au.cycles, st_nr.cycles) << spec;
+    RefOptions ro;
+    ro.depth_bits = cfg.z_bits;
+    const Metrics m = compute_metrics(render_model(au, cfg), render_ref(au, ro), {"model", spec, "auto", "scene", "icebreaker"});
+    EXPECT_GT(m.compared_pixels, 2000u) << spec;
+    EXPECT_LE(m.max_texel_error, kTolerance) << spec;
+    std::printf("AUTO %s icebreaker 160x120 tol 1/16: RTL clocks %llu vs RECIP_NR %llu (%.1f %%), max texel error %.4f\n",
+                spec, static_cast<unsigned long long>(st_au.cycles), static_cast<unsigned long long>(st_nr.cycles),
+                100.0 * static_cast<double>(st_au.cycles) / static_cast<double>(st_nr.cycles), m.max_texel_error);
+  }
 }
 
 }  // namespace
