@@ -1,8 +1,9 @@
 // The render firmware (firmware/app/render) on the simulated SoC: its compiled-in scenes are the
 // model's built-in scenes, its configuration constants are the icebreaker raster unit's, and the
 // frame it draws on `htx sim` has the checksum of the cosim frame: the same firmware render code
-// compiled for the host over hal/sim, on the Verilated icebreaker raster subsystem, with the same
-// scenes and render state (whose frame equals the model's for the same vertex records).
+// and texture upload compiled for the host over hal/sim, on the Verilated icebreaker GPU (raster and
+// texture units), with the same scenes, texture and render state (whose frame equals the model's
+// for the same vertex records and texture).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -16,16 +17,18 @@
 
 #include "htx/hal/framebuffer.h"
 #include "htx/hal/raster.h"
-#include "htx/hal/sim/raster_sim_bus.hpp"
+#include "htx/hal/sim/gpu_sim_bus.hpp"
 #include "htx/model/image_io.hpp"
 #include "htx/model/model.hpp"
 #include "htx/model/scenes.hpp"
+#include "htx/model/texture.hpp"
 #include "htx/render/frame.h"
 #include "htx/rtl/raster_engine.hpp"
 #include "render_scene.hpp"
 #include "render_state.hpp"
 #include "scenes.hpp"
 #include "soc_config.hpp"
+#include "soc_texture.hpp"
 #include "subprocess.hpp"
 
 namespace {
@@ -68,7 +71,7 @@ htx::TriState unpack_state_word(uint32_t w) {
 }
 
 // The cosim frame of a built-in scene: the model's scene converted as the cosim tests do, the
-// firmware's render state, firmware/render over hal/sim on the Verilated icebreaker subsystem.
+// firmware's texture and render state, firmware/render over hal/sim on the Verilated icebreaker GPU.
 struct CosimFrame {
   std::vector<uint16_t> color;
   uint32_t raster_busy = 0;
@@ -87,8 +90,10 @@ CosimFrame cosim_frame(const std::string& scene_name) {
     max_vertices = std::max(max_vertices, d.mesh.vertex_count);
   }
   const ModelConfig cfg = rtl_config("icebreaker");
-  hal::sim::RasterSimBus bus("icebreaker");
+  hal::sim::GpuSimBus bus("icebreaker");
   hal::sim::ScopedBus attach(bus);
+  if (render_app::upload_scene_texture(1000) != render::kUploadOk)
+    throw std::runtime_error("cosim texture upload failed");
   render::FrameParams frame;
   frame.viewport = {kW, kH};
   frame.format = cfg.record_format();
@@ -121,6 +126,13 @@ CosimFrame cosim_frame(const std::string& scene_name) {
   records.height = kH;
   records.clear_color = render_app::kClearColor;
   records.clear_depth = render_app::kClearDepth;
+  std::vector<uint32_t> texels(render_app::kTextureTexels);
+  render_app::checker_texels(texels.data());
+  std::vector<uint8_t> bytes;
+  for (uint32_t t : texels)
+    for (int b = 0; b < 4; ++b) bytes.push_back(static_cast<uint8_t>(t >> (8 * b)));
+  records.textures.push_back(
+      make_texture(TexFormat::RGB565, render_app::kTextureLog2, render_app::kTextureLog2, bytes));
   for (const test::CapturedTriangle& t : test::split_fifo_stream(bus.fifo_words()))
     records.tris.push_back({t.record, unpack_state_word(t.state_word)});
   const Frame model = render_model_records(records, cfg);
@@ -174,7 +186,8 @@ TEST(SystemRender, CompiledInScenesEqualTheModelsScenes) {
       EXPECT_EQ(a.position_bits, b.position_bits);
       EXPECT_EQ(a.tex.log2_width, b.tex.log2_width);
       EXPECT_EQ(a.tex.log2_height, b.tex.log2_height);
-      // The firmware overrides textured, gouraud and method (render_state.hpp); the rest is the scene's.
+      // The firmware overrides textured, texture, its size, gouraud and method (render_state.hpp); the
+      // rest is the scene's.
       EXPECT_EQ(a.state.subdiv_n, b.state.subdiv_n);
       EXPECT_EQ(a.state.filter, b.state.filter);
       EXPECT_EQ(a.state.depth_func, b.state.depth_func);

@@ -1,6 +1,7 @@
-// Render firmware: draws the compiled-in built-in scenes (`floor`, then `cube`; an image may select
-// fewer, scene_selection.hpp) on the SoC's raster unit with the firmware render pipeline
-// (firmware/render over hal/target) and reports, one line per scene on the UART:
+// Render firmware: uploads its checkerboard texture with the mip chain (soc_texture.hpp), then draws
+// the compiled-in built-in scenes (`floor`, then `cube`; an image may select fewer,
+// scene_selection.hpp) textured on the SoC's GPU with the firmware render pipeline (firmware/render
+// over hal/target) and reports, one line per scene on the UART:
 //   render <scene> vertices <n> geometry_cycles_per_vertex <c.cc> triangles <t> sent <s> clipped <k>
 //     culled <u> frame_cycles <f> raster_cycles <r> fragments <g> crc32 <8 hex digits>
 // geometry_cycles_per_vertex: CPU cycles of process_vertices (transform, clip test, projection) per
@@ -19,6 +20,7 @@
 #include "scene_selection.hpp"
 #include "scenes.hpp"
 #include "soc_config.hpp"
+#include "soc_texture.hpp"
 
 namespace {
 
@@ -109,6 +111,11 @@ bool render_scene(const render_app::SceneData& sc) {
 }  // namespace
 
 int main() {
+  const htx::render::UploadStatus up = render_app::upload_scene_texture(kMaxPolls);
+  if (up != htx::render::kUploadOk) {
+    printf("render: texture upload failed with status %d\n", up);
+    return 1;
+  }
   uint32_t n = 0;
   const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
   for (uint32_t s = 0; s < n; ++s)

@@ -16,7 +16,7 @@ struct TextureImage {
 };
 
 // Scratch words upload_texture needs: level 1's texel count (max(1, w/2) * max(1, h/2)).
-inline uint32_t texture_upload_scratch_words(uint32_t log2_w, uint32_t log2_h) {
+constexpr uint32_t texture_upload_scratch_words(uint32_t log2_w, uint32_t log2_h) {
   return (log2_w > 0 ? 1u << (log2_w - 1) : 1u) * (log2_h > 0 ? 1u << (log2_h - 1) : 1u);
 }
 
