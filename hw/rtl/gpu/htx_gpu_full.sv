@@ -3,7 +3,7 @@
 // channels blended per clock), which equal htx::model_config("full") field by field.
 module htx_gpu_full #(
   parameter int unsigned FbPixels = 19200,  // 160 x 120; the rtl engine uses 262144 (the depth window)
-  parameter logic [4:0]  Methods  = 5'b01111,  // bit m: htx::Method m built (as htx_raster_full)
+  parameter logic [4:0]  Methods  = 5'b11111,  // bit m: htx::Method m built (as htx_raster_full)
   parameter int unsigned TexBAW   = 15      // blocks per bank = 2^TexBAW: 128K texels
 ) (
   input  logic        clk_i,
@@ -30,7 +30,7 @@ module htx_gpu_full #(
   htx_gpu_subsys #(
     .XyIntBits(16), .ZBits(24), .GF(24), .RecipW(32), .RecipK(10), .RecipG(2), .SetupSteps(2),
     .Iterative(1'b0), .QBits(32), .UvIntBits(16), .PixelSteps(2), .PerspColor(1'b0),
-    .PixelPipelined(1'b1), .PixelMulIterative(1'b0), .SubdivDepth(128), .FifoDepth(64),
+    .PixelPipelined(1'b1), .PixelMulIterative(1'b0), .SubdivDepth(128), .DfFracBits(4), .DfCap(64), .FifoDepth(64),
     .CoordW(48), .TF(16), .GradW(24), .LF(8), .TexFormats(3'b111), .TexFilters(3'b111),
     .TexSlots(8), .TexLanes(4), .TexShiftAdd(1'b0), .TexCounters(1'b1), .LogIdx(10),
     .FbPixels(FbPixels), .TexBAW(TexBAW), .Methods(Methods)

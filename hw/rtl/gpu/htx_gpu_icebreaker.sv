@@ -4,7 +4,7 @@
 // htx::model_config("icebreaker") field by field.
 module htx_gpu_icebreaker #(
   parameter int unsigned FbPixels = 19200,  // 160 x 120; the rtl engine uses 262144 (the depth window)
-  parameter logic [4:0]  Methods  = 5'b01111,  // bit m: htx::Method m built (as htx_raster_icebreaker)
+  parameter logic [4:0]  Methods  = 5'b11111,  // bit m: htx::Method m built (as htx_raster_icebreaker)
   parameter int unsigned TexBAW   = 10      // blocks per bank = 2^TexBAW: 4K texels, 16 EBR (engine: 2^12)
 ) (
   input  logic        clk_i,
@@ -31,7 +31,7 @@ module htx_gpu_icebreaker #(
   htx_gpu_subsys #(
     .XyIntBits(14), .ZBits(16), .GF(16), .RecipW(24), .RecipK(8), .RecipG(2), .SetupSteps(2),
     .Iterative(1'b1), .QBits(24), .UvIntBits(13), .PixelSteps(1), .PerspColor(1'b0),
-    .PixelPipelined(1'b0), .PixelMulIterative(1'b0), .SubdivDepth(64), .FifoDepth(64),
+    .PixelPipelined(1'b0), .PixelMulIterative(1'b0), .SubdivDepth(64), .DfFracBits(2), .DfCap(64), .FifoDepth(64),
     .CoordW(24), .TF(10), .GradW(16), .LF(6), .TexFormats(3'b011), .TexFilters(3'b011),
     .TexSlots(4), .TexLanes(1), .TexShiftAdd(1'b0), .TexCounters(1'b0), .LogIdx(6),
     .FbPixels(FbPixels), .TexBAW(TexBAW), .Methods(Methods)

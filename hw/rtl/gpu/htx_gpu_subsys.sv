@@ -27,6 +27,8 @@ module htx_gpu_subsys #(
   parameter bit          PixelPipelined    = 1'b1,
   parameter bit          PixelMulIterative = 1'b0,
   parameter int unsigned SubdivDepth = 128,
+  parameter int unsigned DfFracBits  = 4,
+  parameter int unsigned DfCap       = 64,
   // Texture port, shared by both units (the Q plane and local coordinate widths follow).
   parameter int unsigned CoordW      = 48,
   parameter int unsigned TF          = 16,
@@ -134,7 +136,7 @@ module htx_gpu_subsys #(
     .FbPixels(FbPixels), .AddrW(AddrW), .QBits(QBits), .UvIntBits(UvIntBits), .TF(TF),
     .PixelSteps(PixelSteps), .Methods(Methods), .PerspColor(PerspColor),
     .PixelPipelined(PixelPipelined), .PixelMulIterative(PixelMulIterative),
-    .SubdivDepth(SubdivDepth), .CoordW(CoordW), .QW(QW), .GradW(GradW), .LocW(LocW),
+    .SubdivDepth(SubdivDepth), .DfFracBits(DfFracBits), .DfCap(DfCap), .CoordW(CoordW), .QW(QW), .GradW(GradW), .LocW(LocW),
     .TexTagW(TagW)
   ) u_raster (
     .clk_i, .rst_ni,

@@ -23,11 +23,13 @@ module htx_raster #(
   parameter int unsigned UvIntBits  = 16,
   parameter int unsigned TF         = 16,       // texcoord_frac_bits
   parameter int unsigned PixelSteps = 2,        // pixel_nr_steps
-  parameter logic [4:0]  Methods    = 5'b01111, // bit m: htx::Method m built (DIVFREE: not yet)
+  parameter logic [4:0]  Methods    = 5'b01111, // bit m: htx::Method m built (4: DIVFREE)
   parameter bit          PerspColor = 1'b1,     // perspective_color
   parameter bit          PixelPipelined = 1'b1, // per-pixel divider: pipelined, else iterative
   parameter bit          PixelMulIterative = 1'b0, // iterative divider's multiplier: shift-and-add
   parameter int unsigned SubdivDepth = 128,     // SUBDIV fragment FIFO (>= 64)
+  parameter int unsigned DfFracBits = 4,        // divfree_frac_bits
+  parameter int unsigned DfCap      = 64,       // divfree_cap
   parameter int unsigned CoordW     = 48,
   parameter int unsigned QW         = QBits + GF + 2,
   parameter int unsigned GradW      = 24,       // lod_grad_bits
@@ -93,6 +95,12 @@ module htx_raster #(
                                                : ((AccC > AccZ) ? AccC : AccZ);
   localparam int unsigned NP   = 9;
   localparam int unsigned SideW = 136 + 6 * GradW;  // state, flat, u_off, v_off, LOD gradients, shift
+  // DIVFREE's seed takes the uq, vq, q gradients at full precision; they travel beside the side band
+  // as far as the DIVFREE stage.
+  localparam int unsigned GWU   = UQ + DW + 2 + GF + 1;
+  localparam bit          HasDf = Methods[4];
+  localparam int unsigned DfgW  = HasDf ? 6 * GWU : 1;
+  localparam int unsigned SideT = SideW + DfgW;
   localparam int unsigned LvlW = $clog2(FifoDepth) + 1;
 
   // ---- Registers -------------------------------------------------------------------------------
@@ -175,6 +183,8 @@ module htx_raster #(
   logic [3*NP*AW-1:0] tri_p;
   logic [6*GradW-1:0] tri_lod_g;
   logic [7:0]         tri_lod_shift;
+  logic [6*GWU-1:0]   tri_dfg;
+  logic [DfgW-1:0]    tri_dfg_side;
   logic               setup_busy, setup_stall, setup_taken, setup_err;
   htx_raster_setup #(
     .XyIntBits(XyIntBits), .ZBits(ZBits), .GF(GF), .RecipW(RecipW), .RecipK(RecipK),
@@ -216,6 +226,7 @@ module htx_raster #(
     .tri_v_off_o    (tri_v_off),
     .tri_lod_g_o    (tri_lod_g),
     .tri_lod_shift_o(tri_lod_shift),
+    .tri_dfg_o      (tri_dfg),
     .busy_o         (setup_busy),
     .stall_o        (setup_stall),
     .taken_o        (setup_taken),
@@ -223,18 +234,25 @@ module htx_raster #(
   );
 
   // ---- Traversal -------------------------------------------------------------------------------
-  logic              tv_valid, tv_ready, trav_busy, trav_stall, tv_first, tv_last;
+  logic              tv_valid, tv_ready, trav_busy, trav_stall, tv_first, tv_last, tv_tfirst;
   logic [12:0]       tv_x, tv_y;
   logic [AddrW-1:0]  tv_addr;
   logic [NP*AW-1:0]  tv_p;
-  logic [SideW-1:0]  tv_side;
-  htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NP), .AW(AW), .SideW(SideW), .AddrW(AddrW)) u_traverse (
+  logic [SideT-1:0]  tv_side;
+  if (HasDf) begin : g_dfg
+    assign tri_dfg_side = tri_dfg;
+  end else begin : g_no_dfg
+    assign tri_dfg_side = 1'b0;
+    logic unused_dfg;
+    assign unused_dfg = ^tri_dfg;
+  end
+  htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NP), .AW(AW), .SideW(SideT), .AddrW(AddrW)) u_traverse (
     .clk_i, .rst_ni,
     .abort_i         (abort),
     .stride_i        (stride_q),
     .tri_valid_i     (tri_valid),
     .tri_ready_o     (tri_ready),
-    .tri_side_i      ({tri_lod_shift, tri_lod_g, tri_v_off, tri_u_off, tri_flat, tri_state}),
+    .tri_side_i      ({tri_dfg_side, tri_lod_shift, tri_lod_g, tri_v_off, tri_u_off, tri_flat, tri_state}),
     .tri_x_lo_i      (tri_x_lo),
     .tri_x_hi_i      (tri_x_hi),
     .tri_y_lo_i      (tri_y_lo),
@@ -251,6 +269,7 @@ module htx_raster #(
     .frag_addr_o     (tv_addr),
     .frag_first_o    (tv_first),
     .frag_last_o     (tv_last),
+    .frag_tfirst_o   (tv_tfirst),
     .frag_p_o        (tv_p),
     .frag_side_o     (tv_side),
     .busy_o          (trav_busy),
@@ -258,8 +277,8 @@ module htx_raster #(
   );
 
   // ---- Shade: depth, linear colour, AFFINE coordinates, SUBDIV exact points --------------------
-  logic              sh_valid, sh_ready, sh_div_color, sh_exact;
-  logic [12:0]       sh_x;
+  logic              sh_valid, sh_ready, sh_div_color, sh_exact, sh_first, sh_last, sh_tfirst;
+  logic [12:0]       sh_x, sh_y;
   logic [AddrW-1:0]  sh_addr;
   logic [ZBits-1:0]  sh_z;
   logic [23:0]       sh_rgb;
@@ -267,8 +286,8 @@ module htx_raster #(
   logic [AccQ-1:0]   sh_q;
   logic [AccU-1:0]   sh_u, sh_v;
   logic [3*AccC-1:0] sh_c;
-  logic [SideW-1:0]  sh_side;
-  htx_raster_shade #(.ZBits(ZBits), .GF(GF), .NP(NP), .AW(AW), .SideW(SideW), .AccC(AccC),
+  logic [SideT-1:0]  sh_side;
+  htx_raster_shade #(.ZBits(ZBits), .GF(GF), .NP(NP), .AW(AW), .SideW(SideT), .AccC(AccC),
                      .AccQ(AccQ), .AccU(AccU), .LocW(LocW), .PerspColor(PerspColor),
                      .AddrW(AddrW)) u_shade (
     .clk_i, .rst_ni,
@@ -279,12 +298,18 @@ module htx_raster #(
     .in_x_i         (tv_x),
     .in_first_i     (tv_first),
     .in_last_i      (tv_last),
+    .in_y_i         (tv_y),
+    .in_tfirst_i    (tv_tfirst),
     .in_p_i         (tv_p),
     .in_side_i      (tv_side),
     .out_valid_o    (sh_valid),
     .out_ready_i    (sh_ready),
     .out_addr_o     (sh_addr),
     .out_x_o        (sh_x),
+    .out_y_o        (sh_y),
+    .out_first_o    (sh_first),
+    .out_last_o     (sh_last),
+    .out_tfirst_o   (sh_tfirst),
     .out_z_o        (sh_z),
     .out_rgb_o      (sh_rgb),
     .out_div_color_o(sh_div_color),
@@ -298,15 +323,88 @@ module htx_raster #(
     .out_side_o     (sh_side)
   );
 
+  // ---- DIVFREE ---------------------------------------------------------------------------------
+  // Its cell centres replace the AFFINE coordinates (ua, va) of a DIVFREE fragment; the fragment
+  // then needs the divider only for perspective-correct colour.
+  localparam int unsigned PayF = SideW + AddrW + ZBits + 24 + 2 * LocW + AccQ + 2 * AccU + 3 * AccC +
+                                 1 + 13 + 1;
+  logic              df_valid, df_ready, df_div_color, df_exact, df_is;
+  logic [12:0]       df_x;
+  logic [AddrW-1:0]  df_addr;
+  logic [ZBits-1:0]  df_z;
+  logic [23:0]       df_rgb;
+  logic [LocW-1:0]   df_ua, df_va, df_cu, df_cv;
+  logic [AccQ-1:0]   df_q;
+  logic [AccU-1:0]   df_u, df_v;
+  logic [3*AccC-1:0] df_c;
+  logic [SideW-1:0]  df_side;
+  logic              df_steps_valid;
+  logic [15:0]       df_steps;
+  logic [2:0]        sh_method0;
+  assign sh_method0 = sh_side[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
+  if (HasDf) begin : g_divfree
+    logic [PayF-1:0] df_pay;
+    htx_raster_divfree #(
+      .AccQ(AccQ), .AccU(AccU), .UvIntBits(UvIntBits), .TF(TF), .LocW(LocW), .W(RecipW), .K(RecipK),
+      .G(RecipG), .Steps(PixelSteps), .FracBits(DfFracBits), .Cap(DfCap), .GWU(GWU), .PayW(PayF),
+      .MulIterative(PixelMulIterative)
+    ) u_divfree (
+      .clk_i, .rst_ni,
+      .abort_i      (abort),
+      .in_valid_i   (sh_valid),
+      .in_ready_o   (sh_ready),
+      .in_df_i      (sh_method0 == htx_raster_pkg::MethodDivFree),
+      .in_fine_i    (sh_side[htx_raster_reg_pkg::RASTER_STATE_FILTER_LSB +: 2] != 2'd0),
+      .in_tfirst_i  (sh_tfirst),
+      .in_first_i   (sh_first),
+      .in_last_i    (sh_last),
+      .in_x_i       (sh_x),
+      .in_y_i       (sh_y),
+      .in_q_i       (sh_q),
+      .in_u_i       (sh_u),
+      .in_v_i       (sh_v),
+      .in_g_i       (sh_side[SideW +: DfgW]),
+      .in_pay_i     ({sh_side[SideW-1:0], sh_addr, sh_z, sh_rgb, sh_ua, sh_va, sh_q, sh_u, sh_v, sh_c,
+                      sh_exact, sh_x, sh_div_color}),
+      .out_valid_o  (df_valid),
+      .out_ready_i  (df_ready),
+      .out_df_o     (df_is),
+      .out_u_o      (df_cu),
+      .out_v_o      (df_cv),
+      .out_pay_o    (df_pay),
+      .steps_valid_o(df_steps_valid),
+      .steps_o      (df_steps)
+    );
+    logic [LocW-1:0] p_ua, p_va;
+    assign {df_side, df_addr, df_z, df_rgb, p_ua, p_va, df_q, df_u, df_v, df_c, df_exact, df_x,
+            df_div_color} = df_pay;
+    assign df_ua = df_is ? df_cu : p_ua;
+    assign df_va = df_is ? df_cv : p_va;
+  end else begin : g_no_divfree
+    assign df_valid = sh_valid;
+    assign sh_ready = df_ready;
+    assign {df_side, df_addr, df_z, df_rgb, df_ua, df_va, df_q, df_u, df_v, df_c, df_exact, df_x,
+            df_div_color} = {sh_side[SideW-1:0], sh_addr, sh_z, sh_rgb, sh_ua, sh_va, sh_q, sh_u, sh_v,
+                             sh_c, sh_exact, sh_x, sh_div_color};
+    assign df_is = 1'b0;
+    assign df_cu = '0;
+    assign df_cv = '0;
+    assign df_steps_valid = 1'b0;
+    assign df_steps = '0;
+    logic unused_df;
+    assign unused_df = ^{sh_y, sh_first, sh_last, sh_tfirst, sh_side[SideT-1:SideW], df_is, df_cu, df_cv,
+                         sh_method0};
+  end
+
   // ---- Per-pixel divider -----------------------------------------------------------------------
   logic [2:0] sh_method;
   logic       sh_need;
-  assign sh_method = sh_side[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
+  assign sh_method = df_side[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
   // Untextured fragments need no texel coordinates (the iterative divider skips them).
-  assign sh_need   = (sh_side[htx_raster_reg_pkg::RASTER_STATE_TEXTURED_LSB] &&
+  assign sh_need   = (df_side[htx_raster_reg_pkg::RASTER_STATE_TEXTURED_LSB] &&
                       ((sh_method == htx_raster_pkg::MethodRecipLut) ||
                        (sh_method == htx_raster_pkg::MethodRecipNr) ||
-                       ((sh_method == htx_raster_pkg::MethodSubdiv) && sh_exact))) || sh_div_color;
+                       ((sh_method == htx_raster_pkg::MethodSubdiv) && df_exact))) || df_div_color;
   // Payload past the divider: {side, addr, z, rgb, ua, va, q, exact, x, div_color}.
   localparam int unsigned PayD = SideW + AddrW + ZBits + 24 + 2 * LocW + AccQ + 1 + 13 + 1;
   logic              dv_valid, dv_ready;
@@ -320,15 +418,15 @@ module htx_raster #(
   ) u_divider (
     .clk_i, .rst_ni,
     .abort_i    (abort),
-    .in_valid_i (sh_valid),
-    .in_ready_o (sh_ready),
+    .in_valid_i (df_valid),
+    .in_ready_o (df_ready),
     .in_need_i  (sh_need),
     .in_lut_i   (sh_method == htx_raster_pkg::MethodRecipLut),
-    .in_q_i     (sh_q),
-    .in_u_i     (sh_u),
-    .in_v_i     (sh_v),
-    .in_c_i     (sh_c),
-    .in_pay_i   ({sh_side, sh_addr, sh_z, sh_rgb, sh_ua, sh_va, sh_q, sh_exact, sh_x, sh_div_color}),
+    .in_q_i     (df_q),
+    .in_u_i     (df_u),
+    .in_v_i     (df_v),
+    .in_c_i     (df_c),
+    .in_pay_i   ({df_side, df_addr, df_z, df_rgb, df_ua, df_va, df_q, df_exact, df_x, df_div_color}),
     .out_valid_o(dv_valid),
     .out_ready_i(dv_ready),
     .out_u_o    (dv_u),
@@ -355,7 +453,8 @@ module htx_raster #(
   logic [LocW-1:0]  sd_u, sd_v;
   logic [PayS-1:0]  sd_pay;
   logic             dv_affine;
-  assign dv_affine = (dv_method == htx_raster_pkg::MethodAffine);
+  // AFFINE's coordinates and DIVFREE's cell centres travel in ua, va.
+  assign dv_affine = (dv_method == htx_raster_pkg::MethodAffine) || (dv_method == htx_raster_pkg::MethodDivFree);
   if (Methods[1]) begin : g_subdiv
     htx_raster_subdiv #(.LocW(LocW), .PayW(PayS), .Depth(SubdivDepth)) u_subdiv (
       .clk_i, .rst_ni,
@@ -551,7 +650,7 @@ module htx_raster #(
 
   // ---- Counters --------------------------------------------------------------------------------
   logic [31:0] cnt_busy_q, cnt_stall_in_q, cnt_stall_setup_q, cnt_stall_frag_q, cnt_setup_q;
-  logic [31:0] cnt_tri_q, cnt_frag_q, cnt_pix_q;
+  logic [31:0] cnt_tri_q, cnt_frag_q, cnt_pix_q, cnt_df_q;
 
   // ---- Register writes and reads ---------------------------------------------------------------
   logic [31:0] rdata_d, rsp_rdata_q;
@@ -587,7 +686,8 @@ module htx_raster #(
       htx_raster_reg_pkg::RASTER_CNT_TRIANGLES_OFFSET:      rdata_d = cnt_tri_q;
       htx_raster_reg_pkg::RASTER_CNT_FRAGMENTS_OFFSET:      rdata_d = cnt_frag_q;
       htx_raster_reg_pkg::RASTER_CNT_PIXELS_OFFSET:         rdata_d = cnt_pix_q;
-      default: ;  // CNT_DIVFREE_STEPS: no DIVFREE is built in this slice
+      htx_raster_reg_pkg::RASTER_CNT_DIVFREE_STEPS_OFFSET:  rdata_d = cnt_df_q;
+      default: ;
     endcase
   end
 
@@ -607,7 +707,7 @@ module htx_raster #(
       rsp_valid_q   <= 1'b0;
       rsp_rdata_q   <= '0;
       cnt_busy_q <= '0; cnt_stall_in_q <= '0; cnt_stall_setup_q <= '0; cnt_stall_frag_q <= '0;
-      cnt_setup_q <= '0; cnt_tri_q <= '0; cnt_frag_q <= '0; cnt_pix_q <= '0;
+      cnt_setup_q <= '0; cnt_tri_q <= '0; cnt_frag_q <= '0; cnt_pix_q <= '0; cnt_df_q <= '0;
     end else begin
       rsp_valid_q <= accept;
       if (accept && !req_we_i) rsp_rdata_q <= rdata_d;
@@ -641,7 +741,7 @@ module htx_raster #(
       end
       if (cnt_reset) begin
         cnt_busy_q <= '0; cnt_stall_in_q <= '0; cnt_stall_setup_q <= '0; cnt_stall_frag_q <= '0;
-        cnt_setup_q <= '0; cnt_tri_q <= '0; cnt_frag_q <= '0; cnt_pix_q <= '0;
+        cnt_setup_q <= '0; cnt_tri_q <= '0; cnt_frag_q <= '0; cnt_pix_q <= '0; cnt_df_q <= '0;
       end else begin
         cnt_busy_q        <= cnt_busy_q + 32'(busy);
         cnt_stall_in_q    <= cnt_stall_in_q + 32'(in_partial);
@@ -651,6 +751,7 @@ module htx_raster #(
         cnt_tri_q         <= cnt_tri_q + 32'(setup_taken);
         cnt_frag_q        <= cnt_frag_q + 32'(tv_valid && tv_ready);
         cnt_pix_q         <= cnt_pix_q + 32'(pixel);
+        cnt_df_q          <= cnt_df_q + (df_steps_valid ? 32'(df_steps) : 32'd0);
       end
     end
   end

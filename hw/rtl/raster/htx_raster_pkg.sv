@@ -15,4 +15,5 @@ package htx_raster_pkg;
   localparam logic [2:0] MethodSubdiv  = 3'd1;
   localparam logic [2:0] MethodRecipLut = 3'd2;
   localparam logic [2:0] MethodRecipNr = 3'd3;
+  localparam logic [2:0] MethodDivFree = 3'd4;
 endpackage

@@ -67,6 +67,7 @@ module htx_raster_setup #(
   output logic [31:0]          tri_u_off_o, tri_v_off_o,
   output logic [6*GradW-1:0]   tri_lod_g_o,   // g_ux, g_uy, g_vx, g_vy, g_qx, g_qy (block-shifted)
   output logic [7:0]           tri_lod_shift_o,
+  output logic [6*(UQ+DW+2+GF+1)-1:0] tri_dfg_o, // the six at full precision (signed): DIVFREE's seed
 
   output logic                 busy_o,        // computing (not waiting for input or traversal)
   output logic                 stall_o,       // a finished triangle waits for traversal
@@ -105,8 +106,13 @@ module htx_raster_setup #(
   logic [6:0] rec_n;
   assign rec_method  = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
   assign rec_n       = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_SUBDIV_N_LSB +: 7];
+  // DIVFREE tracks level 0 only: a textured DIVFREE triangle with bilinear or trilinear filtering
+  // (whose grid level comes from the LOD unit and the texture's mip count) is not built yet.
   assign method_bad  = (rec_method > 3'd4) || !Methods[rec_method] ||
-                       ((rec_method == htx_raster_pkg::MethodSubdiv) && ((rec_n < 7'd2) || (rec_n > 7'd64)));
+                       ((rec_method == htx_raster_pkg::MethodSubdiv) && ((rec_n < 7'd2) || (rec_n > 7'd64))) ||
+                       ((rec_method == htx_raster_pkg::MethodDivFree) &&
+                        rec_state_i[htx_raster_reg_pkg::RASTER_STATE_TEXTURED_LSB] &&
+                        (rec_state_i[htx_raster_reg_pkg::RASTER_STATE_FILTER_LSB +: 2] != 2'd0));
   assign rec_ready_o = (state_q == StIdle) && !hold_i;
   assign take        = rec_valid_i && rec_ready_o;
   assign state_bad   = method_bad ||
@@ -397,6 +403,9 @@ module htx_raster_setup #(
     assign unused_sh = ^sh[GWU-1:GradW];
   end
   assign tri_lod_shift_o = lg_shift;
+  for (genvar i = 0; i < 6; i++) begin : g_dfg
+    assign tri_dfg_o[GWU*i +: GWU] = lg[i];
+  end
 
   // ---- AFFINE: u_i = round(uq_i R(q_i) 2^(TF - 2W + 1)) per vertex, then planes of u_i, v_i -----
   // q_i < 2^W, so the numerator shift s = msb - (W - 1) is never positive: uq_i << (W - 1 - msb).

@@ -28,6 +28,8 @@ module htx_raster_shade #(
   input  logic [12:0]       in_x_i,
   input  logic              in_first_i,
   input  logic              in_last_i,
+  input  logic [12:0]       in_y_i,
+  input  logic              in_tfirst_i,
   input  logic [NP*AW-1:0]  in_p_i,        // z, r, g, b, q, uq, vq, ua, va
   input  logic [SideW-1:0]  in_side_i,     // state word in 31:0, flat colour in 63:32
 
@@ -35,6 +37,8 @@ module htx_raster_shade #(
   input  logic              out_ready_i,
   output logic [AddrW-1:0]  out_addr_o,
   output logic [12:0]       out_x_o,
+  output logic [12:0]       out_y_o,
+  output logic              out_first_o, out_last_o, out_tfirst_o,
   output logic [ZBits-1:0]  out_z_o,
   output logic [23:0]       out_rgb_o,     // r in 7:0, g 15:8, b 23:16 (linear or flat)
   output logic              out_div_color_o, // the colour comes from the divider (C q / Q)
@@ -109,6 +113,10 @@ module htx_raster_shade #(
       k_q             <= '0;
       out_addr_o      <= '0;
       out_x_o         <= '0;
+      out_y_o         <= '0;
+      out_first_o     <= 1'b0;
+      out_last_o      <= 1'b0;
+      out_tfirst_o    <= 1'b0;
       out_z_o         <= '0;
       out_rgb_o       <= '0;
       out_div_color_o <= 1'b0;
@@ -128,6 +136,10 @@ module htx_raster_shade #(
         k_q             <= (k + 7'd1 >= n) ? 7'd0 : k + 7'd1;
         out_addr_o      <= in_addr_i;
         out_x_o         <= in_x_i;
+        out_y_o         <= in_y_i;
+        out_first_o     <= in_first_i;
+        out_last_o      <= in_last_i;
+        out_tfirst_o    <= in_tfirst_i;
         out_z_o         <= z_clamped;
         out_rgb_o       <= rgb;
         out_div_color_o <= gouraud && PerspColor;

@@ -36,6 +36,7 @@ module htx_raster_traverse #(
   output logic [AddrW-1:0]  frag_addr_o,
   output logic              frag_first_o,
   output logic              frag_last_o,
+  output logic              frag_tfirst_o,  // the triangle's first fragment
   output logic [NP*AW-1:0]  frag_p_o,
   output logic [SideW-1:0]  frag_side_o,
 
@@ -90,7 +91,7 @@ module htx_raster_traverse #(
   // ---- Decision ---------------------------------------------------------------------------------
   typedef enum logic [2:0] {ActNone, ActLeft, ActRight, ActRowCur, ActRowSaved} act_e;
   act_e act;
-  logic emit, save, can_emit, want_emit, out_valid_q, first;
+  logic emit, save, can_emit, want_emit, out_valid_q, first, tnew_q;
   state_e mode_next;
   assign can_emit = !out_valid_q || frag_ready_i;
 
@@ -145,6 +146,7 @@ module htx_raster_traverse #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       state_q    <= StIdle;
+      tnew_q     <= 1'b0;
       side_q     <= '0;
       x_lo_q     <= '0;
       x_hi_q     <= '0;
@@ -164,6 +166,7 @@ module htx_raster_traverse #(
       state_q <= StIdle;
     end else if (state_q == StIdle) begin
       if (tri_valid_i) begin
+        tnew_q     <= 1'b1;
         side_q     <= tri_side_i;
         x_lo_q     <= XCW'(tri_x_lo_i);
         x_hi_q     <= XCW'(tri_x_hi_i);
@@ -185,6 +188,7 @@ module htx_raster_traverse #(
         state_q <= StSeek;
       end
     end else begin
+      if (emit) tnew_q <= 1'b0;
       if (save) begin
         xs_q <= x_q;
         for (int k = 0; k < 3; k++) es_q[k] <= e_q[k];
@@ -223,7 +227,7 @@ module htx_raster_traverse #(
   logic [AddrW-1:0]  out_addr_q;
   logic [NP*AW-1:0]  out_p_q;
   logic [SideW-1:0]  out_side_q;
-  logic              out_first_q, out_last_q;
+  logic              out_first_q, out_last_q, out_tfirst_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       out_valid_q <= 1'b0;
@@ -234,6 +238,7 @@ module htx_raster_traverse #(
       out_side_q  <= '0;
       out_first_q <= 1'b0;
       out_last_q  <= 1'b0;
+      out_tfirst_q <= 1'b0;
     end else if (abort_i) begin
       out_valid_q <= 1'b0;
     end else begin
@@ -247,6 +252,7 @@ module htx_raster_traverse #(
         out_side_q  <= side_q;
         out_first_q <= first;
         out_last_q  <= !in_next;
+        out_tfirst_q <= tnew_q;
       end
     end
   end
@@ -261,6 +267,7 @@ module htx_raster_traverse #(
   assign frag_side_o      = out_side_q;
   assign frag_first_o     = out_first_q;
   assign frag_last_o      = out_last_q;
+  assign frag_tfirst_o    = out_tfirst_q;
   assign busy_o           = (state_q != StIdle) || out_valid_q;
   assign stall_o          = want_emit && !can_emit;
 endmodule

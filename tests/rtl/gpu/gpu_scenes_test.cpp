@@ -3,6 +3,8 @@
 // wrap mode per axis, texture format, perspective method) that the configuration builds appears on
 // every scene; the combinations rotate with the scene index so that 3 renders per scene cover them
 // (the full product, about 400 renders per method, is a benchmark, not a test: docs/gpu.md).
+// DIVFREE cases filter nearest (the RTL tracks level 0 only); CNT_DIVFREE_STEPS must equal the
+// model's divfree_steps_total on every case.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -93,6 +95,7 @@ TEST_P(GpuScenes, MatchesModelBitForBit) {
   EXPECT_EQ(stats.covered_pixels, model.counters.fragments);
   EXPECT_EQ(stats.pixels_written, model.counters.pixels_written);
   EXPECT_EQ(stats.triangles, stats.triangles_sent);
+  EXPECT_EQ(stats.divfree_steps, model.counters.divfree_steps_total) << "CNT_DIVFREE_STEPS";
 }
 
 template <class E>
@@ -123,6 +126,8 @@ std::vector<Case> all_cases() {
         c.format = formats[(k / filters.size()) % formats.size()];
         c.method = methods[(k + k / (filters.size() * methods.size())) % methods.size()];
         c.combine = (k % 2) ? Combine::Replace : Combine::Modulate;
+        // DIVFREE is built for level 0 only: textured, it filters nearest (docs/raster.md).
+        if (c.method == Method::DivFree) c.filter = Filter::Nearest;
         cases.push_back(c);
       }
     }

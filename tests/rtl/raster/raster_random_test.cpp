@@ -42,7 +42,7 @@ ScreenScene random_scene(uint32_t seed, int n, int width, int height) {
     t.state.gouraud = rng() % 4 != 0;
     t.state.depth_func = static_cast<DepthFunc>(rng() % 6);
     t.state.depth_write = rng() % 4 != 0;
-    t.state.method = static_cast<Method>(rng() % 4);  // AFFINE, SUBDIV, RECIP_LUT, RECIP_NR (DIVFREE is not built)
+    t.state.method = static_cast<Method>(rng() % 5);  // AFFINE, SUBDIV, RECIP_LUT, RECIP_NR, DIVFREE
     s.tris.push_back(t);
   }
   return s;
@@ -61,6 +61,7 @@ TEST_P(RasterRandom, FiveThousandTrianglesPerConfigMatchModel) {
     ASSERT_EQ(frame_mismatch_pixels(rtl, model), 0u) << "seed " << seed;
     ASSERT_EQ(stats.covered_pixels, model.counters.fragments) << "seed " << seed;
     ASSERT_EQ(stats.pixels_written, model.counters.pixels_written) << "seed " << seed;
+    ASSERT_EQ(stats.divfree_steps, model.counters.divfree_steps_total) << "seed " << seed;
     total += stats.triangles;
   }
   EXPECT_GE(total, 4500u);  // a few are rejected by the encoder (out of range) and never sent

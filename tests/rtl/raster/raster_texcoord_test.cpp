@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -32,8 +33,8 @@ using model::i128;
 using raster_test::Tri;
 using raster_test::encode;
 
-std::vector<rtl::TexRequest> run_rtl(const std::string& name, const std::vector<Tri>& tris, int w, int h) {
-  return raster_test::draw(name, tris, w, h, 0, 0xFFFFFFFFu, 24).requests;
+raster_test::RtlResult run_rtl(const std::string& name, const std::vector<Tri>& tris, int w, int h) {
+  return raster_test::draw(name, tris, w, h, 0, 0xFFFFFFFFu, 24);
 }
 
 struct Port {  // the port widths of the named configurations (docs/raster.md)
@@ -56,9 +57,14 @@ int64_t port_coord(int64_t c, Wrap wrap, unsigned bits) {
   return sext(c, bits);
 }
 
+// The model's request stream; *divfree_steps (if given) gets the sum of DIVFREE's per-pixel steps
+// (render_model's divfree_steps_total, CNT_DIVFREE_STEPS) and *capped the pixels the cap stopped.
 std::vector<rtl::TexRequest> expected(const std::vector<Tri>& tris, const ModelConfig& cfg, int w, int h,
-                                      const Port& port) {
+                                      const Port& port, uint64_t* divfree_steps = nullptr,
+                                      uint64_t* capped = nullptr) {
   std::vector<rtl::TexRequest> out;
+  if (divfree_steps) *divfree_steps = 0;
+  if (capped) *capped = 0;
   const unsigned tf = cfg.texcoord_frac_bits;
   model::SpanCoords span;
   for (const Tri& t : tris) {
@@ -73,6 +79,10 @@ std::vector<rtl::TexRequest> expected(const std::vector<Tri>& tris, const ModelC
       unit.span_coords(y, x0, x1, t.state.method, &span);
       for (int x = x0; x <= x1; ++x) {
         const size_t k = static_cast<size_t>(x - x0);
+        if (t.state.method == Method::DivFree) {
+          if (divfree_steps) *divfree_steps += span.divfree_steps[k];
+          if (capped) *capped += span.divfree_capped[k];
+        }
         rtl::TexRequest r;
         r.u = port_coord(span.u[k] + (int64_t{t.rec.u_offset} << tf), t.state.wrap_u, port.coord_w);
         r.v = port_coord(span.v[k] + (int64_t{t.rec.v_offset} << tf), t.state.wrap_v, port.coord_w);
@@ -113,7 +123,26 @@ void expect_same(const std::vector<rtl::TexRequest>& rtl, const std::vector<rtl:
   }
 }
 
-const Method kBuilt[] = {Method::Affine, Method::Subdiv, Method::RecipLut, Method::RecipNr};
+const Method kBuilt[] = {Method::Affine, Method::Subdiv, Method::RecipLut, Method::RecipNr, Method::DivFree};
+constexpr size_t kNumBuilt = sizeof(kBuilt) / sizeof(kBuilt[0]);
+
+// DIVFREE tracks level 0 in the RTL: a textured DIVFREE triangle must filter nearest (bilinear and
+// trilinear are refused); an untextured one keeps its filter, whose grid (2^-divfree_frac_bits
+// texels unless nearest) the walk uses all the same.
+void divfree_filter(TriState* st, bool keep_untextured) {
+  if (st->method != Method::DivFree || st->filter == Filter::Nearest || !st->textured) return;
+  if (keep_untextured) st->textured = false;
+  else st->filter = Filter::Nearest;
+}
+
+// Checks the stream and CNT_DIVFREE_STEPS against the model.
+void check_run(const std::string& config, const std::vector<Tri>& tris, int w, int h, const std::string& what) {
+  const ModelConfig cfg = model_config(config);
+  uint64_t steps = 0;
+  const raster_test::RtlResult r = run_rtl(config, tris, w, h);
+  expect_same(r.requests, expected(tris, cfg, w, h, port_of(config), &steps), what);
+  EXPECT_EQ(r.divfree_steps, steps) << what << ": CNT_DIVFREE_STEPS";
+}
 
 struct SceneCase {
   std::string config, scene;
@@ -122,7 +151,8 @@ struct SceneCase {
 class TexcoordScenes : public ::testing::TestWithParam<SceneCase> {};
 
 // Every built method on the scene: the triangles take the methods in turn (triangle i the method
-// (i + pass) mod 4), four passes, so each triangle is drawn with each method.
+// (i + pass) mod 5), five passes, so each triangle is drawn with each method (DIVFREE: nearest on
+// even triangles, untextured with the scene's filter on odd ones).
 TEST_P(TexcoordScenes, EveryMethodMatchesModel) {
   const SceneCase& c = GetParam();
   constexpr int kW = 80, kH = 60;
@@ -130,17 +160,17 @@ TEST_P(TexcoordScenes, EveryMethodMatchesModel) {
   ScreenScene screen = prepare_screen_scene(make_builtin_scene(c.scene), kW, kH);
   std::vector<Tri> base = encode(screen, cfg);
   ASSERT_FALSE(base.empty());
-  for (int pass = 0; pass < 4; ++pass) {
+  for (int pass = 0; pass < static_cast<int>(kNumBuilt); ++pass) {
     std::vector<Tri> tris = base;
     for (size_t i = 0; i < tris.size(); ++i) {
       TriState& st = tris[i].state;
       st.textured = true;
-      st.method = kBuilt[(i + static_cast<size_t>(pass)) % 4];
+      st.method = kBuilt[(i + static_cast<size_t>(pass)) % kNumBuilt];
       st.subdiv_n = 2 + static_cast<unsigned>((i * 7 + static_cast<size_t>(pass) * 13) % 63);
       if (!cfg.has_filter(st.filter)) st.filter = Filter::Bilinear;
+      divfree_filter(&st, i % 2 == 1);
     }
-    expect_same(run_rtl(c.config, tris, kW, kH), expected(tris, cfg, kW, kH, port_of(c.config)),
-                c.config + " " + c.scene + " pass " + std::to_string(pass));
+    check_run(c.config, tris, kW, kH, c.config + " " + c.scene + " pass " + std::to_string(pass));
   }
 }
 
@@ -181,10 +211,11 @@ std::vector<Tri> random_tris(uint32_t seed, int n, int w, int h, const ModelConf
       v.r = unit(rng); v.g = unit(rng); v.b = unit(rng); v.a = unit(rng);
     }
     t.state.textured = true;
-    t.state.method = kBuilt[rng() % 4];
+    t.state.method = kBuilt[rng() % kNumBuilt];
     t.state.subdiv_n = 2 + rng() % 63;
     t.state.filter = static_cast<Filter>(rng() % 3);
     if (!cfg.has_filter(t.state.filter)) t.state.filter = Filter::Nearest;
+    divfree_filter(&t.state, rng() % 2 == 0);
     t.state.wrap_u = static_cast<Wrap>(rng() % 3);
     t.state.wrap_v = static_cast<Wrap>(rng() % 3);
     t.state.texture = static_cast<int>(rng() % 8);
@@ -203,13 +234,61 @@ TEST_P(TexcoordRandom, FiveThousandTrianglesPerConfigMatchModel) {
   for (uint32_t seed = 1; seed <= 5; ++seed) {
     const std::vector<Tri> tris = random_tris(seed, 1000, kW, kH, cfg);
     sent += tris.size();
-    expect_same(run_rtl(GetParam(), tris, kW, kH), expected(tris, cfg, kW, kH, port_of(GetParam())),
-                GetParam() + " seed " + std::to_string(seed));
+    check_run(GetParam(), tris, kW, kH, GetParam() + " seed " + std::to_string(seed));
   }
   EXPECT_GE(sent, 4500u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Configs, TexcoordRandom, ::testing::Values("full", "icebreaker"));
+
+// DIVFREE at its cap: small triangles with strong perspective and thousands of texels across a
+// few dozen pixels, so the texture moves by more than divfree_cap cells between neighbouring
+// pixels or rows where the predictors cannot follow. The capped pixels take the divided cell; the
+// stream and CNT_DIVFREE_STEPS must equal the model's, and the model must report capped pixels.
+class TexcoordDivfreeCap : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(TexcoordDivfreeCap, CappedPixelsAndStepsMatchModel) {
+  const ModelConfig cfg = model_config(GetParam());
+  constexpr int kW = 64, kH = 48;
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  ScreenScene s;
+  for (int i = 0; i < 60; ++i) {
+    ScreenTri t;
+    const double cx = 8 + unit(rng) * (kW - 16), cy = 8 + unit(rng) * (kH - 16);
+    for (int k = 0; k < 3; ++k) {
+      ScreenVertex& v = t.v[k];
+      v.x = cx + (unit(rng) - 0.5) * 40;
+      v.y = cy + (unit(rng) - 0.5) * 40;
+      v.z = unit(rng);
+      v.w = k == 0 ? 0.05 + unit(rng) * 0.1 : 2.0 + unit(rng) * 20;
+      v.u = (unit(rng) - 0.5) * 7000;
+      v.v = (unit(rng) - 0.5) * 7000;
+      v.r = v.g = v.b = v.a = 1.0;
+    }
+    t.state.textured = i % 3 != 2;
+    t.state.method = Method::DivFree;
+    t.state.filter = t.state.textured ? Filter::Nearest : Filter::Bilinear;
+    t.state.wrap_u = Wrap::Repeat;
+    t.state.wrap_v = Wrap::Mirror;
+    t.state.depth_func = DepthFunc::Always;
+    s.tris.push_back(t);
+  }
+  const std::vector<Tri> tris = encode(s, cfg);
+  ASSERT_GE(tris.size(), 40u);
+  uint64_t steps = 0, capped = 0;
+  const std::vector<rtl::TexRequest> ref = expected(tris, cfg, kW, kH, port_of(GetParam()), &steps, &capped);
+  const raster_test::RtlResult r = run_rtl(GetParam(), tris, kW, kH);
+  expect_same(r.requests, ref, GetParam() + " cap");
+  EXPECT_EQ(r.divfree_steps, steps) << "CNT_DIVFREE_STEPS";
+  EXPECT_GE(capped, 10u) << "the scene must reach the cap";
+  EXPECT_GE(steps, 64 * capped) << "capped pixels walk the whole cap";
+  std::printf("[ divfree ] %s: %zu fragments, %llu capped, %llu steps (CNT_DIVFREE_STEPS %llu)\n",
+              GetParam().c_str(), ref.size(), static_cast<unsigned long long>(capped),
+              static_cast<unsigned long long>(steps), static_cast<unsigned long long>(r.divfree_steps));
+}
+
+INSTANTIATE_TEST_SUITE_P(Configs, TexcoordDivfreeCap, ::testing::Values("full", "icebreaker"));
 
 }  // namespace
 }  // namespace htx

@@ -18,7 +18,10 @@ namespace {
 
 using raster_test::Tri;
 
-const Method kBuilt[] = {Method::Affine, Method::Subdiv, Method::RecipLut, Method::RecipNr};
+// DIVFREE in `full` (measured, docs/raster.md): the floor below which a change is a regression.
+constexpr double kDivfreeMinPpc = 0.5;
+
+const Method kBuilt[] = {Method::Affine, Method::Subdiv, Method::RecipLut, Method::RecipNr, Method::DivFree};
 
 TEST(RasterThroughput, BigtriPixelsPerClockPerMethod) {
   for (const char* name : {"full", "full_pc", "icebreaker"}) {
@@ -33,6 +36,7 @@ TEST(RasterThroughput, BigtriPixelsPerClockPerMethod) {
         t.state.gouraud = true;
         t.state.method = m;
         t.state.subdiv_n = 8;
+        t.state.filter = Filter::Nearest;  // DIVFREE is built for level 0 (nearest)
       }
       const raster_test::RtlResult r =
           raster_test::draw(name, raster_test::encode(s, cfg), s.width, s.height, 0, 0xFFFFFFFFu, cfg.z_bits);
@@ -41,7 +45,9 @@ TEST(RasterThroughput, BigtriPixelsPerClockPerMethod) {
       std::printf("bigtri %dx%d %s %s: %llu fragments, %llu busy clocks, %.3f px/clk\n", s.width, s.height, name,
                   method_name(m, 8).c_str(), static_cast<unsigned long long>(r.fragments),
                   static_cast<unsigned long long>(r.busy), ppc);
-      if (name != std::string("icebreaker")) EXPECT_GE(ppc, 0.9) << name << " " << method_name(m, 8);
+      // DIVFREE walks one grid step per clock after the first (docs/raster.md): its figure is lower.
+      if (name != std::string("icebreaker"))
+        EXPECT_GE(ppc, m == Method::DivFree ? kDivfreeMinPpc : 0.9) << name << " " << method_name(m, 8);
     }
   }
 }
@@ -67,6 +73,7 @@ TEST(RasterThroughput, SetupClocksPerTinyTrianglePerMethod) {
         t.state.textured = true;
         t.state.method = m;
         t.state.subdiv_n = 8;
+        t.state.filter = Filter::Nearest;
         s.tris.push_back(t);
       }
       const raster_test::RtlResult r =

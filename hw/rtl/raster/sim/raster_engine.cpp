@@ -26,8 +26,9 @@ constexpr uint32_t off(size_t o) { return static_cast<uint32_t>(o); }
 #define HTX_TEXTURE_REG(reg) (HTX_TEXTURE_BASE + off(offsetof(HTX_TEXTURE_Type, reg)))
 
 // Perspective methods the Verilated GPU builds (htx_gpu_full / htx_gpu_icebreaker `Methods`):
-// AFFINE, SUBDIV, RECIP_LUT, RECIP_NR in both configurations.
-constexpr uint32_t kRtlMethods = 0x0F;
+// AFFINE, SUBDIV, RECIP_LUT, RECIP_NR, DIVFREE in both configurations (DIVFREE on level 0: nearest,
+// or untextured; see render_rtl).
+constexpr uint32_t kRtlMethods = 0x1F;
 
 // The RTL builds exactly the named configurations; every field that changes a bit of the frame
 // must match, and the methods must be ones it builds.
@@ -43,13 +44,14 @@ void check_config(const ModelConfig& c) {
                     c.recip_width == n.recip_width && c.setup_nr_steps == n.setup_nr_steps &&
                     c.pixel_nr_steps == n.pixel_nr_steps && c.texcoord_frac_bits == n.texcoord_frac_bits &&
                     c.lod_frac_bits == n.lod_frac_bits && c.lod_log_index_bits == n.lod_log_index_bits &&
-                    c.lod_grad_bits == n.lod_grad_bits && c.filters == n.filters && c.formats == n.formats;
+                    c.lod_grad_bits == n.lod_grad_bits && c.filters == n.filters && c.formats == n.formats &&
+                    c.divfree_frac_bits == n.divfree_frac_bits && c.divfree_cap == n.divfree_cap;
   if (c.perspective_color)
     throw std::invalid_argument(
         "rtl engine: perspective-correct Gouraud colour (perspective_color) is not built yet; render with it off");
   if (c.methods & ~kRtlMethods)
     throw std::invalid_argument("rtl engine: the configuration names methods the RTL does not build (it builds "
-                                "affine, subdiv, recip_lut, recip_nr)");
+                                "affine, subdiv, recip_lut, recip_nr, divfree)");
   if (!same)
     throw std::invalid_argument("rtl engine: configuration '" + c.name +
                                 "' differs from the built one in a width, table, filter or format set");
@@ -176,6 +178,12 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
     if ((method == Method::Subdiv || method == Method::Quadratic) && (st.subdiv_n < 2 || st.subdiv_n > 64))
       throw std::invalid_argument("rtl engine: subdiv_n " + std::to_string(st.subdiv_n) + " outside 2..64");
     if (st.textured) check_texture_state(scene.textures, st, cfg);
+    // DIVFREE tracks level 0 in the RTL: bilinear and trilinear need the per-span level choice (the
+    // LOD unit and the texture's mip count inside the raster), which is not built yet; the raster
+    // refuses such a triangle with ERR_STATE.
+    if (method == Method::DivFree && st.textured && st.filter != Filter::Nearest)
+      throw std::invalid_argument("rtl engine: DIVFREE with " + std::string(filter_name(st.filter)) +
+                                  " filtering is not built (nearest only)");
     const fw::VertexIn in[3] = {to_vertex_in(tri.v[0]), to_vertex_in(tri.v[1]), to_vertex_in(tri.v[2])};
     fw::TriangleRecord rec;
     const fw::EncodeStatus status = fw::encode_triangle(format, in, &rec);
@@ -220,6 +228,7 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
   s.stall_setup = sim.read_reg(HTX_RASTER_REG(CNT_STALL_SETUP));
   s.stall_fragment = sim.read_reg(HTX_RASTER_REG(CNT_STALL_FRAGMENT));
   s.clear_cycles = clear_cycles;
+  s.divfree_steps = sim.read_reg(HTX_RASTER_REG(CNT_DIVFREE_STEPS));
   s.px_per_clk = s.cycles ? static_cast<double>(s.covered_pixels) / static_cast<double>(s.cycles) : 0.0;
   s.setup_cycles_per_triangle =
       s.triangles ? static_cast<double>(s.setup_busy_cycles) / static_cast<double>(s.triangles) : 0.0;
@@ -240,6 +249,7 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
   frame.counters.fragments = s.covered_pixels;
   frame.counters.pixels_written = s.pixels_written;
   frame.counters.cycles = s.cycles;
+  frame.counters.divfree_steps_total = s.divfree_steps;
   if (stats) *stats = s;
   return frame;
 }

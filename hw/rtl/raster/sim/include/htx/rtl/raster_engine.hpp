@@ -23,6 +23,7 @@ struct RtlStats {
   uint64_t setup_busy_cycles = 0;
   uint64_t stall_input = 0, stall_setup = 0, stall_fragment = 0;
   uint64_t clear_cycles = 0;    // clocks of the fast clear before drawing
+  uint64_t divfree_steps = 0;   // CNT_DIVFREE_STEPS (u + v grid steps of DIVFREE fragments)
   double px_per_clk = 0;        // covered_pixels / cycles
   double setup_cycles_per_triangle = 0;
 };
@@ -32,13 +33,14 @@ struct RtlStats {
 // named `full` and `icebreaker` with their exact field values, except that perspective_color must be
 // off and the methods a subset of the built ones; rtl_config() gives the configuration the RTL
 // renders), when a triangle asks for a method, filter or format the configuration does not build,
-// names a texture beyond the built slots (8 / 4) or a bad texture, when the textures exceed the
+// names a texture beyond the built slots (8 / 4) or a bad texture, asks for DIVFREE on a textured
+// triangle with bilinear or trilinear filtering (not built yet, docs/raster.md), when the textures exceed the
 // Verilated texture memory (128K / 16K texels), or the frame exceeds the 262144-pixel memories or
 // 4096 per side.
 Frame render_rtl(const ScreenScene& scene, const ModelConfig& config, RtlStats* stats = nullptr);
 
 // The named configuration as the RTL builds it (perspective_color off, the built methods: affine,
-// subdiv, recip_lut, recip_nr). Throws like model_config.
+// subdiv, recip_lut, recip_nr, divfree). Throws like model_config.
 ModelConfig rtl_config(const std::string& name);
 
 // The per-triangle state word (hw/regs/raster.json register STATE) of a triangle.
