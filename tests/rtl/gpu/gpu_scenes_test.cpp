@@ -165,5 +165,34 @@ TEST(GpuScenesCases, CoverEveryBuiltValueOfEachAxis) {
 INSTANTIATE_TEST_SUITE_P(All, GpuScenes, ::testing::ValuesIn(all_cases()),
                          [](const ::testing::TestParamInfo<Case>& i) { return case_name(i.param); });
 
+// DIVFREE on every built-in scene in both configurations (the rotation above reaches about half of
+// them with it): nearest, the wraps and formats rotating, frame, depth and CNT_DIVFREE_STEPS equal
+// to the model's.
+std::vector<Case> divfree_cases() {
+  std::vector<Case> cases;
+  const Wrap wraps[] = {Wrap::Repeat, Wrap::Clamp, Wrap::Mirror};
+  for (const char* name : {"full", "icebreaker"}) {
+    const std::vector<TexFormat> formats = built<TexFormat>(rtl_config(name).formats, 3);
+    unsigned k = 0;
+    for (const SceneInfo& s : builtin_scenes()) {
+      Case c;
+      c.config = name;
+      c.scene = s.name;
+      c.filter = Filter::Nearest;
+      c.wrap_u = wraps[k % 3];
+      c.wrap_v = wraps[(k + 1) % 3];
+      c.format = formats[k % formats.size()];
+      c.method = Method::DivFree;
+      c.combine = (k % 2) ? Combine::Replace : Combine::Modulate;
+      cases.push_back(c);
+      ++k;
+    }
+  }
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Divfree, GpuScenes, ::testing::ValuesIn(divfree_cases()),
+                         [](const ::testing::TestParamInfo<Case>& i) { return case_name(i.param); });
+
 }  // namespace
 }  // namespace htx
