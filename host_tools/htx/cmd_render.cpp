@@ -109,7 +109,11 @@ void run_render(const RenderArgs& a) {
       j["px_per_clk"] = rtl_stats.px_per_clk;
       j["triangles"] = rtl_stats.triangles;
       j["setup_cycles_per_triangle"] = rtl_stats.setup_cycles_per_triangle;
-      j["model_mismatch_pixels"] = frame_mismatch_pixels(frame, render_model(screen, config));
+      const Frame model = render_model(screen, config);
+      j["model_mismatch_pixels"] = frame_mismatch_pixels(frame, model);
+      // CNT_DIVFREE_STEPS and the model's divfree_steps_total on the same records.
+      j["divfree_steps_total"] = rtl_stats.divfree_steps;
+      j["model_divfree_steps_total"] = model.counters.divfree_steps_total;
       // The Verilated GPU has no per-pixel probe (texel coordinates, coverage): the figures taken
       // from it would describe an empty probe, so they are null (docs/metrics.md). Where
       // model_mismatch_pixels is 0, the model engine's figures for the same options apply.
