@@ -136,7 +136,8 @@ module htx_gpu_subsys #(
     .FbPixels(FbPixels), .AddrW(AddrW), .QBits(QBits), .UvIntBits(UvIntBits), .TF(TF),
     .PixelSteps(PixelSteps), .Methods(Methods), .PerspColor(PerspColor),
     .PixelPipelined(PixelPipelined), .PixelMulIterative(PixelMulIterative),
-    .SubdivDepth(SubdivDepth), .DfFracBits(DfFracBits), .DfCap(DfCap), .CoordW(CoordW), .QW(QW), .GradW(GradW), .LocW(LocW),
+    .SubdivDepth(SubdivDepth), .DfFracBits(DfFracBits), .DfCap(DfCap), .LF(LF), .LogIdx(LogIdx),
+    .CoordW(CoordW), .QW(QW), .GradW(GradW), .LocW(LocW),
     .TexTagW(TagW)
   ) u_raster (
     .clk_i, .rst_ni,

@@ -30,6 +30,8 @@ module htx_raster #(
   parameter int unsigned SubdivDepth = 128,     // SUBDIV fragment FIFO (>= 64)
   parameter int unsigned DfFracBits = 4,        // divfree_frac_bits
   parameter int unsigned DfCap      = 64,       // divfree_cap
+  parameter int unsigned LF         = 8,        // lod_frac_bits (DIVFREE's level choice)
+  parameter int unsigned LogIdx     = 10,       // lod_log_index_bits
   parameter int unsigned CoordW     = 48,
   parameter int unsigned QW         = QBits + GF + 2,
   parameter int unsigned GradW      = 24,       // lod_grad_bits
@@ -346,8 +348,8 @@ module htx_raster #(
     logic [PayF-1:0] df_pay;
     htx_raster_divfree #(
       .AccQ(AccQ), .AccU(AccU), .UvIntBits(UvIntBits), .TF(TF), .LocW(LocW), .W(RecipW), .K(RecipK),
-      .G(RecipG), .Steps(PixelSteps), .FracBits(DfFracBits), .Cap(DfCap), .GWU(GWU), .PayW(PayF),
-      .MulIterative(PixelMulIterative)
+      .G(RecipG), .Steps(PixelSteps), .FracBits(DfFracBits), .Cap(DfCap), .GWU(GWU), .GradW(GradW),
+      .LF(LF), .LogIdx(LogIdx), .PayW(PayF), .MulIterative(PixelMulIterative)
     ) u_divfree (
       .clk_i, .rst_ni,
       .abort_i      (abort),
@@ -355,6 +357,13 @@ module htx_raster #(
       .in_ready_o   (sh_ready),
       .in_df_i      (sh_method0 == htx_raster_pkg::MethodDivFree),
       .in_fine_i    (sh_side[htx_raster_reg_pkg::RASTER_STATE_FILTER_LSB +: 2] != 2'd0),
+      // Level per span for textured bilinear/trilinear; the state word's SUBDIV_N field carries the
+      // texture's last mip level for DIVFREE (docs/raster.md).
+      .in_track_i   (sh_side[htx_raster_reg_pkg::RASTER_STATE_TEXTURED_LSB] &&
+                     (sh_side[htx_raster_reg_pkg::RASTER_STATE_FILTER_LSB +: 2] != 2'd0)),
+      .in_top_i     (sh_side[htx_raster_reg_pkg::RASTER_STATE_SUBDIV_N_LSB +: 4]),
+      .in_lod_g_i   (sh_side[128 +: 6*GradW]),
+      .in_lod_shift_i(sh_side[128 + 6*GradW +: 8]),
       .in_tfirst_i  (sh_tfirst),
       .in_first_i   (sh_first),
       .in_last_i    (sh_last),

@@ -1,6 +1,7 @@
 // DIVFREE (docs/model.md §5.5, reference 004) between shade and the divider: per fragment and axis a
-// grid index j on cells of 2^-f level-0 texels (f = 0 for nearest, FracBits otherwise; level 0),
-// P = TF - f. The cell is the j with
+// grid index j on cells of 2^-f texels of mip level L (f = 0 for nearest, FracBits otherwise; L = 0
+// for nearest and untextured triangles, else chosen per span, below), P = TF + L - f. The cell is
+// the j with
 //   N(j) = 2^(TF+1) U - (2^(P+1) j + 1) Q >= 0   and   N(j) < B = 2^(P+1) Q
 // (Q raised to 1 when below). Each pixel starts from a prediction and walks j by +-1 while N < 0 or
 // N >= B, at most Cap steps per axis (both axes in parallel); an axis the cap stops takes the cell of
@@ -11,6 +12,10 @@
 // seed's derivatives (four more numerators through the divider's product). After a span start,
 // m = round(((j - j_a) 2^16 - dx s) inv(dy) >> 16) (dy <= 64); after a span's first min(n - 1, 64)
 // pixel steps, s = (j_L - j_0) inv(L) (inv: the 64-entry round(2^16 / L) table of SUBDIV).
+// Bilinear and trilinear (textured): at each span's first pixel the LOD unit (htx_tex_lod, the
+// texture unit's) gives L = clamp(floor(lod), 0, top) from the previous span start's cell centre
+// (the seed: its divided coordinate), top = the texture's last level (state word); a change of L
+// rescales the carried j_a, m and s by 2^(old - new).
 // N(j) is formed with one product (j times Q) per axis and clock; a clock checks j and one step on,
 // so a pixel takes max(1, larger step count) clocks when nothing is capped (+1 at a span start).
 // Fragments of other methods pass in one clock. Order is kept; one fragment is inside at a time.
@@ -27,6 +32,9 @@ module htx_raster_divfree #(
   parameter int unsigned FracBits     = 4,    // divfree_frac_bits
   parameter int unsigned Cap          = 64,   // divfree_cap
   parameter int unsigned GWU          = 100,  // full-precision gradient width (signed)
+  parameter int unsigned GradW        = 24,   // lod_grad_bits
+  parameter int unsigned LF           = 8,    // lod_frac_bits
+  parameter int unsigned LogIdx       = 10,   // lod_log_index_bits
   parameter int unsigned PayW         = 8,
   parameter bit          MulIterative = 1'b0
 ) (
@@ -38,6 +46,10 @@ module htx_raster_divfree #(
   output logic                in_ready_o,
   input  logic                in_df_i,      // the fragment's triangle uses DIVFREE
   input  logic                in_fine_i,    // grid of 2^-FracBits texels (filter not nearest)
+  input  logic                in_track_i,   // level per span (textured, bilinear or trilinear)
+  input  logic [3:0]          in_top_i,     // the texture's last mip level
+  input  logic [6*GradW-1:0]  in_lod_g_i,   // the LOD unit's block-shifted gradients
+  input  logic [7:0]          in_lod_shift_i,
   input  logic                in_tfirst_i,  // the triangle's first fragment
   input  logic                in_first_i,   // its span's first pixel
   input  logic                in_last_i,    // its span's last pixel
@@ -60,8 +72,8 @@ module htx_raster_divfree #(
   localparam int unsigned JW    = UvIntBits + FracBits + 4;            // grid indices (signed)
   localparam int unsigned MW    = UvIntBits + FracBits + 34;           // m, s: cells, 16 fraction bits
   localparam int unsigned SPW   = MW + 16;                             // dy m + dx s
-  localparam int unsigned NW    = ((AccU + TF + 1 > JW + TF + 2 + AccQ) ? AccU + TF + 1
-                                                                        : JW + TF + 2 + AccQ) + 2;
+  localparam int unsigned NW    = ((AccU + TF + 1 > JW + TF + 10 + AccQ) ? AccU + TF + 1
+                                                                         : JW + TF + 10 + AccQ) + 2;
   localparam int unsigned CW    = LocW + 2;                            // divided coordinate
   localparam int unsigned NUMW  = ((GWU + TF > LocW + GWU) ? GWU + TF : LocW + GWU) + 12;
   localparam int unsigned SHW   = UvIntBits + TF + W + 4;              // numerator after the shift
@@ -94,6 +106,13 @@ module htx_raster_divfree #(
     div_round = DDW'((p + ((SHW+W+2)'(1) <<< (rs - 1))) >>> rs);
   endfunction
 
+  // Grid cell centre: (2j + 1) 2^(P - 1).
+  function automatic logic [LocW-1:0] centre(input logic signed [JW-1:0] j, input logic [PBW-1:0] p);
+    logic signed [LocW+JW:0] c;
+    c = ((LocW+JW+1)'(j) <<< 1) + (LocW+JW+1)'(1);
+    centre = LocW'(c <<< (p - 1'b1));
+  endfunction
+
   // round(2^16 / L), L = 1..64 (index L - 1): SUBDIV's table.
   logic [16:0] inv_rom [64];
   initial begin
@@ -101,9 +120,14 @@ module htx_raster_divfree #(
   end
 
   // ---- The fragment inside ---------------------------------------------------------------------
-  typedef enum logic [2:0] {StIdle, StPass, StSpan, StRun, StSeed, StRecip, StMul, StFin} state_e;
+  typedef enum logic [3:0] {StIdle, StPass, StSpan, StRun, StSeed, StRecip, StMul, StFin, StLodReq,
+                            StLodWait, StSeedCell} state_e;
   state_e                 st_q;
-  logic                   fine_q, tfirst_q, first_q, last_q;
+  logic                   fine_q, track_q, tfirst_q, first_q, last_q;
+  logic [3:0]             top_q;
+  logic [6*GradW-1:0]     lg_q;
+  logic [7:0]             lsh_q;
+  logic [3:0]             lvl_q;          // the triangle's tracking level
   logic [12:0]            x_q, y_q;
   logic [AccQ-1:0]        q_q;
   logic signed [AccU-1:0] u_q, v_q;
@@ -134,7 +158,7 @@ module htx_raster_divfree #(
   logic [15:0]            steps_q;
 
   logic [PBW-1:0] p_bits;
-  assign p_bits = fine_q ? PBW'(TF - FracBits) : PBW'(TF);
+  assign p_bits = PBW'(TF) + PBW'(lvl_q) - (fine_q ? PBW'(FracBits) : PBW'(0));
 
   logic [AccQ-1:0] q_eff;
   assign q_eff = ($signed(q_q) < $signed(AccQ'(1))) ? AccQ'(1) : q_q;
@@ -230,6 +254,44 @@ module htx_raster_divfree #(
     end
   end
 
+  // ---- Level choice at a span's first pixel (bilinear, trilinear) -------------------------------
+  logic                 lod_in_ready, lod_out_valid, lod_zero, lod_busy, lod_pay;
+  logic signed [23:0]   lod;
+  logic [LocW-1:0]      lod_u, lod_v;
+  assign lod_u = tfirst_q ? LocW'(c_q[0]) : centre(ja_q[0], p_bits);
+  assign lod_v = tfirst_q ? LocW'(c_q[1]) : centre(ja_q[1], p_bits);
+  htx_tex_lod #(.QW(AccQ), .GradW(GradW), .LocW(LocW), .TF(TF), .LF(LF), .IdxBits(LogIdx), .PW(1),
+                .LodW(24)) u_lod (
+    .clk_i, .rst_ni,
+    .in_valid_i  (st_q == StLodReq),
+    .in_ready_o  (lod_in_ready),
+    .q_i         (q_eff),
+    .gux_i(lg_q[0*GradW +: GradW]), .guy_i(lg_q[1*GradW +: GradW]), .gvx_i(lg_q[2*GradW +: GradW]),
+    .gvy_i(lg_q[3*GradW +: GradW]), .gqx_i(lg_q[4*GradW +: GradW]), .gqy_i(lg_q[5*GradW +: GradW]),
+    .grad_shift_i(lsh_q),
+    .u_i         (lod_u),
+    .v_i         (lod_v),
+    .payload_i   (1'b0),
+    .out_valid_o (lod_out_valid),
+    .out_ready_i (st_q == StLodWait),
+    .lod_o       (lod),
+    .zero_o      (lod_zero),
+    .payload_o   (lod_pay),
+    .busy_o      (lod_busy)
+  );
+  // L = clamp(floor(lod), 0, top); the all-zero derivatives' LOD is 0.
+  logic signed [23:0] lod_int;
+  logic [3:0]         lvl_new;
+  assign lod_int = lod >>> LF;
+  assign lvl_new = (lod_zero || (lod_int < 0)) ? 4'd0
+                   : ((lod_int > $signed({20'd0, top_q})) ? top_q : 4'(lod_int));
+  // A level change rescales the carried j_a, m and s by 2^(old - new).
+  function automatic logic signed [MW-1:0] rescale(input logic signed [MW-1:0] x, input logic [3:0] from,
+                                                   input logic [3:0] to);
+    if (to > from) rescale = x >>> (to - from);
+    else rescale = x <<< (from - to);
+  endfunction
+
   // ---- Finishing a DIVFREE pixel: the carried state ---------------------------------------------
   logic                  fin_now, pass_now, out_free, fin_fire;
   logic signed [JW-1:0]  jfin [2];
@@ -298,17 +360,11 @@ module htx_raster_divfree #(
   assign run_capped = (st_q == StRun) && res[0] && res[1] && (capnow[0] || capnow[1]);
   assign r_start    = (st_q == StSeed) || run_capped;
 
-  // Grid cell centre: (2j + 1) 2^(P - 1).
-  function automatic logic [LocW-1:0] centre(input logic signed [JW-1:0] j, input logic [PBW-1:0] p);
-    logic signed [LocW+JW:0] c;
-    c = ((LocW+JW+1)'(j) <<< 1) + (LocW+JW+1)'(1);
-    centre = LocW'(c <<< (p - 1'b1));
-  endfunction
-
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       st_q <= StIdle;
-      fine_q <= 1'b0; tfirst_q <= 1'b0; first_q <= 1'b0; last_q <= 1'b0;
+      fine_q <= 1'b0; track_q <= 1'b0; tfirst_q <= 1'b0; first_q <= 1'b0; last_q <= 1'b0;
+      top_q <= '0; lg_q <= '0; lsh_q <= '0; lvl_q <= '0;
       x_q <= '0; y_q <= '0; q_q <= '0; u_q <= '0; v_q <= '0; g_q <= '0; pay_q <= '0;
       inner_q <= 1'b0; seeded_q <= 1'b0; k_q <= '0;
       for (int a = 0; a < 2; a++) begin
@@ -360,6 +416,11 @@ module htx_raster_divfree #(
       // Taking the next fragment (possibly in the clock the last one leaves).
       if (take) begin
         fine_q   <= in_fine_i;
+        track_q  <= in_track_i;
+        top_q    <= in_top_i;
+        lg_q     <= in_lod_g_i;
+        lsh_q    <= in_lod_shift_i;
+        if (in_df_i && in_tfirst_i) lvl_q <= '0;
         tfirst_q <= in_tfirst_i;
         first_q  <= in_first_i;
         last_q   <= in_last_i;
@@ -376,7 +437,8 @@ module htx_raster_divfree #(
         for (int a = 0; a < 2; a++) begin
           sc_q[a] <= '0; done_q[a] <= 1'b0; cap_q[a] <= 1'b0;
         end
-        st_q <= !in_df_i ? StPass : (in_tfirst_i ? StSeed : (in_first_i ? StSpan : StRun));
+        st_q <= !in_df_i ? StPass
+                : (in_tfirst_i ? StSeed : (in_first_i ? (in_track_i ? StLodReq : StSpan) : StRun));
       end else begin
         unique case (st_q)
           StSpan: begin
@@ -397,18 +459,31 @@ module htx_raster_divfree #(
             end
           end
           StSeed: st_q <= StRecip;
+          StSeedCell: begin
+            seeded_q <= 1'b1;
+            for (int a = 0; a < 2; a++) jw_q[a] <= JW'((c_q[a] - CW'(1)) >>> p_bits);
+            st_q <= StRun;
+          end
+          StLodReq: if (lod_in_ready) st_q <= StLodWait;
+          StLodWait: if (lod_out_valid) begin
+            lvl_q <= lvl_new;
+            if (!tfirst_q && (lvl_new != lvl_q)) begin
+              for (int a = 0; a < 2; a++) begin
+                ja_q[a]    <= JW'(rescale(MW'(ja_q[a]), lvl_q, lvl_new));
+                row_q[a]   <= rescale(row_q[a], lvl_q, lvl_new);
+                slope_q[a] <= rescale(slope_q[a], lvl_q, lvl_new);
+              end
+            end
+            st_q <= tfirst_q ? StSeedCell : StSpan;
+          end
           StRecip: if (r_done) st_q <= StMul;
           StMul: begin
             if (k_q < 3'd2) c_q[k_q[0]] <= CW'(div_k);
             else d_q[2'(k_q - 3'd2)] <= div_k;
             k_q <= k_q + 3'd1;
             if (tfirst_q && !seeded_q && (k_q == 3'd5)) begin
-              // The seed: the walk starts from the divided cells.
-              seeded_q <= 1'b1;
-              for (int a = 0; a < 2; a++) begin
-                jw_q[a] <= JW'(((a == 0 ? c_q[0] : c_q[1]) - CW'(1)) >>> p_bits);
-              end
-              st_q <= StRun;
+              // The seed: its level (tracking), then the walk starts from the divided cells.
+              st_q <= track_q ? StLodReq : StSeedCell;
             end else if (!(tfirst_q && !seeded_q) && (k_q == 3'd1)) begin
               st_q <= StFin;
             end
@@ -428,5 +503,5 @@ module htx_raster_divfree #(
   assign steps_o       = steps_q;
 
   logic unused;
-  assign unused = ^{r_busy, r_t};
+  assign unused = ^{r_busy, r_t, lod_busy, lod_pay};
 endmodule

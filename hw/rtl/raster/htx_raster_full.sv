@@ -31,7 +31,7 @@ module htx_raster_full #(
   htx_raster_subsys #(
     .XyIntBits(16), .ZBits(24), .GF(24), .RecipW(32), .RecipK(10), .RecipG(2), .SetupSteps(2),
     .Iterative(1'b0), .QBits(32), .UvIntBits(16), .TF(16), .PixelSteps(2), .Methods(5'b11111),
-    .PerspColor(PerspColor), .PixelPipelined(1'b1), .PixelMulIterative(1'b0), .SubdivDepth(128), .DfFracBits(4), .DfCap(64),
+    .PerspColor(PerspColor), .PixelPipelined(1'b1), .PixelMulIterative(1'b0), .SubdivDepth(128), .DfFracBits(4), .DfCap(64), .LF(8), .LogIdx(10),
     .CoordW(48), .GradW(24),
     .FifoDepth(64), .FbPixels(FbPixels)
   ) u_subsys (

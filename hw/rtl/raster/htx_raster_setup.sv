@@ -106,13 +106,10 @@ module htx_raster_setup #(
   logic [6:0] rec_n;
   assign rec_method  = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
   assign rec_n       = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_SUBDIV_N_LSB +: 7];
-  // DIVFREE tracks level 0 only: a textured DIVFREE triangle with bilinear or trilinear filtering
-  // (whose grid level comes from the LOD unit and the texture's mip count) is not built yet.
+  // DIVFREE's SUBDIV_N field carries the texture's last mip level (0..8, docs/raster.md).
   assign method_bad  = (rec_method > 3'd4) || !Methods[rec_method] ||
                        ((rec_method == htx_raster_pkg::MethodSubdiv) && ((rec_n < 7'd2) || (rec_n > 7'd64))) ||
-                       ((rec_method == htx_raster_pkg::MethodDivFree) &&
-                        rec_state_i[htx_raster_reg_pkg::RASTER_STATE_TEXTURED_LSB] &&
-                        (rec_state_i[htx_raster_reg_pkg::RASTER_STATE_FILTER_LSB +: 2] != 2'd0));
+                       ((rec_method == htx_raster_pkg::MethodDivFree) && (rec_n > 7'd8));
   assign rec_ready_o = (state_q == StIdle) && !hold_i;
   assign take        = rec_valid_i && rec_ready_o;
   assign state_bad   = method_bad ||

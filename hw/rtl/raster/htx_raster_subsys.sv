@@ -26,6 +26,8 @@ module htx_raster_subsys #(
   parameter int unsigned SubdivDepth = 128,
   parameter int unsigned DfFracBits  = 4,
   parameter int unsigned DfCap       = 64,
+  parameter int unsigned LF          = 8,
+  parameter int unsigned LogIdx      = 10,
   parameter int unsigned CoordW     = 48,
   parameter int unsigned GradW      = 24
 ) (
@@ -88,7 +90,7 @@ module htx_raster_subsys #(
     .FbPixels(FbPixels), .AddrW(AddrW), .QBits(QBits), .UvIntBits(UvIntBits), .TF(TF),
     .PixelSteps(PixelSteps), .Methods(Methods), .PerspColor(PerspColor),
     .PixelPipelined(PixelPipelined), .PixelMulIterative(PixelMulIterative),
-    .SubdivDepth(SubdivDepth), .DfFracBits(DfFracBits), .DfCap(DfCap), .CoordW(CoordW), .GradW(GradW)
+    .SubdivDepth(SubdivDepth), .DfFracBits(DfFracBits), .DfCap(DfCap), .LF(LF), .LogIdx(LogIdx), .CoordW(CoordW), .GradW(GradW)
   ) u_raster (
     .clk_i, .rst_ni,
     .req_valid_i(reg_req_valid_i), .req_ready_o(reg_req_ready_o), .req_addr_i(reg_req_addr_i),

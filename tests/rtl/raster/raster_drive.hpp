@@ -25,6 +25,7 @@ inline uint32_t reg_off(size_t o) { return static_cast<uint32_t>(o); }
 struct Tri {
   fw::TriangleRecord rec;
   TriState state;
+  unsigned top_level = 0;  // DIVFREE: the texture's last mip level, sent in the state word
 };
 
 // Encodes a screen scene's triangles (AUTO resolved as render_model does); the encoder's rejects
@@ -62,7 +63,7 @@ inline RtlResult draw(const std::string& name, const std::vector<Tri>& tris, int
   for (const Tri& t : tris) {
     uint32_t packed[fw::kTriangleWords];
     fw::pack_triangle(t.rec, packed);
-    words.push_back(pack_state_word(t.state, t.state.method));
+    words.push_back(pack_state_word(t.state, t.state.method, t.top_level));
     words.insert(words.end(), packed, packed + fw::kTriangleWords);
   }
   rtl::RasterSim sim(name);

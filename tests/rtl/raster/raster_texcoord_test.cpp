@@ -66,9 +66,12 @@ std::vector<rtl::TexRequest> expected(const std::vector<Tri>& tris, const ModelC
   if (divfree_steps) *divfree_steps = 0;
   if (capped) *capped = 0;
   const unsigned tf = cfg.texcoord_frac_bits;
+  const model::Log2Unit log2_unit(cfg.lod_log_index_bits, cfg.lod_frac_bits + 2);
   model::SpanCoords span;
   for (const Tri& t : tris) {
-    const model::TriangleUnit unit(t.rec, t.state, cfg, w, h);
+    // As render_model: the LOD unit and the texture's last level (0 untextured) for DIVFREE's level
+    // choice.
+    const model::TriangleUnit unit(t.rec, t.state, cfg, w, h, &log2_unit, t.state.textured ? t.top_level : 0);
     if (unit.empty()) continue;
     const i128 g[6] = {unit.uq_plane().gx, unit.uq_plane().gy, unit.vq_plane().gx,
                        unit.vq_plane().gy, unit.q_plane().gx,  unit.q_plane().gy};
@@ -126,13 +129,14 @@ void expect_same(const std::vector<rtl::TexRequest>& rtl, const std::vector<rtl:
 const Method kBuilt[] = {Method::Affine, Method::Subdiv, Method::RecipLut, Method::RecipNr, Method::DivFree};
 constexpr size_t kNumBuilt = sizeof(kBuilt) / sizeof(kBuilt[0]);
 
-// DIVFREE tracks level 0 in the RTL: a textured DIVFREE triangle must filter nearest (bilinear and
-// trilinear are refused); an untextured one keeps its filter, whose grid (2^-divfree_frac_bits
-// texels unless nearest) the walk uses all the same.
-void divfree_filter(TriState* st, bool keep_untextured) {
-  if (st->method != Method::DivFree || st->filter == Filter::Nearest || !st->textured) return;
-  if (keep_untextured) st->textured = false;
-  else st->filter = Filter::Nearest;
+// DIVFREE variants: 0 textured with its filter (bilinear and trilinear choose a level per span up to
+// top), 1 textured nearest, 2 untextured (its filter still sets the grid: 2^-divfree_frac_bits
+// texels unless nearest, on level 0).
+void divfree_variant(Tri* t, unsigned variant, unsigned top) {
+  if (t->state.method != Method::DivFree) return;
+  t->top_level = top;
+  if (variant == 1) t->state.filter = Filter::Nearest;
+  if (variant == 2) t->state.textured = false;
 }
 
 // Checks the stream and CNT_DIVFREE_STEPS against the model.
@@ -151,8 +155,8 @@ struct SceneCase {
 class TexcoordScenes : public ::testing::TestWithParam<SceneCase> {};
 
 // Every built method on the scene: the triangles take the methods in turn (triangle i the method
-// (i + pass) mod 5), five passes, so each triangle is drawn with each method (DIVFREE: nearest on
-// even triangles, untextured with the scene's filter on odd ones).
+// (i + pass) mod 5), five passes, so each triangle is drawn with each method (DIVFREE: the variants
+// of divfree_variant in turn, with the scene texture's last level).
 TEST_P(TexcoordScenes, EveryMethodMatchesModel) {
   const SceneCase& c = GetParam();
   constexpr int kW = 80, kH = 60;
@@ -168,7 +172,10 @@ TEST_P(TexcoordScenes, EveryMethodMatchesModel) {
       st.method = kBuilt[(i + static_cast<size_t>(pass)) % kNumBuilt];
       st.subdiv_n = 2 + static_cast<unsigned>((i * 7 + static_cast<size_t>(pass) * 13) % 63);
       if (!cfg.has_filter(st.filter)) st.filter = Filter::Bilinear;
-      divfree_filter(&st, i % 2 == 1);
+      const unsigned top = st.texture >= 0 && static_cast<size_t>(st.texture) < screen.textures.size()
+                               ? level_count(screen.textures[static_cast<size_t>(st.texture)]) - 1
+                               : 0;
+      divfree_variant(&tris[i], static_cast<unsigned>(i % 3), top);
     }
     check_run(c.config, tris, kW, kH, c.config + " " + c.scene + " pass " + std::to_string(pass));
   }
@@ -215,14 +222,19 @@ std::vector<Tri> random_tris(uint32_t seed, int n, int w, int h, const ModelConf
     t.state.subdiv_n = 2 + rng() % 63;
     t.state.filter = static_cast<Filter>(rng() % 3);
     if (!cfg.has_filter(t.state.filter)) t.state.filter = Filter::Nearest;
-    divfree_filter(&t.state, rng() % 2 == 0);
+    const unsigned variant = rng() % 4;  // DIVFREE: 0 and 3 keep the random filter
+    if (t.state.method == Method::DivFree && variant == 1) t.state.filter = Filter::Nearest;
+    if (t.state.method == Method::DivFree && variant == 2) t.state.textured = false;
     t.state.wrap_u = static_cast<Wrap>(rng() % 3);
     t.state.wrap_v = static_cast<Wrap>(rng() % 3);
     t.state.texture = static_cast<int>(rng() % 8);
     t.state.depth_func = DepthFunc::Always;
     s.tris.push_back(t);
   }
-  return encode(s, cfg);
+  std::vector<Tri> tris = encode(s, cfg);
+  // DIVFREE's texture top level, 0..8, a function of the triangle's random state.
+  for (Tri& t : tris) t.top_level = t.state.method == Method::DivFree ? (t.state.subdiv_n * 5 + t.state.texture) % 9 : 0;
+  return tris;
 }
 
 class TexcoordRandom : public ::testing::TestWithParam<std::string> {};
@@ -268,13 +280,14 @@ TEST_P(TexcoordDivfreeCap, CappedPixelsAndStepsMatchModel) {
     }
     t.state.textured = i % 3 != 2;
     t.state.method = Method::DivFree;
-    t.state.filter = t.state.textured ? Filter::Nearest : Filter::Bilinear;
+    t.state.filter = i % 3 == 0 ? Filter::Nearest : Filter::Bilinear;  // textured bilinear: a level per span
     t.state.wrap_u = Wrap::Repeat;
     t.state.wrap_v = Wrap::Mirror;
     t.state.depth_func = DepthFunc::Always;
     s.tris.push_back(t);
   }
-  const std::vector<Tri> tris = encode(s, cfg);
+  std::vector<Tri> tris = encode(s, cfg);
+  for (Tri& t : tris) t.top_level = 7;  // a 128-texel texture's chain
   ASSERT_GE(tris.size(), 40u);
   uint64_t steps = 0, capped = 0;
   const std::vector<rtl::TexRequest> ref = expected(tris, cfg, kW, kH, port_of(GetParam()), &steps, &capped);

@@ -26,8 +26,7 @@ constexpr uint32_t off(size_t o) { return static_cast<uint32_t>(o); }
 #define HTX_TEXTURE_REG(reg) (HTX_TEXTURE_BASE + off(offsetof(HTX_TEXTURE_Type, reg)))
 
 // Perspective methods the Verilated GPU builds (htx_gpu_full / htx_gpu_icebreaker `Methods`):
-// AFFINE, SUBDIV, RECIP_LUT, RECIP_NR, DIVFREE in both configurations (DIVFREE on level 0: nearest,
-// or untextured; see render_rtl).
+// AFFINE, SUBDIV, RECIP_LUT, RECIP_NR, DIVFREE in both configurations.
 constexpr uint32_t kRtlMethods = 0x1F;
 
 // The RTL builds exactly the named configurations; every field that changes a bit of the frame
@@ -134,9 +133,11 @@ ModelConfig rtl_config(const std::string& name) {
   return c;
 }
 
-uint32_t pack_state_word(const TriState& s, Method m) {
+uint32_t pack_state_word(const TriState& s, Method m, unsigned divfree_top) {
+  // DIVFREE has no subdivision length: its SUBDIV_N field carries the texture's last mip level.
+  const uint32_t n = m == Method::DivFree ? divfree_top : s.subdiv_n;
   return field(static_cast<uint32_t>(m), RASTER_STATE_METHOD_Pos, RASTER_STATE_METHOD_Msk) |
-         field(s.subdiv_n, RASTER_STATE_SUBDIV_N_Pos, RASTER_STATE_SUBDIV_N_Msk) |
+         field(n, RASTER_STATE_SUBDIV_N_Pos, RASTER_STATE_SUBDIV_N_Msk) |
          field(static_cast<uint32_t>(s.filter), RASTER_STATE_FILTER_Pos, RASTER_STATE_FILTER_Msk) |
          field(static_cast<uint32_t>(s.wrap_u), RASTER_STATE_WRAP_U_Pos, RASTER_STATE_WRAP_U_Msk) |
          field(static_cast<uint32_t>(s.wrap_v), RASTER_STATE_WRAP_V_Pos, RASTER_STATE_WRAP_V_Msk) |
@@ -178,12 +179,6 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
     if ((method == Method::Subdiv || method == Method::Quadratic) && (st.subdiv_n < 2 || st.subdiv_n > 64))
       throw std::invalid_argument("rtl engine: subdiv_n " + std::to_string(st.subdiv_n) + " outside 2..64");
     if (st.textured) check_texture_state(scene.textures, st, cfg);
-    // DIVFREE tracks level 0 in the RTL: bilinear and trilinear need the per-span level choice (the
-    // LOD unit and the texture's mip count inside the raster), which is not built yet; the raster
-    // refuses such a triangle with ERR_STATE.
-    if (method == Method::DivFree && st.textured && st.filter != Filter::Nearest)
-      throw std::invalid_argument("rtl engine: DIVFREE with " + std::string(filter_name(st.filter)) +
-                                  " filtering is not built (nearest only)");
     const fw::VertexIn in[3] = {to_vertex_in(tri.v[0]), to_vertex_in(tri.v[1]), to_vertex_in(tri.v[2])};
     fw::TriangleRecord rec;
     const fw::EncodeStatus status = fw::encode_triangle(format, in, &rec);
@@ -191,7 +186,9 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
     if (status != fw::kEncodeOk) continue;  // the firmware does not send it
     uint32_t packed[fw::kTriangleWords];
     fw::pack_triangle(rec, packed);
-    words.push_back(pack_state_word(st, method));
+    // DIVFREE's level choice (bilinear, trilinear) needs the texture's last mip level.
+    const unsigned top = st.textured ? level_count(scene.textures[static_cast<size_t>(st.texture)]) - 1 : 0;
+    words.push_back(pack_state_word(st, method, top));
     words.insert(words.end(), packed, packed + fw::kTriangleWords);
     ++sent;
   }

@@ -33,8 +33,7 @@ struct RtlStats {
 // named `full` and `icebreaker` with their exact field values, except that perspective_color must be
 // off and the methods a subset of the built ones; rtl_config() gives the configuration the RTL
 // renders), when a triangle asks for a method, filter or format the configuration does not build,
-// names a texture beyond the built slots (8 / 4) or a bad texture, asks for DIVFREE on a textured
-// triangle with bilinear or trilinear filtering (not built yet, docs/raster.md), when the textures exceed the
+// names a texture beyond the built slots (8 / 4) or a bad texture, when the textures exceed the
 // Verilated texture memory (128K / 16K texels), or the frame exceeds the 262144-pixel memories or
 // 4096 per side.
 Frame render_rtl(const ScreenScene& scene, const ModelConfig& config, RtlStats* stats = nullptr);
@@ -43,8 +42,10 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& config, RtlStats* 
 // subdiv, recip_lut, recip_nr, divfree). Throws like model_config.
 ModelConfig rtl_config(const std::string& name);
 
-// The per-triangle state word (hw/regs/raster.json register STATE) of a triangle.
-uint32_t pack_state_word(const TriState& state, Method resolved_method);
+// The per-triangle state word (hw/regs/raster.json register STATE) of a triangle. For DIVFREE the
+// SUBDIV_N field carries divfree_top, the texture's last mip level (level_count - 1; 0 untextured),
+// which bilinear and trilinear need for their per-span level choice.
+uint32_t pack_state_word(const TriState& state, Method resolved_method, unsigned divfree_top = 0);
 
 // Pixels whose colour or depth differ between two frames of the same size (throws otherwise).
 uint64_t frame_mismatch_pixels(const Frame& a, const Frame& b);
