@@ -3,8 +3,7 @@
 // wrap mode per axis, texture format, perspective method) that the configuration builds appears on
 // every scene; the combinations rotate with the scene index so that 3 renders per scene cover them
 // (the full product, about 400 renders per method, is a benchmark, not a test: docs/gpu.md).
-// DIVFREE cases filter nearest (the RTL tracks level 0 only); CNT_DIVFREE_STEPS must equal the
-// model's divfree_steps_total on every case.
+// CNT_DIVFREE_STEPS must equal the model's divfree_steps_total on every case.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -126,8 +125,6 @@ std::vector<Case> all_cases() {
         c.format = formats[(k / filters.size()) % formats.size()];
         c.method = methods[(k + k / (filters.size() * methods.size())) % methods.size()];
         c.combine = (k % 2) ? Combine::Replace : Combine::Modulate;
-        // DIVFREE is built for level 0 only: textured, it filters nearest (docs/raster.md).
-        if (c.method == Method::DivFree) c.filter = Filter::Nearest;
         cases.push_back(c);
       }
     }
@@ -166,19 +163,20 @@ INSTANTIATE_TEST_SUITE_P(All, GpuScenes, ::testing::ValuesIn(all_cases()),
                          [](const ::testing::TestParamInfo<Case>& i) { return case_name(i.param); });
 
 // DIVFREE on every built-in scene in both configurations (the rotation above reaches about half of
-// them with it): nearest, the wraps and formats rotating, frame, depth and CNT_DIVFREE_STEPS equal
-// to the model's.
+// them with it): every built filter in turn, the wraps and formats rotating; frame, depth and
+// CNT_DIVFREE_STEPS equal to the model's.
 std::vector<Case> divfree_cases() {
   std::vector<Case> cases;
   const Wrap wraps[] = {Wrap::Repeat, Wrap::Clamp, Wrap::Mirror};
   for (const char* name : {"full", "icebreaker"}) {
     const std::vector<TexFormat> formats = built<TexFormat>(rtl_config(name).formats, 3);
+    const std::vector<Filter> filters = built<Filter>(rtl_config(name).filters, 3);
     unsigned k = 0;
     for (const SceneInfo& s : builtin_scenes()) {
       Case c;
       c.config = name;
       c.scene = s.name;
-      c.filter = Filter::Nearest;
+      c.filter = filters[k % filters.size()];
       c.wrap_u = wraps[k % 3];
       c.wrap_v = wraps[(k + 1) % 3];
       c.format = formats[k % formats.size()];

@@ -34,7 +34,7 @@ TEST(RasterThroughput, BigtriPixelsPerClockPerMethod) {
         t.state.gouraud = true;
         t.state.method = m;
         t.state.subdiv_n = 8;
-        t.state.filter = Filter::Nearest;  // DIVFREE is built for level 0 (nearest)
+        t.state.filter = Filter::Nearest;  // level 0 for every method (DIVFREE: whole texels)
       }
       const raster_test::RtlResult r =
           raster_test::draw(name, raster_test::encode(s, cfg), s.width, s.height, 0, 0xFFFFFFFFu, cfg.z_bits);
