@@ -46,6 +46,12 @@ void finish_triangle(const FrameParams& frame, const Mesh& mesh, const ScreenVer
     state.method = c.method;
     state.subdiv_n = c.subdiv_n;
   }
+  // DIVFREE has no subdivision length: its SUBDIV_N field carries the texture's last mip level, the
+  // top of its per-span level choice under bilinear and trilinear filtering (docs/raster.md).
+  if (state.method == kMethodDivFree) {
+    const uint8_t last = mesh.tex.log2_width > mesh.tex.log2_height ? mesh.tex.log2_width : mesh.tex.log2_height;
+    state.subdiv_n = state.textured ? last : 0;
+  }
   fw::TriangleRecord rec;
   if (encode_triangle_fx(frame.format, v, mesh.tex, &rec) != fw::kEncodeOk) {
     ++st->encode_errors;
