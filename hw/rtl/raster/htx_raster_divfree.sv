@@ -273,7 +273,8 @@ module htx_raster_divfree #(
     .v_i         (lod_v),
     .payload_i   (1'b0),
     .out_valid_o (lod_out_valid),
-    .out_ready_i (st_q == StLodWait),
+    // Always taken: a result is used in StLodWait only, so one still in flight at an abort drains.
+    .out_ready_i (1'b1),
     .lod_o       (lod),
     .zero_o      (lod_zero),
     .payload_o   (lod_pay),

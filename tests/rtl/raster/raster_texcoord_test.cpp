@@ -303,5 +303,106 @@ TEST_P(TexcoordDivfreeCap, CappedPixelsAndStepsMatchModel) {
 
 INSTANTIATE_TEST_SUITE_P(Configs, TexcoordDivfreeCap, ::testing::Values("full", "icebreaker"));
 
+// An abort while DIVFREE works on a textured bilinear triangle (its walk, a division or a level
+// choice in flight), at several moments, then a clean set of DIVFREE triangles in the same unit:
+// the unit goes idle and the new stream equals the model's (nothing of the aborted triangle, e.g. a
+// LOD result, leaks into the next).
+class TexcoordDivfreeAbort : public ::testing::TestWithParam<std::string> {};
+
+std::vector<uint32_t> words_of(const std::vector<Tri>& tris) {
+  std::vector<uint32_t> words;
+  for (const Tri& t : tris) {
+    uint32_t packed[fw::kTriangleWords];
+    fw::pack_triangle(t.rec, packed);
+    words.push_back(pack_state_word(t.state, t.state.method, t.top_level));
+    words.insert(words.end(), packed, packed + fw::kTriangleWords);
+  }
+  return words;
+}
+
+std::vector<Tri> divfree_tris(const ModelConfig& cfg, uint32_t seed, int n, double spread) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  ScreenScene s;
+  for (int i = 0; i < n; ++i) {
+    ScreenTri t;
+    for (int k = 0; k < 3; ++k) {
+      ScreenVertex& v = t.v[k];
+      v.x = 32 + (unit(rng) - 0.5) * spread;
+      v.y = 24 + (unit(rng) - 0.5) * spread;
+      v.z = unit(rng);
+      v.w = 0.3 + unit(rng) * 8;
+      v.u = (unit(rng) - 0.5) * 900;
+      v.v = (unit(rng) - 0.5) * 900;
+    }
+    t.state.textured = true;
+    t.state.method = Method::DivFree;
+    t.state.filter = Filter::Bilinear;
+    t.state.depth_func = DepthFunc::Always;
+    s.tris.push_back(t);
+  }
+  std::vector<Tri> tris = encode(s, cfg);
+  for (Tri& t : tris) t.top_level = 6;
+  return tris;
+}
+
+TEST_P(TexcoordDivfreeAbort, AbortThenCleanStreamMatchesModel) {
+  const std::string name = GetParam();
+  const ModelConfig cfg = model_config(name);
+  constexpr int kW = 64, kH = 48;
+  std::vector<Tri> big = divfree_tris(cfg, 5, 1, 50.0);
+  {  // one triangle over the whole screen, in strong perspective
+    ScreenScene sc;
+    ScreenTri t;
+    const double xs[3] = {-100, 200, 20}, ys[3] = {-80, -60, 180}, ws[3] = {0.3, 4.0, 9.0};
+    for (int k = 0; k < 3; ++k) {
+      t.v[k].x = xs[k];
+      t.v[k].y = ys[k];
+      t.v[k].w = ws[k];
+      t.v[k].u = 700.0 * k;
+      t.v[k].v = 300.0 * (2 - k);
+    }
+    t.state.textured = true;
+    t.state.method = Method::DivFree;
+    t.state.filter = Filter::Bilinear;
+    sc.tris.push_back(t);
+    big = encode(sc, cfg);
+    for (Tri& b : big) b.top_level = 6;
+  }
+  const std::vector<Tri> clean = divfree_tris(cfg, 9, 6, 50.0);
+  ASSERT_EQ(big.size(), 1u);
+  ASSERT_GE(clean.size(), 4u);
+  rtl::RasterSim sim(name);
+  sim.write_reg(HTX_TEST_REG(FB_SIZE), (uint32_t{kW} << RASTER_FB_SIZE_WIDTH_Pos) |
+                                           (uint32_t{kH} << RASTER_FB_SIZE_HEIGHT_Pos));
+  sim.write_reg(HTX_TEST_REG(FB_STRIDE), kW);
+  sim.write_reg(HTX_TEST_REG(CTRL), RASTER_CTRL_ENABLE_Msk);
+  // Every clock of a stretch of drawing (a span start, its level choice and walk fall inside it),
+  // and a few moments further on.
+  std::vector<unsigned> waits;
+  for (unsigned w = 120; w < 185; ++w) waits.push_back(w);
+  for (unsigned w : {60u, 233u, 389u, 577u}) waits.push_back(w);
+  for (const unsigned wait : waits) {
+    sim.push_words(words_of(big));
+    sim.idle(wait);
+    ASSERT_TRUE(sim.read_reg(HTX_TEST_REG(STATUS)) & RASTER_STATUS_BUSY_Msk) << name << " " << wait;
+    sim.write_reg(HTX_TEST_REG(CTRL), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_ABORT_Msk);
+    sim.idle(16);
+    EXPECT_EQ(sim.read_reg(HTX_TEST_REG(STATUS)) & RASTER_STATUS_BUSY_Msk, 0u) << name << " " << wait;
+    std::vector<rtl::TexRequest> got;
+    sim.write_reg(HTX_TEST_REG(CTRL), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_COUNTERS_RESET_Msk);
+    sim.record_requests(&got);
+    sim.push_words(words_of(clean));
+    sim.wait_idle(10'000'000);
+    sim.record_requests(nullptr);
+    uint64_t steps = 0;
+    expect_same(got, expected(clean, cfg, kW, kH, port_of(name), &steps), name + " after abort " + std::to_string(wait));
+    EXPECT_EQ(sim.read_reg(HTX_TEST_REG(CNT_DIVFREE_STEPS)), steps) << name << " " << wait;
+    EXPECT_EQ(sim.read_reg(HTX_TEST_REG(STATUS)) & RASTER_STATUS_ERR_STATE_Msk, 0u) << name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Configs, TexcoordDivfreeAbort, ::testing::Values("full", "icebreaker"));
+
 }  // namespace
 }  // namespace htx
