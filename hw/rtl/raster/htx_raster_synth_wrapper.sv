@@ -3,7 +3,8 @@
 // chain fed by one pin, every output is registered and folded into one pin, so all paths are timed
 // register to register. Full selects the `full` parameters, else `icebreaker`. Not part of any SoC.
 module htx_raster_synth_wrapper #(
-  parameter bit Full = 1'b0
+  parameter bit         Full    = 1'b0,
+  parameter logic [4:0] Methods = 5'b01111  // the synth-report designs leave DIVFREE out
 ) (
   input  logic clk_i,
   input  logic rst_ni,
@@ -41,8 +42,9 @@ module htx_raster_synth_wrapper #(
     .RecipK(Full ? 10 : 8), .RecipG(2), .SetupSteps(2), .Iterative(!Full), .FifoDepth(64),
     .FbPixels(Full ? 76800 : 19200), .AddrW(AddrW),
     .QBits(Full ? 32 : 24), .UvIntBits(Full ? 16 : 13), .TF(Full ? 16 : 10),
-    .PixelSteps(Full ? 2 : 1), .Methods(5'b01111), .PerspColor(Full), .PixelPipelined(Full),
-    .PixelMulIterative(1'b0), .SubdivDepth(Full ? 128 : 64), .CoordW(CoordW), .GradW(GradW)
+    .PixelSteps(Full ? 2 : 1), .Methods(Methods), .PerspColor(Full), .PixelPipelined(Full),
+    .PixelMulIterative(1'b0), .SubdivDepth(Full ? 128 : 64), .DfFracBits(Full ? 4 : 2), .DfCap(64),
+    .LF(Full ? 8 : 6), .LogIdx(Full ? 10 : 6), .CoordW(CoordW), .GradW(GradW)
   ) u_raster (
     .clk_i, .rst_ni,
     .req_valid_i(in_q[0]),
