@@ -1,5 +1,7 @@
 # One design of the synthesis report (cmake -P; see HtxSynth.cmake). Writes OUT: {"lut4", "dsp",
-# "ebr", "spram", "fmax_mhz", "area_top", "pnr_top", "target_mhz"}; logs and netlists stay in WORK.
+# "ebr", "spram", "fmax_mhz", "placed", "area_top", "pnr_top", "target_mhz"}; a design nextpnr cannot
+# place or route gets "fmax_mhz": null, "placed": false and "pnr_error" (its first error line).
+# Logs and netlists stay in WORK.
 foreach(v NAME AREA_TOP PNR_TOP FREQ AREA_SOURCES PNR_SOURCES WORK YOSYS NEXTPNR OUT)
   if(NOT DEFINED ${v} OR "${${v}}" STREQUAL "")
     message(FATAL_ERROR "HtxSynthRun: ${v} is not set (is yosys / nextpnr-ice40 installed?)")
@@ -45,22 +47,39 @@ execute_process(COMMAND ${NEXTPNR} --up5k --package sg48 --json ${netlist} --fre
     -l ${WORK}/${NAME}.nextpnr.log
   RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "synth-report ${NAME}: nextpnr-ice40 failed; see ${WORK}/${NAME}.nextpnr.log")
+  # A design that does not fit the UP5K (or fails to route) still has its cell counts: record them
+  # with no Fmax and the reason, so the report covers every design.
+  set(first_error "nextpnr-ice40 exited with ${rc}")
+  if(EXISTS ${WORK}/${NAME}.nextpnr.log)
+    file(STRINGS ${WORK}/${NAME}.nextpnr.log errors REGEX "ERROR:")
+    if(errors)
+      list(GET errors 0 first_error)
+    endif()
+  endif()
+  string(REGEX REPLACE "[\"\\]" "'" first_error "${first_error}")
+  string(STRIP "${first_error}" first_error)
+  file(WRITE ${OUT} "{\"lut4\": ${lut4}, \"dsp\": ${dsp}, \"ebr\": ${ebr}, \"spram\": ${spram}, \"fmax_mhz\": null, \"placed\": false, \"pnr_error\": \"${first_error}\", \"area_top\": \"${AREA_TOP}\", \"pnr_top\": \"${PNR_TOP}\", \"target_mhz\": ${FREQ}}")
+  message(STATUS "synth-report ${NAME}: ${lut4} LUT4, ${dsp} DSP, ${ebr} EBR, ${spram} SPRAM, not placed (${first_error}; see ${WORK}/${NAME}.nextpnr.log)")
+  return()
 endif()
 file(READ ${pnr_report} report)
 # The design's one clock: the lowest achieved frequency over the clocks nextpnr reports.
 string(JSON nclk LENGTH "${report}" fmax)
 set(fmax "")
-math(EXPR last "${nclk} - 1")
-foreach(i RANGE ${last})
-  string(JSON clk MEMBER "${report}" fmax ${i})
-  string(JSON achieved GET "${report}" fmax ${clk} achieved)
-  if(fmax STREQUAL "" OR achieved LESS fmax)
-    set(fmax ${achieved})
-  endif()
-endforeach()
-# Two decimals.
-string(REGEX MATCH "^[0-9]+(\\.[0-9]?[0-9]?)?" fmax "${fmax}")
+if(nclk GREATER 0)
+  math(EXPR last "${nclk} - 1")
+  foreach(i RANGE ${last})
+    string(JSON clk MEMBER "${report}" fmax ${i})
+    string(JSON achieved GET "${report}" fmax ${clk} achieved)
+    if(fmax STREQUAL "" OR achieved LESS fmax)
+      set(fmax ${achieved})
+    endif()
+  endforeach()
+  # Two decimals.
+  string(REGEX MATCH "^[0-9]+(\\.[0-9]?[0-9]?)?" fmax "${fmax}")
+else()
+  set(fmax null)  # no register-to-register path was timed
+endif()
 
-file(WRITE ${OUT} "{\"lut4\": ${lut4}, \"dsp\": ${dsp}, \"ebr\": ${ebr}, \"spram\": ${spram}, \"fmax_mhz\": ${fmax}, \"area_top\": \"${AREA_TOP}\", \"pnr_top\": \"${PNR_TOP}\", \"target_mhz\": ${FREQ}}")
+file(WRITE ${OUT} "{\"lut4\": ${lut4}, \"dsp\": ${dsp}, \"ebr\": ${ebr}, \"spram\": ${spram}, \"fmax_mhz\": ${fmax}, \"placed\": true, \"area_top\": \"${AREA_TOP}\", \"pnr_top\": \"${PNR_TOP}\", \"target_mhz\": ${FREQ}}")
 message(STATUS "synth-report ${NAME}: ${lut4} LUT4, ${dsp} DSP, ${ebr} EBR, ${spram} SPRAM, ${fmax} MHz")
