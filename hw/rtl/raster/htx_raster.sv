@@ -62,7 +62,7 @@ module htx_raster #(
   output logic [15:0]       wc_data_o,
   output logic [ZBits-1:0]  wz_data_o,
 
-  // Texture request / response (gpu_join_contract.md §1; mirrors htx_texture's req_* / out_*).
+  // Texture request / response (docs/contracts.md, GPU join §1; mirrors htx_texture's req_* / out_*).
   output logic               tex_req_valid_o,
   input  logic               tex_req_ready_i,
   output logic [CoordW-1:0]  tex_req_u_o,

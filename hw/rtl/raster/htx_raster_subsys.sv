@@ -2,7 +2,7 @@
 // and depth memories, with two bus slave ports (registers at RASTER, memories at the framebuffer
 // and depth windows; docs/contracts.md). Without a texture unit the raster's texture port is looped
 // back through a register slice with texel 0: only untextured fragments are meaningful here
-// (gpu_join_contract.md §1). The looped-back request signals are public to the Verilated model,
+// (docs/contracts.md, GPU join §1). The looped-back request signals are public to the Verilated model,
 // so the tests can record the texel coordinates of every fragment.
 module htx_raster_subsys #(
   parameter int unsigned XyIntBits  = 16,

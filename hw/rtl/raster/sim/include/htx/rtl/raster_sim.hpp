@@ -12,7 +12,7 @@ namespace htx::rtl {
 
 class RasterPort;  // the Verilated top behind a common interface (raster_sim.cpp)
 
-// One fragment on the raster's texture request port (gpu_join_contract.md §1), as the loop-back of
+// One fragment on the raster's texture request port (docs/contracts.md, GPU join §1), as the loop-back of
 // htx_raster_subsys takes it; fields sign-extended from their RTL widths.
 struct TexRequest {
   int64_t u = 0, v = 0;            // level-0 texels incl. the offset, TF fraction bits (CoordW bits)
