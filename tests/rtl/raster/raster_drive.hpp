@@ -55,10 +55,8 @@ struct RtlResult {
   uint64_t busy = 0, fragments = 0, pixels = 0, setup_busy = 0, triangles = 0, divfree_steps = 0;
 };
 
-// Clears to clear_color / clear_depth, draws, records every request, reads both memories (depth
-// masked to z_bits).
-inline RtlResult draw(const std::string& name, const std::vector<Tri>& tris, int w, int h, uint16_t clear_color,
-                      uint32_t clear_depth, unsigned z_bits) {
+// The FIFO stream of the triangles: each one's state word, then its packed record.
+inline std::vector<uint32_t> words_of(const std::vector<Tri>& tris) {
   std::vector<uint32_t> words;
   for (const Tri& t : tris) {
     uint32_t packed[fw::kTriangleWords];
@@ -66,6 +64,14 @@ inline RtlResult draw(const std::string& name, const std::vector<Tri>& tris, int
     words.push_back(pack_state_word(t.state, t.state.method, t.top_level));
     words.insert(words.end(), packed, packed + fw::kTriangleWords);
   }
+  return words;
+}
+
+// Clears to clear_color / clear_depth, draws, records every request, reads both memories (depth
+// masked to z_bits).
+inline RtlResult draw(const std::string& name, const std::vector<Tri>& tris, int w, int h, uint16_t clear_color,
+                      uint32_t clear_depth, unsigned z_bits) {
+  const std::vector<uint32_t> words = words_of(tris);
   rtl::RasterSim sim(name);
   sim.write_reg(HTX_TEST_REG(FB_SIZE), (static_cast<uint32_t>(w) << RASTER_FB_SIZE_WIDTH_Pos) |
                                            (static_cast<uint32_t>(h) << RASTER_FB_SIZE_HEIGHT_Pos));

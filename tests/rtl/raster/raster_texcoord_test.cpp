@@ -32,6 +32,7 @@ using model::i128;
 
 using raster_test::Tri;
 using raster_test::encode;
+using raster_test::words_of;
 
 raster_test::RtlResult run_rtl(const std::string& name, const std::vector<Tri>& tris, int w, int h) {
   return raster_test::draw(name, tris, w, h, 0, 0xFFFFFFFFu, 24);
@@ -308,17 +309,6 @@ INSTANTIATE_TEST_SUITE_P(Configs, TexcoordDivfreeCap, ::testing::Values("full", 
 // the unit goes idle and the new stream equals the model's (nothing of the aborted triangle, e.g. a
 // LOD result, leaks into the next).
 class TexcoordDivfreeAbort : public ::testing::TestWithParam<std::string> {};
-
-std::vector<uint32_t> words_of(const std::vector<Tri>& tris) {
-  std::vector<uint32_t> words;
-  for (const Tri& t : tris) {
-    uint32_t packed[fw::kTriangleWords];
-    fw::pack_triangle(t.rec, packed);
-    words.push_back(pack_state_word(t.state, t.state.method, t.top_level));
-    words.insert(words.end(), packed, packed + fw::kTriangleWords);
-  }
-  return words;
-}
 
 std::vector<Tri> divfree_tris(const ModelConfig& cfg, uint32_t seed, int n, double spread) {
   std::mt19937 rng(seed);
