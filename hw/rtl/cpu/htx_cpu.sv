@@ -93,7 +93,8 @@ module htx_cpu #(
 
   // ------------------------------------------------------------------------------------------
   // Pipeline registers
-  logic        d_valid_q, d_first_q, d_err_q, d_pred_q;
+  logic        d_valid_q, d_err_q, d_pred_q;
+  logic        d_jump_q;   // d_valid_q && d_pred_q && D's first cycle: redirect fetch now
   logic        d_sub_q, d_signed_q, d_a_pc_q, d_a_zero_q, d_b_rs2_q;
   logic [31:0] d_instr_q, d_timm_q;  // instruction, branch/JAL immediate
   logic [31:2] d_pc_q, d_npc_q;
@@ -110,8 +111,10 @@ module htx_cpu #(
   logic                    e_mem_q, e_mul_q, e_div_q;
   htx_cpu_pkg::exc_cause_e e_cause_q;
   logic [1:0]              e_lo_q;     // address bits [1:0] of a load/store
+  logic [4:0]              e_rb_q;     // rs2 field (the multiply fusion check)
+  logic                    e_high_q;   // a MUL-class instruction reads the product's high word
 
-  logic        w_valid_q, w_rd_we_q, w_load_q, w_mem_q, w_store_q, w_nocount_q;
+  logic        w_valid_q, w_rd_we_q, w_load_q, w_store_q, w_nocount_q;
   logic        w_reverse_q;  // w_result_q is a bit-reversed left shift
   logic        w_wr_q;       // w_valid_q && w_rd_we_q
   logic [4:0]  w_rd_q;
@@ -131,8 +134,9 @@ module htx_cpu #(
   logic        rf_we;
   logic [31:0] rf_wdata;
 
-  assign w_ready  = !w_valid_q || !w_mem_q || dbus_rsp_valid_i;
-  assign w_fault  = w_valid_q && w_mem_q && dbus_rsp_valid_i && dbus_rsp_err_i;
+  logic        w_memwait_q;  // W holds a load or store: it waits for the data response
+  assign w_ready  = !w_memwait_q || dbus_rsp_valid_i;
+  assign w_fault  = w_memwait_q && dbus_rsp_valid_i && dbus_rsp_err_i;
   assign rf_we    = w_valid_q && w_ready && !w_fault && w_rd_we_q;
   always_comb begin
     if (w_load_q) begin
@@ -214,27 +218,15 @@ module htx_cpu #(
   assign fl_a = lw_valid_q && (lw_rd_q == d_ra);
   assign fl_b = lw_valid_q && (lw_rd_q == d_rb);
 
-  // The value from E comes last (end of the carry chain), so it enters at the final LUT level:
-  // every other choice is made first (_rest, kept as separate signals so synthesis does not fold
-  // the late value deeper into the mux tree).
-  (* keep *) logic [31:0] d_rs1_rest, d_rs2_rest, d_a_rest, d_b_rest;
-  always_comb begin
-    if (fw_a) begin
-      d_rs1_rest = rf_wdata;
-    end else if (fl_a) begin
-      d_rs1_rest = lw_data_q;
-    end else begin
-      d_rs1_rest = rf_rdata_a;
-    end
-    if (fw_b) begin
-      d_rs2_rest = rf_wdata;
-    end else if (fl_b) begin
-      d_rs2_rest = lw_data_q;
-    end else begin
-      d_rs2_rest = rf_rdata_b;
-    end
-  end
-
+  // The value from E comes last (end of the carry chain), so it enters at the final LUT level, and
+  // W's write data (a load's lanes come straight from the bus) one level before it: every other
+  // choice is made first (_early, kept as separate signals so synthesis does not fold the late
+  // values deeper into the mux tree).
+  (* keep *) logic [31:0] d_rs1_early, d_rs2_early, d_rs2_rest;
+  (* keep *) logic [31:0] d_a_early, d_a_rest, d_b_early, d_b_rest;
+  assign d_rs1_early = fl_a ? lw_data_q : rf_rdata_a;
+  assign d_rs2_early = fl_b ? lw_data_q : rf_rdata_b;
+  assign d_rs2_rest  = fw_b ? rf_wdata : d_rs2_early;
   logic [31:0] d_rs2;
   assign d_rs2    = fe_b ? e_fast_result : d_rs2_rest;
 
@@ -261,14 +253,16 @@ module htx_cpu #(
   logic        signed_d, fe_a_op, fe_b_op;
   always_comb begin
     if (d_a_pc_q) begin
-      d_a_rest = {d_pc_q, 2'b00};
+      d_a_early = {d_pc_q, 2'b00};
     end else if (d_a_zero_q) begin
-      d_a_rest = 32'b0;
+      d_a_early = 32'b0;
     end else begin
-      d_a_rest = d_rs1_rest;
+      d_a_early = d_rs1_early;
     end
   end
-  assign d_b_rest = d_b_rs2_q ? d_rs2_rest : d_dec.imm;
+  assign d_a_rest  = (fw_a && !d_a_pc_q && !d_a_zero_q) ? rf_wdata : d_a_early;
+  assign d_b_early = d_b_rs2_q ? d_rs2_early : d_dec.imm;
+  assign d_b_rest  = (fw_b && d_b_rs2_q) ? rf_wdata : d_b_early;
   assign fe_a_op  = fe_a && !d_a_pc_q && !d_a_zero_q;
   assign fe_b_op  = fe_b && d_b_rs2_q;
   assign d_a      = fe_a_op ? e_fast_result : d_a_rest;
@@ -343,19 +337,36 @@ module htx_cpu #(
     d_exec.alu_op  = d_dec.alu_op;
   end
 
+  // Multiply fusion: a MUL-class instruction that enters E right behind another one with the same
+  // source registers takes the other half of the product the unit already holds instead of
+  // multiplying again (MUL and MULH, the RISC-V spec's recommended pair, in either order). The
+  // unit computes MUL's high half as signed x signed, so a MUL pairs with MULH and with anything
+  // before it; otherwise the signedness must match. The first one's destination cannot be a
+  // source of the second here: that is a late-result hazard, which puts a bubble in E first.
+  logic fuse_d, fuse_mode;
+  assign fuse_mode = (d_dec.funct3[1:0] == 2'b00) || (d_dec.funct3[1:0] == e_q.funct3[1:0]) ||
+                     ((e_q.funct3[1:0] == 2'b00) && (d_dec.funct3[1:0] == 2'b01));
+  assign fuse_d    = d_dec.mul && e_valid_q && e_q.mul && !e_xtrap_q && fuse_mode &&
+                     (e_q.uimm == d_ra) && (e_rb_q == d_rb);
+
   logic d_live, d_go;
   assign d_live     = d_valid_q && !redirect_q;
   assign d_go       = d_live && e_accept && !d_hazard;
   assign d_free     = !d_live || d_go;
-  assign d_redirect = d_live && d_first_q && d_pred_q;
+  assign d_redirect = d_jump_q && !redirect_q;
 
   // The same hand-over decisions assuming no registered redirect (_nr): where a redirect makes
   // the choice irrelevant (everything in D and E is squashed), these drive the wide enables and
   // the fetch hand-shake, which keeps redirect_q off the front of those paths.
-  logic e_done_nr, e_accept_nr, d_free_nr;
-  assign e_done_nr   = e_valid_q && w_ready && !w_fault && !(e_q.csr && (w_valid_q || csr_counting)) &&
-                       !e_wait;
-  assign e_accept_nr = w_ready && (!e_valid_q || e_done_nr);
+  // e_accept_nr = w_ready && (!e_valid_q || (!w_fault && !csr_block && !e_wait)), arranged in two
+  // LUT levels after the bus hand-shakes: W's part (acc_w, from one registered flag and the
+  // response) and E's part (acc_e, from the request's ready), each kept as a separate signal.
+  logic e_accept_nr, d_free_nr, e_block;
+  (* keep *) logic acc_w, acc_e;
+  assign e_block     = (e_q.csr && (w_valid_q || csr_counting)) || unit_wait_q;
+  assign acc_w       = !w_memwait_q || (dbus_rsp_valid_i && (!e_valid_q || !dbus_rsp_err_i));
+  assign acc_e       = !e_valid_q || (!e_block && (!e_mem || dbus_req_ready_i));
+  assign e_accept_nr = acc_w && acc_e;
   assign d_free_nr   = !d_valid_q || (e_accept_nr && !(e_valid_q && hz_q));
   always_comb begin
     if (e_accept_nr) begin
@@ -368,7 +379,7 @@ module htx_cpu #(
       hz_d = hz_q;
     end
   end
-  assign f_take      = d_free_nr && !redirect_q && !(d_valid_q && d_first_q && d_pred_q);
+  assign f_take      = d_free_nr && !redirect_q && !d_jump_q;
 
 
   // ------------------------------------------------------------------------------------------
@@ -408,7 +419,8 @@ module htx_cpu #(
   // ------------------------------------------------------------------------------------------
   // Execute: memory, multiply, divide, CSR
   logic        e_can_go, e_mem, e_mul, e_div, e_wait, e_done, e_commit;
-  logic        mul_done, mul_busy, div_done, div_busy, csr_counting;
+  logic        mul_busy, div_busy, csr_counting;
+  logic        mul_done_next, div_done_next;
   // A trap's CSR updates are applied one cycle after it is taken (together with the registered
   // redirect); nothing can read those CSRs in between, because the instruction then in E is squashed.
   logic                    trap_q;
@@ -432,11 +444,12 @@ module htx_cpu #(
     .rst_ni,
     .start_i  (e_can_go && e_mul && !mul_busy),
     .op_i     (e_q.funct3[1:0]),
+    .high_i   (e_high_q),
     .a_i      (e_a_q[31:0]),
     .b_i      (e_rs2_q),
     .sum_i    (alu_sum),     // a + b: the operands of a MUL-class instruction are rs1 and rs2
     .busy_o   (mul_busy),
-    .done_o   (mul_done),
+    .done_next_o (mul_done_next),
     .result_o (mul_result)
   );
 
@@ -449,11 +462,24 @@ module htx_cpu #(
     .a_i      (e_a_q[31:0]),
     .b_i      (e_rs2_q),
     .busy_o   (div_busy),
-    .done_o   (div_done),
+    .done_next_o (div_done_next),
     .result_o (div_result)
   );
 
-  assign e_wait      = (e_mem && !dbus_req_ready_i) || (e_mul && !mul_done) || (e_div && !div_done);
+  // E's multiply or divide is still working, kept in a flip-flop computed a cycle early from what
+  // E will hold and the units' done_next_o, so the stall chain starts from one flip-flop.
+  logic unit_wait_q, unit_wait_d, mul_next, div_next;
+  assign mul_next    = e_accept_nr ? (d_dec.mul && !d_xtrap && !fuse_d) : e_mul_q;
+  assign div_next    = e_accept_nr ? (d_dec.div && !d_xtrap) : e_div_q;
+  assign unit_wait_d = (mul_next && !mul_done_next) || (div_next && !div_done_next);
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      unit_wait_q <= 1'b0;
+    end else begin
+      unit_wait_q <= unit_wait_d;
+    end
+  end
+  assign e_wait      = (e_mem && !dbus_req_ready_i) || unit_wait_q;
   assign e_done      = e_can_go && !e_wait;
 
   // Outcomes of E for both branch outcomes (see br_cond): hand-over to W, trap (including an
@@ -500,17 +526,18 @@ module htx_cpu #(
     .mepc_o    (mepc)
   );
 
-  // The adder/logic result, SLT (end of the carry chain) and the shifter come last, so they enter
-  // at the final two LUT levels; the other results are chosen first (kept as a separate signal so
-  // synthesis does not fold the late values deeper into the mux tree).
-  (* keep *) logic [31:0] e_result_rest;
-  logic [31:0] e_result_late, e_result;
+  // The shifter (eight LUT levels from E's registers) enters at the last LUT level, the adder/logic
+  // result and SLT (end of the carry chain) one level before it; the other results are chosen
+  // first (kept as separate signals so synthesis does not fold the late values deeper into the
+  // mux tree).
+  (* keep *) logic [31:0] e_result_rest, e_result_early;
+  logic [31:0] e_result;
   // An AND-OR of the registered one-hot kinds (csr_rdata is already 0 unless a CSR instruction).
-  assign e_result_rest = ({32{e_q.jal || e_q.jalr}} & {e_npc_q, 2'b00}) | csr_rdata |
-                         ({32{e_q.mul}} & mul_result) | ({32{e_q.div}} & div_result);
-  assign e_result_late = e_slt_q   ? {31'b0, alu_lt} :
-                         e_shift_q ? alu_late : e_result_rest;
-  assign e_result      = e_fast_q ? e_fast_result : e_result_late;  // fast: includes the address
+  assign e_result_rest  = ({32{e_q.jal || e_q.jalr}} & {e_npc_q, 2'b00}) | csr_rdata |
+                          ({32{e_q.mul}} & mul_result) | ({32{e_q.div}} & div_result);
+  assign e_result_early = e_fast_q ? e_fast_result :               // fast: includes the address
+                          e_slt_q  ? {31'b0, alu_lt} : e_result_rest;
+  assign e_result       = e_shift_q ? alu_late : e_result_early;
 
   logic [3:0]  lsu_be;
   logic [31:0] lsu_wdata;
@@ -582,15 +609,19 @@ module htx_cpu #(
       w_valid_q  <= 1'b0;
       w_wr_q     <= 1'b0;
       lw_valid_q <= 1'b0;
+      d_jump_q   <= 1'b0;
+      w_memwait_q <= 1'b0;
     end else begin
       if (d_free) begin
         d_valid_q <= f_take && f_valid;
       end
-      d_first_q <= f_take;
+      // (When D takes an instruction it is free, so it holds exactly what fetch hands over.)
+      d_jump_q  <= f_take && f_valid && f_predict;
       e_valid_q <= e_accept ? d_go : (e_valid_q && !redirect_q);
       if (w_ready) begin
         w_valid_q <= e_commit;
         w_wr_q    <= e_commit && e_q.rd_we;
+        w_memwait_q <= e_commit && (e_q.load || e_q.store);
       end
       if (rf_we) begin
         lw_valid_q <= 1'b1;
@@ -629,8 +660,10 @@ module htx_cpu #(
       e_pred_q  <= d_pred_q;
       e_xtrap_q <= d_xtrap;
       e_mem_q   <= (d_dec.load || d_dec.store) && !d_xtrap;
-      e_mul_q   <= d_dec.mul && !d_xtrap;
-      e_div_q   <= d_dec.div && !d_xtrap;
+      e_mul_q   <= mul_next;  // a fused one needs no unit cycles
+      e_rb_q    <= d_rb;
+      e_high_q  <= (d_dec.funct3[1:0] != 2'b00);
+      e_div_q   <= div_next;
       e_cause_q <= d_cause;
       e_late_q  <= late_d;
       e_fwd_q   <= d_dec.rd_we && !late_d;
@@ -648,7 +681,6 @@ module htx_cpu #(
       w_rd_we_q   <= e_q.rd_we;
       w_load_q    <= e_q.load;
       w_store_q   <= e_q.store;
-      w_mem_q     <= e_q.load || e_q.store;
       w_funct3_q  <= e_q.funct3;
       w_result_q  <= e_result;
       w_reverse_q <= e_left_q;

@@ -1,6 +1,7 @@
 // Iterative divider for DIV/DIVU/REM/REMU: one restoring step per cycle on the magnitudes, 37
-// cycles from start_i to done_o. Division by zero gives quotient all ones and remainder = dividend;
-// -2^31 / -1 gives quotient -2^31 and remainder 0 (the RISC-V results).
+// cycles from start_i to the result (done_next_o is high in the cycle before it). Division by zero
+// gives quotient all ones and remainder = dividend; -2^31 / -1 gives quotient -2^31 and remainder 0
+// (the RISC-V results).
 //
 // One 33-bit adder does all the arithmetic: sum = {partial remainder, next dividend bit} +
 // {1, addend_q} + carry_q. The two sign negations go through it as well, each in a cycle of its own
@@ -10,7 +11,9 @@
 // carry-in of 1 otherwise). Compared with separate negators this saves about 100 LUT4 for two
 // cycles per division.
 //
-// a_i, b_i and op_i must stay unchanged from start_i until done_o (execute holds the instruction).
+// a_i, b_i and op_i must stay unchanged from start_i until the result (execute holds the
+// instruction). Execute registers done_next_o into its own stall flip-flop, so the unit keeps no
+// done flag of its own.
 module htx_cpu_div (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -20,7 +23,7 @@ module htx_cpu_div (
   input  logic [31:0] a_i,
   input  logic [31:0] b_i,
   output logic        busy_o,   // not idle: ignores start_i
-  output logic        done_o,
+  output logic        done_next_o,  // result_o is the result from the next cycle on
   output logic [31:0] result_o
 );
 
@@ -51,19 +54,13 @@ module htx_cpu_div (
   assign shifted = {rem_q[30:0], quo_q[31]};
   assign sum     = {rem_q[31], shifted} + {1'b1, addend_q} + {32'b0, carry_q};
 
-  // done_o comes straight from a flip-flop: it feeds execute's stall logic.
-  logic done_q;
-
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       state_q <= DivIdle;
       count_q <= 5'd0;
-      done_q  <= 1'b0;
     end else if (kill_i) begin
       state_q <= DivIdle;
-      done_q  <= 1'b0;
     end else begin
-      done_q <= (state_q == DivFix);
       unique case (state_q)
         DivIdle: if (start_i) begin
           state_q <= DivAbsA;
@@ -123,7 +120,7 @@ module htx_cpu_div (
   end
 
   assign result_o = quo_q;
-  assign done_o   = done_q;  // state_q == DivDone
+  assign done_next_o = !kill_i && (state_q == DivFix);
   assign busy_o   = (state_q != DivIdle);
 
 endmodule

@@ -8,24 +8,28 @@
 //   cycle 2:           mid = lh + hl, then the low word ll + mid[15:0] << 16 and the high word
 //                      (hh - corr) + mid[32:16] + the low word's carry are registered (two carry
 //                      chains in series, starting from the DSP output registers);
-//   cycle 3 (done_o):  the selected word comes straight from a register.
+//   cycle 3:           the selected word comes straight from a register (done_next_o was high in
+//                      cycle 2; execute registers it into its own stall flip-flop).
 module htx_cpu_mul (
   input  logic        clk_i,
   input  logic        rst_ni,
   input  logic        start_i,
   input  logic [1:0]  op_i,     // funct3[1:0]: 00 MUL, 01 MULH, 10 MULHSU, 11 MULHU
+  input  logic        high_i,   // the instruction in execute reads the high word (op_i != 00)
   input  logic [31:0] a_i,
   input  logic [31:0] b_i,
   input  logic [31:0] sum_i,    // a_i + b_i (execute's adder)
   output logic        busy_o,   // an operation is in flight: start_i is ignored
-  output logic        done_o,
+  output logic        done_next_o,  // result_o is the result from the next cycle on
   output logic [31:0] result_o
 );
 
   logic        a_corr, b_corr;  // a < 0 as a signed operand (subtract b), likewise b
   logic [31:0] corr_d;
-  assign a_corr = ((op_i == 2'b01) || (op_i == 2'b10)) && a_i[31];
-  assign b_corr = (op_i == 2'b01) && b_i[31];
+  // MUL (00) takes MULH's correction: its low word does not depend on it, and its high word is
+  // then the one a fused MULH after it reads (see htx_cpu).
+  assign a_corr = (op_i != 2'b11) && a_i[31];
+  assign b_corr = !op_i[1] && b_i[31];
   always_comb begin
     unique case ({a_corr, b_corr})
       2'b11:   corr_d = sum_i;
@@ -42,7 +46,6 @@ module htx_cpu_mul (
   assign mid      = {1'b0, p_lh_q} + {1'b0, p_hl_q};
   assign lo_upper = {1'b0, p_ll_q[31:16]} + {1'b0, mid[15:0]};
   assign hs       = p_hh_q - corr_q;
-  logic        high_q;
   logic        step1_q, step2_q;
 
   always_ff @(posedge clk_i) begin
@@ -52,7 +55,6 @@ module htx_cpu_mul (
       p_hl_q <= a_i[31:16] * b_i[15:0];
       p_hh_q <= a_i[31:16] * b_i[31:16];
       corr_q <= corr_d;
-      high_q <= (op_i != 2'b00);
     end
     if (step1_q) begin
       lo_q <= {lo_upper[15:0], p_ll_q[15:0]};
@@ -71,7 +73,9 @@ module htx_cpu_mul (
   end
 
   assign busy_o   = step1_q || step2_q;
-  assign done_o   = step2_q;
-  assign result_o = high_q ? hi_q : lo_q;
+  assign done_next_o = step1_q;
+  // Selected by the instruction now in execute (a fused instruction reads the half its
+  // predecessor did not).
+  assign result_o = high_i ? hi_q : lo_q;
 
 endmodule

@@ -10,6 +10,7 @@ set(HTX_ISA_TESTS
   load
   store
   mul
+  mulfuse
   div
   csr
   counters
