@@ -469,8 +469,10 @@ module htx_cpu #(
   // E's multiply or divide is still working, kept in a flip-flop computed a cycle early from what
   // E will hold and the units' done_next_o, so the stall chain starts from one flip-flop.
   logic unit_wait_q, unit_wait_d, mul_next, div_next;
-  assign mul_next    = e_accept_nr ? (d_dec.mul && !d_xtrap && !fuse_d) : e_mul_q;
-  assign div_next    = e_accept_nr ? (d_dec.div && !d_xtrap) : e_div_q;
+  // (A decoded MUL or DIV is legal and traps before E only on an instruction access fault, so
+  // d_err_q stands for d_xtrap here and keeps the misalignment checks off this path.)
+  assign mul_next    = e_accept_nr ? (d_dec.mul && !d_err_q && !fuse_d) : e_mul_q;
+  assign div_next    = e_accept_nr ? (d_dec.div && !d_err_q) : e_div_q;
   assign unit_wait_d = (mul_next && !mul_done_next) || (div_next && !div_done_next);
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin

@@ -32,25 +32,38 @@ module htx_cpu_lsu (
     endcase
   end
 
-  // The addressed byte or half-word moved to bits [15:0].
-  logic [15:0] shifted;
+  // Response, arranged for depth (the bus word arrives late in W and feeds decode's forwarding):
+  // the fill bit (sign or zero) is chosen first from the four candidate sign bits, then every
+  // result bit is one LUT level after it. Word loads have offset 0 and half-word loads offset 0 or
+  // 2 (decode traps the others), so bits [7:0] are always the lane at the offset.
+  logic       rsp_word, rsp_byte;
+  (* keep *) logic rsp_fill;
+  assign rsp_word = rsp_funct3_i[1];
+  assign rsp_byte = (rsp_funct3_i[1:0] == 2'b00);
   always_comb begin
-    unique case (rsp_offset_i)
-      2'b00:   shifted = rsp_rdata_i[15:0];
-      2'b01:   shifted = {8'b0, rsp_rdata_i[15:8]};
-      2'b10:   shifted = rsp_rdata_i[31:16];
-      default: shifted = {8'b0, rsp_rdata_i[31:24]};
-    endcase
+    if (rsp_byte) begin
+      unique case (rsp_offset_i)
+        2'b00:   rsp_fill = rsp_rdata_i[7];
+        2'b01:   rsp_fill = rsp_rdata_i[15];
+        2'b10:   rsp_fill = rsp_rdata_i[23];
+        default: rsp_fill = rsp_rdata_i[31];
+      endcase
+    end else begin
+      rsp_fill = rsp_offset_i[1] ? rsp_rdata_i[31] : rsp_rdata_i[15];
+    end
+    rsp_fill = rsp_fill && !rsp_funct3_i[2];
   end
 
   always_comb begin
-    unique case (rsp_funct3_i)
-      3'b000:  rsp_value_o = {{24{shifted[7]}}, shifted[7:0]};
-      3'b001:  rsp_value_o = {{16{shifted[15]}}, shifted[15:0]};
-      3'b100:  rsp_value_o = {24'b0, shifted[7:0]};
-      3'b101:  rsp_value_o = {16'b0, shifted[15:0]};
-      default: rsp_value_o = rsp_rdata_i;
+    unique case (rsp_offset_i)
+      2'b00:   rsp_value_o[7:0] = rsp_rdata_i[7:0];
+      2'b01:   rsp_value_o[7:0] = rsp_rdata_i[15:8];
+      2'b10:   rsp_value_o[7:0] = rsp_rdata_i[23:16];
+      default: rsp_value_o[7:0] = rsp_rdata_i[31:24];
     endcase
+    rsp_value_o[15:8]  = rsp_byte ? {8{rsp_fill}} :
+                         rsp_offset_i[1] ? rsp_rdata_i[31:24] : rsp_rdata_i[15:8];
+    rsp_value_o[31:16] = rsp_word ? rsp_rdata_i[31:16] : {16{rsp_fill}};
   end
 
 endmodule
