@@ -1,0 +1,20 @@
+# Fails when a committed copy of a generated file (COMMITTED) differs from the generated file
+# (GENERATED, same order; both |-separated). Used by lint.regs.committed_copies_current.
+string(REPLACE "|" ";" committed "${COMMITTED}")
+string(REPLACE "|" ";" generated "${GENERATED}")
+set(stale)
+foreach(c g IN ZIP_LISTS committed generated)
+  if(NOT EXISTS ${c})
+    list(APPEND stale "${c} (missing)")
+    continue()
+  endif()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${c} ${g} RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    list(APPEND stale ${c})
+  endif()
+endforeach()
+if(stale)
+  string(REPLACE ";" "\n  " stale "${stale}")
+  message(FATAL_ERROR "committed copies differ from the generator's output:\n  ${stale}\n"
+                      "run `cmake --build BUILD --target htx_regs_update` and commit them")
+endif()
