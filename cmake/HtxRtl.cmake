@@ -10,10 +10,18 @@
 #   flatten, check) instead of running synth_ice40 on it. For tops that are synthesised whole inside
 #   a larger linted top, and for `full` configurations whose synthesis takes minutes; those are
 #   synthesised by the `synth-report` target instead (docs/architecture.md, "Lint").
+# htx_ice40_equiv(NAME <module> SOURCES <sv files...>)
+#   Registers `lint.ice40_equiv.<module>`: Yosys proves the module's HTX_ICE40 netlist (iCE40 cells
+#   from Yosys's own simulation models) equivalent to its behavioural code (equiv_make,
+#   equiv_simple, equiv_induct, with the registers' reset made synchronous).
 # htx_verilate(<lib target> TOP <top> [ARGS <verilator args...>] [TRACE])
 #   Builds a static library holding the Verilated model of a top registered with htx_rtl_top.
 
 set(HTX_RTL_WAIVERS ${CMAKE_SOURCE_DIR}/hw/rtl/lint.vlt)
+# Yosys reads the RTL for the iCE40 with HTX_ICE40 defined: a few modules then instantiate iCE40
+# cells where that saves area Yosys does not find itself (docs/architecture.md, "Vendor cells");
+# Verilator and every other flow see their behavioural code, which htx_ice40_equiv proves equal.
+set(HTX_YOSYS_DEFINES -DHTX_ICE40)
 find_program(HTX_VERILATOR_BIN verilator)
 find_program(HTX_YOSYS_BIN yosys)
 
@@ -50,16 +58,42 @@ function(htx_rtl_top)
   if(HTX_YOSYS_BIN)
     list(JOIN all " " files)
     if(A_YOSYS_ELABORATE)
-      set(flow "hierarchy -check -top ${A_NAME}; proc; flatten; opt_clean; check")
+      # (iCE40 cells of HTX_ICE40 code as black boxes)
+      set(flow "read_verilog -lib +/ice40/cells_sim.v; hierarchy -check -top ${A_NAME}; proc; flatten; opt_clean; check")
     else()
       set(flow "synth_ice40 -dsp -top ${A_NAME} ${A_YOSYS_ARGS}")
     endif()
     add_test(NAME lint.yosys.${A_NAME}
       COMMAND ${HTX_YOSYS_BIN} -q -l ${CMAKE_BINARY_DIR}/lint/${A_NAME}.yosys.log
-        -p "read_verilog -sv ${files}; ${flow}")
+        -p "read_verilog -sv ${HTX_YOSYS_DEFINES} ${files}; ${flow}")
     set_tests_properties(lint.yosys.${A_NAME} PROPERTIES LABELS lint)
   endif()
   file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/lint)
+endfunction()
+
+function(htx_ice40_equiv)
+  cmake_parse_arguments(A "" "NAME" "SOURCES" ${ARGN})
+  if(NOT HTX_YOSYS_BIN)
+    return()
+  endif()
+  set(srcs)
+  foreach(s IN LISTS A_SOURCES)
+    get_filename_component(abs ${s} ABSOLUTE)
+    list(APPEND srcs ${abs})
+  endforeach()
+  list(JOIN srcs " " files)
+  set(script ${CMAKE_BINARY_DIR}/lint/${A_NAME}.ice40_equiv.ys)
+  file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/lint)
+  file(WRITE ${script}
+    "read_verilog -sv ${files}\nprep -top ${A_NAME}\nrename ${A_NAME} gold\ndesign -stash gold\n"
+    "read_verilog -sv ${HTX_YOSYS_DEFINES} ${files}\nread_verilog -defer +/ice40/cells_sim.v\n"
+    "hierarchy -top ${A_NAME}\nflatten\nprep -top ${A_NAME}\nrename ${A_NAME} gate\ndesign -stash gate\n"
+    "design -copy-from gold -as gold gold\ndesign -copy-from gate -as gate gate\n"
+    "equiv_make gold gate equiv\nhierarchy -top equiv\nasync2sync\nequiv_simple -seq 2\n"
+    "equiv_induct\nequiv_status -assert\n")
+  add_test(NAME lint.ice40_equiv.${A_NAME}
+    COMMAND ${HTX_YOSYS_BIN} -q -l ${CMAKE_BINARY_DIR}/lint/${A_NAME}.ice40_equiv.log -s ${script})
+  set_tests_properties(lint.ice40_equiv.${A_NAME} PROPERTIES LABELS lint)
 endfunction()
 
 function(htx_verilate lib)

@@ -14,7 +14,8 @@ string(REPLACE "|" " " area_files "${AREA_SOURCES}")
 string(REPLACE "|" " " pnr_files "${PNR_SOURCES}")
 
 function(run_yosys top files stat_json netlist log)
-  set(script "read_verilog -sv ${files}; synth_ice40 -dsp -top ${top}")
+  # HTX_ICE40: the iCE40 cell instances of a few modules (see HtxRtl.cmake).
+  set(script "read_verilog -sv -DHTX_ICE40 ${files}; synth_ice40 -dsp -top ${top}")
   if(netlist)
     string(APPEND script " -json ${netlist}")
   endif()

@@ -34,8 +34,7 @@ module htx_cpu_csr (
   // Public so simulation harnesses can report the counts without a port.
   logic [63:0] cycle_q   /* verilator public_flat_rd */;
   logic [63:0] instret_q /* verilator public_flat_rd */;
-  logic [63:0] cycle_inc, instret_inc;
-  logic        retire_q;
+  logic        retire_q, instret_carry, unused_cycle_carry;
 
   // The read value as an AND-OR of the selected registers, zero unless read_i: execute ORs it with
   // its other multi-cycle results instead of multiplexing once more.
@@ -71,39 +70,62 @@ module htx_cpu_csr (
   assign wr_instret  = we_i && (sel_i == htx_cpu_pkg::CsrInstret);
   assign wr_instreth = we_i && (sel_i == htx_cpu_pkg::CsrInstreth);
 
-  // A written counter takes the written value instead of counting in that cycle, so the next
-  // instruction reads what was written. A retirement is added one cycle after it is reported (the
-  // 64-bit carry chain then starts at a flip-flop). The pipeline does not count the instruction
-  // that writes minstret(h), and runs a CSR instruction only when write-back is empty and
-  // counting_o is low, so instret_q is exact when it is read and no retirement coincides with a
-  // write.
-  assign cycle_inc   = cycle_q + 64'd1;
-  assign instret_inc = instret_q + {63'b0, retire_q};
-  assign counting_o  = retire_q;
+  // A counter write is registered and lands one cycle after the CSR instruction executes (so the
+  // late write enable never enters a carry chain); the written half takes the value instead of
+  // counting in that cycle and the other half counts on. The next CSR instruction can execute two
+  // cycles after the writer at the earliest (it waits for write-back to empty and for counting_o),
+  // so it reads what was written. A retirement is added one cycle after it is reported, and a
+  // carry into the high half one cycle after the low half wraps (htx_cpu_counter), so each 32-bit
+  // carry chain starts at a flip-flop. The pipeline does not count the instruction that writes
+  // minstret(h), and runs a CSR instruction only when write-back is empty and counting_o is low, so
+  // instret_q is exact when it is read and no retirement coincides with a write. A read of cycleh
+  // in the one cycle after the low half wraps sees the old high half; the usual hi, lo, hi read
+  // sequence still returns a consistent value.
+  logic        wr_cycle_q, wr_cycleh_q, wr_instret_q, wr_instreth_q;
+  logic [31:0] wdata_q;
+  assign counting_o = retire_q || instret_carry || wr_instret_q || wr_instreth_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      cycle_q    <= 64'b0;
-      instret_q  <= 64'b0;
-      retire_q   <= 1'b0;
+      retire_q      <= 1'b0;
+      wr_cycle_q    <= 1'b0;
+      wr_cycleh_q   <= 1'b0;
+      wr_instret_q  <= 1'b0;
+      wr_instreth_q <= 1'b0;
     end else begin
-      retire_q   <= retire_i;
-      if (wr_cycle) begin
-        cycle_q <= {cycle_q[63:32], wdata};
-      end else if (wr_cycleh) begin
-        cycle_q <= {wdata, cycle_q[31:0]};
-      end else begin
-        cycle_q <= cycle_inc;
-      end
-      if (wr_instret) begin
-        instret_q <= {instret_q[63:32], wdata};
-      end else if (wr_instreth) begin
-        instret_q <= {wdata, instret_q[31:0]};
-      end else begin
-        instret_q <= instret_inc;
-      end
+      retire_q      <= retire_i;
+      wr_cycle_q    <= wr_cycle;
+      wr_cycleh_q   <= wr_cycleh;
+      wr_instret_q  <= wr_instret;
+      wr_instreth_q <= wr_instreth;
     end
   end
+
+  always_ff @(posedge clk_i) begin
+    wdata_q <= wdata;
+  end
+
+  htx_cpu_counter u_cycle (
+    .clk_i,
+    .rst_ni,
+    .inc_i           (1'b1),
+    .wr_lo_i         (wr_cycle_q),
+    .wr_hi_i         (wr_cycleh_q),
+    .wdata_i         (wdata_q),
+    .count_o         (cycle_q),
+    .carry_pending_o (unused_cycle_carry)
+  );
+
+  htx_cpu_counter u_instret (
+    .clk_i,
+    .rst_ni,
+    .inc_i           (retire_q),
+    .wr_lo_i         (wr_instret_q),
+    .wr_hi_i         (wr_instreth_q),
+    .wdata_i         (wdata_q),
+    .count_o         (instret_q),
+    .carry_pending_o (instret_carry)
+  );
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
