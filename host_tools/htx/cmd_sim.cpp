@@ -37,6 +37,7 @@ struct SimArgs {
   std::string trace;
   std::optional<uint32_t> stall_seed;
   bool json = false;
+  bool no_gpu_gate = false;
   std::string frame;                // PNG of the colour window at exit
   std::string frame_size = "160x120";
 };
@@ -79,6 +80,7 @@ int run_sim(const SimArgs& a) {
   opt.max_cycles = a.max_cycles;
   opt.stall_seed = a.stall_seed;
   opt.trace_path = a.trace;
+  opt.gpu_clock_gate = !a.no_gpu_gate;
 
   std::unique_ptr<sim::SerialEndpoint> uart;
   if (a.uart == "pty") {
@@ -143,6 +145,8 @@ void register_sim(CLI::App& app) {
                   "Write the words from begin_signature to end_signature, 8 hex digits a line");
   cmd->add_option("--trace", args->trace, "Write an FST waveform to this file");
   cmd->add_option("--stall-seed", args->stall_seed, "Insert random wait states on every bus slave, seeded");
+  cmd->add_flag("--no-gpu-gate", args->no_gpu_gate,
+                "Clock the GPU on every cycle, even while it is idle (same results, several times slower)");
   cmd->add_option("--frame", args->frame,
                   "At exit, write the framebuffer's colour window (--frame-size pixels) as a PNG");
   cmd->add_option("--frame-size", args->frame_size,

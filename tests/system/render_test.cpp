@@ -246,4 +246,33 @@ TEST(SystemRender, FirmwareFrameOnTheSocEqualsTheCosimFrame) {
               json.dump().c_str());
 }
 
+// The SoC model stops the GPU's clock while the GPU is idle (htx_soc_fabric, Sim only), which must
+// change nothing: the same run with the clock free-running (--no-gpu-gate) ends in the same cycle
+// with the same instruction count, the same frame, and the same firmware report, whose figures
+// include the GPU's own counters read over the bus.
+TEST(SystemRender, GatedGpuClockGivesTheSameRunAsAFreeOne) {
+  const std::vector<std::string> base = {HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/render_cube.elf",
+                                         "--max-cycles", "50000000", "--json"};
+  std::vector<std::string> free_args = base;
+  free_args.push_back("--no-gpu-gate");
+  const auto gated = htx::test::run_program(base, 120s);
+  const auto free_run = htx::test::run_program(free_args, 120s);
+  ASSERT_FALSE(gated.timed_out);
+  ASSERT_FALSE(free_run.timed_out);
+  ASSERT_EQ(gated.status, 0) << gated.out << gated.err;
+  ASSERT_EQ(free_run.status, 0) << free_run.out << free_run.err;
+  const auto g = nlohmann::json::parse(gated.out.substr(gated.out.rfind('{')));
+  const auto f = nlohmann::json::parse(free_run.out.substr(free_run.out.rfind('{')));
+  for (const char* key : {"reason", "exit_code", "cycles", "instret", "frame_crc32"})
+    EXPECT_EQ(g.at(key), f.at(key)) << key;
+  const auto gr = parse_report(gated.out);
+  const auto fr = parse_report(free_run.out);
+  ASSERT_TRUE(gr.count("cube")) << gated.out;
+  ASSERT_TRUE(fr.count("cube")) << free_run.out;
+  EXPECT_EQ(gr.at("cube").fields, fr.at("cube").fields);
+  std::printf("gated GPU clock: %.0f cycles/s; free-running: %.0f cycles/s (%s cycles)\n",
+              g.at("cycles_per_second").get<double>(), f.at("cycles_per_second").get<double>(),
+              g.at("cycles").dump().c_str());
+}
+
 }  // namespace

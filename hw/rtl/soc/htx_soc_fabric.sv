@@ -286,8 +286,46 @@ module htx_soc_fabric #(
     .s_rsp_valid_i(g_rsp_valid), .s_rsp_rdata_i(g_rsp_rdata), .s_rsp_err_i(g_rsp_err)
   );
 
+  // Simulation speed (Sim only): the GPU is most of the SoC model, and Verilator evaluates its
+  // logic on every clock it gets, so its clock runs only while it has work: a request on either of
+  // its ports, the raster or the texture unit busy, or fewer than GateHold cycles after any of
+  // these (responses, pipelines draining). The enable changes at the falling edge, so the gated
+  // clock has no glitch. Every GPU flip-flop would hold its value on the cycles left out, so the
+  // results are those of the free-running clock; the harness can run it free (`htx sim
+  // --no-gpu-gate`) and the system tests compare the two (docs/soc.md, "Simulation speed").
+  // Synthesis (Sim = 0) always gets clk_i.
+  logic gpu_clk;
+  if (Sim) begin : g_sim_gpu_gate
+    localparam int unsigned GateHold = 127;
+    // Written by the harness: 1 = stop the GPU's clock while it is idle, 0 = let it run free.
+    logic       gate_allow /* verilator public_flat_rw */;
+    logic       active, en_q;
+    logic [6:0] hold_q;
+    assign active = q_valid[3] || g_valid || u_gpu.u_subsys.u_raster.busy ||
+                    u_gpu.u_subsys.tex_busy;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        hold_q <= 7'(GateHold);
+      end else if (active) begin
+        hold_q <= 7'(GateHold);
+      end else if (hold_q != 7'd0) begin
+        hold_q <= hold_q - 7'd1;
+      end
+    end
+    always_ff @(negedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        en_q <= 1'b1;
+      end else begin
+        en_q <= !gate_allow || active || (hold_q != 7'd0);
+      end
+    end
+    assign gpu_clk = clk_i & en_q;
+  end else begin : g_gpu_clk
+    assign gpu_clk = clk_i;
+  end
+
   htx_gpu_icebreaker #(.FbPixels(FbPixels)) u_gpu (
-    .clk_i, .rst_ni,
+    .clk_i(gpu_clk), .rst_ni,
     .reg_req_valid_i(q_valid[3]), .reg_req_ready_o(q_ready[3]), .reg_req_addr_i(q_addr[96 +: 32]),
     .reg_req_we_i(q_we[3]), .reg_req_be_i(q_be[12 +: 4]), .reg_req_wdata_i(q_wdata[96 +: 32]),
     .reg_rsp_valid_o(q_rsp_valid[3]), .reg_rsp_rdata_o(q_rsp_rdata[96 +: 32]),
