@@ -16,12 +16,24 @@ module htx_soc_sim_top #(
   output logic        sim_putchar_o,
   output logic [7:0]  sim_char_o,
 
-  input  logic        stall_en_i,
-  input  logic [31:0] stall_seed_i,
-
   output logic [63:0] instret_o
 );
   logic timer_irq_unused;
+
+  // Random wait states: set once by the harness before reset, and taken into flip-flops while reset
+  // is held. Not ports, and not used directly: the Verilated model re-evaluates, on every eval(), all
+  // logic that depends combinationally on a top-level input or on a variable the harness may write,
+  // and through the stall units that is the whole bus fabric and the CPU's hand-shakes.
+  logic        stall_en   /* verilator public_flat_rw */;
+  logic [31:0] stall_seed /* verilator public_flat_rw */;
+  logic        stall_en_q;
+  logic [31:0] stall_seed_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      stall_en_q   <= stall_en;
+      stall_seed_q <= stall_seed;
+    end
+  end
 
   htx_soc #(
     .RamBytes(RamBytes), .ClockHz(ClockHz), .Sim(1'b1), .StallInject(1'b1)
@@ -30,7 +42,7 @@ module htx_soc_sim_top #(
     .uart_rx_i, .uart_tx_o,
     .timer_irq_o(timer_irq_unused),
     .sim_exit_o, .sim_exit_code_o, .sim_putchar_o, .sim_char_o,
-    .stall_en_i, .stall_seed_i
+    .stall_en_i(stall_en_q), .stall_seed_i(stall_seed_q)
   );
 
   assign instret_o = u_soc.u_cpu.u_csr.instret_q;

@@ -101,8 +101,8 @@ SocSim::SocSim(const ElfImage& elf, const SimOptions& options, SerialEndpoint* u
 
   s.top->rst_ni = 0;
   s.top->uart_rx_i = 1;
-  s.top->stall_en_i = options.stall_seed.has_value();
-  s.top->stall_seed_i = options.stall_seed.value_or(0);
+  s.top->rootp->htx_soc_sim_top__DOT__stall_en = options.stall_seed.has_value();
+  s.top->rootp->htx_soc_sim_top__DOT__stall_seed = options.stall_seed.value_or(0);
   s.top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__g_sim_gpu_gate__DOT__gate_allow =
       options.gpu_clock_gate ? 1 : 0;
   for (int i = 0; i < 4; ++i) s.cycle();
