@@ -41,7 +41,8 @@ foreach(d IN LISTS HTX_SYNTH_DESIGNS)
   add_custom_command(OUTPUT ${out}
     COMMAND ${CMAKE_COMMAND} -DNAME=${d} -DAREA_TOP=${area_top} -DPNR_TOP=${pnr_top} -DFREQ=${freq}
       "-DAREA_SOURCES=${area_src_arg}" "-DPNR_SOURCES=${pnr_src_arg}" -DWORK=${HTX_SYNTH_DIR}
-      -DYOSYS=${HTX_YOSYS_BIN} -DNEXTPNR=${HTX_NEXTPNR_ICE40} -DOUT=${out}
+      -DYOSYS=${HTX_YOSYS_BIN} "-DYOSYS_DEFINES=${HTX_YOSYS_DEFINES}" -DNEXTPNR=${HTX_NEXTPNR_ICE40}
+      -DOUT=${out}
       -P ${CMAKE_SOURCE_DIR}/cmake/HtxSynthRun.cmake
     DEPENDS ${area_src} ${pnr_src} ${CMAKE_SOURCE_DIR}/cmake/HtxSynthRun.cmake htx_regs_sv
     COMMENT "synth-report: ${d} (yosys synth_ice40, nextpnr-ice40 --up5k)"

@@ -4,7 +4,7 @@
 # the one that reached it. A design nextpnr cannot place or route gets "fmax_mhz": null,
 # "placed": false and "pnr_error" (its first error line).
 # Logs and netlists stay in WORK.
-foreach(v NAME AREA_TOP PNR_TOP FREQ AREA_SOURCES PNR_SOURCES WORK YOSYS NEXTPNR OUT)
+foreach(v NAME AREA_TOP PNR_TOP FREQ AREA_SOURCES PNR_SOURCES WORK YOSYS YOSYS_DEFINES NEXTPNR OUT)
   if(NOT DEFINED ${v} OR "${${v}}" STREQUAL "")
     message(FATAL_ERROR "HtxSynthRun: ${v} is not set (is yosys / nextpnr-ice40 installed?)")
   endif()
@@ -14,8 +14,8 @@ string(REPLACE "|" " " area_files "${AREA_SOURCES}")
 string(REPLACE "|" " " pnr_files "${PNR_SOURCES}")
 
 function(run_yosys top files stat_json netlist log)
-  # HTX_ICE40: the iCE40 cell instances of a few modules (see HtxRtl.cmake).
-  set(script "read_verilog -sv -DHTX_ICE40 ${files}; synth_ice40 -dsp -top ${top}")
+  # YOSYS_DEFINES: HTX_YOSYS_DEFINES of HtxRtl.cmake (the iCE40 cell instances of a few modules).
+  set(script "read_verilog -sv ${YOSYS_DEFINES} ${files}; synth_ice40 -dsp -top ${top}")
   if(netlist)
     string(APPEND script " -json ${netlist}")
   endif()
