@@ -80,7 +80,7 @@ module htx_raster_plane #(
   assign mul_start = (state_q != StIdle) && (state_q != StWait) && (state_q != StDone);
 
   htx_raster_mul #(.AWidth(MA), .BWidth(MB), .Iterative(Iterative)) u_mul (
-    .clk_i, .rst_ni,
+    .clk_i, .rst_ni, .abort_i,
     .start_i(mul_start),
     .a_i    (mul_a),
     .b_i    (mul_b),

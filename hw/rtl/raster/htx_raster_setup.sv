@@ -200,7 +200,7 @@ module htx_raster_setup #(
   assign emul_start = (state_q == StDet0) || (state_q == StDet1) || (state_q == StEdges);
 
   htx_raster_mul #(.AWidth(DW), .BWidth(DW), .Iterative(Iterative)) u_edge_mul (
-    .clk_i, .rst_ni,
+    .clk_i, .rst_ni, .abort_i,
     .start_i(emul_start),
     .a_i    (emul_a),
     .b_i    (emul_b),
@@ -242,7 +242,14 @@ module htx_raster_setup #(
     .msb_o       (recip_msb)
   );
 
-  // ---- Planes: z, r, g, b, q, uq, vq (and ua, va below) -----------------------------------------
+  // ---- Planes: z, r, g, b, q, uq, vq, and for AFFINE ua, va -------------------------------------
+  // Nine plane units working in parallel, or (Iterative, the `icebreaker` configuration) one unit
+  // taking the planes in turn (htx_raster_plane_seq).
+  localparam bit SharedPlanes = Iterative;
+  logic                 apl_start;         // AFFINE's vertex coordinates are ready (pulse)
+  logic [1:0]           apl_done;          // the ua, va planes are done
+  logic [LocW-1:0]      ua_v [3];
+  logic [LocW-1:0]      va_v [3];
   logic                 plane_start_q;
   logic [NP-1:0]        plane_done;
   logic signed [DW-1:0] dxs, dys;
@@ -257,145 +264,332 @@ module htx_raster_setup #(
   logic [GWU-1:0] lg [6];                                  // uq x, uq y, vq x, vq y, q x, q y
 
 
-  logic [AccZ-1:0] gx_u_plane_z, gy_u_plane_z, st_u_plane_z;
-  logic [2:0]      unused_zw;
-  logic [ZBits+DW+2+GF+1-1:0] zgxw, zgyw;
-  htx_raster_plane #(.VB(ZBits), .Signed(1'b0), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                     .ShiftW(ShiftW), .GW(ZBits + DW + 2 + GF + 1)) u_plane_z (
-    .clk_i, .rst_ni,
-    .abort_i      (planes_abort),
-    .start_i      (plane_start_q),
-    .a0_i(z_q[0]), .a1_i(z_q[1]), .a2_i(z_q[2]),
-    .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-    .dxs_i(dxs), .dys_i(dys),
-    .recip_valid_i(recip_valid_q),
-    .r_i          (rdet_q),
-    .shift_i      (grad_shift),
-    .det_neg_i    (det_neg_q),
-    .done_o       (plane_done[0]),
-    .gx_o(gx_u_plane_z), .gy_o(gy_u_plane_z), .start_o(st_u_plane_z),
-    .gxw_o(zgxw), .gyw_o(zgyw)
-  );
-  assign pgx[0] = AW'(gx_u_plane_z);
-  assign pgy[0] = AW'(gy_u_plane_z);
-  assign pst[0] = AW'(st_u_plane_z);
-  assign unused_zw = {^zgxw, ^zgyw, 1'b0};
-
-  for (genvar c = 0; c < 3; c++) begin : g_color_plane
-    logic [CB-1:0] cv [3];
+  // Colour channel values of the colour planes: channel c of vertex i at 3 c + i.
+  logic [CB-1:0] cv [9];
+  for (genvar c = 0; c < 3; c++) begin : g_cv
     for (genvar i = 0; i < 3; i++) begin : g_v
       if (PerspColor) begin : g_cq
-        assign cv[i] = CB'(rgba_q[i][8*c +: 8]) * CB'(q_q[i]);  // c q: 8 x q_bits at setup
+        assign cv[3*c+i] = CB'(rgba_q[i][8*c +: 8]) * CB'(q_q[i]);  // c q: 8 x q_bits at setup
       end else begin : g_c
-        assign cv[i] = CB'(rgba_q[i][8*c +: 8]);
+        assign cv[3*c+i] = CB'(rgba_q[i][8*c +: 8]);
       end
     end
-    logic [AccC-1:0] gx_u_plane, gy_u_plane, st_u_plane;
-    logic [CB+DW+2+GF+1-1:0] cgxw, cgyw;
-    htx_raster_plane #(.VB(CB), .Signed(1'b0), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                     .ShiftW(ShiftW), .GW(CB + DW + 2 + GF + 1)) u_plane (
-    .clk_i, .rst_ni,
-    .abort_i      (planes_abort),
-    .start_i      (plane_start_q),
-    .a0_i(cv[0]), .a1_i(cv[1]), .a2_i(cv[2]),
-    .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-    .dxs_i(dxs), .dys_i(dys),
-    .recip_valid_i(recip_valid_q),
-    .r_i          (rdet_q),
-    .shift_i      (grad_shift),
-    .det_neg_i    (det_neg_q),
-    .done_o       (plane_done[c + 1]),
-    .gx_o(gx_u_plane), .gy_o(gy_u_plane), .start_o(st_u_plane),
-    .gxw_o(cgxw), .gyw_o(cgyw)
-  );
-    assign pgx[c+1] = AW'(gx_u_plane);
-    assign pgy[c+1] = AW'(gy_u_plane);
-    assign pst[c+1] = AW'(st_u_plane);
-    logic unused_cw;
-    assign unused_cw = ^{cgxw, cgyw};
   end
 
-  logic [QBits+GF+2-1:0] gx_u_plane_q, gy_u_plane_q, st_u_plane_q;
-  logic [GWQ-1:0]        qgxw, qgyw;
-  htx_raster_plane #(.VB(QBits), .Signed(1'b0), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                     .ShiftW(ShiftW), .GW(GWQ)) u_plane_q (
-    .clk_i, .rst_ni,
-    .abort_i      (planes_abort),
-    .start_i      (plane_start_q),
-    .a0_i(q_q[0]), .a1_i(q_q[1]), .a2_i(q_q[2]),
-    .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-    .dxs_i(dxs), .dys_i(dys),
-    .recip_valid_i(recip_valid_q),
-    .r_i          (rdet_q),
-    .shift_i      (grad_shift),
-    .det_neg_i    (det_neg_q),
-    .done_o       (plane_done[4]),
-    .gx_o(gx_u_plane_q), .gy_o(gy_u_plane_q), .start_o(st_u_plane_q),
-    .gxw_o(qgxw), .gyw_o(qgyw)
-  );
-  assign pgx[4] = AW'(gx_u_plane_q);
-  assign pgy[4] = AW'(gy_u_plane_q);
-  assign pst[4] = AW'(st_u_plane_q);
-  assign lg[4] = GWU'($signed(qgxw));
-  assign lg[5] = GWU'($signed(qgyw));
+  if (!SharedPlanes) begin : g_planes_par
+    logic [AccZ-1:0] gx_u_plane_z, gy_u_plane_z, st_u_plane_z;
+    logic [2:0]      unused_zw;
+    logic [ZBits+DW+2+GF+1-1:0] zgxw, zgyw;
+    htx_raster_plane #(.VB(ZBits), .Signed(1'b0), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
+                       .ShiftW(ShiftW), .GW(ZBits + DW + 2 + GF + 1)) u_plane_z (
+      .clk_i, .rst_ni,
+      .abort_i      (planes_abort),
+      .start_i      (plane_start_q),
+      .a0_i(z_q[0]), .a1_i(z_q[1]), .a2_i(z_q[2]),
+      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+      .dxs_i(dxs), .dys_i(dys),
+      .recip_valid_i(recip_valid_q),
+      .r_i          (rdet_q),
+      .shift_i      (grad_shift),
+      .det_neg_i    (det_neg_q),
+      .done_o       (plane_done[0]),
+      .gx_o(gx_u_plane_z), .gy_o(gy_u_plane_z), .start_o(st_u_plane_z),
+      .gxw_o(zgxw), .gyw_o(zgyw)
+    );
+    assign pgx[0] = AW'(gx_u_plane_z);
+    assign pgy[0] = AW'(gy_u_plane_z);
+    assign pst[0] = AW'(st_u_plane_z);
+    assign unused_zw = {^zgxw, ^zgyw, 1'b0};
 
-  logic [UQ+GF+2-1:0] gx_u_plane_uq, gy_u_plane_uq, st_u_plane_uq;
-  htx_raster_plane #(.VB(UQ), .Signed(1'b1), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                     .ShiftW(ShiftW), .GW(GWU)) u_plane_uq (
-    .clk_i, .rst_ni,
-    .abort_i      (planes_abort),
-    .start_i      (plane_start_q),
-    .a0_i(uq_q[0]), .a1_i(uq_q[1]), .a2_i(uq_q[2]),
-    .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-    .dxs_i(dxs), .dys_i(dys),
-    .recip_valid_i(recip_valid_q),
-    .r_i          (rdet_q),
-    .shift_i      (grad_shift),
-    .det_neg_i    (det_neg_q),
-    .done_o       (plane_done[5]),
-    .gx_o(gx_u_plane_uq), .gy_o(gy_u_plane_uq), .start_o(st_u_plane_uq),
-    .gxw_o(lg[0]), .gyw_o(lg[1])
-  );
-  assign pgx[5] = AW'(gx_u_plane_uq);
-  assign pgy[5] = AW'(gy_u_plane_uq);
-  assign pst[5] = AW'(st_u_plane_uq);
+    for (genvar c = 0; c < 3; c++) begin : g_color_plane
+      logic [AccC-1:0] gx_u_plane, gy_u_plane, st_u_plane;
+      logic [CB+DW+2+GF+1-1:0] cgxw, cgyw;
+      htx_raster_plane #(.VB(CB), .Signed(1'b0), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
+                       .ShiftW(ShiftW), .GW(CB + DW + 2 + GF + 1)) u_plane (
+      .clk_i, .rst_ni,
+      .abort_i      (planes_abort),
+      .start_i      (plane_start_q),
+      .a0_i(cv[3*c]), .a1_i(cv[3*c+1]), .a2_i(cv[3*c+2]),
+      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+      .dxs_i(dxs), .dys_i(dys),
+      .recip_valid_i(recip_valid_q),
+      .r_i          (rdet_q),
+      .shift_i      (grad_shift),
+      .det_neg_i    (det_neg_q),
+      .done_o       (plane_done[c + 1]),
+      .gx_o(gx_u_plane), .gy_o(gy_u_plane), .start_o(st_u_plane),
+      .gxw_o(cgxw), .gyw_o(cgyw)
+    );
+      assign pgx[c+1] = AW'(gx_u_plane);
+      assign pgy[c+1] = AW'(gy_u_plane);
+      assign pst[c+1] = AW'(st_u_plane);
+      logic unused_cw;
+      assign unused_cw = ^{cgxw, cgyw};
+    end
 
-  logic [UQ+GF+2-1:0] gx_u_plane_vq, gy_u_plane_vq, st_u_plane_vq;
-  htx_raster_plane #(.VB(UQ), .Signed(1'b1), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                     .ShiftW(ShiftW), .GW(GWU)) u_plane_vq (
-    .clk_i, .rst_ni,
-    .abort_i      (planes_abort),
-    .start_i      (plane_start_q),
-    .a0_i(vq_q[0]), .a1_i(vq_q[1]), .a2_i(vq_q[2]),
-    .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-    .dxs_i(dxs), .dys_i(dys),
-    .recip_valid_i(recip_valid_q),
-    .r_i          (rdet_q),
-    .shift_i      (grad_shift),
-    .det_neg_i    (det_neg_q),
-    .done_o       (plane_done[6]),
-    .gx_o(gx_u_plane_vq), .gy_o(gy_u_plane_vq), .start_o(st_u_plane_vq),
-    .gxw_o(lg[2]), .gyw_o(lg[3])
-  );
-  assign pgx[6] = AW'(gx_u_plane_vq);
-  assign pgy[6] = AW'(gy_u_plane_vq);
-  assign pst[6] = AW'(st_u_plane_vq);
+    logic [QBits+GF+2-1:0] gx_u_plane_q, gy_u_plane_q, st_u_plane_q;
+    logic [GWQ-1:0]        qgxw, qgyw;
+    htx_raster_plane #(.VB(QBits), .Signed(1'b0), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
+                       .ShiftW(ShiftW), .GW(GWQ)) u_plane_q (
+      .clk_i, .rst_ni,
+      .abort_i      (planes_abort),
+      .start_i      (plane_start_q),
+      .a0_i(q_q[0]), .a1_i(q_q[1]), .a2_i(q_q[2]),
+      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+      .dxs_i(dxs), .dys_i(dys),
+      .recip_valid_i(recip_valid_q),
+      .r_i          (rdet_q),
+      .shift_i      (grad_shift),
+      .det_neg_i    (det_neg_q),
+      .done_o       (plane_done[4]),
+      .gx_o(gx_u_plane_q), .gy_o(gy_u_plane_q), .start_o(st_u_plane_q),
+      .gxw_o(qgxw), .gyw_o(qgyw)
+    );
+    assign pgx[4] = AW'(gx_u_plane_q);
+    assign pgy[4] = AW'(gy_u_plane_q);
+    assign pst[4] = AW'(st_u_plane_q);
+    assign lg[4] = GWU'($signed(qgxw));
+    assign lg[5] = GWU'($signed(qgyw));
+
+    logic [UQ+GF+2-1:0] gx_u_plane_uq, gy_u_plane_uq, st_u_plane_uq;
+    htx_raster_plane #(.VB(UQ), .Signed(1'b1), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
+                       .ShiftW(ShiftW), .GW(GWU)) u_plane_uq (
+      .clk_i, .rst_ni,
+      .abort_i      (planes_abort),
+      .start_i      (plane_start_q),
+      .a0_i(uq_q[0]), .a1_i(uq_q[1]), .a2_i(uq_q[2]),
+      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+      .dxs_i(dxs), .dys_i(dys),
+      .recip_valid_i(recip_valid_q),
+      .r_i          (rdet_q),
+      .shift_i      (grad_shift),
+      .det_neg_i    (det_neg_q),
+      .done_o       (plane_done[5]),
+      .gx_o(gx_u_plane_uq), .gy_o(gy_u_plane_uq), .start_o(st_u_plane_uq),
+      .gxw_o(lg[0]), .gyw_o(lg[1])
+    );
+    assign pgx[5] = AW'(gx_u_plane_uq);
+    assign pgy[5] = AW'(gy_u_plane_uq);
+    assign pst[5] = AW'(st_u_plane_uq);
+
+    logic [UQ+GF+2-1:0] gx_u_plane_vq, gy_u_plane_vq, st_u_plane_vq;
+    htx_raster_plane #(.VB(UQ), .Signed(1'b1), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
+                       .ShiftW(ShiftW), .GW(GWU)) u_plane_vq (
+      .clk_i, .rst_ni,
+      .abort_i      (planes_abort),
+      .start_i      (plane_start_q),
+      .a0_i(vq_q[0]), .a1_i(vq_q[1]), .a2_i(vq_q[2]),
+      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+      .dxs_i(dxs), .dys_i(dys),
+      .recip_valid_i(recip_valid_q),
+      .r_i          (rdet_q),
+      .shift_i      (grad_shift),
+      .det_neg_i    (det_neg_q),
+      .done_o       (plane_done[6]),
+      .gx_o(gx_u_plane_vq), .gy_o(gy_u_plane_vq), .start_o(st_u_plane_vq),
+      .gxw_o(lg[2]), .gyw_o(lg[3])
+    );
+    assign pgx[6] = AW'(gx_u_plane_vq);
+    assign pgy[6] = AW'(gy_u_plane_vq);
+    assign pst[6] = AW'(st_u_plane_vq);
+
+    if (HasAffine) begin : g_uvp
+        for (genvar a = 0; a < 2; a++) begin : g_uv
+          logic [LocW+GF+2-1:0] gx_p, gy_p, st_p;
+          logic [LocW+DW+2+GF+1-1:0] gxw_p, gyw_p;
+          htx_raster_plane #(.VB(LocW), .Signed(1'b1), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
+                             .ShiftW(ShiftW)) u_plane (
+            .clk_i, .rst_ni,
+            .abort_i      (planes_abort),
+            .start_i      (apl_start),
+            .a0_i(a == 0 ? ua_v[0] : va_v[0]), .a1_i(a == 0 ? ua_v[1] : va_v[1]),
+            .a2_i(a == 0 ? ua_v[2] : va_v[2]),
+            .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+            .dxs_i(dxs), .dys_i(dys),
+            .recip_valid_i(recip_valid_q),
+            .r_i          (rdet_q),
+            .shift_i      (grad_shift),
+            .det_neg_i    (det_neg_q),
+            .done_o       (apl_done[a]),
+            .gx_o(gx_p), .gy_o(gy_p), .start_o(st_p),
+            .gxw_o(gxw_p), .gyw_o(gyw_p)
+          );
+          assign pgx[7+a] = AW'(gx_p);
+          assign pgy[7+a] = AW'(gy_p);
+          assign pst[7+a] = AW'(st_p);
+          logic unused_w;
+          assign unused_w = ^{gxw_p, gyw_p};
+        end
+    end else begin : g_no_uvp
+      assign apl_done = 2'b00;
+      for (genvar a = 0; a < 2; a++) begin : g_uv
+        assign pgx[7+a] = '0;
+        assign pgy[7+a] = '0;
+        assign pst[7+a] = '0;
+      end
+    end
+    assign plane_done[8:7] = apl_done;
+  end else begin : g_planes_shared
+    // One plane unit for all nine, in turn (Iterative: area over clocks). Every plane's values are
+    // widened to VS signed bits; each plane keeps its results at its own width, so the traversal
+    // sees the same words as from nine units of the plane widths.
+    localparam int unsigned VS  = ((ZBits > CB ? ZBits : CB) > (QBits > UQ ? QBits : UQ)
+                                   ? (ZBits > CB ? ZBits : CB) : (QBits > UQ ? QBits : UQ)) + 1;
+    localparam int unsigned VSW = (VS > LocW + 1) ? VS : LocW + 1;
+    localparam int unsigned AS  = VSW + GF + 2;
+    localparam int unsigned GS  = VSW + DW + 2 + GF + 1;
+    localparam int unsigned NS  = HasAffine ? NP : 7;
+    logic [NS*3*VSW-1:0] sv;
+    logic                s_valid, s_first, s_late;
+    logic [3:0]          s_idx;
+    logic [AS-1:0]       s_gx, s_gy, s_st;
+    logic [GS-1:0]       s_gxw, s_gyw;
+    for (genvar i = 0; i < 3; i++) begin : g_sv
+      assign sv[VSW*(0+i) +: VSW] = VSW'(z_q[i]);
+      for (genvar c = 0; c < 3; c++) begin : g_c
+        assign sv[VSW*(3*(1+c)+i) +: VSW] = VSW'(cv[3*c+i]);
+      end
+      assign sv[VSW*(12+i) +: VSW] = VSW'(q_q[i]);
+      assign sv[VSW*(15+i) +: VSW] = VSW'($signed(uq_q[i]));
+      assign sv[VSW*(18+i) +: VSW] = VSW'($signed(vq_q[i]));
+      if (HasAffine) begin : g_a
+        assign sv[VSW*(21+i) +: VSW] = VSW'($signed(ua_v[i]));
+        assign sv[VSW*(24+i) +: VSW] = VSW'($signed(va_v[i]));
+      end
+    end
+    htx_raster_plane_seq #(.NP(NS), .NFirst(7), .VB(VSW), .DW(DW), .W(RecipW), .GF(GF), .ShiftW(ShiftW),
+                           .AccW(AS), .GW(GS), .IdxW(4)) u_seq (
+      .clk_i, .rst_ni,
+      .abort_i      (planes_abort),
+      .start_i      (plane_start_q),
+      .late_start_i (apl_start),
+      .values_i     (sv),
+      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+      .dxs_i(dxs), .dys_i(dys),
+      .recip_valid_i(recip_valid_q),
+      .r_i          (rdet_q),
+      .shift_i      (grad_shift),
+      .det_neg_i    (det_neg_q),
+      .res_valid_o  (s_valid),
+      .res_idx_o    (s_idx),
+      .gx_o(s_gx), .gy_o(s_gy), .start_o(s_st),
+      .gxw_o(s_gxw), .gyw_o(s_gyw),
+      .first_done_o (s_first),
+      .late_done_o  (s_late)
+    );
+    assign plane_done = {{2{s_late}}, {7{s_first}}};
+    assign apl_done   = {2{s_late}};
+    // Results at each plane's own width (z, r, g, b, q, uq, vq, ua, va).
+    for (genvar p = 0; p < NP; p++) begin : g_store
+      localparam int unsigned VBP = (p == 0) ? ZBits : (p <= 3) ? CB : (p == 4) ? QBits : (p <= 6) ? UQ : LocW;
+      localparam int unsigned AP  = VBP + GF + 2;
+      if (p < NS) begin : g_on
+        logic [AP-1:0] gx_q, gy_q, start_q;
+        always_ff @(posedge clk_i or negedge rst_ni) begin
+          if (!rst_ni) begin
+            gx_q <= '0; gy_q <= '0; start_q <= '0;
+          end else if (s_valid && (s_idx == 4'(p))) begin
+            gx_q <= s_gx[AP-1:0]; gy_q <= s_gy[AP-1:0]; start_q <= s_st[AP-1:0];
+          end
+        end
+        assign pgx[p] = AW'(gx_q);
+        assign pgy[p] = AW'(gy_q);
+        assign pst[p] = AW'(start_q);
+      end else begin : g_off
+        assign pgx[p] = '0;
+        assign pgy[p] = '0;
+        assign pst[p] = '0;
+      end
+    end
+    // Full-precision gradients of uq, vq (GWU bits) and q (GWQ bits, sign-extended) for the LOD unit.
+    logic [GWU-1:0] lgx_q [3];
+    logic [GWU-1:0] lgy_q [3];
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        for (int k = 0; k < 3; k++) begin lgx_q[k] <= '0; lgy_q[k] <= '0; end
+      end else if (s_valid && (s_idx >= 4'd4) && (s_idx <= 4'd6)) begin
+        if (s_idx == 4'd4) begin
+          lgx_q[2] <= GWU'($signed(s_gxw[GWQ-1:0]));
+          lgy_q[2] <= GWU'($signed(s_gyw[GWQ-1:0]));
+        end else begin
+          lgx_q[{1'b0, s_idx[1]}] <= s_gxw[GWU-1:0];  // 5 (uq) -> 0, 6 (vq) -> 1
+          lgy_q[{1'b0, s_idx[1]}] <= s_gyw[GWU-1:0];
+        end
+      end
+    end
+    assign lg[0] = lgx_q[0];
+    assign lg[1] = lgy_q[0];
+    assign lg[2] = lgx_q[1];
+    assign lg[3] = lgy_q[1];
+    assign lg[4] = lgx_q[2];
+    assign lg[5] = lgy_q[2];
+    logic unused_s;
+    assign unused_s = ^{s_gx, s_gy, s_st, s_gxw, s_gyw};
+  end
 
   // ---- LOD gradients: one block shift s_g = max(0, msb(max |g|) + 2 - GradW) for all six -------
-  logic [GWU-1:0] lg_or;
+  // Six magnitudes and six shifters side by side, or (SharedPlanes) one magnitude and one shifter
+  // taking the six in turn once the q, uq and vq planes are done (12 clocks).
+  logic [GWU-1:0] lg_or;    // OR of the six magnitudes: its msb is the largest one's
   logic [7:0]     lg_msb1;  // msb + 1 (0: all gradients zero)
   logic [7:0]     lg_shift;
+  logic           lod_done;
   always_comb begin
-    lg_or = '0;
-    for (int i = 0; i < 6; i++) lg_or = lg_or | (lg[i][GWU-1] ? GWU'(-lg[i]) : lg[i]);
     lg_msb1 = '0;
     for (int b = 0; b < GWU; b++) if (lg_or[b]) lg_msb1 = 8'(b + 1);
     lg_shift = (lg_msb1 + 8'd1 > 8'(GradW)) ? lg_msb1 + 8'd1 - 8'(GradW) : 8'd0;
   end
-  for (genvar i = 0; i < 6; i++) begin : g_lod
-    logic [GWU-1:0] sh;
-    assign sh = GWU'($signed(lg[i]) >>> lg_shift);
-    assign tri_lod_g_o[GradW*i +: GradW] = sh[GradW-1:0];
+  if (!SharedPlanes) begin : g_lod_par
+    always_comb begin
+      lg_or = '0;
+      for (int i = 0; i < 6; i++) lg_or = lg_or | (lg[i][GWU-1] ? GWU'(-lg[i]) : lg[i]);
+    end
+    for (genvar i = 0; i < 6; i++) begin : g_lod
+      logic [GWU-1:0] sh;
+      assign sh = GWU'($signed(lg[i]) >>> lg_shift);
+      assign tri_lod_g_o[GradW*i +: GradW] = sh[GradW-1:0];
+      logic unused_sh;
+      assign unused_sh = ^sh[GWU-1:GradW];
+    end
+    assign lod_done = 1'b1;
+  end else begin : g_lod_seq
+    typedef enum logic [1:0] {LsIdle, LsOr, LsShift, LsDone} ls_e;
+    ls_e            ls_q;
+    logic [2:0]     li_q;
+    logic [GWU-1:0] lor_q, lsel, sh;
+    logic [GradW-1:0] lgs_q [6];
+    assign lsel = lg[li_q];
+    assign sh   = GWU'($signed(lsel) >>> lg_shift);
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        ls_q  <= LsIdle;
+        li_q  <= '0;
+        lor_q <= '0;
+        for (int i = 0; i < 6; i++) lgs_q[i] <= '0;
+      end else if (planes_abort || plane_start_q) begin
+        ls_q <= LsIdle;
+      end else begin
+        unique case (ls_q)
+          LsIdle: if (&plane_done[6:4]) begin ls_q <= LsOr; li_q <= '0; lor_q <= '0; end
+          LsOr: begin
+            lor_q <= lor_q | (lsel[GWU-1] ? GWU'(-lsel) : lsel);
+            li_q  <= (li_q == 3'd5) ? 3'd0 : li_q + 3'd1;
+            if (li_q == 3'd5) ls_q <= LsShift;
+          end
+          LsShift: begin
+            lgs_q[li_q] <= sh[GradW-1:0];
+            li_q        <= li_q + 3'd1;
+            if (li_q == 3'd5) ls_q <= LsDone;
+          end
+          default: ;
+        endcase
+      end
+    end
+    assign lg_or = lor_q;
+    for (genvar i = 0; i < 6; i++) begin : g_lod
+      assign tri_lod_g_o[GradW*i +: GradW] = lgs_q[i];
+    end
+    assign lod_done = (ls_q == LsDone);
     logic unused_sh;
     assign unused_sh = ^sh[GWU-1:GradW];
   end
@@ -421,13 +615,12 @@ module htx_raster_setup #(
     logic signed [NA-1:0] amul_a;
     logic signed [RecipW+1:0] amul_b;
     logic signed [NA+RecipW+1:0] amul_p, arnd;
-    logic [1:0]           apl_done;
     assign amul_a = (av_q == AvMulU) ? ($signed(NA'($signed(uq_q[ai_q]))) <<< (RecipW - 1 - 32'(m_q)))
                                      : ($signed(NA'($signed(vq_q[ai_q]))) <<< (RecipW - 1 - 32'(m_q)));
     assign amul_b = $signed({1'b0, r_q});
     assign amul_start = (av_q == AvMulU) || (av_q == AvMulV);
     htx_raster_mul #(.AWidth(NA), .BWidth(RecipW + 2), .Iterative(Iterative)) u_amul (
-      .clk_i, .rst_ni,
+      .clk_i, .rst_ni, .abort_i(planes_abort),
       .start_i(amul_start),
       .a_i    (amul_a),
       .b_i    (amul_b),
@@ -465,44 +658,21 @@ module htx_raster_setup #(
     end
     assign av_done = (av_q == AvDone);
 
-    for (genvar a = 0; a < 2; a++) begin : g_uv
-      logic [LocW+GF+2-1:0] gx_p, gy_p, st_p;
-      logic [LocW+DW+2+GF+1-1:0] gxw_p, gyw_p;
-      htx_raster_plane #(.VB(LocW), .Signed(1'b1), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                         .ShiftW(ShiftW)) u_plane (
-        .clk_i, .rst_ni,
-        .abort_i      (planes_abort),
-        .start_i      (apl_start_q),
-        .a0_i(a == 0 ? ua_q[0] : va_q[0]), .a1_i(a == 0 ? ua_q[1] : va_q[1]),
-        .a2_i(a == 0 ? ua_q[2] : va_q[2]),
-        .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-        .dxs_i(dxs), .dys_i(dys),
-        .recip_valid_i(recip_valid_q),
-        .r_i          (rdet_q),
-        .shift_i      (grad_shift),
-        .det_neg_i    (det_neg_q),
-        .done_o       (apl_done[a]),
-        .gx_o(gx_p), .gy_o(gy_p), .start_o(st_p),
-        .gxw_o(gxw_p), .gyw_o(gyw_p)
-      );
-      assign pgx[7+a] = AW'(gx_p);
-      assign pgy[7+a] = AW'(gy_p);
-      assign pst[7+a] = AW'(st_p);
-      logic unused_w;
-      assign unused_w = ^{gxw_p, gyw_p};
+    assign apl_start = apl_start_q;
+    for (genvar i = 0; i < 3; i++) begin : g_uv_out
+      assign ua_v[i] = ua_q[i];
+      assign va_v[i] = va_q[i];
     end
-    assign plane_done[8:7] = apl_done;
     logic unused_a;
     assign unused_a = ^{arnd, recip_r0};
   end else begin : g_no_affine
     assign av_start = 1'b0;
     assign av_i     = 2'd0;
     assign av_done  = 1'b0;
-    assign plane_done[8:7] = 2'b00;
-    for (genvar a = 0; a < 2; a++) begin : g_uv
-      assign pgx[7+a] = '0;
-      assign pgy[7+a] = '0;
-      assign pst[7+a] = '0;
+    assign apl_start = 1'b0;
+    for (genvar i = 0; i < 3; i++) begin : g_uv_out
+      assign ua_v[i] = '0;
+      assign va_v[i] = '0;
     end
     logic unused_a;
     assign unused_a = ^{recip_r0, affine_q};
@@ -583,7 +753,7 @@ module htx_raster_setup #(
             if (ek == 2'd2) state_q <= StWait;
           end
         end
-        StWait: if ((&plane_done[6:0]) && (!affine_q || av_done)) state_q <= StOut;
+        StWait: if ((&plane_done[6:0]) && lod_done && (!affine_q || av_done)) state_q <= StOut;
         StOut: if (tri_ready_i) state_q <= StIdle;
         default: state_q <= StIdle;
       endcase

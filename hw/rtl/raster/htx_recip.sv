@@ -165,7 +165,7 @@ module htx_recip #(
   assign mul_b = (state_q == StMulE) ? MulW'(r_q) : MulW'(c_q);
 
   htx_raster_mul #(.AWidth(MulW), .BWidth(MulW), .Iterative(Iterative)) u_mul (
-    .clk_i, .rst_ni,
+    .clk_i, .rst_ni, .abort_i,
     .start_i(mul_start),
     .a_i    (mul_a),
     .b_i    (mul_b),
