@@ -218,8 +218,9 @@ module htx_raster_divider #(
     assign m_a   = (k_q < 3'd2) ? MA'($signed(NSU'(shn))) : MA'($signed(NSC'(shn)));
     assign m_b   = $signed({1'b0, r_sel});
     assign m_start = (state_q == StMul);
-    htx_raster_mul #(.AWidth(MA), .BWidth(W+2), .Iterative(MulIterative)) u_mul (
-      .clk_i, .rst_ni, .abort_i, .start_i(m_start), .a_i(m_a), .b_i(m_b), .done_o(m_done), .p_o(m_p)
+    htx_raster_mul #(.AWidth(MA), .BWidth(W+2), .Iterative(MulIterative), .ExtraW(1)) u_mul (
+      .clk_i, .rst_ni, .abort_i, .start_i(m_start), .a_i(m_a), .b_i(m_b), .extra_i(1'b0), .done_o(m_done),
+      .p_o(m_p)
     );
     logic signed [MA+W+1:0] m_ru, m_rc;
     assign m_ru = (m_p + $signed((MA+W+2)'(1) << (RSU - 1))) >>> RSU;

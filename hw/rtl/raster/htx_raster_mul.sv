@@ -1,13 +1,15 @@
 // Signed multiplier of the raster setup with a start/done handshake. Iterative = 0: the product is
 // combinational and done_o follows start_i in the same cycle (the `full` configuration: one product
-// per clock). Iterative = 1: one bit of b per clock, BWidth clocks (the `icebreaker` configuration
-// trades clocks for LUTs and DSPs). The operands must stay stable while start_i is held (a_i is
+// per clock). Iterative = 1: one bit of b per clock, BWidth clocks, then extra_i clocks of right
+// shift (the `icebreaker` configuration trades clocks for LUTs and DSPs; the combinational form
+// ignores extra_i, so callers give it 0). The operands must stay stable while start_i is held (a_i is
 // read on every clock of the product); done_o is a one-cycle pulse. abort_i drops a product in
 // progress, so a unit aborted mid-product does not take its stale result for the next one.
 module htx_raster_mul #(
   parameter int unsigned AWidth    = 32,
   parameter int unsigned BWidth    = 32,
-  parameter bit          Iterative = 1'b0
+  parameter bit          Iterative = 1'b0,
+  parameter int unsigned ExtraW    = 8
 ) (
   input  logic                             clk_i,
   input  logic                             rst_ni,
@@ -15,6 +17,7 @@ module htx_raster_mul #(
   input  logic                             start_i,
   input  logic signed [AWidth-1:0]         a_i,
   input  logic signed [BWidth-1:0]         b_i,
+  input  logic [ExtraW-1:0]                extra_i,  // Iterative: p_o = (a b) >>> extra_i
   output logic                             done_o,
   output logic signed [AWidth+BWidth-1:0]  p_o
 );
@@ -22,23 +25,27 @@ module htx_raster_mul #(
 
   if (!Iterative) begin : g_comb
     logic unused;
-    assign unused = ^{clk_i, rst_ni, abort_i};
+    assign unused = ^{clk_i, rst_ni, abort_i, extra_i};
     assign done_o = start_i;
     assign p_o    = PWidth'(a_i) * PWidth'(b_i);
   end else begin : g_iter
     // The textbook sequential signed multiplier: {h, l} starts as {0, b}; each clock adds a to h
     // when l's lowest bit is set (subtracts it for b's sign bit, the last) and shifts {h, l} right
     // by one, arithmetically. BWidth clocks, one (AWidth + 1)-bit adder, no DSP, no magnitudes.
-    localparam int unsigned CntW = $clog2(BWidth + 1);
+    // extra_i more clocks go on shifting with nothing added: a right shift of the product for free
+    // in the same registers (the plane unit's rounding shift, instead of a barrel shifter).
+    localparam int unsigned CntW = $clog2(BWidth + 2**ExtraW);
 
-    logic                     busy_q, done_q, last;
+    logic                     busy_q, done_q, last, in_mul, finish;
     logic [CntW-1:0]          cnt_q;
     logic signed [AWidth:0]   h_q, addend, sum;
     logic [AWidth+1:0]        sum_c;
     logic [BWidth-1:0]        l_q;
 
+    assign in_mul = (cnt_q < CntW'(BWidth));
     assign last   = (cnt_q == CntW'(BWidth - 1));
-    assign addend = l_q[0] ? (AWidth + 1)'(a_i) : '0;
+    assign finish = (cnt_q == CntW'(BWidth - 1) + CntW'(extra_i));
+    assign addend = (l_q[0] && in_mul) ? (AWidth + 1)'(a_i) : '0;
     // h - addend as h + ~addend + 1, the + 1 through an extra low bit: one adder, not two.
     assign sum_c  = {h_q, 1'b1} + {addend ^ {(AWidth + 1){last}}, last};
     assign sum    = sum_c[AWidth+1:1];
@@ -65,7 +72,7 @@ module htx_raster_mul #(
         end else if (busy_q) begin
           {h_q, l_q} <= {sum[AWidth], sum, l_q[BWidth-1:1]};
           cnt_q      <= cnt_q + 1'b1;
-          if (last) begin
+          if (finish) begin
             busy_q <= 1'b0;
             done_q <= 1'b1;
           end

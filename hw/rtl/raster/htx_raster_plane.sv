@@ -79,16 +79,26 @@ module htx_raster_plane #(
   end
   assign mul_start = (state_q != StIdle) && (state_q != StWait) && (state_q != StDone);
 
-  htx_raster_mul #(.AWidth(MA), .BWidth(MB), .Iterative(Iterative)) u_mul (
+  // Iterative: the multiplier shifts the gradient products right by shift - 1 itself, and only the
+  // last halving and its rounding are left here (no barrel shifter).
+  logic [ShiftW-1:0] mul_extra;
+  assign mul_extra = (Iterative && ((state_q == StGx) || (state_q == StGy))) ? shift_i - 1'b1 : '0;
+
+  htx_raster_mul #(.AWidth(MA), .BWidth(MB), .Iterative(Iterative), .ExtraW(ShiftW)) u_mul (
     .clk_i, .rst_ni, .abort_i,
     .start_i(mul_start),
     .a_i    (mul_a),
     .b_i    (mul_b),
+    .extra_i(mul_extra),
     .done_o (mul_done),
     .p_o    (mul_p)
   );
-  // Round to nearest, ties up: (p + 2^(shift-1)) >>> shift.
-  assign rounded = (mul_p + $signed(PW'(1) << (shift_i - 1'b1))) >>> shift_i;
+  // Round to nearest, ties up: (p + 2^(shift-1)) >>> shift = ((p >>> (shift - 1)) + 1) >>> 1.
+  if (Iterative) begin : g_round_iter
+    assign rounded = (mul_p + $signed(PW'(1))) >>> 1;
+  end else begin : g_round_comb
+    assign rounded = (mul_p + $signed(PW'(1) << (shift_i - 1'b1))) >>> shift_i;
+  end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin

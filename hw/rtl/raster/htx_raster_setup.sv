@@ -199,11 +199,12 @@ module htx_raster_setup #(
   end
   assign emul_start = (state_q == StDet0) || (state_q == StDet1) || (state_q == StEdges);
 
-  htx_raster_mul #(.AWidth(DW), .BWidth(DW), .Iterative(Iterative)) u_edge_mul (
+  htx_raster_mul #(.AWidth(DW), .BWidth(DW), .Iterative(Iterative), .ExtraW(1)) u_edge_mul (
     .clk_i, .rst_ni, .abort_i,
     .start_i(emul_start),
     .a_i    (emul_a),
     .b_i    (emul_b),
+    .extra_i(1'b0),
     .done_o (emul_done),
     .p_o    (emul_p)
   );
@@ -619,11 +620,12 @@ module htx_raster_setup #(
                                      : ($signed(NA'($signed(vq_q[ai_q]))) <<< (RecipW - 1 - 32'(m_q)));
     assign amul_b = $signed({1'b0, r_q});
     assign amul_start = (av_q == AvMulU) || (av_q == AvMulV);
-    htx_raster_mul #(.AWidth(NA), .BWidth(RecipW + 2), .Iterative(Iterative)) u_amul (
+    htx_raster_mul #(.AWidth(NA), .BWidth(RecipW + 2), .Iterative(Iterative), .ExtraW(1)) u_amul (
       .clk_i, .rst_ni, .abort_i(planes_abort),
       .start_i(amul_start),
       .a_i    (amul_a),
       .b_i    (amul_b),
+      .extra_i(1'b0),
       .done_o (amul_done),
       .p_o    (amul_p)
     );

@@ -164,11 +164,12 @@ module htx_recip #(
   assign mul_a = (state_q == StMulE) ? MulW'(m_q) : MulW'(r_q);
   assign mul_b = (state_q == StMulE) ? MulW'(r_q) : MulW'(c_q);
 
-  htx_raster_mul #(.AWidth(MulW), .BWidth(MulW), .Iterative(Iterative)) u_mul (
+  htx_raster_mul #(.AWidth(MulW), .BWidth(MulW), .Iterative(Iterative), .ExtraW(1)) u_mul (
     .clk_i, .rst_ni, .abort_i,
     .start_i(mul_start),
     .a_i    (mul_a),
     .b_i    (mul_b),
+    .extra_i(1'b0),
     .done_o (mul_done),
     .p_o    (mul_p)
   );

@@ -30,13 +30,14 @@ class Mul {
     m_.clk_i = 0;
     m_.eval();
   }
-  void operands(int64_t a, int64_t b) {
+  void operands(int64_t a, int64_t b, unsigned extra = 0) {
+    m_.extra_i = static_cast<uint8_t>(extra);
     m_.a_i = static_cast<uint64_t>(a) & ((uint64_t{1} << kA) - 1);
     m_.b_i = static_cast<uint32_t>(static_cast<uint64_t>(b) & ((uint64_t{1} << kB) - 1));
   }
   // Holds start until done; returns the product and the clocks it took.
-  uint64_t product(int64_t a, int64_t b, int* clocks) {
-    operands(a, b);
+  uint64_t product(int64_t a, int64_t b, int* clocks, unsigned extra = 0) {
+    operands(a, b, extra);
     m_.start_i = 1;
     int n = 0;
     do {
@@ -78,6 +79,23 @@ TEST(RasterMul, RandomAndExtremeOperandsMatchExactProducts) {
     const int64_t a = static_cast<int64_t>(rng() << (64 - kA)) >> (64 - kA);
     const int64_t b = static_cast<int64_t>(rng() << (64 - kB)) >> (64 - kB);
     ASSERT_EQ(mul.product(a, b, &clocks), expected(a, b)) << a << " * " << b;
+  }
+}
+
+// extra_i more clocks shift the product right, arithmetically: the plane unit's rounding shift.
+TEST(RasterMul, ExtraClocksShiftTheProductRight) {
+  Mul mul;
+  std::mt19937_64 rng(7);
+  int clocks = 0;
+  for (unsigned extra : {1u, 2u, 17u, 40u, 63u, 200u}) {
+    for (int i = 0; i < 200; ++i) {
+      const int64_t a = static_cast<int64_t>(rng() << (64 - kA)) >> (64 - kA);
+      const int64_t b = static_cast<int64_t>(rng() << (64 - kB)) >> (64 - kB);
+      const htx::model::i128 p = static_cast<htx::model::i128>(a) * b;
+      ASSERT_EQ(mul.product(a, b, &clocks, extra), static_cast<uint64_t>(p >> (extra > 100 ? 100 : extra)))
+          << a << " * " << b << " >> " << extra;
+      ASSERT_EQ(clocks, kB + 1 + static_cast<int>(extra));
+    }
   }
 }
 
