@@ -29,9 +29,7 @@ module htx_raster_setup #(
   parameter int unsigned NP   = 9,                            // z, r, g, b, q, uq, vq, ua, va
   parameter int unsigned XW   = XyIntBits + 8,   // vertex x, y (signed, 1/256 pixel)
   parameter int unsigned DW   = XW + 1,          // coordinate deltas
-  parameter int unsigned EW   = 2 * DW + 2,      // edge function values
-  parameter int unsigned AccZ = ZBits + GF + 2,  // z plane
-  parameter int unsigned AccC = CB + GF + 2      // colour planes
+  parameter int unsigned EW   = 2 * DW + 2       // edge function values
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
@@ -277,194 +275,96 @@ module htx_raster_setup #(
     end
   end
 
-  if (!SharedPlanes) begin : g_planes_par
-    logic [AccZ-1:0] gx_u_plane_z, gy_u_plane_z, st_u_plane_z;
-    logic [2:0]      unused_zw;
-    logic [ZBits+DW+2+GF+1-1:0] zgxw, zgyw;
-    htx_raster_plane #(.VB(ZBits), .Signed(1'b0), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                       .ShiftW(ShiftW), .GW(ZBits + DW + 2 + GF + 1)) u_plane_z (
-      .clk_i, .rst_ni,
-      .abort_i      (planes_abort),
-      .start_i      (plane_start_q),
-      .a0_i(z_q[0]), .a1_i(z_q[1]), .a2_i(z_q[2]),
-      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-      .dxs_i(dxs), .dys_i(dys),
-      .recip_valid_i(recip_valid_q),
-      .r_i          (rdet_q),
-      .shift_i      (grad_shift),
-      .det_neg_i    (det_neg_q),
-      .done_o       (plane_done[0]),
-      .gx_o(gx_u_plane_z), .gy_o(gy_u_plane_z), .start_o(st_u_plane_z),
-      .gxw_o(zgxw), .gyw_o(zgyw)
-    );
-    assign pgx[0] = AW'(gx_u_plane_z);
-    assign pgy[0] = AW'(gy_u_plane_z);
-    assign pst[0] = AW'(st_u_plane_z);
-    assign unused_zw = {^zgxw, ^zgyw, 1'b0};
-
-    for (genvar c = 0; c < 3; c++) begin : g_color_plane
-      logic [AccC-1:0] gx_u_plane, gy_u_plane, st_u_plane;
-      logic [CB+DW+2+GF+1-1:0] cgxw, cgyw;
-      htx_raster_plane #(.VB(CB), .Signed(1'b0), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                       .ShiftW(ShiftW), .GW(CB + DW + 2 + GF + 1)) u_plane (
-      .clk_i, .rst_ni,
-      .abort_i      (planes_abort),
-      .start_i      (plane_start_q),
-      .a0_i(cv[3*c]), .a1_i(cv[3*c+1]), .a2_i(cv[3*c+2]),
-      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-      .dxs_i(dxs), .dys_i(dys),
-      .recip_valid_i(recip_valid_q),
-      .r_i          (rdet_q),
-      .shift_i      (grad_shift),
-      .det_neg_i    (det_neg_q),
-      .done_o       (plane_done[c + 1]),
-      .gx_o(gx_u_plane), .gy_o(gy_u_plane), .start_o(st_u_plane),
-      .gxw_o(cgxw), .gyw_o(cgyw)
-    );
-      assign pgx[c+1] = AW'(gx_u_plane);
-      assign pgy[c+1] = AW'(gy_u_plane);
-      assign pst[c+1] = AW'(st_u_plane);
-      logic unused_cw;
-      assign unused_cw = ^{cgxw, cgyw};
+  // Every plane's vertex values widened to VSW signed bits (unsigned ones zero-extended): plane p,
+  // vertex i at 3 p + i, in the order z, r, g, b, q, uq, vq, ua, va. Plane p's own value width is
+  // plane_vb(p); its low bits of the widened word are its values.
+  localparam int unsigned VS  = ((ZBits > CB ? ZBits : CB) > (QBits > UQ ? QBits : UQ)
+                                 ? (ZBits > CB ? ZBits : CB) : (QBits > UQ ? QBits : UQ)) + 1;
+  localparam int unsigned VSW = (VS > LocW + 1) ? VS : LocW + 1;
+  function automatic int unsigned plane_vb(input int unsigned p);
+    if (p == 0)      plane_vb = ZBits;
+    else if (p <= 3) plane_vb = CB;
+    else if (p == 4) plane_vb = QBits;
+    else if (p <= 6) plane_vb = UQ;
+    else             plane_vb = LocW;
+  endfunction
+  logic [NP*3*VSW-1:0] sv;
+  logic                unused_sv;
+  assign unused_sv = ^sv;  // the parallel units take only their planes' low bits
+  for (genvar i = 0; i < 3; i++) begin : g_sv
+    assign sv[VSW*(0+i) +: VSW] = VSW'(z_q[i]);
+    for (genvar c = 0; c < 3; c++) begin : g_c
+      assign sv[VSW*(3*(1+c)+i) +: VSW] = VSW'(cv[3*c+i]);
     end
+    assign sv[VSW*(12+i) +: VSW] = VSW'(q_q[i]);
+    assign sv[VSW*(15+i) +: VSW] = VSW'($signed(uq_q[i]));
+    assign sv[VSW*(18+i) +: VSW] = VSW'($signed(vq_q[i]));
+    assign sv[VSW*(21+i) +: VSW] = VSW'($signed(ua_v[i]));
+    assign sv[VSW*(24+i) +: VSW] = VSW'($signed(va_v[i]));
+  end
 
-    logic [QBits+GF+2-1:0] gx_u_plane_q, gy_u_plane_q, st_u_plane_q;
-    logic [GWQ-1:0]        qgxw, qgyw;
-    htx_raster_plane #(.VB(QBits), .Signed(1'b0), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                       .ShiftW(ShiftW), .GW(GWQ)) u_plane_q (
-      .clk_i, .rst_ni,
-      .abort_i      (planes_abort),
-      .start_i      (plane_start_q),
-      .a0_i(q_q[0]), .a1_i(q_q[1]), .a2_i(q_q[2]),
-      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-      .dxs_i(dxs), .dys_i(dys),
-      .recip_valid_i(recip_valid_q),
-      .r_i          (rdet_q),
-      .shift_i      (grad_shift),
-      .det_neg_i    (det_neg_q),
-      .done_o       (plane_done[4]),
-      .gx_o(gx_u_plane_q), .gy_o(gy_u_plane_q), .start_o(st_u_plane_q),
-      .gxw_o(qgxw), .gyw_o(qgyw)
-    );
-    assign pgx[4] = AW'(gx_u_plane_q);
-    assign pgy[4] = AW'(gy_u_plane_q);
-    assign pst[4] = AW'(st_u_plane_q);
-    assign lg[4] = GWU'($signed(qgxw));
-    assign lg[5] = GWU'($signed(qgyw));
-
-    logic [UQ+GF+2-1:0] gx_u_plane_uq, gy_u_plane_uq, st_u_plane_uq;
-    htx_raster_plane #(.VB(UQ), .Signed(1'b1), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                       .ShiftW(ShiftW), .GW(GWU)) u_plane_uq (
-      .clk_i, .rst_ni,
-      .abort_i      (planes_abort),
-      .start_i      (plane_start_q),
-      .a0_i(uq_q[0]), .a1_i(uq_q[1]), .a2_i(uq_q[2]),
-      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-      .dxs_i(dxs), .dys_i(dys),
-      .recip_valid_i(recip_valid_q),
-      .r_i          (rdet_q),
-      .shift_i      (grad_shift),
-      .det_neg_i    (det_neg_q),
-      .done_o       (plane_done[5]),
-      .gx_o(gx_u_plane_uq), .gy_o(gy_u_plane_uq), .start_o(st_u_plane_uq),
-      .gxw_o(lg[0]), .gyw_o(lg[1])
-    );
-    assign pgx[5] = AW'(gx_u_plane_uq);
-    assign pgy[5] = AW'(gy_u_plane_uq);
-    assign pst[5] = AW'(st_u_plane_uq);
-
-    logic [UQ+GF+2-1:0] gx_u_plane_vq, gy_u_plane_vq, st_u_plane_vq;
-    htx_raster_plane #(.VB(UQ), .Signed(1'b1), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                       .ShiftW(ShiftW), .GW(GWU)) u_plane_vq (
-      .clk_i, .rst_ni,
-      .abort_i      (planes_abort),
-      .start_i      (plane_start_q),
-      .a0_i(vq_q[0]), .a1_i(vq_q[1]), .a2_i(vq_q[2]),
-      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-      .dxs_i(dxs), .dys_i(dys),
-      .recip_valid_i(recip_valid_q),
-      .r_i          (rdet_q),
-      .shift_i      (grad_shift),
-      .det_neg_i    (det_neg_q),
-      .done_o       (plane_done[6]),
-      .gx_o(gx_u_plane_vq), .gy_o(gy_u_plane_vq), .start_o(st_u_plane_vq),
-      .gxw_o(lg[2]), .gyw_o(lg[3])
-    );
-    assign pgx[6] = AW'(gx_u_plane_vq);
-    assign pgy[6] = AW'(gy_u_plane_vq);
-    assign pst[6] = AW'(st_u_plane_vq);
-
-    if (HasAffine) begin : g_uvp
-        for (genvar a = 0; a < 2; a++) begin : g_uv
-          logic [LocW+GF+2-1:0] gx_p, gy_p, st_p;
-          logic [LocW+DW+2+GF+1-1:0] gxw_p, gyw_p;
-          htx_raster_plane #(.VB(LocW), .Signed(1'b1), .DW(DW), .W(RecipW), .GF(GF), .Iterative(Iterative),
-                             .ShiftW(ShiftW)) u_plane (
-            .clk_i, .rst_ni,
-            .abort_i      (planes_abort),
-            .start_i      (apl_start),
-            .a0_i(a == 0 ? ua_v[0] : va_v[0]), .a1_i(a == 0 ? ua_v[1] : va_v[1]),
-            .a2_i(a == 0 ? ua_v[2] : va_v[2]),
-            .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-            .dxs_i(dxs), .dys_i(dys),
-            .recip_valid_i(recip_valid_q),
-            .r_i          (rdet_q),
-            .shift_i      (grad_shift),
-            .det_neg_i    (det_neg_q),
-            .done_o       (apl_done[a]),
-            .gx_o(gx_p), .gy_o(gy_p), .start_o(st_p),
-            .gxw_o(gxw_p), .gyw_o(gyw_p)
-          );
-          assign pgx[7+a] = AW'(gx_p);
-          assign pgy[7+a] = AW'(gy_p);
-          assign pst[7+a] = AW'(st_p);
+  if (!SharedPlanes) begin : g_planes_par
+    // One plane unit per plane; ua and va (planes 7, 8) start when AFFINE's vertex coordinates are
+    // ready. The unit of q, uq, vq also gives its gradients at full precision to the LOD shift.
+    for (genvar p = 0; p < NP; p++) begin : g_plane
+      localparam int unsigned VBP = plane_vb(p);
+      localparam int unsigned AP  = VBP + GF + 2;
+      localparam int unsigned GP  = VBP + DW + 2 + GF + 1;
+      if ((p < 7) || HasAffine) begin : g_on
+        logic [AP-1:0] gx, gy, st;
+        logic [GP-1:0] gxw, gyw;
+        htx_raster_plane #(.VB(VBP), .Signed(p >= 5), .DW(DW), .W(RecipW), .GF(GF),
+                           .Iterative(Iterative), .ShiftW(ShiftW)) u_plane (
+          .clk_i, .rst_ni,
+          .abort_i      (planes_abort),
+          .start_i      ((p < 7) ? plane_start_q : apl_start),
+          .a0_i(sv[VSW*(3*p) +: VBP]), .a1_i(sv[VSW*(3*p+1) +: VBP]), .a2_i(sv[VSW*(3*p+2) +: VBP]),
+          .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+          .dxs_i(dxs), .dys_i(dys),
+          .recip_valid_i(recip_valid_q),
+          .r_i          (rdet_q),
+          .shift_i      (grad_shift),
+          .det_neg_i    (det_neg_q),
+          .done_o       (plane_done[p]),
+          .gx_o(gx), .gy_o(gy), .start_o(st),
+          .gxw_o(gxw), .gyw_o(gyw)
+        );
+        assign pgx[p] = AW'(gx);
+        assign pgy[p] = AW'(gy);
+        assign pst[p] = AW'(st);
+        if ((p >= 4) && (p <= 6)) begin : g_lod
+          localparam int unsigned L = (p == 4) ? 4 : 2 * (p - 5);  // lg: uq x, y, vq x, y, q x, y
+          assign lg[L]   = GWU'($signed(gxw));
+          assign lg[L+1] = GWU'($signed(gyw));
+        end else begin : g_no_lod
           logic unused_w;
-          assign unused_w = ^{gxw_p, gyw_p};
+          assign unused_w = ^{gxw, gyw};
         end
-    end else begin : g_no_uvp
-      assign apl_done = 2'b00;
-      for (genvar a = 0; a < 2; a++) begin : g_uv
-        assign pgx[7+a] = '0;
-        assign pgy[7+a] = '0;
-        assign pst[7+a] = '0;
+      end else begin : g_off
+        assign plane_done[p] = 1'b0;
+        assign pgx[p] = '0;
+        assign pgy[p] = '0;
+        assign pst[p] = '0;
       end
     end
-    assign plane_done[8:7] = apl_done;
+    assign apl_done = plane_done[8:7];
   end else begin : g_planes_shared
-    // One plane unit for all nine, in turn (Iterative: area over clocks). Every plane's values are
-    // widened to VS signed bits; each plane keeps its results at its own width, so the traversal
-    // sees the same words as from nine units of the plane widths.
-    localparam int unsigned VS  = ((ZBits > CB ? ZBits : CB) > (QBits > UQ ? QBits : UQ)
-                                   ? (ZBits > CB ? ZBits : CB) : (QBits > UQ ? QBits : UQ)) + 1;
-    localparam int unsigned VSW = (VS > LocW + 1) ? VS : LocW + 1;
+    // One plane unit for all nine, in turn (Iterative: area over clocks); each plane keeps its
+    // results at its own width, so the traversal sees the same words as from nine units.
     localparam int unsigned AS  = VSW + GF + 2;
     localparam int unsigned GS  = VSW + DW + 2 + GF + 1;
     localparam int unsigned NS  = HasAffine ? NP : 7;
-    logic [NS*3*VSW-1:0] sv;
     logic                s_valid, s_first, s_late;
     logic [3:0]          s_idx;
     logic [AS-1:0]       s_gx, s_gy, s_st;
     logic [GS-1:0]       s_gxw, s_gyw;
-    for (genvar i = 0; i < 3; i++) begin : g_sv
-      assign sv[VSW*(0+i) +: VSW] = VSW'(z_q[i]);
-      for (genvar c = 0; c < 3; c++) begin : g_c
-        assign sv[VSW*(3*(1+c)+i) +: VSW] = VSW'(cv[3*c+i]);
-      end
-      assign sv[VSW*(12+i) +: VSW] = VSW'(q_q[i]);
-      assign sv[VSW*(15+i) +: VSW] = VSW'($signed(uq_q[i]));
-      assign sv[VSW*(18+i) +: VSW] = VSW'($signed(vq_q[i]));
-      if (HasAffine) begin : g_a
-        assign sv[VSW*(21+i) +: VSW] = VSW'($signed(ua_v[i]));
-        assign sv[VSW*(24+i) +: VSW] = VSW'($signed(va_v[i]));
-      end
-    end
     htx_raster_plane_seq #(.NP(NS), .NFirst(7), .VB(VSW), .DW(DW), .W(RecipW), .GF(GF), .ShiftW(ShiftW),
                            .AccW(AS), .GW(GS), .IdxW(4)) u_seq (
       .clk_i, .rst_ni,
       .abort_i      (planes_abort),
       .start_i      (plane_start_q),
       .late_start_i (apl_start),
-      .values_i     (sv),
+      .values_i     (sv[NS*3*VSW-1:0]),
       .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
       .dxs_i(dxs), .dys_i(dys),
       .recip_valid_i(recip_valid_q),
@@ -482,7 +382,7 @@ module htx_raster_setup #(
     assign apl_done   = {2{s_late}};
     // Results at each plane's own width (z, r, g, b, q, uq, vq, ua, va).
     for (genvar p = 0; p < NP; p++) begin : g_store
-      localparam int unsigned VBP = (p == 0) ? ZBits : (p <= 3) ? CB : (p == 4) ? QBits : (p <= 6) ? UQ : LocW;
+      localparam int unsigned VBP = plane_vb(p);
       localparam int unsigned AP  = VBP + GF + 2;
       if (p < NS) begin : g_on
         logic [AP-1:0] gx_q, gy_q, start_q;
