@@ -61,7 +61,10 @@ module htx_raster_plane #(
   assign a2e = Signed ? $signed({a2_i[VB-1], a2_i}) : $signed({1'b0, a2_i});
   assign da1 = a1e - a0e;
   assign da2 = a2e - a0e;
-  assign nsel = (state_q == StGx) ? (det_neg_i ? -nx_q : nx_q) : (det_neg_i ? -ny_q : ny_q);
+  // One negation for both numerators (a negation on each cost a second NW-bit adder).
+  logic signed [NW-1:0] nxy;
+  assign nxy  = (state_q == StGx) ? nx_q : ny_q;
+  assign nsel = det_neg_i ? -nxy : nxy;
 
   always_comb begin
     mul_a = '0;
@@ -100,6 +103,10 @@ module htx_raster_plane #(
     assign rounded = (mul_p + $signed(PW'(1) << (shift_i - 1'b1))) >>> shift_i;
   end
 
+  // start = a0 2^GF + g_x dxs + g_y dys: the two products go into one adder.
+  logic [AccW-1:0] acc_sum;
+  assign acc_sum = ((state_q == StSx) ? (AccW'(a0e) << GF) : acc_q) + AccW'(mul_p);
+
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       state_q <= StIdle;
@@ -127,11 +134,8 @@ module htx_raster_plane #(
         StGy: if (mul_done) begin
           gy_q <= AccW'(rounded); gyw_q <= GW'(rounded); state_q <= StSx;
         end
-        StSx: if (mul_done) begin
-          acc_q   <= (AccW'(a0e) << GF) + AccW'(mul_p);
-          state_q <= StSy;
-        end
-        StSy: if (mul_done) begin acc_q <= acc_q + AccW'(mul_p); state_q <= StDone; end
+        StSx: if (mul_done) begin acc_q <= acc_sum; state_q <= StSy; end
+        StSy: if (mul_done) begin acc_q <= acc_sum; state_q <= StDone; end
         default: state_q <= StIdle;
       endcase
     end

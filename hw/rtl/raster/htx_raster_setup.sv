@@ -227,7 +227,7 @@ module htx_raster_setup #(
   assign grad_shift = ShiftW'(RecipW) + ShiftW'(msbdet_q) - ShiftW'(GF);
 
   htx_recip #(.XWidth(DetW), .W(RecipW), .K(RecipK), .G(RecipG), .Steps(NrSteps),
-              .Iterative(Iterative)) u_recip (
+              .Iterative(Iterative), .SerialNorm(Iterative)) u_recip (
     .clk_i, .rst_ni,
     .abort_i,
     .start_i     (recip_start),
@@ -429,8 +429,8 @@ module htx_raster_setup #(
   end
 
   // ---- LOD gradients: one block shift s_g = max(0, msb(max |g|) + 2 - GradW) for all six -------
-  // Six magnitudes and six shifters side by side, or (SharedPlanes) one magnitude and one shifter
-  // taking the six in turn once the q, uq and vq planes are done (12 clocks).
+  // Six magnitudes and six shifters side by side, or (SharedPlanes) one magnitude and one shift
+  // register taking the six in turn once the q, uq and vq planes are done.
   logic [GWU-1:0] lg_or;    // OR of the six magnitudes: its msb is the largest one's
   logic [7:0]     lg_msb1;  // msb + 1 (0: all gradients zero)
   logic [7:0]     lg_shift;
@@ -454,18 +454,23 @@ module htx_raster_setup #(
     end
     assign lod_done = 1'b1;
   end else begin : g_lod_seq
-    typedef enum logic [1:0] {LsIdle, LsOr, LsShift, LsDone} ls_e;
+    // One gradient at a time: OR the six magnitudes (6 clocks), then shift each one right in a
+    // register, 8 bits a clock while 8 or more remain and then 1 (at most 7 + 7 clocks each),
+    // instead of a barrel shifter.
+    typedef enum logic [2:0] {LsIdle, LsOr, LsLoad, LsShift, LsDone} ls_e;
     ls_e            ls_q;
     logic [2:0]     li_q;
-    logic [GWU-1:0] lor_q, lsel, sh;
+    logic [7:0]     lcnt_q;
+    logic [GWU-1:0] lor_q, lsel, lsr_q;
     logic [GradW-1:0] lgs_q [6];
     assign lsel = lg[li_q];
-    assign sh   = GWU'($signed(lsel) >>> lg_shift);
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
-        ls_q  <= LsIdle;
-        li_q  <= '0;
-        lor_q <= '0;
+        ls_q   <= LsIdle;
+        li_q   <= '0;
+        lcnt_q <= '0;
+        lor_q  <= '0;
+        lsr_q  <= '0;
         for (int i = 0; i < 6; i++) lgs_q[i] <= '0;
       end else if (planes_abort || plane_start_q) begin
         ls_q <= LsIdle;
@@ -475,12 +480,25 @@ module htx_raster_setup #(
           LsOr: begin
             lor_q <= lor_q | (lsel[GWU-1] ? GWU'(-lsel) : lsel);
             li_q  <= (li_q == 3'd5) ? 3'd0 : li_q + 3'd1;
-            if (li_q == 3'd5) ls_q <= LsShift;
+            if (li_q == 3'd5) ls_q <= LsLoad;
+          end
+          LsLoad: begin
+            lsr_q  <= lsel;
+            lcnt_q <= lg_shift;
+            ls_q   <= LsShift;
           end
           LsShift: begin
-            lgs_q[li_q] <= sh[GradW-1:0];
-            li_q        <= li_q + 3'd1;
-            if (li_q == 3'd5) ls_q <= LsDone;
+            if (lcnt_q >= 8'd8) begin
+              lsr_q  <= GWU'($signed(lsr_q) >>> 8);
+              lcnt_q <= lcnt_q - 8'd8;
+            end else if (lcnt_q != 8'd0) begin
+              lsr_q  <= GWU'($signed(lsr_q) >>> 1);
+              lcnt_q <= lcnt_q - 8'd1;
+            end else begin
+              lgs_q[li_q] <= lsr_q[GradW-1:0];
+              li_q        <= li_q + 3'd1;
+              ls_q        <= (li_q == 3'd5) ? LsDone : LsLoad;
+            end
           end
           default: ;
         endcase
@@ -491,8 +509,6 @@ module htx_raster_setup #(
       assign tri_lod_g_o[GradW*i +: GradW] = lgs_q[i];
     end
     assign lod_done = (ls_q == LsDone);
-    logic unused_sh;
-    assign unused_sh = ^sh[GWU-1:GradW];
   end
   assign tri_lod_shift_o = lg_shift;
   for (genvar i = 0; i < 6; i++) begin : g_dfg
@@ -513,23 +529,50 @@ module htx_raster_setup #(
     logic [LocW-1:0]      ua_q [3];
     logic [LocW-1:0]      va_q [3];
     logic                 amul_start, amul_done, apl_start_q;
-    logic signed [NA-1:0] amul_a;
-    logic signed [RecipW+1:0] amul_b;
-    logic signed [NA+RecipW+1:0] amul_p, arnd;
-    assign amul_a = (av_q == AvMulU) ? ($signed(NA'($signed(uq_q[ai_q]))) <<< (RecipW - 1 - 32'(m_q)))
-                                     : ($signed(NA'($signed(vq_q[ai_q]))) <<< (RecipW - 1 - 32'(m_q)));
-    assign amul_b = $signed({1'b0, r_q});
+    logic [LocW-1:0]      av_coord;                 // u_i or v_i of the product just done
     assign amul_start = (av_q == AvMulU) || (av_q == AvMulV);
-    htx_raster_mul #(.AWidth(NA), .BWidth(RecipW + 2), .Iterative(Iterative), .ExtraW(1)) u_amul (
-      .clk_i, .rst_ni, .abort_i(planes_abort),
-      .start_i(amul_start),
-      .a_i    (amul_a),
-      .b_i    (amul_b),
-      .extra_i(1'b0),
-      .done_o (amul_done),
-      .p_o    (amul_p)
-    );
-    assign arnd = (amul_p + $signed((NA+RecipW+2)'(1) << (RS - 1))) >>> RS;
+    if (Iterative) begin : g_amul_iter
+      // (uq_i 2^s) R rounded by RS bits is uq_i R rounded by RS - s bits (s = W - 1 - msb): the
+      // one-bit multiplier shifts the product right by RS - s - 1 itself (extra_i) and only the last
+      // halving with its rounding is left. No barrel shifter, and a multiplier W bits narrower.
+      localparam int unsigned AE = $clog2(2 * RecipW);
+      logic signed [UQ-1:0]        amul_a;
+      logic signed [UQ+RecipW+1:0] amul_p, arnd;
+      logic [AE-1:0]               amul_extra;
+      assign amul_a     = (av_q == AvMulU) ? $signed(uq_q[ai_q]) : $signed(vq_q[ai_q]);
+      assign amul_extra = AE'(RS - RecipW) + AE'(m_q);
+      htx_raster_mul #(.AWidth(UQ), .BWidth(RecipW + 2), .Iterative(1'b1), .ExtraW(AE)) u_amul (
+        .clk_i, .rst_ni, .abort_i(planes_abort),
+        .start_i(amul_start),
+        .a_i    (amul_a),
+        .b_i    ($signed({1'b0, r_q})),
+        .extra_i(amul_extra),
+        .done_o (amul_done),
+        .p_o    (amul_p)
+      );
+      assign arnd     = (amul_p + $signed((UQ+RecipW+2)'(1))) >>> 1;
+      assign av_coord = LocW'(arnd);
+      logic unused_arnd;
+      assign unused_arnd = ^arnd[UQ+RecipW+1:LocW];
+    end else begin : g_amul_comb
+      logic signed [NA-1:0]        amul_a;
+      logic signed [NA+RecipW+1:0] amul_p, arnd;
+      assign amul_a = (av_q == AvMulU) ? ($signed(NA'($signed(uq_q[ai_q]))) <<< (RecipW - 1 - 32'(m_q)))
+                                       : ($signed(NA'($signed(vq_q[ai_q]))) <<< (RecipW - 1 - 32'(m_q)));
+      htx_raster_mul #(.AWidth(NA), .BWidth(RecipW + 2), .Iterative(1'b0), .ExtraW(1)) u_amul (
+        .clk_i, .rst_ni, .abort_i(planes_abort),
+        .start_i(amul_start),
+        .a_i    (amul_a),
+        .b_i    ($signed({1'b0, r_q})),
+        .extra_i(1'b0),
+        .done_o (amul_done),
+        .p_o    (amul_p)
+      );
+      assign arnd     = (amul_p + $signed((NA+RecipW+2)'(1) << (RS - 1))) >>> RS;
+      assign av_coord = LocW'(arnd);
+      logic unused_arnd;
+      assign unused_arnd = ^arnd[NA+RecipW+1:LocW];
+    end
     assign av_start = (av_q == AvStart);
     assign av_i     = ai_q;
 
@@ -545,9 +588,9 @@ module htx_raster_setup #(
           AvIdle: if (recip_done && det_pend_q && affine_q) begin ai_q <= '0; av_q <= AvStart; end
           AvStart: av_q <= AvRecip;
           AvRecip: if (recip_done) begin r_q <= recip_r; m_q <= recip_msb; av_q <= AvMulU; end
-          AvMulU: if (amul_done) begin ua_q[ai_q] <= LocW'(arnd); av_q <= AvMulV; end
+          AvMulU: if (amul_done) begin ua_q[ai_q] <= av_coord; av_q <= AvMulV; end
           AvMulV: if (amul_done) begin
-            va_q[ai_q] <= LocW'(arnd);
+            va_q[ai_q] <= av_coord;
             ai_q <= ai_q + 1'b1;
             av_q <= (ai_q == 2'd2) ? AvPlanes : AvStart;
           end
@@ -566,7 +609,7 @@ module htx_raster_setup #(
       assign va_v[i] = va_q[i];
     end
     logic unused_a;
-    assign unused_a = ^{arnd, recip_r0};
+    assign unused_a = ^recip_r0;
   end else begin : g_no_affine
     assign av_start = 1'b0;
     assign av_i     = 2'd0;

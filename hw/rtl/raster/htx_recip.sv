@@ -9,6 +9,8 @@
 // pipeline advances (en_i), the result 2 + 2 Steps advancing clocks later with done_o set (start_i is
 // the input's valid bit, table_only_i is ignored: r0_o carries the table value alongside).
 // X = 0 yields msb_o = 0 and an unspecified r_o (setup never asks: a zero determinant draws nothing).
+// SerialNorm (FSM form only; setup's unit in `icebreaker`) shifts X left one bit per clock until its
+// top bit is set, up to XWidth - 1 clocks, instead of a priority encoder and a barrel shifter.
 module htx_recip #(
   parameter int unsigned XWidth    = 51,
   parameter int unsigned W         = 32,
@@ -17,6 +19,7 @@ module htx_recip #(
   parameter int unsigned Steps     = 2,
   parameter bit          Iterative = 1'b0,
   parameter bit          Pipelined = 1'b0,
+  parameter bit          SerialNorm = 1'b0,  // FSM form: normalise one bit per clock (no barrel shifter)
   parameter int unsigned MsbWidth  = $clog2(XWidth)
 ) (
   input  logic                clk_i,
@@ -36,7 +39,8 @@ module htx_recip #(
   localparam int unsigned MulW   = W + 3;
   localparam int unsigned StepW  = 2;
 
-  typedef enum logic [2:0] {StIdle, StTable, StMulE, StMulR, StDone} state_e;
+  typedef enum logic [2:0] {StIdle, StNorm, StTable, StMulE, StMulR, StDone} state_e;
+  localparam bit Serial = SerialNorm && !Pipelined;
 
   // Table entry i: round(2^(2k+g+2) / (2^(k+1) + 2i + 1)); the odd divisor never ties.
   function automatic logic [EntryW-1:0] table_entry(input int unsigned i);
@@ -53,26 +57,28 @@ module htx_recip #(
 
   logic [MsbWidth-1:0] msb;
   logic [W-1:0]        mant;
-  always_comb begin
-    msb = '0;
-    for (int unsigned i = 0; i < XWidth; i++) begin
-      if (x_i[i]) msb = MsbWidth'(i);
-    end
-  end
-
-  if (XWidth >= W) begin : g_norm_wide
-    logic [XWidth-1:0] shifted;
+  if (!Serial) begin : g_norm_comb
     always_comb begin
-      if (32'(msb) >= W - 1) shifted = x_i >> (32'(msb) - (W - 1));
-      else                   shifted = x_i << ((W - 1) - 32'(msb));
+      msb = '0;
+      for (int unsigned i = 0; i < XWidth; i++) begin
+        if (x_i[i]) msb = MsbWidth'(i);
+      end
     end
-    logic unused_high;
-    assign mant = shifted[W-1:0];
-    assign unused_high = ^shifted[XWidth-1:W];
-  end else begin : g_norm_narrow
-    logic [W-1:0] x_ext;
-    assign x_ext = W'(x_i);
-    assign mant  = x_ext << ((W - 1) - 32'(msb));
+
+    if (XWidth >= W) begin : g_norm_wide
+      logic [XWidth-1:0] shifted;
+      always_comb begin
+        if (32'(msb) >= W - 1) shifted = x_i >> (32'(msb) - (W - 1));
+        else                   shifted = x_i << ((W - 1) - 32'(msb));
+      end
+      logic unused_high;
+      assign mant = shifted[W-1:0];
+      assign unused_high = ^shifted[XWidth-1:W];
+    end else begin : g_norm_narrow
+      logic [W-1:0] x_ext;
+      assign x_ext = W'(x_i);
+      assign mant  = x_ext << ((W - 1) - 32'(msb));
+    end
   end
 
   if (Pipelined) begin : g_pipe
@@ -160,6 +166,35 @@ module htx_recip #(
   logic [W+1:0]        e;
 
   logic                only_q;
+  logic                norm_done;  // mant and msb hold x_i's normalised form (StNorm)
+  if (Serial) begin : g_norm_serial
+    localparam int unsigned NW = (XWidth > W) ? XWidth : W;
+    localparam int unsigned CW = $clog2(NW);
+    logic [NW-1:0] nx_q;
+    logic [CW-1:0] ncnt_q;  // shifts so far
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        nx_q   <= '0;
+        ncnt_q <= '0;
+      end else if ((state_q == StIdle) && start_i) begin
+        nx_q   <= NW'(x_i);
+        ncnt_q <= '0;
+      end else if ((state_q == StNorm) && !norm_done) begin
+        nx_q   <= nx_q << 1;
+        ncnt_q <= ncnt_q + 1'b1;
+      end
+    end
+    // X = 0 stops after NW - 1 shifts with msb 0 and a zero mantissa, as the combinational form.
+    assign norm_done = nx_q[NW-1] || (ncnt_q == CW'(NW - 1));
+    assign mant      = nx_q[NW-1 -: W];
+    assign msb       = MsbWidth'(CW'(NW - 1) - ncnt_q);
+    if (NW > W) begin : g_low
+      logic unused_low;
+      assign unused_low = ^nx_q[NW-W-1:0];
+    end
+  end else begin : g_norm_at_start
+    assign norm_done = 1'b1;
+  end
   assign mul_start = (state_q == StMulE) || (state_q == StMulR);
   assign mul_a = (state_q == StMulE) ? MulW'(m_q) : MulW'(r_q);
   assign mul_b = (state_q == StMulE) ? MulW'(r_q) : MulW'(c_q);
@@ -192,10 +227,20 @@ module htx_recip #(
       unique case (state_q)
         StIdle: if (start_i) begin
           only_q  <= table_only_i;
+          step_q  <= '0;
+          if (Serial) begin
+            state_q <= StNorm;
+          end else begin
+            m_q     <= mant;
+            msb_q   <= msb;
+            entry_q <= rom[mant[W-2 -: K]];
+            state_q <= StTable;
+          end
+        end
+        StNorm: if (norm_done) begin
           m_q     <= mant;
           msb_q   <= msb;
           entry_q <= rom[mant[W-2 -: K]];
-          step_q  <= '0;
           state_q <= StTable;
         end
         StTable: begin
