@@ -52,17 +52,17 @@ module htx_raster_divider #(
   localparam int unsigned RSC  = 2 * W - 1;
   localparam int unsigned NN   = Color ? 5 : 2;
 
-  // N 2^-s rounded (s > 0) or N 2^-s exactly (s <= 0), s = msb - (W - 1).
+  // N 2^-s rounded (s > 0) or N 2^-s exactly (s <= 0), s = msb - (W - 1), as one right shift of
+  // (N + rounding) 2^(W-1) by msb: exact for msb <= W - 1, where the rounding term is 0 (one
+  // shifter instead of a left and a right one and a multiplexer).
   function automatic logic signed [WSH-1:0] shift_num(input logic signed [NIN-1:0] num,
                                                       input logic [MsbW-1:0] msb);
-    logic signed [WSH-1:0] wide;
-    wide = WSH'(num);
-    if (32'(msb) >= W - 1) begin
-      if (32'(msb) == W - 1) shift_num = wide;
-      else shift_num = (wide + $signed(WSH'(1) << (32'(msb) - W))) >>> (32'(msb) - (W - 1));
-    end else begin
-      shift_num = wide <<< ((W - 1) - 32'(msb));
-    end
+    logic signed [WSH-1:0]     nr;
+    logic signed [WSH+W-2:0]   x;
+    nr = WSH'(num);
+    if (32'(msb) >= W) nr = nr + $signed(WSH'(1) << (32'(msb) - W));
+    x = {nr, {(W - 1){1'b0}}};
+    shift_num = WSH'(x >>> msb);
   endfunction
 
   // round(N' R 2^-rs) for the u, v numerators (LocW bits kept) and the colour channels (clamped).
