@@ -248,7 +248,9 @@ module htx_raster #(
     logic unused_dfg;
     assign unused_dfg = ^tri_dfg;
   end
-  htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NP), .AW(AW), .SideW(SideT), .AddrW(AddrW)) u_traverse (
+  // `icebreaker` (Iterative) trades two clocks on some rows for the traversal's left look.
+  htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NP), .AW(AW), .SideW(SideT), .AddrW(AddrW),
+                        .LookBehind(!Iterative)) u_traverse (
     .clk_i, .rst_ni,
     .abort_i         (abort),
     .stride_i        (stride_q),

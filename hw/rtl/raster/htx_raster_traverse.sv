@@ -4,6 +4,8 @@
 // (one column per clock, guided by which edge rejects the pixel), then emits the covered pixels
 // left to right, one per clock. Coverage of the pixel one column left and right is looked at in the
 // same clock, so a row costs its span length plus how far its start moved; an empty row costs one.
+// LookBehind = 0 (`icebreaker`) leaves out the left look (three edge adders and their tests): a row
+// whose start is found by walking left steps one column past it and back, two clocks more.
 // The covered set is exactly the model's: E_k >= threshold_k for all k, cov the clipped box.
 // Each fragment carries its plane values (NP planes, modulo 2^AW), the triangle's sideband (state,
 // flat colour, texel offsets, LOD gradients) and whether it is its span's first or last pixel.
@@ -13,7 +15,8 @@ module htx_raster_traverse #(
   parameter int unsigned NP    = 9,
   parameter int unsigned AW    = 74,
   parameter int unsigned SideW = 64,
-  parameter int unsigned AddrW = 24
+  parameter int unsigned AddrW = 24,
+  parameter bit          LookBehind = 1'b1
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -45,7 +48,8 @@ module htx_raster_traverse #(
 );
   localparam int unsigned XCW = 15;  // signed column, the walk reaches x_lo - 1 .. x_hi + 1
 
-  typedef enum logic [2:0] {StIdle, StSeek, StSeekL, StSeekR, StEmit} state_e;
+  // StBack (LookBehind = 0): walking left over covered pixels to the first one of the span.
+  typedef enum logic [2:0] {StIdle, StSeek, StSeekL, StSeekR, StEmit, StBack} state_e;
 
   state_e state_q;
   logic [SideW-1:0]        side_q;
@@ -67,26 +71,32 @@ module htx_raster_traverse #(
   logic signed [EW-1:0] step_b [3];
   logic [2:0] in_cur, in_prev_e, in_next_e, fail_pos, fail_neg, fail_zero;
   for (genvar k = 0; k < 3; k++) begin : g_cov
-    logic signed [EW-1:0] ep, en;
+    logic signed [EW-1:0] en;
     assign step_a[k] = EW'(a_q[k]) <<< 8;
     assign step_b[k] = EW'(b_q[k]) <<< 8;
-    assign ep = e_q[k] - step_a[k];
     assign en = e_q[k] + step_a[k];
     assign in_cur[k]    = !e_q[k][EW-1] && (!thr_q[k] || (e_q[k] != '0));
-    assign in_prev_e[k] = !ep[EW-1] && (!thr_q[k] || (ep != '0));
     assign in_next_e[k] = !en[EW-1] && (!thr_q[k] || (en != '0));
+    if (LookBehind) begin : g_prev
+      logic signed [EW-1:0] ep;
+      assign ep = e_q[k] - step_a[k];
+      assign in_prev_e[k] = !ep[EW-1] && (!thr_q[k] || (ep != '0));
+    end else begin : g_no_prev
+      assign in_prev_e[k] = 1'b0;
+    end
     assign fail_pos[k]  = !in_cur[k] && (a_q[k] > 0);
     assign fail_neg[k]  = !in_cur[k] && (a_q[k] < 0);
     assign fail_zero[k] = !in_cur[k] && (a_q[k] == 0);
   end
 
-  logic cov, in_prev, in_next, left_of, right_of, empty_row;
+  logic cov, in_prev, in_next, left_of, right_of, empty_row, at_lo;
   assign cov    = (&in_cur) && (x_q >= x_lo_q) && (x_q <= x_hi_q);
   assign in_prev   = (&in_prev_e) && (x_q - 1 >= x_lo_q);
   assign in_next   = (&in_next_e) && (x_q + 1 <= x_hi_q);
   assign left_of   = (x_q < x_lo_q) || (|fail_pos);
   assign right_of  = (x_q > x_hi_q) || (|fail_neg);
   assign empty_row = (|fail_zero) || (left_of && right_of);
+  assign at_lo     = (x_q <= x_lo_q);  // the pixel to the left is outside the box
 
   // ---- Decision ---------------------------------------------------------------------------------
   typedef enum logic [2:0] {ActNone, ActLeft, ActRight, ActRowCur, ActRowSaved} act_e;
@@ -95,27 +105,29 @@ module htx_raster_traverse #(
   state_e mode_next;
   assign can_emit = !out_valid_q || frag_ready_i;
 
+  logic start_span;  // the pixel is covered and its span's first: emit it
   always_comb begin
-    act       = ActNone;
-    want_emit = 1'b0;
-    emit      = 1'b0;
-    save      = 1'b0;
-    first     = 1'b0;
-    mode_next = state_q;
+    act        = ActNone;
+    want_emit  = 1'b0;
+    emit       = 1'b0;
+    save       = 1'b0;
+    first      = 1'b0;
+    start_span = 1'b0;
+    mode_next  = state_q;
     unique case (state_q)
-      StSeek, StSeekL, StSeekR: begin
-        if (empty_row) begin
+      StSeek, StSeekL, StSeekR, StBack: begin
+        if ((state_q == StBack) && !cov) begin
+          // Walked one column past the span's start (never an empty row: the pixel to the right is
+          // covered); its first pixel is the next one.
+          act = ActRight; mode_next = StSeekR;
+        end else if (empty_row) begin
           act = ActRowCur;
-        end else if (cov && !in_prev) begin
-          emit  = 1'b1;
-          first = 1'b1;
-          if (in_next) begin
-            save = 1'b1; act = ActRight; mode_next = StEmit;
-          end else begin
-            act = ActRowCur;
-          end
+        end else if (cov && (LookBehind ? !in_prev : ((state_q == StSeekR) || at_lo))) begin
+          // Without the left look a covered pixel is known to be first when the walk arrived at it
+          // moving right (from an uncovered pixel) or it is the box's first column.
+          start_span = 1'b1;
         end else if (cov) begin
-          act = ActLeft; mode_next = StSeekL;
+          act = ActLeft; mode_next = LookBehind ? StSeekL : StBack;
         end else if (left_of) begin
           if (state_q == StSeekL) act = ActRowCur;  // moved left past a span that is not there
           else begin act = ActRight; mode_next = StSeekR; end
@@ -130,6 +142,15 @@ module htx_raster_traverse #(
       end
       default: ;
     endcase
+    if (start_span) begin
+      emit  = 1'b1;
+      first = 1'b1;
+      if (in_next) begin
+        save = 1'b1; act = ActRight; mode_next = StEmit;
+      end else begin
+        act = ActRowCur;
+      end
+    end
     want_emit = emit;
     if (emit && !can_emit) begin
       act  = ActNone;
@@ -142,16 +163,26 @@ module htx_raster_traverse #(
   logic last_row;
   assign last_row = (y_q == y_hi_q);
 
-  // ---- Plane steps: one adder per plane ---------------------------------------------------------
-  // A step to the left or right adds -/+ 256 g_x to the accumulator; a step to the next row adds
-  // 256 g_y to it or to the row's saved copy. Both go through one adder, the subtraction as
-  // + ~(256 g_x) + 1 with the + 1 through an extra low bit: two adders and a multiplexer before,
-  // 5,457 -> 3,232 LUT4 for the traversal alone with the `icebreaker` widths. (The edges keep their
-  // form: e -/+ 256 a is also the coverage look-ahead, so merging saves nothing there.)
+  // ---- Steps: one adder per edge and per plane ---------------------------------------------------
+  // A step to the left or right adds -/+ 256 a (256 g_x) to the edge (plane) value; a step to the
+  // next row adds 256 b (256 g_y) to it or to the row's saved copy. Both go through one adder, the
+  // subtraction as + ~x + 1 with the + 1 through an extra low bit: two adders and a multiplexer
+  // before, 5,457 -> 3,232 LUT4 for the planes of the traversal alone with the `icebreaker` widths.
   logic step_row, step_neg, step_saved;
   assign step_row   = (act == ActRowCur) || (act == ActRowSaved);
   assign step_neg   = (act == ActLeft);
   assign step_saved = (act == ActRowSaved);
+  logic signed [EW-1:0] e_next [3];
+  for (genvar k = 0; k < 3; k++) begin : g_estep
+    logic [EW-1:0] base, inc;
+    logic [EW:0]   sum;
+    assign base = step_saved ? es_q[k] : e_q[k];
+    assign inc  = step_row ? step_b[k] : step_a[k];
+    assign sum  = {base, 1'b1} + {inc ^ {EW{step_neg}}, step_neg};
+    assign e_next[k] = sum[EW:1];
+    logic unused_sum;
+    assign unused_sum = sum[0];
+  end
   logic [AW-1:0] acc_next [NP];
   for (genvar p = 0; p < NP; p++) begin : g_step
     logic [AW-1:0] base, inc;
@@ -219,8 +250,7 @@ module htx_raster_traverse #(
       unique case (act)
         ActLeft, ActRight: begin
           x_q <= (act == ActRight) ? x_q + 1'b1 : x_q - 1'b1;
-          for (int k = 0; k < 3; k++)
-            e_q[k] <= (act == ActRight) ? e_q[k] + step_a[k] : e_q[k] - step_a[k];
+          for (int k = 0; k < 3; k++) e_q[k] <= e_next[k];
           for (int p = 0; p < NP; p++) acc_q[p] <= acc_next[p];
           state_q <= mode_next;
         end
@@ -231,8 +261,7 @@ module htx_raster_traverse #(
             y_q        <= y_q + 1'b1;
             row_base_q <= row_base_q + AddrW'(stride_i);
             if (act == ActRowSaved) x_q <= xs_q;
-            for (int k = 0; k < 3; k++)
-              e_q[k] <= ((act == ActRowSaved) ? es_q[k] : e_q[k]) + step_b[k];
+            for (int k = 0; k < 3; k++) e_q[k] <= e_next[k];
             for (int p = 0; p < NP; p++) acc_q[p] <= acc_next[p];
             state_q <= StSeek;
           end
