@@ -219,7 +219,6 @@ module htx_recip #(
       r_q     <= '0;
       c_q     <= '0;
       msb_q   <= '0;
-      entry_q <= '0;
       only_q  <= 1'b0;
     end else if (abort_i) begin
       state_q <= StIdle;
@@ -233,14 +232,12 @@ module htx_recip #(
           end else begin
             m_q     <= mant;
             msb_q   <= msb;
-            entry_q <= rom[mant[W-2 -: K]];
             state_q <= StTable;
           end
         end
         StNorm: if (norm_done) begin
           m_q     <= mant;
           msb_q   <= msb;
-          entry_q <= rom[mant[W-2 -: K]];
           state_q <= StTable;
         end
         StTable: begin
@@ -260,6 +257,14 @@ module htx_recip #(
         StDone: state_q <= StIdle;
         default: state_q <= StIdle;
       endcase
+    end
+  end
+
+  // The table entry register has no reset, so the table read is synchronous and Yosys maps the
+  // table to one block RAM (with the asynchronous reset it was a LUT ROM, about 200 LUT4).
+  always_ff @(posedge clk_i) begin
+    if (!abort_i && (Serial ? ((state_q == StNorm) && norm_done) : ((state_q == StIdle) && start_i))) begin
+      entry_q <= rom[mant[W-2 -: K]];
     end
   end
 
