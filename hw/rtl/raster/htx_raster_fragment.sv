@@ -47,9 +47,10 @@ module htx_raster_fragment #(
   localparam logic [ZBits-1:0] ZMax = {ZBits{1'b1}};
 
   function automatic logic [7:0] quantise(input logic [7:0] c, input int unsigned bits);
-    // round(c (2^bits - 1) / 255): x = c (2^bits - 1) + 128; (x + (x >> 8)) >> 8.
+    // round(c (2^bits - 1) / 255): x = c (2^bits - 1) + 128; (x + (x >> 8)) >> 8. The product by
+    // the constant is written as (c << bits) - c, so it is an adder and not a DSP.
     logic [15:0] x;
-    x = 16'(c) * 16'((1 << bits) - 1) + 16'd128;
+    x = (16'(c) << bits) - 16'(c) + 16'd128;
     quantise = 8'((x + (x >> 8)) >> 8);
   endfunction
 
@@ -91,10 +92,14 @@ module htx_raster_fragment #(
   end
 
   // ---- Clear ------------------------------------------------------------------------------------
-  logic             clr_q, clr_color_q, clr_depth_q;
-  logic [AddrW-1:0] clr_addr_q, clr_end_q;
-  logic [25:0]      clr_n;
-  assign clr_n = 26'(height_i) * 26'(stride_i);
+  // The clear walks pixels 0 .. height stride - 1 (and stops at the memory's end) counting columns
+  // and rows, so the end needs no height x stride product (a DSP).
+  logic             clr_q, clr_color_q, clr_depth_q, clr_last, clr_row_end;
+  logic [AddrW-1:0] clr_addr_q;
+  logic [12:0]      clr_col_q, clr_row_q, clr_col_max_q, clr_row_max_q;
+  assign clr_row_end = (clr_col_q == clr_col_max_q);
+  assign clr_last    = (clr_row_end && (clr_row_q == clr_row_max_q)) ||
+                       (clr_addr_q + 1'b1 >= AddrW'(FbPixels));
   assign clearing_o = clr_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -112,7 +117,10 @@ module htx_raster_fragment #(
       clr_color_q     <= 1'b0;
       clr_depth_q     <= 1'b0;
       clr_addr_q      <= '0;
-      clr_end_q       <= '0;
+      clr_col_q       <= '0;
+      clr_row_q       <= '0;
+      clr_col_max_q   <= '0;
+      clr_row_max_q   <= '0;
     end else if (abort_i) begin
       f2_valid_q      <= 1'b0;
       last_wz_valid_q <= 1'b0;
@@ -133,13 +141,18 @@ module htx_raster_fragment #(
       end
       if (clr_q) begin
         clr_addr_q <= clr_addr_q + 1'b1;
-        if (clr_addr_q + 1'b1 >= clr_end_q) clr_q <= 1'b0;
-      end else if (clear_start_i && (clr_n != 0)) begin
-        clr_q       <= 1'b1;
-        clr_color_q <= clear_color_i;
-        clr_depth_q <= clear_depth_i;
-        clr_addr_q  <= '0;
-        clr_end_q   <= (clr_n > 26'(FbPixels)) ? AddrW'(FbPixels) : AddrW'(clr_n);
+        clr_col_q  <= clr_row_end ? 13'd0 : clr_col_q + 13'd1;
+        if (clr_row_end) clr_row_q <= clr_row_q + 13'd1;
+        if (clr_last) clr_q <= 1'b0;
+      end else if (clear_start_i && (height_i != 13'd0) && (stride_i != 13'd0)) begin
+        clr_q         <= 1'b1;
+        clr_color_q   <= clear_color_i;
+        clr_depth_q   <= clear_depth_i;
+        clr_addr_q    <= '0;
+        clr_col_q     <= '0;
+        clr_row_q     <= '0;
+        clr_col_max_q <= stride_i - 13'd1;
+        clr_row_max_q <= height_i - 13'd1;
       end
     end
   end
