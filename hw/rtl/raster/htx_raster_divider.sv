@@ -115,11 +115,16 @@ module htx_raster_divider #(
     assign en = !out_valid_q || out_ready_i;
     assign in_ready_o = en;
 
+    logic         r_mul_start;  // (the pipelined unit has its own products)
+    logic [W+2:0] r_mul_a, r_mul_b;
     htx_recip #(.XWidth(AccQ), .W(W), .K(K), .G(G), .Steps(Steps), .Pipelined(1'b1)) u_recip (
       .clk_i, .rst_ni, .abort_i,
       .start_i(va_q), .en_i(en), .table_only_i(1'b0), .x_i(qa_q),
-      .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb)
+      .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
+      .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(1'b0), .mul_p_i('0)
     );
+    logic unused_r_mul;
+    assign unused_r_mul = ^{r_mul_start, r_mul_a, r_mul_b};
 
     logic [WSH-1:0] sh [NN];
     logic unused_sh;
@@ -192,20 +197,33 @@ module htx_raster_divider #(
     // the products).
     assign r_start    = take && in_need_i;
 
+    // The reciprocal's Newton products go through the numerators' multiplier (ExtMul): the two
+    // never work at once (the numerators wait for the reciprocal), so one multiplier serves both.
+    logic                   r_mul_start, r_mul_done;
+    logic signed [W+2:0]    r_mul_a, r_mul_b;
+    logic signed [2*W+5:0]  r_mul_p;
     htx_recip #(.XWidth(AccQ), .W(W), .K(K), .G(G), .Steps(Steps), .Iterative(MulIterative),
-                .Pipelined(1'b0)) u_recip (
+                .Pipelined(1'b0), .ExtMul(1'b1)) u_recip (
       .clk_i, .rst_ni, .abort_i,
       .start_i(r_start), .en_i(1'b1), .table_only_i(in_lut_i && !Color), .x_i(q_eff),
-      .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb)
+      .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
+      .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(r_mul_done),
+      .mul_p_i(r_mul_p)
     );
 
     // One multiplier for the numerators in turn: u, v, then the colour channels.
     logic [WSH-1:0]         shn;
     logic                   m_start, m_done;
     localparam int unsigned MA = Color ? ((NSU > NSC) ? NSU : NSC) : NSU;
+    localparam int unsigned SA = (MA > W + 3) ? MA : W + 3;  // the shared multiplier's operands
+    localparam int unsigned SB = W + 3;
     logic signed [MA-1:0]   m_a;  // wide enough for both numerator kinds
     logic signed [W+1:0]    m_b;
     logic signed [MA+W+1:0] m_p;
+    logic signed [SA-1:0]   s_a;
+    logic signed [SB-1:0]   s_b;
+    logic signed [SA+SB-1:0] s_p;
+    logic                   s_done;
     logic [2:0]             kmax;
     assign kmax  = 3'(NN - 1);
     logic [NIN-1:0] n_sel;
@@ -218,10 +236,19 @@ module htx_raster_divider #(
     assign m_a   = (k_q < 3'd2) ? MA'($signed(NSU'(shn))) : MA'($signed(NSC'(shn)));
     assign m_b   = $signed({1'b0, r_sel});
     assign m_start = (state_q == StMul);
-    htx_raster_mul #(.AWidth(MA), .BWidth(W+2), .Iterative(MulIterative), .ExtraW(1)) u_mul (
-      .clk_i, .rst_ni, .abort_i, .start_i(m_start), .a_i(m_a), .b_i(m_b), .extra_i(1'b0), .done_o(m_done),
-      .p_o(m_p)
+    assign s_a = r_mul_start ? SA'(r_mul_a) : SA'(m_a);
+    assign s_b = r_mul_start ? SB'(r_mul_b) : SB'(m_b);
+    htx_raster_mul #(.AWidth(SA), .BWidth(SB), .Iterative(MulIterative), .ExtraW(1)) u_mul (
+      .clk_i, .rst_ni, .abort_i, .start_i(m_start || r_mul_start), .a_i(s_a), .b_i(s_b),
+      .extra_i(1'b0), .done_o(s_done), .p_o(s_p)
     );
+    // Both products fit their own widths, so the low bits of the wider product are exact.
+    assign m_p        = (MA+W+2)'(s_p);
+    assign m_done     = s_done && m_start;
+    assign r_mul_p    = (2*W+6)'(s_p);
+    assign r_mul_done = s_done && r_mul_start;
+    logic unused_s;
+    assign unused_s = ^s_p;
     logic signed [MA+W+1:0] m_ru, m_rc;
     assign m_ru = (m_p + $signed((MA+W+2)'(1) << (RSU - 1))) >>> RSU;
     assign m_rc = (m_p + $signed((MA+W+2)'(1) << (RSC - 1))) >>> RSC;

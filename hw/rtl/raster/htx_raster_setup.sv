@@ -215,6 +215,8 @@ module htx_raster_setup #(
   logic                recip_start, recip_done, recip_busy, recip_valid_q, det_pend_q;
   logic [RecipW:0]     recip_r, recip_r0, rdet_q;
   logic [MsbW-1:0]     recip_msb, msbdet_q;
+  logic                recip_mul_start;      // (setup's unit has its own multiplier)
+  logic [RecipW+2:0]   recip_mul_a, recip_mul_b;
   logic [DetW-1:0]     det_abs, recip_x;
   logic [ShiftW-1:0]   grad_shift;
   logic                planes_abort, det_start, av_start, affine_q;
@@ -238,8 +240,15 @@ module htx_raster_setup #(
     .done_o      (recip_done),
     .r_o         (recip_r),
     .r0_o        (recip_r0),
-    .msb_o       (recip_msb)
+    .msb_o       (recip_msb),
+    .mul_start_o (recip_mul_start),
+    .mul_a_o     (recip_mul_a),
+    .mul_b_o     (recip_mul_b),
+    .mul_done_i  (1'b0),
+    .mul_p_i     ('0)
   );
+  logic unused_recip_mul;
+  assign unused_recip_mul = ^{recip_mul_start, recip_mul_a, recip_mul_b};
 
   // ---- Planes: z, r, g, b, q, uq, vq, and for AFFINE ua, va -------------------------------------
   // Nine plane units working in parallel, or (Iterative, the `icebreaker` configuration) one unit

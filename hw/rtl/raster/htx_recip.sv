@@ -11,6 +11,7 @@
 // X = 0 yields msb_o = 0 and an unspecified r_o (setup never asks: a zero determinant draws nothing).
 // SerialNorm (FSM form only; setup's unit in `icebreaker`) shifts X left one bit per clock until its
 // top bit is set, up to XWidth - 1 clocks, instead of a priority encoder and a barrel shifter.
+// ExtMul (FSM form only; the `icebreaker` divider's unit) uses the caller's multiplier.
 module htx_recip #(
   parameter int unsigned XWidth    = 51,
   parameter int unsigned W         = 32,
@@ -20,6 +21,7 @@ module htx_recip #(
   parameter bit          Iterative = 1'b0,
   parameter bit          Pipelined = 1'b0,
   parameter bit          SerialNorm = 1'b0,  // FSM form: normalise one bit per clock (no barrel shifter)
+  parameter bit          ExtMul    = 1'b0,  // FSM form: the Newton products go to the mul_* port
   parameter int unsigned MsbWidth  = $clog2(XWidth)
 ) (
   input  logic                clk_i,
@@ -33,7 +35,14 @@ module htx_recip #(
   output logic                done_o,
   output logic [W:0]          r_o,
   output logic [W:0]          r0_o,
-  output logic [MsbWidth-1:0] msb_o
+  output logic [MsbWidth-1:0] msb_o,
+
+  // ExtMul: a multiplier outside (the caller's, idle while this unit is busy) with the handshake of
+  // htx_raster_mul; otherwise unused (outputs 0).
+  output logic                mul_start_o,
+  output logic [W+2:0]        mul_a_o, mul_b_o,   // signed
+  input  logic                mul_done_i,
+  input  logic [2*W+5:0]      mul_p_i             // signed a b
 );
   localparam int unsigned EntryW = K + G + 1;
   localparam int unsigned MulW   = W + 3;
@@ -150,7 +159,10 @@ module htx_recip #(
     assign r0_o   = r0_p[Lat-1];
     assign msb_o  = msb_p[Lat-1];
     logic unused_pipe;
-    assign unused_pipe = ^{table_only_i, m_p[Lat-1]};
+    assign unused_pipe = ^{table_only_i, m_p[Lat-1], mul_done_i, mul_p_i};
+    assign mul_start_o = 1'b0;
+    assign mul_a_o     = '0;
+    assign mul_b_o     = '0;
   end else begin : g_fsm
   state_e              state_q;
   logic [StepW-1:0]    step_q;
@@ -199,15 +211,28 @@ module htx_recip #(
   assign mul_a = (state_q == StMulE) ? MulW'(m_q) : MulW'(r_q);
   assign mul_b = (state_q == StMulE) ? MulW'(r_q) : MulW'(c_q);
 
-  htx_raster_mul #(.AWidth(MulW), .BWidth(MulW), .Iterative(Iterative), .ExtraW(1)) u_mul (
-    .clk_i, .rst_ni, .abort_i,
-    .start_i(mul_start),
-    .a_i    (mul_a),
-    .b_i    (mul_b),
-    .extra_i(1'b0),
-    .done_o (mul_done),
-    .p_o    (mul_p)
-  );
+  if (ExtMul) begin : g_ext_mul
+    assign mul_start_o = mul_start;
+    assign mul_a_o     = mul_a;
+    assign mul_b_o     = mul_b;
+    assign mul_done    = mul_done_i;
+    assign mul_p       = mul_p_i;
+  end else begin : g_own_mul
+    htx_raster_mul #(.AWidth(MulW), .BWidth(MulW), .Iterative(Iterative), .ExtraW(1)) u_mul (
+      .clk_i, .rst_ni, .abort_i,
+      .start_i(mul_start),
+      .a_i    (mul_a),
+      .b_i    (mul_b),
+      .extra_i(1'b0),
+      .done_o (mul_done),
+      .p_o    (mul_p)
+    );
+    assign mul_start_o = 1'b0;
+    assign mul_a_o     = '0;
+    assign mul_b_o     = '0;
+    logic unused_ext;
+    assign unused_ext = ^{mul_done_i, mul_p_i};
+  end
   assign prod = mul_p;
   assign e    = (W + 2)'(prod >> (W - 1));
 
