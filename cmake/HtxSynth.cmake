@@ -1,7 +1,8 @@
 # Synthesis report for the iCE40 UP5K: `cmake --build BUILD --target synth-report` writes
 # BUILD/reports/synth.json, one object per design with lut4, dsp, ebr, spram (cells after Debian
 # Yosys `synth_ice40 -dsp`) and fmax_mhz (nextpnr-ice40 --up5k). Not part of the default build or
-# the tests: place-and-route takes minutes.
+# the tests: place-and-route takes minutes. `--target synth-breakdown-NAME` counts design NAME's
+# cells per module instead (BUILD/reports/synth/NAME.modules.txt).
 #
 # HTX_SYNTH_DESIGNS lists the designs. For each design NAME:
 #   HTX_SYNTH_<NAME>_AREA_TOP  top whose cells are counted (registered with htx_rtl_top)
@@ -48,6 +49,15 @@ foreach(d IN LISTS HTX_SYNTH_DESIGNS)
     COMMENT "synth-report: ${d} (yosys synth_ice40, nextpnr-ice40 --up5k)"
     VERBATIM)
   list(APPEND outputs ${out})
+  # The same area top counted per module (docs/area.md): `--target synth-breakdown-NAME`.
+  add_custom_target(synth-breakdown-${d}
+    COMMAND ${CMAKE_COMMAND} -DNAME=${d} -DTOP=${area_top} "-DSOURCES=${area_src_arg}"
+      -DWORK=${HTX_SYNTH_DIR} -DYOSYS=${HTX_YOSYS_BIN} "-DYOSYS_DEFINES=${HTX_YOSYS_DEFINES}"
+      -DOUT=${HTX_SYNTH_DIR}/${d}.modules.txt
+      -P ${CMAKE_SOURCE_DIR}/cmake/HtxSynthBreakdown.cmake
+    DEPENDS htx_regs_sv
+    COMMENT "synth-breakdown: ${d} (yosys synth_ice40 -noflatten, by module)"
+    VERBATIM)
 endforeach()
 
 add_custom_target(synth-report
