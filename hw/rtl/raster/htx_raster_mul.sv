@@ -1,8 +1,8 @@
-// Signed multiplier of the raster setup with a start/done handshake. Iterative = 0: the product is
-// combinational and done_o follows start_i in the same cycle (the `full` configuration: one product
-// per clock). Iterative = 1: one bit of b per clock, BWidth clocks, then extra_i clocks of right
-// shift (the `icebreaker` configuration trades clocks for LUTs and DSPs; the combinational form
-// ignores extra_i, so callers give it 0). The operands must stay stable while start_i is held (a_i is
+// Signed multiplier of the raster setup with a start/done handshake; p_o = (a b) >>> extra_i.
+// Iterative = 0: the product (and its shift) is combinational and done_o follows start_i in the
+// same cycle (the `full` configuration: one product per clock). Iterative = 1: one bit of b per
+// clock, BWidth clocks, then extra_i clocks of right shift in the same registers (the `icebreaker`
+// configuration trades clocks for LUTs and DSPs). The operands must stay stable while start_i is held (a_i is
 // read on every clock of the product); done_o is a one-cycle pulse. abort_i drops a product in
 // progress, so a unit aborted mid-product does not take its stale result for the next one.
 module htx_raster_mul #(
@@ -17,7 +17,7 @@ module htx_raster_mul #(
   input  logic                             start_i,
   input  logic signed [AWidth-1:0]         a_i,
   input  logic signed [BWidth-1:0]         b_i,
-  input  logic [ExtraW-1:0]                extra_i,  // Iterative: p_o = (a b) >>> extra_i
+  input  logic [ExtraW-1:0]                extra_i,  // p_o = (a b) >>> extra_i
   output logic                             done_o,
   output logic signed [AWidth+BWidth-1:0]  p_o
 );
@@ -25,9 +25,11 @@ module htx_raster_mul #(
 
   if (!Iterative) begin : g_comb
     logic unused;
-    assign unused = ^{clk_i, rst_ni, abort_i, extra_i};
+    logic signed [PWidth-1:0] prod;
+    assign unused = ^{clk_i, rst_ni, abort_i};
     assign done_o = start_i;
-    assign p_o    = PWidth'(a_i) * PWidth'(b_i);
+    assign prod   = PWidth'(a_i) * PWidth'(b_i);
+    assign p_o    = prod >>> extra_i;
   end else begin : g_iter
     // The textbook sequential signed multiplier: {h, l} starts as {0, b}; each clock adds a to h
     // when l's lowest bit is set (subtracts it for b's sign bit, the last) and shifts {h, l} right
@@ -39,18 +41,16 @@ module htx_raster_mul #(
     logic                     busy_q, done_q, last, in_mul, finish;
     logic [CntW-1:0]          cnt_q;
     logic signed [AWidth:0]   h_q, addend, sum;
-    logic [AWidth+1:0]        sum_c;
     logic [BWidth-1:0]        l_q;
 
     assign in_mul = (cnt_q < CntW'(BWidth));
     assign last   = (cnt_q == CntW'(BWidth - 1));
     assign finish = (cnt_q == CntW'(BWidth - 1) + CntW'(extra_i));
     assign addend = (l_q[0] && in_mul) ? (AWidth + 1)'(a_i) : '0;
-    // h - addend as h + ~addend + 1, the + 1 through an extra low bit: one adder, not two.
-    assign sum_c  = {h_q, 1'b1} + {addend ^ {(AWidth + 1){last}}, last};
-    assign sum    = sum_c[AWidth+1:1];
-    logic unused;
-    assign unused = sum_c[0];
+    // h + addend, or h - addend for b's sign bit: one adder (htx_raster_addsub), not two.
+    htx_raster_addsub #(.W(AWidth + 1)) u_addsub (
+      .a_i(h_q), .b_i(addend), .sub_i(last), .sum_o(sum)
+    );
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin

@@ -82,10 +82,10 @@ module htx_raster_plane #(
   end
   assign mul_start = (state_q != StIdle) && (state_q != StWait) && (state_q != StDone);
 
-  // Iterative: the multiplier shifts the gradient products right by shift - 1 itself, and only the
-  // last halving and its rounding are left here (no barrel shifter).
+  // The multiplier shifts the gradient products right by shift - 1 itself (the iterative one in
+  // its own registers, no barrel shifter), and only the last halving and its rounding are left here.
   logic [ShiftW-1:0] mul_extra;
-  assign mul_extra = (Iterative && ((state_q == StGx) || (state_q == StGy))) ? shift_i - 1'b1 : '0;
+  assign mul_extra = ((state_q == StGx) || (state_q == StGy)) ? shift_i - 1'b1 : '0;
 
   htx_raster_mul #(.AWidth(MA), .BWidth(MB), .Iterative(Iterative), .ExtraW(ShiftW)) u_mul (
     .clk_i, .rst_ni, .abort_i,
@@ -97,11 +97,7 @@ module htx_raster_plane #(
     .p_o    (mul_p)
   );
   // Round to nearest, ties up: (p + 2^(shift-1)) >>> shift = ((p >>> (shift - 1)) + 1) >>> 1.
-  if (Iterative) begin : g_round_iter
-    assign rounded = (mul_p + $signed(PW'(1))) >>> 1;
-  end else begin : g_round_comb
-    assign rounded = (mul_p + $signed(PW'(1) << (shift_i - 1'b1))) >>> shift_i;
-  end
+  assign rounded = (mul_p + $signed(PW'(1))) >>> 1;
 
   // start = a0 2^GF + g_x dxs + g_y dys: the two products go into one adder.
   logic [AccW-1:0] acc_sum;

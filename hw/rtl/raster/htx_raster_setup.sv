@@ -254,6 +254,7 @@ module htx_raster_setup #(
   // Nine plane units working in parallel, or (Iterative, the `icebreaker` configuration) one unit
   // taking the planes in turn (htx_raster_plane_seq).
   localparam bit SharedPlanes = Iterative;
+  localparam int unsigned NS  = HasAffine ? NP : 7;  // planes built: ua, va only for AFFINE
   logic                 apl_start;         // AFFINE's vertex coordinates are ready (pulse)
   logic [1:0]           apl_done;          // the ua, va planes are done
   logic [LocW-1:0]      ua_v [3];
@@ -312,49 +313,52 @@ module htx_raster_setup #(
     assign sv[VSW*(24+i) +: VSW] = VSW'($signed(va_v[i]));
   end
 
+  // Planes not built (ua, va without AFFINE) give zeros.
+  for (genvar p = NS; p < NP; p++) begin : g_plane_off
+    assign pgx[p] = '0;
+    assign pgy[p] = '0;
+    assign pst[p] = '0;
+  end
+
   if (!SharedPlanes) begin : g_planes_par
     // One plane unit per plane; ua and va (planes 7, 8) start when AFFINE's vertex coordinates are
     // ready. The unit of q, uq, vq also gives its gradients at full precision to the LOD shift.
-    for (genvar p = 0; p < NP; p++) begin : g_plane
+    for (genvar p = 0; p < NS; p++) begin : g_plane
       localparam int unsigned VBP = plane_vb(p);
       localparam int unsigned AP  = VBP + GF + 2;
       localparam int unsigned GP  = VBP + DW + 2 + GF + 1;
-      if ((p < 7) || HasAffine) begin : g_on
-        logic [AP-1:0] gx, gy, st;
-        logic [GP-1:0] gxw, gyw;
-        htx_raster_plane #(.VB(VBP), .Signed(p >= 5), .DW(DW), .W(RecipW), .GF(GF),
-                           .Iterative(Iterative), .ShiftW(ShiftW)) u_plane (
-          .clk_i, .rst_ni,
-          .abort_i      (planes_abort),
-          .start_i      ((p < 7) ? plane_start_q : apl_start),
-          .a0_i(sv[VSW*(3*p) +: VBP]), .a1_i(sv[VSW*(3*p+1) +: VBP]), .a2_i(sv[VSW*(3*p+2) +: VBP]),
-          .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
-          .dxs_i(dxs), .dys_i(dys),
-          .recip_valid_i(recip_valid_q),
-          .r_i          (rdet_q),
-          .shift_i      (grad_shift),
-          .det_neg_i    (det_neg_q),
-          .done_o       (plane_done[p]),
-          .gx_o(gx), .gy_o(gy), .start_o(st),
-          .gxw_o(gxw), .gyw_o(gyw)
-        );
-        assign pgx[p] = AW'(gx);
-        assign pgy[p] = AW'(gy);
-        assign pst[p] = AW'(st);
-        if ((p >= 4) && (p <= 6)) begin : g_lod
-          localparam int unsigned L = (p == 4) ? 4 : 2 * (p - 5);  // lg: uq x, y, vq x, y, q x, y
-          assign lg[L]   = GWU'($signed(gxw));
-          assign lg[L+1] = GWU'($signed(gyw));
-        end else begin : g_no_lod
-          logic unused_w;
-          assign unused_w = ^{gxw, gyw};
-        end
-      end else begin : g_off
-        assign plane_done[p] = 1'b0;
-        assign pgx[p] = '0;
-        assign pgy[p] = '0;
-        assign pst[p] = '0;
+      logic [AP-1:0] gx, gy, st;
+      logic [GP-1:0] gxw, gyw;
+      htx_raster_plane #(.VB(VBP), .Signed(p >= 5), .DW(DW), .W(RecipW), .GF(GF),
+                         .Iterative(Iterative), .ShiftW(ShiftW)) u_plane (
+        .clk_i, .rst_ni,
+        .abort_i      (planes_abort),
+        .start_i      ((p < 7) ? plane_start_q : apl_start),
+        .a0_i(sv[VSW*(3*p) +: VBP]), .a1_i(sv[VSW*(3*p+1) +: VBP]), .a2_i(sv[VSW*(3*p+2) +: VBP]),
+        .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+        .dxs_i(dxs), .dys_i(dys),
+        .recip_valid_i(recip_valid_q),
+        .r_i          (rdet_q),
+        .shift_i      (grad_shift),
+        .det_neg_i    (det_neg_q),
+        .done_o       (plane_done[p]),
+        .gx_o(gx), .gy_o(gy), .start_o(st),
+        .gxw_o(gxw), .gyw_o(gyw)
+      );
+      assign pgx[p] = AW'(gx);
+      assign pgy[p] = AW'(gy);
+      assign pst[p] = AW'(st);
+      if ((p >= 4) && (p <= 6)) begin : g_lod
+        localparam int unsigned L = (p == 4) ? 4 : 2 * (p - 5);  // lg: uq x, y, vq x, y, q x, y
+        assign lg[L]   = GWU'($signed(gxw));
+        assign lg[L+1] = GWU'($signed(gyw));
+      end else begin : g_no_lod
+        logic unused_w;
+        assign unused_w = ^{gxw, gyw};
       end
+    end
+    if (NS < NP) begin : g_done_off
+      assign plane_done[NP-1:NS] = '0;
     end
     assign apl_done = plane_done[8:7];
   end else begin : g_planes_shared
@@ -362,7 +366,6 @@ module htx_raster_setup #(
     // results at its own width, so the traversal sees the same words as from nine units.
     localparam int unsigned AS  = VSW + GF + 2;
     localparam int unsigned GS  = VSW + DW + 2 + GF + 1;
-    localparam int unsigned NS  = HasAffine ? NP : 7;
     logic                s_valid, s_first, s_late;
     logic [3:0]          s_idx;
     logic [AS-1:0]       s_gx, s_gy, s_st;
@@ -390,26 +393,20 @@ module htx_raster_setup #(
     assign plane_done = {{2{s_late}}, {7{s_first}}};
     assign apl_done   = {2{s_late}};
     // Results at each plane's own width (z, r, g, b, q, uq, vq, ua, va).
-    for (genvar p = 0; p < NP; p++) begin : g_store
+    for (genvar p = 0; p < NS; p++) begin : g_store
       localparam int unsigned VBP = plane_vb(p);
       localparam int unsigned AP  = VBP + GF + 2;
-      if (p < NS) begin : g_on
-        logic [AP-1:0] gx_q, gy_q, start_q;
-        always_ff @(posedge clk_i or negedge rst_ni) begin
-          if (!rst_ni) begin
-            gx_q <= '0; gy_q <= '0; start_q <= '0;
-          end else if (s_valid && (s_idx == 4'(p))) begin
-            gx_q <= s_gx[AP-1:0]; gy_q <= s_gy[AP-1:0]; start_q <= s_st[AP-1:0];
-          end
+      logic [AP-1:0] gx_q, gy_q, start_q;
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          gx_q <= '0; gy_q <= '0; start_q <= '0;
+        end else if (s_valid && (s_idx == 4'(p))) begin
+          gx_q <= s_gx[AP-1:0]; gy_q <= s_gy[AP-1:0]; start_q <= s_st[AP-1:0];
         end
-        assign pgx[p] = AW'(gx_q);
-        assign pgy[p] = AW'(gy_q);
-        assign pst[p] = AW'(start_q);
-      end else begin : g_off
-        assign pgx[p] = '0;
-        assign pgy[p] = '0;
-        assign pst[p] = '0;
       end
+      assign pgx[p] = AW'(gx_q);
+      assign pgy[p] = AW'(gy_q);
+      assign pst[p] = AW'(start_q);
     end
     // Full-precision gradients of uq, vq (GWU bits) and q (GWQ bits, sign-extended) for the LOD unit.
     logic [GWU-1:0] lgx_q [3];
@@ -528,7 +525,6 @@ module htx_raster_setup #(
   // q_i < 2^W, so the numerator shift s = msb - (W - 1) is never positive: uq_i << (W - 1 - msb).
   logic av_done;
   if (HasAffine) begin : g_affine
-    localparam int unsigned NA = UQ + RecipW;      // shifted numerator
     localparam int unsigned RS = 2 * RecipW - 1 - TF;
     typedef enum logic [2:0] {AvIdle, AvStart, AvRecip, AvMulU, AvMulV, AvPlanes, AvWait, AvDone} av_e;
     av_e av_q;
@@ -540,48 +536,28 @@ module htx_raster_setup #(
     logic                 amul_start, amul_done, apl_start_q;
     logic [LocW-1:0]      av_coord;                 // u_i or v_i of the product just done
     assign amul_start = (av_q == AvMulU) || (av_q == AvMulV);
-    if (Iterative) begin : g_amul_iter
-      // (uq_i 2^s) R rounded by RS bits is uq_i R rounded by RS - s bits (s = W - 1 - msb): the
-      // one-bit multiplier shifts the product right by RS - s - 1 itself (extra_i) and only the last
-      // halving with its rounding is left. No barrel shifter, and a multiplier W bits narrower.
-      localparam int unsigned AE = $clog2(2 * RecipW);
-      logic signed [UQ-1:0]        amul_a;
-      logic signed [UQ+RecipW+1:0] amul_p, arnd;
-      logic [AE-1:0]               amul_extra;
-      assign amul_a     = (av_q == AvMulU) ? $signed(uq_q[ai_q]) : $signed(vq_q[ai_q]);
-      assign amul_extra = AE'(RS - RecipW) + AE'(m_q);
-      htx_raster_mul #(.AWidth(UQ), .BWidth(RecipW + 2), .Iterative(1'b1), .ExtraW(AE)) u_amul (
-        .clk_i, .rst_ni, .abort_i(planes_abort),
-        .start_i(amul_start),
-        .a_i    (amul_a),
-        .b_i    ($signed({1'b0, r_q})),
-        .extra_i(amul_extra),
-        .done_o (amul_done),
-        .p_o    (amul_p)
-      );
-      assign arnd     = (amul_p + $signed((UQ+RecipW+2)'(1))) >>> 1;
-      assign av_coord = LocW'(arnd);
-      logic unused_arnd;
-      assign unused_arnd = ^arnd[UQ+RecipW+1:LocW];
-    end else begin : g_amul_comb
-      logic signed [NA-1:0]        amul_a;
-      logic signed [NA+RecipW+1:0] amul_p, arnd;
-      assign amul_a = (av_q == AvMulU) ? ($signed(NA'($signed(uq_q[ai_q]))) <<< (RecipW - 1 - 32'(m_q)))
-                                       : ($signed(NA'($signed(vq_q[ai_q]))) <<< (RecipW - 1 - 32'(m_q)));
-      htx_raster_mul #(.AWidth(NA), .BWidth(RecipW + 2), .Iterative(1'b0), .ExtraW(1)) u_amul (
-        .clk_i, .rst_ni, .abort_i(planes_abort),
-        .start_i(amul_start),
-        .a_i    (amul_a),
-        .b_i    ($signed({1'b0, r_q})),
-        .extra_i(1'b0),
-        .done_o (amul_done),
-        .p_o    (amul_p)
-      );
-      assign arnd     = (amul_p + $signed((NA+RecipW+2)'(1) << (RS - 1))) >>> RS;
-      assign av_coord = LocW'(arnd);
-      logic unused_arnd;
-      assign unused_arnd = ^arnd[NA+RecipW+1:LocW];
-    end
+    // (uq_i 2^s) R rounded by RS bits is uq_i R rounded by RS - s bits (s = W - 1 - msb): the
+    // multiplier shifts the product right by RS - s - 1 itself (extra_i; the one-bit multiplier in its
+    // own registers) and only the last halving with its rounding is left. No shifter on the operand.
+    localparam int unsigned AE = $clog2(2 * RecipW);
+    logic signed [UQ-1:0]        amul_a;
+    logic signed [UQ+RecipW+1:0] amul_p, arnd;
+    logic [AE-1:0]               amul_extra;
+    assign amul_a     = (av_q == AvMulU) ? $signed(uq_q[ai_q]) : $signed(vq_q[ai_q]);
+    assign amul_extra = AE'(RS - RecipW) + AE'(m_q);
+    htx_raster_mul #(.AWidth(UQ), .BWidth(RecipW + 2), .Iterative(Iterative), .ExtraW(AE)) u_amul (
+      .clk_i, .rst_ni, .abort_i(planes_abort),
+      .start_i(amul_start),
+      .a_i    (amul_a),
+      .b_i    ($signed({1'b0, r_q})),
+      .extra_i(amul_extra),
+      .done_o (amul_done),
+      .p_o    (amul_p)
+    );
+    assign arnd     = (amul_p + $signed((UQ+RecipW+2)'(1))) >>> 1;
+    assign av_coord = LocW'(arnd);
+    logic unused_arnd;
+    assign unused_arnd = ^arnd[UQ+RecipW+1:LocW];
     assign av_start = (av_q == AvStart);
     assign av_i     = ai_q;
 
