@@ -98,8 +98,13 @@ function(htx_ice40_equiv)
   set_tests_properties(lint.ice40_equiv.${A_NAME} PROPERTIES LABELS lint)
 endfunction()
 
+# PREFIX names the generated class (default V<TOP>), so two parameterisations of one top can be
+# linked into one test.
 function(htx_verilate lib)
-  cmake_parse_arguments(A "TRACE" "TOP" "ARGS" ${ARGN})
+  cmake_parse_arguments(A "TRACE" "TOP;PREFIX" "ARGS" ${ARGN})
+  if(NOT A_PREFIX)
+    set(A_PREFIX V${A_TOP})
+  endif()
   get_property(all GLOBAL PROPERTY HTX_RTL_${A_TOP}_SOURCES)
   if(NOT all)
     message(FATAL_ERROR "htx_verilate: ${A_TOP} was not registered with htx_rtl_top")
@@ -109,7 +114,7 @@ function(htx_verilate lib)
   if(A_TRACE)
     set(trace TRACE_FST)
   endif()
-  verilate(${lib} SOURCES ${HTX_RTL_WAIVERS} ${all} TOP_MODULE ${A_TOP} PREFIX V${A_TOP} ${trace}
+  verilate(${lib} SOURCES ${HTX_RTL_WAIVERS} ${all} TOP_MODULE ${A_TOP} PREFIX ${A_PREFIX} ${trace}
     VERILATOR_ARGS -O3 -Wno-fatal --x-assign fast --x-initial fast ${A_ARGS})
   add_dependencies(${lib} htx_regs_sv)
   target_compile_options(${lib} PRIVATE -O2 -w)

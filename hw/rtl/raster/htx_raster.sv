@@ -248,9 +248,10 @@ module htx_raster #(
     logic unused_dfg;
     assign unused_dfg = ^tri_dfg;
   end
-  // `icebreaker` (Iterative) trades two clocks on some rows for the traversal's left look.
+  // `icebreaker` (Iterative) trades two clocks on some rows for the traversal's left look, and 13
+  // clocks per triangle for the row-offset multiplier.
   htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NP), .AW(AW), .SideW(SideT), .AddrW(AddrW),
-                        .LookBehind(!Iterative)) u_traverse (
+                        .LookBehind(!Iterative), .SerialRowBase(Iterative)) u_traverse (
     .clk_i, .rst_ni,
     .abort_i         (abort),
     .stride_i        (stride_q),
@@ -425,7 +426,7 @@ module htx_raster #(
   htx_raster_divider #(
     .AccQ(AccQ), .AccU(AccU), .AccC(AccC), .UvIntBits(UvIntBits), .W(RecipW), .K(RecipK), .G(RecipG),
     .Steps(PixelSteps), .TF(TF), .LocW(LocW), .PayW(PayD), .Pipelined(PixelPipelined),
-    .Color(PerspColor), .MulIterative(PixelMulIterative)
+    .Color(PerspColor), .MulIterative(PixelMulIterative), .MulDigits(Iterative)
   ) u_divider (
     .clk_i, .rst_ni,
     .abort_i    (abort),
@@ -584,7 +585,7 @@ module htx_raster #(
   assign req_fire = tex_req_valid_o && tex_req_ready_i;
   assign ret_fire = tex_out_valid_i && tex_out_ready_o;
   assign out_cnt_next = out_cnt_q + 8'(req_fire) - 8'(ret_fire);
-  assign tex_out_ready_o = (drop_q != 0) || frag_ready;
+  assign tex_out_ready_o = (drop_q != 0) || c_in_ready;
   assign ret_keep = tex_out_valid_i && (drop_q == 0) && !abort;
 
   logic [AddrW-1:0] t_addr;
@@ -592,19 +593,55 @@ module htx_raster #(
   logic [23:0]      t_rgb;
   logic             t_textured, t_modulate, t_zwrite;
   logic [2:0]       t_func;
-  logic [31:0]      t_rgba, t_state;
+  logic [31:0]      t_state;
   assign {t_zwrite, t_func, t_modulate, t_textured, t_rgb, t_z, t_addr} = tex_out_tag_i;
-  htx_tex_combine u_combine (
-    .textured_i(t_textured),
-    .modulate_i(t_modulate),
-    .texel_i   (tex_out_rgba_i),
-    .color_i   ({8'h00, t_rgb}),
-    .rgba_o    (t_rgba)
-  );
+  // Combine, then the fragment stage's input (c_*). `icebreaker` (Iterative) modulates one channel
+  // per clock on one multiplier in a stage of its own; otherwise all channels at once, in place.
+  logic             c_valid, c_in_ready, c_zwrite, cmb_busy;
+  logic [2:0]       c_func;
+  logic [AddrW-1:0] c_addr;
+  logic [ZBits-1:0] c_z;
+  logic [23:0]      c_rgb;
+  if (Iterative) begin : g_combine_serial
+    htx_tex_combine_serial #(.PayW(4 + ZBits + AddrW)) u_combine (
+      .clk_i, .rst_ni,
+      .abort_i    (abort),
+      .in_valid_i (ret_keep),
+      .in_ready_o (c_in_ready),
+      .textured_i (t_textured),
+      .modulate_i (t_modulate),
+      .texel_i    (tex_out_rgba_i[23:0]),
+      .color_i    (t_rgb),
+      .pay_i      ({t_zwrite, t_func, t_z, t_addr}),
+      .out_valid_o(c_valid),
+      .out_ready_i(frag_ready),
+      .rgb_o      (c_rgb),
+      .pay_o      ({c_zwrite, c_func, c_z, c_addr}),
+      .busy_o     (cmb_busy)
+    );
+    logic unused_alpha;
+    assign unused_alpha = ^tex_out_rgba_i[31:24];  // the fragment path has no alpha
+  end else begin : g_combine
+    logic [31:0] t_rgba;
+    logic        unused_alpha;
+    assign unused_alpha = ^t_rgba[31:24];  // the fragment path has no alpha
+    htx_tex_combine u_combine (
+      .textured_i(t_textured),
+      .modulate_i(t_modulate),
+      .texel_i   (tex_out_rgba_i),
+      .color_i   ({8'h00, t_rgb}),
+      .rgba_o    (t_rgba)
+    );
+    assign c_valid    = ret_keep;
+    assign c_in_ready = frag_ready;
+    assign c_rgb      = t_rgba[23:0];
+    assign {c_zwrite, c_func, c_z, c_addr} = {t_zwrite, t_func, t_z, t_addr};
+    assign cmb_busy   = 1'b0;
+  end
   always_comb begin
     t_state = '0;
-    t_state[htx_raster_reg_pkg::RASTER_STATE_DEPTH_FUNC_LSB +: 3] = t_func;
-    t_state[htx_raster_reg_pkg::RASTER_STATE_DEPTH_WRITE_LSB]     = t_zwrite;
+    t_state[htx_raster_reg_pkg::RASTER_STATE_DEPTH_FUNC_LSB +: 3] = c_func;
+    t_state[htx_raster_reg_pkg::RASTER_STATE_DEPTH_WRITE_LSB]     = c_zwrite;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -628,11 +665,11 @@ module htx_raster #(
   htx_raster_fragment #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels)) u_fragment (
     .clk_i, .rst_ni,
     .abort_i       (abort),
-    .in_valid_i    (ret_keep),
+    .in_valid_i    (c_valid),
     .in_ready_o    (frag_ready),
-    .in_addr_i     (t_addr),
-    .in_z_i        (t_z),
-    .in_rgb_i      (t_rgba[23:0]),
+    .in_addr_i     (c_addr),
+    .in_z_i        (c_z),
+    .in_rgb_i      (c_rgb),
     .in_state_i    (t_state),
     .clear_start_i (clear_start),
     .clear_color_i (clr_color_q),
@@ -652,12 +689,12 @@ module htx_raster #(
   // triangle meanwhile (hold_i), so the clear lands between the triangles before and after it.
   logic pipe_idle;
   assign pipe_idle   = !setup_busy && !tri_valid && !trav_busy && (pend_q == 0) && (out_cnt_q == 0) &&
-                       !frag_busy;
+                       !cmb_busy && !frag_busy;
   assign clear_start = clr_pend_q && pipe_idle && !clearing;
 
   logic busy;
   assign busy = !fifo_empty || in_busy || setup_busy || tri_valid || trav_busy || (pend_q != 0) ||
-                (out_cnt_q != 0) || frag_busy || clr_pend_q;
+                (out_cnt_q != 0) || cmb_busy || frag_busy || clr_pend_q;
 
   // ---- Counters --------------------------------------------------------------------------------
   logic [31:0] cnt_busy_q, cnt_stall_in_q, cnt_stall_setup_q, cnt_stall_frag_q, cnt_setup_q;
@@ -772,6 +809,6 @@ module htx_raster #(
   assign rsp_err_o   = 1'b0;
 
   logic unused;
-  assign unused = ^{req_addr_i[31:12], tv_y, clearing, t_rgba[31:24], tri_state, tri_flat,
+  assign unused = ^{req_addr_i[31:12], tv_y, clearing, tri_state, tri_flat,
                     sd_side[63:32], rq_st_q[23:16], rq_st_q[9:0]};
 endmodule

@@ -22,7 +22,8 @@ module htx_raster_divider #(
   parameter int unsigned PayW         = 8,
   parameter bit          Pipelined    = 1'b1,
   parameter bit          Color        = 1'b1,
-  parameter bit          MulIterative = 1'b0
+  parameter bit          MulIterative = 1'b0,
+  parameter bit          MulDigits    = 1'b0    // Pipelined = 0: the multiplier digit-serial (2 DSPs)
 ) (
   input  logic                clk_i,
   input  logic                rst_ni,
@@ -238,7 +239,9 @@ module htx_raster_divider #(
     assign m_start = (state_q == StMul);
     assign s_a = r_mul_start ? SA'(r_mul_a) : SA'(m_a);
     assign s_b = r_mul_start ? SB'(r_mul_b) : SB'(m_b);
-    htx_raster_mul #(.AWidth(SA), .BWidth(SB), .Iterative(MulIterative), .ExtraW(1)) u_mul (
+    // MulDigits: a in three 15-bit digits, b whole (27 bits: 2 DSPs), 3 clocks a product.
+    htx_raster_mul #(.AWidth(SA), .BWidth(SB), .Iterative(MulIterative), .DigitSerial(MulDigits),
+                     .DigitSplitB(1'b0), .ExtraW(1)) u_mul (
       .clk_i, .rst_ni, .abort_i, .start_i(m_start || r_mul_start), .a_i(s_a), .b_i(s_b),
       .extra_i(1'b0), .done_o(s_done), .p_o(s_p)
     );

@@ -6,6 +6,8 @@
 // same clock, so a row costs its span length plus how far its start moved; an empty row costs one.
 // LookBehind = 0 (`icebreaker`) leaves out the left look (three edge adders and their tests): a row
 // whose start is found by walking left steps one column past it and back, two clocks more.
+// SerialRowBase = 1 (`icebreaker`) forms the first row's framebuffer offset y_lo * stride by shift
+// and add, one bit of y_lo per clock (13 clocks per triangle), instead of with a multiplier (a DSP).
 // The covered set is exactly the model's: E_k >= threshold_k for all k, cov the clipped box.
 // Each fragment carries its plane values (NP planes, modulo 2^AW), the triangle's sideband (state,
 // flat colour, texel offsets, LOD gradients) and whether it is its span's first or last pixel.
@@ -16,7 +18,8 @@ module htx_raster_traverse #(
   parameter int unsigned AW    = 74,
   parameter int unsigned SideW = 64,
   parameter int unsigned AddrW = 24,
-  parameter bit          LookBehind = 1'b1
+  parameter bit          LookBehind = 1'b1,
+  parameter bit          SerialRowBase = 1'b0
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -49,13 +52,16 @@ module htx_raster_traverse #(
   localparam int unsigned XCW = 15;  // signed column, the walk reaches x_lo - 1 .. x_hi + 1
 
   // StBack (LookBehind = 0): walking left over covered pixels to the first one of the span.
-  typedef enum logic [2:0] {StIdle, StSeek, StSeekL, StSeekR, StEmit, StBack} state_e;
+  // StBase (SerialRowBase = 1): forming y_lo * stride before the first row.
+  typedef enum logic [2:0] {StIdle, StSeek, StSeekL, StSeekR, StEmit, StBack, StBase} state_e;
 
   state_e state_q;
   logic [SideW-1:0]        side_q;
   logic signed [XCW-1:0]   x_lo_q, x_hi_q, x_q, xs_q;
   logic [12:0]             y_q, y_hi_q;
   logic [AddrW-1:0]        row_base_q;
+  logic [12:0]             base_y_q;   // SerialRowBase: y_lo's bits not yet taken, MSB first
+  logic [3:0]              base_n_q;   // SerialRowBase: bits left
   logic [2:0]              thr_q;
   logic signed [DW-1:0]    a_q [3];
   logic signed [DW-1:0]    b_q [3];
@@ -204,6 +210,8 @@ module htx_raster_traverse #(
       y_q        <= '0;
       y_hi_q     <= '0;
       row_base_q <= '0;
+      base_y_q   <= '0;
+      base_n_q   <= '0;
       thr_q      <= '0;
       for (int k = 0; k < 3; k++) begin
         a_q[k] <= '0; b_q[k] <= '0; e_q[k] <= '0; es_q[k] <= '0;
@@ -222,7 +230,13 @@ module htx_raster_traverse #(
         x_q        <= XCW'(tri_x_lo_i);
         y_q        <= tri_y_lo_i;
         y_hi_q     <= tri_y_hi_i;
-        row_base_q <= AddrW'(tri_y_lo_i) * AddrW'(stride_i);
+        if (SerialRowBase) begin
+          row_base_q <= '0;
+          base_y_q   <= tri_y_lo_i;
+          base_n_q   <= 4'd13;
+        end else begin
+          row_base_q <= AddrW'(tri_y_lo_i) * AddrW'(stride_i);
+        end
         thr_q      <= tri_thr_i;
         for (int k = 0; k < 3; k++) begin
           a_q[k] <= tri_a_i[DW*k +: DW];
@@ -234,8 +248,14 @@ module htx_raster_traverse #(
           gy_q[p]  <= tri_p_i[3*AW*p + AW +: AW];
           acc_q[p] <= tri_p_i[3*AW*p + 2*AW +: AW];
         end
-        state_q <= StSeek;
+        state_q <= SerialRowBase ? StBase : StSeek;
       end
+    end else if (SerialRowBase && (state_q == StBase)) begin
+      // Horner's rule, MSB first: base = 2 base + bit * stride.
+      row_base_q <= (row_base_q << 1) + (base_y_q[12] ? AddrW'(stride_i) : '0);
+      base_y_q   <= base_y_q << 1;
+      base_n_q   <= base_n_q - 4'd1;
+      if (base_n_q == 4'd1) state_q <= StSeek;
     end else begin
       if (emit) tnew_q <= 1'b0;
       if (save) begin

@@ -5,8 +5,9 @@
 //      request one.
 //   A  the four bank addresses of a pass; the read is issued when B takes it.
 //   B  bank data (held in the RAMs' output registers): select each footprint texel, decode.
-//   C  blend: Lanes = 4 blends all channels in one clock; Lanes = 1 one channel per clock in two
-//      steps (C, C2; 4 clocks a bilinear texel, nearest passes in one).
+//   C  blend: Lanes = 4 blends all channels in one clock; Lanes = 1 one channel at a time, one
+//      product per clock through one multiplier (3 clocks a channel, 12 a bilinear texel, nearest
+//      passes in one).
 //   D  output; the first pass of a trilinear request waits in D for the second, then
 //      (a (256 - w) + b w + 128) >> 8 per channel.
 // Nearest uses the same path with both indices equal and zero weights, which the blend returns
@@ -281,85 +282,67 @@ module htx_tex_sampler #(
     logic unused_l4;
     assign unused_l4 = c_nearest_q;
   end else begin : g_lane1
-    // One channel per clock, in two steps: C forms the row interpolations
-    // h = 256 c0 + wu (c1 - c0) of channel ch and hands them to C2, which forms
-    // (256 h0 + wv (h1 - h0) + 2^15) >> 16 the next clock. C takes a new texel quad as soon as it
-    // has handed on its last channel, so a bilinear texel costs 4 clocks and nearest 1.
-    logic [1:0]         ch_q;
-    logic               c_last, c_issue, c2_ready;
+    // One channel at a time, one product per clock on one multiplier (one iCE40 DSP):
+    //   step 0: h0 = 256 c00 + wu (c10 - c00);  step 1: h1 = 256 c01 + wu (c11 - c01);
+    //   step 2: (256 h0 + wv (h1 - h0) + 2^15) >> 16, the channel's result (htx_tex_bilerp's
+    //   integers), in 3 clocks a channel; nearest takes 1 clock. (Until 2026-12-02 this was a
+    //   two-step pipeline with three multipliers, 4 clocks a bilinear texel: 3 DSPs.)
+    logic [1:0]         ch_q, st_q;
     logic [7:0]         e00, e10, e01, e11;
-    logic signed [8:0]  d0, d1;
-    logic signed [17:0] p0, p1;
-    assign c_last  = c_nearest_q || (ch_q == 2'd3);
-    assign c_issue = c_valid_q && c2_ready;
-    assign c_ready_l = !c_valid_q || (c_issue && c_last);
+    logic [15:0]        h0_q, h1_q;
+    logic [23:0]        part_q;
+    logic signed [16:0] m_a;
+    logic [7:0]         m_w;
+    logic signed [25:0] m_p;
+    logic [23:0]        tot;
+    logic [24:0]        rnd;
+    logic               fin;
     assign e00 = c_tex_q[0][8*ch_q +: 8];
     assign e10 = c_tex_q[1][8*ch_q +: 8];
     assign e01 = c_tex_q[2][8*ch_q +: 8];
     assign e11 = c_tex_q[3][8*ch_q +: 8];
-    assign d0  = $signed({1'b0, e10}) - $signed({1'b0, e00});
-    assign d1  = $signed({1'b0, e11}) - $signed({1'b0, e01});
-    htx_tex_mul #(.AW(9), .ShiftAdd(ShiftAdd)) u_m0 (.a_i(d0), .w_i(c_wu_q), .p_o(p0));
-    htx_tex_mul #(.AW(9), .ShiftAdd(ShiftAdd)) u_m1 (.a_i(d1), .w_i(c_wu_q), .p_o(p1));
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) ch_q <= '0;
-      else if (c_ready_l) ch_q <= '0;
-      else if (c_issue) ch_q <= ch_q + 2'd1;
+    always_comb begin
+      unique case (st_q)
+        2'd0:    begin m_a = $signed(17'(e10)) - $signed(17'(e00)); m_w = c_wu_q; end
+        2'd1:    begin m_a = $signed(17'(e11)) - $signed(17'(e01)); m_w = c_wu_q; end
+        default: begin m_a = $signed({1'b0, h1_q}) - $signed({1'b0, h0_q});    m_w = c_wv_q; end
+      endcase
     end
-
-    logic               c2_valid_q, c2_last_q, c2_nearest_q, c2_first_q, c2_second_q;
-    logic [1:0]         c2_ch_q;
-    logic [15:0]        c2_h0_q, c2_h1_q;
-    logic [7:0]         c2_wv_q, c2_wtri_q;
-    logic [31:0]        c2_tex0_q;
-    logic [3:0]         c2_l0_q;
-    logic [15:0]        c2_lod_q;
-    logic [TagW-1:0]    c2_tag_q;
-    logic signed [16:0] dh;
-    logic signed [25:0] ph;
-    logic [23:0]        tot;
-    logic [24:0]        rnd;
-    logic [23:0]        part_q;
-    assign c2_ready = !c2_valid_q || !c2_last_q || f_take;
+    htx_tex_mul #(.AW(17), .ShiftAdd(ShiftAdd)) u_m (.a_i(m_a), .w_i(m_w), .p_o(m_p));
+    assign tot = 24'({h0_q, 8'd0} + 24'(m_p));
+    assign rnd = 25'(tot) + 25'd32768;
+    // The quad's last clock: nearest, or the last channel's step 2.
+    assign fin = c_nearest_q || ((ch_q == 2'd3) && (st_q == 2'd2));
+    assign c_ready_l = !c_valid_q || (fin && f_take);
     always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) c2_valid_q <= 1'b0;
-      else if (c2_ready) c2_valid_q <= c_issue;
-    end
-    always_ff @(posedge clk_i) begin
-      if (c_issue && c2_ready) begin
-        c2_last_q    <= c_last;
-        c2_ch_q      <= ch_q;
-        c2_h0_q      <= 16'({e00, 8'd0} + 16'(p0));
-        c2_h1_q      <= 16'({e01, 8'd0} + 16'(p1));
-        c2_wv_q      <= c_wv_q;
-        c2_nearest_q <= c_nearest_q;
-        c2_tex0_q    <= c_tex_q[0];
-        c2_first_q   <= c_first_q;
-        c2_second_q  <= c_second_q;
-        c2_wtri_q    <= c_wtri_q;
-        c2_l0_q      <= c_l0_q;
-        c2_lod_q     <= c_lod_q;
-        c2_tag_q     <= c_tag_q;
+      if (!rst_ni) begin
+        ch_q <= '0;
+        st_q <= '0;
+      end else if (c_ready_l) begin
+        ch_q <= '0;
+        st_q <= '0;
+      end else if (!fin) begin
+        st_q <= (st_q == 2'd2) ? 2'd0 : st_q + 2'd1;
+        if (st_q == 2'd2) ch_q <= ch_q + 2'd1;
       end
     end
-    assign dh  = $signed({1'b0, c2_h1_q}) - $signed({1'b0, c2_h0_q});
-    htx_tex_mul #(.AW(17), .ShiftAdd(ShiftAdd)) u_m2 (.a_i(dh), .w_i(c2_wv_q), .p_o(ph));
-    assign tot = 24'({c2_h0_q, 8'd0} + 24'(ph));
-    assign rnd = 25'(tot) + 25'd32768;
     always_ff @(posedge clk_i) begin
-      if (c2_valid_q && !c2_last_q) part_q[8*c2_ch_q +: 8] <= rnd[23:16];
+      if (c_valid_q && !fin) begin
+        if (st_q == 2'd0) h0_q <= 16'({e00, 8'd0} + 16'(m_p));
+        if (st_q == 2'd1) h1_q <= 16'({e01, 8'd0} + 16'(m_p));
+        if (st_q == 2'd2) part_q[8*ch_q +: 8] <= rnd[23:16];
+      end
     end
-    assign f_valid  = c2_valid_q && c2_last_q;
-    assign f_res    = c2_nearest_q ? c2_tex0_q : {rnd[23:16], part_q};
-    assign f_first  = c2_first_q;
-    assign f_second = c2_second_q;
-    assign f_wtri   = c2_wtri_q;
-    assign f_l0     = c2_l0_q;
-    assign f_lod    = c2_lod_q;
-    assign f_tag    = c2_tag_q;
-    logic unused_l1;
-    assign unused_l1 = ^{p0[17:16], p1[17:16], ph[25:24], rnd[24], rnd[15:0], c_wtri_q, c_first_q,
-                         c_second_q, c_l0_q, c_lod_q, c_tag_q};
+    assign f_valid  = c_valid_q && fin;
+    assign f_res    = c_nearest_q ? c_tex_q[0] : {rnd[23:16], part_q};
+    assign f_first  = c_first_q;
+    assign f_second = c_second_q;
+    assign f_wtri   = c_wtri_q;
+    assign f_l0     = c_l0_q;
+    assign f_lod    = c_lod_q;
+    assign f_tag    = c_tag_q;
+    logic unused_ls;
+    assign unused_ls = ^{m_p[25:24], rnd[24], rnd[15:0]};
   end
 
   // ---- Stage D ---------------------------------------------------------------------------------

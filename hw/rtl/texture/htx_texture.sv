@@ -10,7 +10,7 @@ module htx_texture #(
   parameter logic [2:0]  Filters  = 3'b111,   // bit i: Filter i built (nearest is always built)
   parameter int unsigned NumSlots = 8,        // texture descriptors, 1..8
   parameter int unsigned BAW      = 15,       // blocks per bank = 2^BAW (<= 16)
-  parameter int unsigned Lanes    = 4,        // blend channels per clock: 4 or 1
+  parameter int unsigned Lanes    = 4,        // 4: all channels blended a clock; 1: one product a clock
   parameter bit          ShiftAdd = 1'b0,     // filter products in logic instead of DSPs
   parameter int unsigned TagW     = 32,       // request sideband carried to the output
   parameter bit          Counters = 1'b1,     // CNT_SAMPLES, CNT_BUSY built

@@ -1,18 +1,22 @@
-// htx_raster_mul in its iterative form (the `icebreaker` setup multipliers), Verilated alone with
-// AWidth 38 and BWidth 26: products bit for bit against 128-bit arithmetic, the operand extremes,
-// the clocks per product, and an abort in mid-product (label `rtl`).
+// htx_raster_mul Verilated alone with AWidth 38 and BWidth 26, in its iterative form (the
+// `icebreaker` setup multipliers) and digit-serial with b in digits or whole (the `icebreaker`
+// divider's): products bit for bit against 128-bit arithmetic, the operand extremes, the clocks per
+// product, products back to back with start held, and an abort in mid-product (label `rtl`).
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <random>
 
 #include "Vhtx_raster_mul.h"
+#include "Vhtx_raster_mul_digits.h"
+#include "Vhtx_raster_mul_digits_wide_b.h"
 #include "htx/model/wide.hpp"
 
 namespace {
 
 constexpr int kA = 38, kB = 26;  // the Verilated widths (tests/rtl/raster/CMakeLists.txt)
 
+template <class V>
 class Mul {
  public:
   Mul() {
@@ -51,18 +55,21 @@ class Mul {
     EXPECT_FALSE(m_.done_o) << "done_o is a one-clock pulse";
     return p;
   }
-  Vhtx_raster_mul& model() { return m_; }
+  V& model() { return m_; }
 
  private:
-  Vhtx_raster_mul m_;
+  V m_;
 };
+
+int64_t random_a(std::mt19937_64& rng) { return static_cast<int64_t>(rng() << (64 - kA)) >> (64 - kA); }
+int64_t random_b(std::mt19937_64& rng) { return static_cast<int64_t>(rng() << (64 - kB)) >> (64 - kB); }
 
 uint64_t expected(int64_t a, int64_t b) {
   return static_cast<uint64_t>(static_cast<htx::model::i128>(a) * b);  // the low A + B = 64 bits
 }
 
 TEST(RasterMul, RandomAndExtremeOperandsMatchExactProducts) {
-  Mul mul;
+  Mul<Vhtx_raster_mul> mul;
   const int64_t amin = -(int64_t{1} << (kA - 1)), amax = (int64_t{1} << (kA - 1)) - 1;
   const int64_t bmin = -(int64_t{1} << (kB - 1)), bmax = (int64_t{1} << (kB - 1)) - 1;
   const int64_t edges_a[] = {amin, amin + 1, -1, 0, 1, amax};
@@ -84,7 +91,7 @@ TEST(RasterMul, RandomAndExtremeOperandsMatchExactProducts) {
 
 // extra_i more clocks shift the product right, arithmetically: the plane unit's rounding shift.
 TEST(RasterMul, ExtraClocksShiftTheProductRight) {
-  Mul mul;
+  Mul<Vhtx_raster_mul> mul;
   std::mt19937_64 rng(7);
   int clocks = 0;
   for (unsigned extra : {1u, 2u, 17u, 40u, 63u, 200u}) {
@@ -100,7 +107,7 @@ TEST(RasterMul, ExtraClocksShiftTheProductRight) {
 }
 
 TEST(RasterMul, AbortDropsTheProductInFlight) {
-  Mul mul;
+  Mul<Vhtx_raster_mul> mul;
   auto& m = mul.model();
   mul.operands(123456789, -4242);
   m.start_i = 1;
@@ -115,6 +122,88 @@ TEST(RasterMul, AbortDropsTheProductInFlight) {
   int clocks = 0;
   EXPECT_EQ(mul.product(-987654321, 777, &clocks), expected(-987654321, 777));
   EXPECT_EQ(clocks, kB + 1);
+}
+
+// Digit-serial: a in 15-bit digits (38 bits: 3), b in 15-bit digits (26 bits: 2) or whole; one
+// digit pair per clock, the first in the clock that takes start_i.
+template <class V>
+void check_digit_products(int pairs) {
+  Mul<V> mul;
+  const int64_t amin = -(int64_t{1} << (kA - 1)), amax = (int64_t{1} << (kA - 1)) - 1;
+  const int64_t bmin = -(int64_t{1} << (kB - 1)), bmax = (int64_t{1} << (kB - 1)) - 1;
+  // Digit boundaries too: a lower digit all ones, a top digit of -1 or 0.
+  const int64_t edges_a[] = {amin, amin + 1, -1, 0, 1, amax, (int64_t{1} << 15) - 1, int64_t{1} << 30,
+                             -(int64_t{1} << 30), (int64_t{1} << 30) - 1};
+  const int64_t edges_b[] = {bmin, bmin + 1, -1, 0, 1, bmax, (int64_t{1} << 15) - 1, -(int64_t{1} << 15)};
+  int clocks = 0;
+  for (int64_t a : edges_a) {
+    for (int64_t b : edges_b) {
+      EXPECT_EQ(mul.product(a, b, &clocks), expected(a, b)) << a << " * " << b;
+      EXPECT_EQ(clocks, pairs) << "one digit pair per clock";
+    }
+  }
+  std::mt19937_64 rng(20261202);
+  for (int i = 0; i < 3000; ++i) {
+    const int64_t a = random_a(rng), b = random_b(rng);
+    ASSERT_EQ(mul.product(a, b, &clocks), expected(a, b)) << a << " * " << b;
+  }
+  // extra_i shifts the product right (combinationally here).
+  for (unsigned extra : {1u, 15u, 63u}) {
+    const int64_t a = random_a(rng), b = random_b(rng);
+    const htx::model::i128 p = static_cast<htx::model::i128>(a) * b;
+    EXPECT_EQ(mul.product(a, b, &clocks, extra), static_cast<uint64_t>(p >> extra)) << extra;
+  }
+}
+
+TEST(RasterMul, DigitSerialProductsMatchExactProducts) { check_digit_products<Vhtx_raster_mul_digits>(6); }
+
+TEST(RasterMul, DigitSerialWithWholeBMatchesExactProducts) {
+  check_digit_products<Vhtx_raster_mul_digits_wide_b>(3);
+}
+
+// The divider's use: start_i stays high and the operands change in the clock done_o is seen; each
+// product is the new operands', and an abort in mid-product drops it.
+template <class V>
+void check_back_to_back_and_abort() {
+  Mul<V> mul;
+  auto& m = mul.model();
+  std::mt19937_64 rng(99);
+  int64_t a = random_a(rng), b = random_b(rng);
+  mul.operands(a, b);
+  m.start_i = 1;
+  int got = 0;
+  for (int n = 0; n < 400 && got < 20; ++n) {
+    mul.clock();
+    if (m.done_o) {
+      ASSERT_EQ(m.p_o, expected(a, b)) << "product " << got;
+      ++got;
+      a = random_a(rng);
+      b = random_b(rng);
+      mul.operands(a, b);
+    }
+  }
+  EXPECT_EQ(got, 20);
+  m.start_i = 0;
+  mul.clock();
+  mul.clock();
+  // Abort after two digit pairs; the next product is the new one.
+  mul.operands(123456789, -4242);
+  m.start_i = 1;
+  mul.clock();
+  mul.clock();
+  m.start_i = 0;
+  m.abort_i = 1;
+  mul.clock();
+  m.abort_i = 0;
+  mul.clock();
+  EXPECT_FALSE(m.done_o);
+  int clocks = 0;
+  EXPECT_EQ(mul.product(-987654321, 777, &clocks), expected(-987654321, 777));
+}
+
+TEST(RasterMul, DigitSerialBackToBackAndAbort) {
+  check_back_to_back_and_abort<Vhtx_raster_mul_digits>();
+  check_back_to_back_and_abort<Vhtx_raster_mul_digits_wide_b>();
 }
 
 }  // namespace
