@@ -24,6 +24,9 @@ module htx_raster #(
   parameter int unsigned TF         = 16,       // texcoord_frac_bits
   parameter int unsigned PixelSteps = 2,        // pixel_nr_steps
   parameter logic [4:0]  Methods    = 5'b01111, // bit m: htx::Method m built (4: DIVFREE)
+  // The texture unit behind the port takes the LOD inputs (it builds trilinear); 0: it samples
+  // level 0 only, so without DIVFREE setup leaves the LOD gradients out (tex_req_lod_* are 0).
+  parameter bit          TexLod     = 1'b1,
   parameter bit          PerspColor = 1'b1,     // perspective_color
   parameter bit          PixelPipelined = 1'b1, // per-pixel divider: pipelined, else iterative
   parameter bit          PixelMulIterative = 1'b0, // iterative divider's multiplier: shift-and-add
@@ -192,7 +195,7 @@ module htx_raster #(
     .XyIntBits(XyIntBits), .ZBits(ZBits), .GF(GF), .RecipW(RecipW), .RecipK(RecipK),
     .RecipG(RecipG), .NrSteps(SetupSteps), .Iterative(Iterative), .QBits(QBits),
     .UvIntBits(UvIntBits), .TF(TF), .GradW(GradW), .Methods(Methods), .PerspColor(PerspColor),
-    .AW(AW), .NP(NP)
+    .Lod(TexLod || HasDf), .AW(AW), .NP(NP)
   ) u_setup (
     .clk_i, .rst_ni,
     .abort_i        (abort),

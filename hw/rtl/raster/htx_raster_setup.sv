@@ -21,6 +21,9 @@ module htx_raster_setup #(
   parameter int unsigned GradW     = 24,       // lod_grad_bits
   parameter logic [4:0]  Methods   = 5'b01111, // bit m: method m built (htx::Method order)
   parameter bit          PerspColor = 1'b1,
+  // The LOD gradients are built (a trilinear texture unit or DIVFREE takes them); 0: tri_lod_*_o
+  // are 0 and the LOD block is left out.
+  parameter bit          Lod       = 1'b1,
   // Derived widths (docs/raster.md).
   parameter int unsigned UQ   = QBits + UvIntBits,            // uq, vq vertex values (signed)
   parameter int unsigned LocW = UvIntBits + TF,               // local texel coordinates (signed)
@@ -446,75 +449,85 @@ module htx_raster_setup #(
     for (int b = 0; b < GWU; b++) if (lg_or[b]) lg_msb1 = 8'(b + 1);
     lg_shift = (lg_msb1 + 8'd1 > 8'(GradW)) ? lg_msb1 + 8'd1 - 8'(GradW) : 8'd0;
   end
-  if (!SharedPlanes) begin : g_lod_par
-    always_comb begin
-      lg_or = '0;
-      for (int i = 0; i < 6; i++) lg_or = lg_or | (lg[i][GWU-1] ? GWU'(-lg[i]) : lg[i]);
-    end
-    for (genvar i = 0; i < 6; i++) begin : g_lod
-      logic [GWU-1:0] sh;
-      assign sh = GWU'($signed(lg[i]) >>> lg_shift);
-      assign tri_lod_g_o[GradW*i +: GradW] = sh[GradW-1:0];
-      logic unused_sh;
-      assign unused_sh = ^sh[GWU-1:GradW];
-    end
+  if (!Lod) begin : g_lod_off
+    assign lg_or    = '0;
     assign lod_done = 1'b1;
-  end else begin : g_lod_seq
-    // One gradient at a time: OR the six magnitudes (6 clocks), then shift each one right in a
-    // register, 8 bits a clock while 8 or more remain and then 1 (at most 7 + 7 clocks each),
-    // instead of a barrel shifter.
-    typedef enum logic [2:0] {LsIdle, LsOr, LsLoad, LsShift, LsDone} ls_e;
-    ls_e            ls_q;
-    logic [2:0]     li_q;
-    logic [7:0]     lcnt_q;
-    logic [GWU-1:0] lor_q, lsel, lsr_q;
-    logic [GradW-1:0] lgs_q [6];
-    assign lsel = lg[li_q];
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        ls_q   <= LsIdle;
-        li_q   <= '0;
-        lcnt_q <= '0;
-        lor_q  <= '0;
-        lsr_q  <= '0;
-        for (int i = 0; i < 6; i++) lgs_q[i] <= '0;
-      end else if (planes_abort || plane_start_q) begin
-        ls_q <= LsIdle;
-      end else begin
-        unique case (ls_q)
-          LsIdle: if (&plane_done[6:4]) begin ls_q <= LsOr; li_q <= '0; lor_q <= '0; end
-          LsOr: begin
-            lor_q <= lor_q | (lsel[GWU-1] ? GWU'(-lsel) : lsel);
-            li_q  <= (li_q == 3'd5) ? 3'd0 : li_q + 3'd1;
-            if (li_q == 3'd5) ls_q <= LsLoad;
-          end
-          LsLoad: begin
-            lsr_q  <= lsel;
-            lcnt_q <= lg_shift;
-            ls_q   <= LsShift;
-          end
-          LsShift: begin
-            if (lcnt_q >= 8'd8) begin
-              lsr_q  <= GWU'($signed(lsr_q) >>> 8);
-              lcnt_q <= lcnt_q - 8'd8;
-            end else if (lcnt_q != 8'd0) begin
-              lsr_q  <= GWU'($signed(lsr_q) >>> 1);
-              lcnt_q <= lcnt_q - 8'd1;
-            end else begin
-              lgs_q[li_q] <= lsr_q[GradW-1:0];
-              li_q        <= li_q + 3'd1;
-              ls_q        <= (li_q == 3'd5) ? LsDone : LsLoad;
-            end
-          end
-          default: ;
-        endcase
+    assign tri_lod_g_o = '0;
+    logic [5:0] unused_lg;
+    for (genvar i = 0; i < 6; i++) begin : g_unused
+      assign unused_lg[i] = ^lg[i];
+    end
+  end else begin : g_lod_on
+    if (!SharedPlanes) begin : g_lod_par
+      always_comb begin
+        lg_or = '0;
+        for (int i = 0; i < 6; i++) lg_or = lg_or | (lg[i][GWU-1] ? GWU'(-lg[i]) : lg[i]);
       end
+      for (genvar i = 0; i < 6; i++) begin : g_lod
+        logic [GWU-1:0] sh;
+        assign sh = GWU'($signed(lg[i]) >>> lg_shift);
+        assign tri_lod_g_o[GradW*i +: GradW] = sh[GradW-1:0];
+        logic unused_sh;
+        assign unused_sh = ^sh[GWU-1:GradW];
+      end
+      assign lod_done = 1'b1;
+    end else begin : g_lod_seq
+      // One gradient at a time: OR the six magnitudes (6 clocks), then shift each one right in a
+      // register, 8 bits a clock while 8 or more remain and then 1 (at most 7 + 7 clocks each),
+      // instead of a barrel shifter.
+      typedef enum logic [2:0] {LsIdle, LsOr, LsLoad, LsShift, LsDone} ls_e;
+      ls_e            ls_q;
+      logic [2:0]     li_q;
+      logic [7:0]     lcnt_q;
+      logic [GWU-1:0] lor_q, lsel, lsr_q;
+      logic [GradW-1:0] lgs_q [6];
+      assign lsel = lg[li_q];
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          ls_q   <= LsIdle;
+          li_q   <= '0;
+          lcnt_q <= '0;
+          lor_q  <= '0;
+          lsr_q  <= '0;
+          for (int i = 0; i < 6; i++) lgs_q[i] <= '0;
+        end else if (planes_abort || plane_start_q) begin
+          ls_q <= LsIdle;
+        end else begin
+          unique case (ls_q)
+            LsIdle: if (&plane_done[6:4]) begin ls_q <= LsOr; li_q <= '0; lor_q <= '0; end
+            LsOr: begin
+              lor_q <= lor_q | (lsel[GWU-1] ? GWU'(-lsel) : lsel);
+              li_q  <= (li_q == 3'd5) ? 3'd0 : li_q + 3'd1;
+              if (li_q == 3'd5) ls_q <= LsLoad;
+            end
+            LsLoad: begin
+              lsr_q  <= lsel;
+              lcnt_q <= lg_shift;
+              ls_q   <= LsShift;
+            end
+            LsShift: begin
+              if (lcnt_q >= 8'd8) begin
+                lsr_q  <= GWU'($signed(lsr_q) >>> 8);
+                lcnt_q <= lcnt_q - 8'd8;
+              end else if (lcnt_q != 8'd0) begin
+                lsr_q  <= GWU'($signed(lsr_q) >>> 1);
+                lcnt_q <= lcnt_q - 8'd1;
+              end else begin
+                lgs_q[li_q] <= lsr_q[GradW-1:0];
+                li_q        <= li_q + 3'd1;
+                ls_q        <= (li_q == 3'd5) ? LsDone : LsLoad;
+              end
+            end
+            default: ;
+          endcase
+        end
+      end
+      assign lg_or = lor_q;
+      for (genvar i = 0; i < 6; i++) begin : g_lod
+        assign tri_lod_g_o[GradW*i +: GradW] = lgs_q[i];
+      end
+      assign lod_done = (ls_q == LsDone);
     end
-    assign lg_or = lor_q;
-    for (genvar i = 0; i < 6; i++) begin : g_lod
-      assign tri_lod_g_o[GradW*i +: GradW] = lgs_q[i];
-    end
-    assign lod_done = (ls_q == LsDone);
   end
   assign tri_lod_shift_o = lg_shift;
   for (genvar i = 0; i < 6; i++) begin : g_dfg

@@ -3,7 +3,9 @@
 // wrap mode per axis, texture format, perspective method) that the configuration builds appears on
 // every scene; the combinations rotate with the scene index so that 3 renders per scene cover them
 // (the full product, about 400 renders per method, is a benchmark, not a test: docs/gpu.md).
-// CNT_DIVFREE_STEPS must equal the model's divfree_steps_total on every case.
+// CNT_DIVFREE_STEPS must equal the model's divfree_steps_total on every case. `icebreaker_board`
+// is `icebreaker` with the board's methods only, which render_rtl draws on the GPU built with just
+// AFFINE and RECIP_LUT (the synthesised design: no LOD gradients, DIVFREE left out).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -58,6 +60,14 @@ Texture convert(const Texture& t, TexFormat format) {
   return make_texture(format, t.log2_width, t.log2_height, px);
 }
 
+// `icebreaker_board`: the icebreaker configuration restricted to AFFINE and RECIP_LUT.
+ModelConfig case_config(const std::string& name) {
+  if (name != "icebreaker_board") return rtl_config(name);
+  ModelConfig cfg = rtl_config("icebreaker");
+  cfg.methods = (1u << static_cast<unsigned>(Method::Affine)) | (1u << static_cast<unsigned>(Method::RecipLut));
+  return cfg;
+}
+
 class GpuScenes : public ::testing::TestWithParam<Case> {};
 
 TEST_P(GpuScenes, MatchesModelBitForBit) {
@@ -75,7 +85,7 @@ TEST_P(GpuScenes, MatchesModelBitForBit) {
     // Replace shows the texel alone; modulate multiplies in the Gouraud colour.
     if (t.state.textured) t.state.combine = c.combine;
   }
-  const ModelConfig cfg = rtl_config(c.config);
+  const ModelConfig cfg = case_config(c.config);
   const Frame model = render_model(screen, cfg);
   RtlStats stats;
   const Frame rtl = render_rtl(screen, cfg, &stats);
@@ -108,8 +118,8 @@ std::vector<E> built(uint32_t mask, unsigned count) {
 std::vector<Case> all_cases() {
   std::vector<Case> cases;
   const std::vector<Wrap> wraps = {Wrap::Repeat, Wrap::Clamp, Wrap::Mirror};
-  for (const char* name : {"full", "icebreaker"}) {
-    const ModelConfig cfg = rtl_config(name);
+  for (const char* name : {"full", "icebreaker", "icebreaker_board"}) {
+    const ModelConfig cfg = case_config(name);
     const std::vector<Filter> filters = built<Filter>(cfg.filters, 3);
     const std::vector<TexFormat> formats = built<TexFormat>(cfg.formats, 3);
     const std::vector<Method> methods = built<Method>(cfg.methods, static_cast<unsigned>(Method::Auto));
@@ -135,8 +145,8 @@ std::vector<Case> all_cases() {
 // The rotation must reach every value of every axis the configuration builds, on both wrap axes.
 TEST(GpuScenesCases, CoverEveryBuiltValueOfEachAxis) {
   const std::vector<Case> cases = all_cases();
-  for (const char* name : {"full", "icebreaker"}) {
-    const ModelConfig cfg = rtl_config(name);
+  for (const char* name : {"full", "icebreaker", "icebreaker_board"}) {
+    const ModelConfig cfg = case_config(name);
     uint32_t filters = 0, formats = 0, methods = 0, wraps_u = 0, wraps_v = 0, combines = 0;
     size_t scenes = 0;
     for (const Case& c : cases) {

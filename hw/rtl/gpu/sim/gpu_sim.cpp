@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "Vhtx_gpu_full.h"
+#include "Vhtx_gpu_board.h"
 #include "Vhtx_gpu_icebreaker.h"
 #include "htx_regs.h"
 #include "verilated.h"
@@ -117,9 +118,11 @@ GpuSim::GpuSim(const std::string& config) {
     port_ = std::make_unique<VerilatedGpu<Vhtx_gpu_full>>();
   } else if (config == "icebreaker") {
     port_ = std::make_unique<VerilatedGpu<Vhtx_gpu_icebreaker>>();
+  } else if (config == "icebreaker_board") {
+    port_ = std::make_unique<VerilatedGpu<Vhtx_gpu_board>>();
   } else {
     throw std::invalid_argument("rtl engine: no Verilated GPU for configuration '" + config +
-                                "' (built: full, icebreaker)");
+                                "' (built: full, icebreaker, icebreaker_board)");
   }
   port_->reset();
   const uint32_t caps = read_reg(HTX_TEXTURE_BASE + offsetof(HTX_TEXTURE_Type, CAPS));

@@ -35,7 +35,9 @@ struct RtlStats {
 // renders), when a triangle asks for a method, filter or format the configuration does not build,
 // names a texture beyond the built slots (8 / 4) or a bad texture, when the textures exceed the
 // Verilated texture memory (128K / 16K texels), or the frame exceeds the 262144-pixel memories or
-// 4096 per side.
+// 4096 per side. An `icebreaker` configuration whose methods are AFFINE and RECIP_LUT at most is
+// rendered on the GPU built with only those (the board's, as the synthesis report measures it:
+// htx_gpu_icebreaker with Methods 5'b00101); any other on the one with every method.
 Frame render_rtl(const ScreenScene& scene, const ModelConfig& config, RtlStats* stats = nullptr);
 
 // The named configuration as the RTL builds it (perspective_color off, the built methods: affine,
