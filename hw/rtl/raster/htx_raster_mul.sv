@@ -3,10 +3,11 @@
 // same cycle (the `full` configuration: one product per clock). Iterative = 1: one bit of b per
 // clock, BWidth clocks, then extra_i clocks of right shift in the same registers (the `icebreaker`
 // configuration trades clocks for LUTs and DSPs). DigitSerial = 1 (with Iterative = 0): one digit
-// product per clock on one DSP (or b whole: one 15-bit digit of a per clock, BWidth / 16 DSPs),
-// see g_digits; for the `icebreaker` divider. The operands must stay stable while start_i is held (they are read on
-// every clock of the product); done_o is a one-cycle pulse. abort_i drops a product in progress,
-// so a unit aborted mid-product does not take its stale result for the next one.
+// product per clock on one DSP, or with b whole one 15-bit digit of a per clock on about
+// BWidth / 16 DSPs (g_digits; the `icebreaker` divider). The operands must stay stable while
+// start_i is held (they are read on every clock of the product); done_o is a one-cycle pulse.
+// abort_i drops a product in progress, so a unit aborted mid-product does not take its stale
+// result for the next one.
 module htx_raster_mul #(
   parameter int unsigned AWidth    = 32,
   parameter int unsigned BWidth    = 32,
@@ -35,7 +36,7 @@ module htx_raster_mul #(
     // needed. Products are summed column by column (digit positions i + j = k, k rising): when a
     // column is complete its low 15 bits are final and shift out into low_q, and the carry
     // (acc >>> 15) starts the next column. One digit pair per clock, the first in the clock that
-    // takes start_i: NA * NB clocks, done_o in the next. Needs AWidth + BWidth > 30.
+    // takes start_i: NA * NB clocks, done_o in the next. Needs two columns at least (NA + NB > 2).
     localparam int unsigned DigW = 15;
     localparam int unsigned BDW  = DigitSplitB ? DigW : BWidth;  // b's digit width
     localparam int unsigned NA   = (AWidth + DigW - 1) / DigW;
