@@ -29,13 +29,20 @@ module htx_tex_combine_serial #(
   logic [23:0]     t_q, c_q, res_q;
   logic [PayW-1:0] pay_q;
 
-  // round(t c / 255) as x = t c + 128, (x + (x >> 8)) >> 8 (htx_tex_combine).
-  logic [7:0]  t_ch, c_ch, m_ch;
-  logic [15:0] x;
-  assign t_ch = t_q[8*ch_q +: 8];
-  assign c_ch = c_q[8*ch_q +: 8];
-  assign x    = 16'(t_ch) * 16'(c_ch) + 16'd128;
-  assign m_ch = 8'((x + 16'(x[15:8])) >> 8);
+  // The channel ch_q modulated by htx_tex_combine itself, in its lowest lane (the other three
+  // lanes multiply zeros, which synthesis removes).
+  logic [7:0]  m_ch;
+  logic [31:0] m_rgba;
+  htx_tex_combine u_modulate (
+    .textured_i(1'b1),
+    .modulate_i(1'b1),
+    .texel_i   ({24'b0, t_q[8*ch_q +: 8]}),
+    .color_i   ({24'b0, c_q[8*ch_q +: 8]}),
+    .rgba_o    (m_rgba)
+  );
+  assign m_ch = m_rgba[7:0];
+  logic unused_lanes;
+  assign unused_lanes = ^m_rgba[31:8];
 
   logic last_ch;
   assign last_ch     = (ch_q == 2'd2);

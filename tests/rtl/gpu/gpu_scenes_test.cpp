@@ -60,12 +60,8 @@ Texture convert(const Texture& t, TexFormat format) {
   return make_texture(format, t.log2_width, t.log2_height, px);
 }
 
-// `icebreaker_board`: the icebreaker configuration restricted to AFFINE and RECIP_LUT.
 ModelConfig case_config(const std::string& name) {
-  if (name != "icebreaker_board") return rtl_config(name);
-  ModelConfig cfg = rtl_config("icebreaker");
-  cfg.methods = (1u << static_cast<unsigned>(Method::Affine)) | (1u << static_cast<unsigned>(Method::RecipLut));
-  return cfg;
+  return name == "icebreaker_board" ? rtl_board_config() : rtl_config(name);
 }
 
 class GpuScenes : public ::testing::TestWithParam<Case> {};

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <random>
+#include <vector>
 
 #include "Vhtx_raster_mul.h"
 #include "Vhtx_raster_mul_digits.h"
@@ -68,26 +69,51 @@ uint64_t expected(int64_t a, int64_t b) {
   return static_cast<uint64_t>(static_cast<htx::model::i128>(a) * b);  // the low A + B = 64 bits
 }
 
-TEST(RasterMul, RandomAndExtremeOperandsMatchExactProducts) {
-  Mul<Vhtx_raster_mul> mul;
+// The operand extremes and the given edges against each other, then 3,000 random products; every
+// product of the edges takes clocks_per_product clocks.
+template <class V>
+void check_products(int clocks_per_product, std::vector<int64_t> edges_a, std::vector<int64_t> edges_b) {
+  Mul<V> mul;
   const int64_t amin = -(int64_t{1} << (kA - 1)), amax = (int64_t{1} << (kA - 1)) - 1;
   const int64_t bmin = -(int64_t{1} << (kB - 1)), bmax = (int64_t{1} << (kB - 1)) - 1;
-  const int64_t edges_a[] = {amin, amin + 1, -1, 0, 1, amax};
-  const int64_t edges_b[] = {bmin, bmin + 1, -1, 0, 1, bmax};
+  edges_a.insert(edges_a.begin(), {amin, amin + 1, -1, 0, 1, amax});
+  edges_b.insert(edges_b.begin(), {bmin, bmin + 1, -1, 0, 1, bmax});
   int clocks = 0;
   for (int64_t a : edges_a) {
     for (int64_t b : edges_b) {
       EXPECT_EQ(mul.product(a, b, &clocks), expected(a, b)) << a << " * " << b;
-      EXPECT_EQ(clocks, kB + 1) << "one bit of b per clock, then done";
+      EXPECT_EQ(clocks, clocks_per_product);
     }
   }
   std::mt19937_64 rng(20261202);
   for (int i = 0; i < 3000; ++i) {
-    const int64_t a = static_cast<int64_t>(rng() << (64 - kA)) >> (64 - kA);
-    const int64_t b = static_cast<int64_t>(rng() << (64 - kB)) >> (64 - kB);
+    const int64_t a = random_a(rng), b = random_b(rng);
     ASSERT_EQ(mul.product(a, b, &clocks), expected(a, b)) << a << " * " << b;
   }
 }
+
+// An abort `run` clocks into a product drops it; the next product starts at once and is the new
+// one, in clocks_per_product clocks.
+template <class V>
+void check_abort(int run, int clocks_per_product) {
+  Mul<V> mul;
+  auto& m = mul.model();
+  mul.operands(123456789, -4242);
+  m.start_i = 1;
+  for (int i = 0; i < run; ++i) mul.clock();
+  m.start_i = 0;
+  m.abort_i = 1;
+  mul.clock();
+  m.abort_i = 0;
+  mul.clock();
+  EXPECT_FALSE(m.done_o);
+  int clocks = 0;
+  EXPECT_EQ(mul.product(-987654321, 777, &clocks), expected(-987654321, 777));
+  EXPECT_EQ(clocks, clocks_per_product);
+}
+
+// One bit of b per clock, then done.
+TEST(RasterMul, RandomAndExtremeOperandsMatchExactProducts) { check_products<Vhtx_raster_mul>(kB + 1, {}, {}); }
 
 // extra_i more clocks shift the product right, arithmetically: the plane unit's rounding shift.
 TEST(RasterMul, ExtraClocksShiftTheProductRight) {
@@ -96,8 +122,7 @@ TEST(RasterMul, ExtraClocksShiftTheProductRight) {
   int clocks = 0;
   for (unsigned extra : {1u, 2u, 17u, 40u, 63u, 200u}) {
     for (int i = 0; i < 200; ++i) {
-      const int64_t a = static_cast<int64_t>(rng() << (64 - kA)) >> (64 - kA);
-      const int64_t b = static_cast<int64_t>(rng() << (64 - kB)) >> (64 - kB);
+      const int64_t a = random_a(rng), b = random_b(rng);
       const htx::model::i128 p = static_cast<htx::model::i128>(a) * b;
       ASSERT_EQ(mul.product(a, b, &clocks, extra), static_cast<uint64_t>(p >> (extra > 100 ? 100 : extra)))
           << a << " * " << b << " >> " << extra;
@@ -106,47 +131,18 @@ TEST(RasterMul, ExtraClocksShiftTheProductRight) {
   }
 }
 
-TEST(RasterMul, AbortDropsTheProductInFlight) {
-  Mul<Vhtx_raster_mul> mul;
-  auto& m = mul.model();
-  mul.operands(123456789, -4242);
-  m.start_i = 1;
-  for (int i = 0; i < kB / 2; ++i) mul.clock();
-  m.start_i = 0;
-  m.abort_i = 1;
-  mul.clock();
-  m.abort_i = 0;
-  mul.clock();
-  EXPECT_FALSE(m.done_o);
-  // The next product starts at once and is the new one, not the dropped one.
-  int clocks = 0;
-  EXPECT_EQ(mul.product(-987654321, 777, &clocks), expected(-987654321, 777));
-  EXPECT_EQ(clocks, kB + 1);
-}
+TEST(RasterMul, AbortDropsTheProductInFlight) { check_abort<Vhtx_raster_mul>(kB / 2, kB + 1); }
 
 // Digit-serial: a in 15-bit digits (38 bits: 3), b in 15-bit digits (26 bits: 2) or whole; one
 // digit pair per clock, the first in the clock that takes start_i.
 template <class V>
 void check_digit_products(int pairs) {
-  Mul<V> mul;
-  const int64_t amin = -(int64_t{1} << (kA - 1)), amax = (int64_t{1} << (kA - 1)) - 1;
-  const int64_t bmin = -(int64_t{1} << (kB - 1)), bmax = (int64_t{1} << (kB - 1)) - 1;
   // Digit boundaries too: a lower digit all ones, a top digit of -1 or 0.
-  const int64_t edges_a[] = {amin, amin + 1, -1, 0, 1, amax, (int64_t{1} << 15) - 1, int64_t{1} << 30,
-                             -(int64_t{1} << 30), (int64_t{1} << 30) - 1};
-  const int64_t edges_b[] = {bmin, bmin + 1, -1, 0, 1, bmax, (int64_t{1} << 15) - 1, -(int64_t{1} << 15)};
+  check_products<V>(pairs, {(int64_t{1} << 15) - 1, int64_t{1} << 30, -(int64_t{1} << 30), (int64_t{1} << 30) - 1},
+                    {(int64_t{1} << 15) - 1, -(int64_t{1} << 15)});
+  Mul<V> mul;
   int clocks = 0;
-  for (int64_t a : edges_a) {
-    for (int64_t b : edges_b) {
-      EXPECT_EQ(mul.product(a, b, &clocks), expected(a, b)) << a << " * " << b;
-      EXPECT_EQ(clocks, pairs) << "one digit pair per clock";
-    }
-  }
-  std::mt19937_64 rng(20261202);
-  for (int i = 0; i < 3000; ++i) {
-    const int64_t a = random_a(rng), b = random_b(rng);
-    ASSERT_EQ(mul.product(a, b, &clocks), expected(a, b)) << a << " * " << b;
-  }
+  std::mt19937_64 rng(5);
   // extra_i shifts the product right (combinationally here).
   for (unsigned extra : {1u, 15u, 63u}) {
     const int64_t a = random_a(rng), b = random_b(rng);
@@ -162,9 +158,9 @@ TEST(RasterMul, DigitSerialWithWholeBMatchesExactProducts) {
 }
 
 // The divider's use: start_i stays high and the operands change in the clock done_o is seen; each
-// product is the new operands', and an abort in mid-product drops it.
+// product is the new operands'.
 template <class V>
-void check_back_to_back_and_abort() {
+void check_back_to_back() {
   Mul<V> mul;
   auto& m = mul.model();
   std::mt19937_64 rng(99);
@@ -183,27 +179,14 @@ void check_back_to_back_and_abort() {
     }
   }
   EXPECT_EQ(got, 20);
-  m.start_i = 0;
-  mul.clock();
-  mul.clock();
-  // Abort after two digit pairs; the next product is the new one.
-  mul.operands(123456789, -4242);
-  m.start_i = 1;
-  mul.clock();
-  mul.clock();
-  m.start_i = 0;
-  m.abort_i = 1;
-  mul.clock();
-  m.abort_i = 0;
-  mul.clock();
-  EXPECT_FALSE(m.done_o);
-  int clocks = 0;
-  EXPECT_EQ(mul.product(-987654321, 777, &clocks), expected(-987654321, 777));
 }
 
 TEST(RasterMul, DigitSerialBackToBackAndAbort) {
-  check_back_to_back_and_abort<Vhtx_raster_mul_digits>();
-  check_back_to_back_and_abort<Vhtx_raster_mul_digits_wide_b>();
+  check_back_to_back<Vhtx_raster_mul_digits>();
+  check_back_to_back<Vhtx_raster_mul_digits_wide_b>();
+  // Abort after two digit pairs.
+  check_abort<Vhtx_raster_mul_digits>(2, 6);
+  check_abort<Vhtx_raster_mul_digits_wide_b>(2, 3);
 }
 
 }  // namespace

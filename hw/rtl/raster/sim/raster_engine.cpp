@@ -143,6 +143,12 @@ ModelConfig rtl_config(const std::string& name) {
   return c;
 }
 
+ModelConfig rtl_board_config() {
+  ModelConfig c = rtl_config("icebreaker");
+  c.methods = kBoardMethods;
+  return c;
+}
+
 uint32_t pack_state_word(const TriState& s, Method m, unsigned divfree_top) {
   // DIVFREE has no subdivision length: its SUBDIV_N field carries the texture's last mip level.
   const uint32_t n = m == Method::DivFree ? divfree_top : s.subdiv_n;

@@ -44,6 +44,10 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& config, RtlStats* 
 // subdiv, recip_lut, recip_nr, divfree). Throws like model_config.
 ModelConfig rtl_config(const std::string& name);
 
+// `icebreaker` with the board's methods only (AFFINE, RECIP_LUT): render_rtl draws it on the GPU
+// the synthesis report measures.
+ModelConfig rtl_board_config();
+
 // The per-triangle state word (hw/regs/raster.json register STATE) of a triangle. For DIVFREE the
 // SUBDIV_N field carries divfree_top, the texture's last mip level (level_count - 1; 0 untextured),
 // which bilinear and trilinear need for their per-span level choice.
