@@ -186,6 +186,10 @@ module htx_raster #(
   logic [2:0]         tri_thr;
   logic [3*EW-1:0]    tri_e;
   logic [3*NP*AW-1:0] tri_p;
+  logic               pl_we;
+  logic [1:0]         pl_sel;
+  logic [3:0]         pl_idx;
+  logic [AW-1:0]      pl_data;
   logic [6*GradW-1:0] tri_lod_g;
   logic [7:0]         tri_lod_shift;
   logic [6*GWU-1:0]   tri_dfg;
@@ -227,6 +231,10 @@ module htx_raster #(
     .tri_thr_o      (tri_thr),
     .tri_e_o        (tri_e),
     .tri_p_o        (tri_p),
+    .pl_we_o        (pl_we),
+    .pl_sel_o       (pl_sel),
+    .pl_idx_o       (pl_idx),
+    .pl_data_o      (pl_data),
     .tri_u_off_o    (tri_u_off),
     .tri_v_off_o    (tri_v_off),
     .tri_lod_g_o    (tri_lod_g),
@@ -251,10 +259,13 @@ module htx_raster #(
     logic unused_dfg;
     assign unused_dfg = ^tri_dfg;
   end
-  // `icebreaker` (Iterative) trades two clocks on some rows for the traversal's left look, and 13
-  // clocks per triangle for the row-offset multiplier.
+  // `icebreaker` (Iterative) trades two clocks on some rows for the traversal's left look, 13
+  // clocks per triangle for the row-offset multiplier, and NP clocks per step for the planes'
+  // accumulators (in block RAM, on one adder; setup writes each triangle's planes straight into
+  // that RAM, so neither keeps them in registers).
   htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NP), .AW(AW), .SideW(SideT), .AddrW(AddrW),
-                        .LookBehind(!Iterative), .SerialRowBase(Iterative)) u_traverse (
+                        .LookBehind(!Iterative), .SerialRowBase(Iterative),
+                        .SerialPlanes(Iterative)) u_traverse (
     .clk_i, .rst_ni,
     .abort_i         (abort),
     .stride_i        (stride_q),
@@ -270,6 +281,10 @@ module htx_raster #(
     .tri_thr_i       (tri_thr),
     .tri_e_i         (tri_e),
     .tri_p_i         (tri_p),
+    .pl_we_i         (pl_we),
+    .pl_sel_i        (pl_sel),
+    .pl_idx_i        (pl_idx),
+    .pl_data_i       (pl_data),
     .frag_valid_o    (tv_valid),
     .frag_ready_i    (tv_ready),
     .frag_x_o        (tv_x),

@@ -5,7 +5,8 @@
 // modulo 2^AccW of that plane, as a plane unit of that width computes it).
 //
 // start_i starts planes 0 .. NFirst-1; late_start_i (any time after start_i) the rest, whose vertex
-// values come later (AFFINE's u_i, v_i). res_valid_o pulses once per plane with its results.
+// values come later (AFFINE's u_i, v_i). A plane's results show (res_show_o, res_idx_o and the
+// result outputs steady) until the caller takes them with res_ready_i; res_valid_o pulses then.
 module htx_raster_plane_seq #(
   parameter int unsigned NP     = 9,
   parameter int unsigned NFirst = 7,
@@ -30,6 +31,8 @@ module htx_raster_plane_seq #(
   input  logic [W:0]            r_i,
   input  logic [ShiftW-1:0]     shift_i,
   input  logic                  det_neg_i,
+  output logic                  res_show_o,
+  input  logic                  res_ready_i,
   output logic                  res_valid_o,
   output logic [IdxW-1:0]       res_idx_o,
   output logic [AccW-1:0]       gx_o, gy_o, start_o,
@@ -69,7 +72,7 @@ module htx_raster_plane_seq #(
 
   // The unit's done_o is a level that stays up until it is started again; kick_q guards the one
   // clock in which a new start is issued while the previous plane's done is still showing.
-  assign finish  = run_q && !kick_q && unit_done;
+  assign finish  = run_q && !kick_q && unit_done && res_ready_i;
   assign late_go = late_pend_q || late_start_i;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -117,6 +120,7 @@ module htx_raster_plane_seq #(
     end
   end
 
+  assign res_show_o   = run_q && !kick_q && unit_done;
   assign res_valid_o  = finish;
   assign res_idx_o    = idx_q;
   assign first_done_o = first_done_q;

@@ -65,6 +65,13 @@ module htx_raster_setup #(
   output logic [2:0]           tri_thr_o,
   output logic [3*EW-1:0]      tri_e_o,
   output logic [3*NP*AW-1:0]   tri_p_o,       // plane p at 3 AW p: {start, gy, gx}, mod 2^AW
+  // Iterative: the planes go instead (tri_p_o is zero) to the traversal's plane RAM, one word a
+  // clock as each is done: pl_sel_o 0 gx, 1 gy, 2 start of plane pl_idx_o (mod 2^AW). They are all
+  // written before tri_valid_o rises; the traversal copies them before it takes the triangle.
+  output logic                 pl_we_o,
+  output logic [1:0]           pl_sel_o,
+  output logic [3:0]           pl_idx_o,
+  output logic [AW-1:0]        pl_data_o,
   output logic [31:0]          tri_u_off_o, tri_v_off_o,
   output logic [6*GradW-1:0]   tri_lod_g_o,   // g_ux, g_uy, g_vx, g_vy, g_qx, g_qy (block-shifted)
   output logic [7:0]           tri_lod_shift_o,
@@ -364,12 +371,16 @@ module htx_raster_setup #(
       assign plane_done[NP-1:NS] = '0;
     end
     assign apl_done = plane_done[8:7];
+    assign pl_we_o   = 1'b0;
+    assign pl_sel_o  = '0;
+    assign pl_idx_o  = '0;
+    assign pl_data_o = '0;
   end else begin : g_planes_shared
-    // One plane unit for all nine, in turn (Iterative: area over clocks); each plane keeps its
-    // results at its own width, so the traversal sees the same words as from nine units.
+    // One plane unit for all nine, in turn (Iterative: area over clocks); its results go straight
+    // to the traversal's plane RAM (pl_*_o), none is kept here.
     localparam int unsigned AS  = VSW + GF + 2;
     localparam int unsigned GS  = VSW + DW + 2 + GF + 1;
-    logic                s_valid, s_first, s_late;
+    logic                s_valid, s_first, s_late, s_show, s_ready;
     logic [3:0]          s_idx;
     logic [AS-1:0]       s_gx, s_gy, s_st;
     logic [GS-1:0]       s_gxw, s_gyw;
@@ -386,6 +397,8 @@ module htx_raster_setup #(
       .r_i          (rdet_q),
       .shift_i      (grad_shift),
       .det_neg_i    (det_neg_q),
+      .res_show_o   (s_show),
+      .res_ready_i  (s_ready),
       .res_valid_o  (s_valid),
       .res_idx_o    (s_idx),
       .gx_o(s_gx), .gy_o(s_gy), .start_o(s_st),
@@ -395,21 +408,28 @@ module htx_raster_setup #(
     );
     assign plane_done = {{2{s_late}}, {7{s_first}}};
     assign apl_done   = {2{s_late}};
-    // Results at each plane's own width (z, r, g, b, q, uq, vq, ua, va).
-    for (genvar p = 0; p < NS; p++) begin : g_store
-      localparam int unsigned VBP = plane_vb(p);
-      localparam int unsigned AP  = VBP + GF + 2;
-      logic [AP-1:0] gx_q, gy_q, start_q;
-      always_ff @(posedge clk_i or negedge rst_ni) begin
-        if (!rst_ni) begin
-          gx_q <= '0; gy_q <= '0; start_q <= '0;
-        end else if (s_valid && (s_idx == 4'(p))) begin
-          gx_q <= s_gx[AP-1:0]; gy_q <= s_gy[AP-1:0]; start_q <= s_st[AP-1:0];
-        end
+    // Each plane's three words go to the traversal's plane RAM as the unit shows them (it holds
+    // them until s_ready): gx, gy, start in three clocks. (Planes not built are not written; the
+    // traversal steps whatever its RAM holds there, which nothing reads.)
+    logic [1:0] pw_q;
+    assign s_ready = s_show && (pw_q == 2'd2);
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        pw_q <= '0;
+      end else if (planes_abort) begin
+        pw_q <= '0;
+      end else if (s_show) begin
+        pw_q <= s_ready ? 2'd0 : pw_q + 2'd1;
       end
-      assign pgx[p] = AW'(gx_q);
-      assign pgy[p] = AW'(gy_q);
-      assign pst[p] = AW'(start_q);
+    end
+    assign pl_we_o   = s_show;
+    assign pl_sel_o  = pw_q;
+    assign pl_idx_o  = s_idx;
+    assign pl_data_o = (pw_q == 2'd0) ? AW'(s_gx) : (pw_q == 2'd1) ? AW'(s_gy) : AW'(s_st);
+    for (genvar p = 0; p < NS; p++) begin : g_store
+      assign pgx[p] = '0;
+      assign pgy[p] = '0;
+      assign pst[p] = '0;
     end
     // Full-precision gradients of uq, vq (GWU bits) and q (GWQ bits, sign-extended) for the LOD unit.
     logic [GWU-1:0] lgx_q [3];
@@ -434,7 +454,7 @@ module htx_raster_setup #(
     assign lg[4] = lgx_q[2];
     assign lg[5] = lgy_q[2];
     logic unused_s;
-    assign unused_s = ^{s_gx, s_gy, s_st, s_gxw, s_gyw};
+    assign unused_s = ^{s_gx, s_gy, s_st, s_gxw, s_gyw};  // (AW'() may drop a top bit)
   end
 
   // ---- LOD gradients: one block shift s_g = max(0, msb(max |g|) + 2 - GradW) for all six -------

@@ -8,6 +8,10 @@
 // whose start is found by walking left steps one column past it and back, two clocks more.
 // SerialRowBase = 1 (`icebreaker`) forms the first row's framebuffer offset y_lo * stride by shift
 // and add, one bit of y_lo per clock (13 clocks per triangle), instead of with a multiplier (a DSP).
+// SerialPlanes = 1 (`icebreaker`) keeps the plane accumulators in one block RAM and steps them one
+// plane a clock on one adder: a step costs NP clocks (a row end after a span 2 NP), not one.
+// The row's saved copy needs no copy: the RAM holds two banks, and the step that leaves a span's
+// first pixel writes the other bank, so the bank it leaves keeps that pixel's values.
 // The covered set is exactly the model's: E_k >= threshold_k for all k, cov the clipped box.
 // Each fragment carries its plane values (NP planes, modulo 2^AW), the triangle's sideband (state,
 // flat colour, texel offsets, LOD gradients) and whether it is its span's first or last pixel.
@@ -19,7 +23,8 @@ module htx_raster_traverse #(
   parameter int unsigned SideW = 64,
   parameter int unsigned AddrW = 24,
   parameter bit          LookBehind = 1'b1,
-  parameter bit          SerialRowBase = 1'b0
+  parameter bit          SerialRowBase = 1'b0,
+  parameter bit          SerialPlanes = 1'b0
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -34,6 +39,12 @@ module htx_raster_traverse #(
   input  logic [2:0]        tri_thr_i,
   input  logic [3*EW-1:0]   tri_e_i,
   input  logic [3*NP*AW-1:0] tri_p_i,
+  // SerialPlanes: the planes come instead through this write port into the plane RAM (setup's
+  // pl_*_o: 0 gx, 1 gy, 2 start of plane idx); a write holds the traversal for that clock.
+  input  logic              pl_we_i,
+  input  logic [1:0]        pl_sel_i,
+  input  logic [3:0]        pl_idx_i,
+  input  logic [AW-1:0]     pl_data_i,
 
   // Fragment: pixel, framebuffer address, raw plane values and the triangle's state.
   output logic              frag_valid_o,
@@ -53,7 +64,9 @@ module htx_raster_traverse #(
 
   // StBack (LookBehind = 0): walking left over covered pixels to the first one of the span.
   // StBase (SerialRowBase = 1): forming y_lo * stride before the first row.
-  typedef enum logic [2:0] {StIdle, StSeek, StSeekL, StSeekR, StEmit, StBack, StBase} state_e;
+  // StLoad (SerialPlanes = 1): writing the planes' start values into the RAM, one a clock; the
+  // triangle is taken in its last clock.
+  typedef enum logic [2:0] {StIdle, StSeek, StSeekL, StSeekR, StEmit, StBack, StBase, StLoad} state_e;
 
   state_e state_q;
   logic [SideW-1:0]        side_q;
@@ -67,10 +80,10 @@ module htx_raster_traverse #(
   logic signed [DW-1:0]    b_q [3];
   logic signed [EW-1:0]    e_q [3];
   logic signed [EW-1:0]    es_q [3];
-  logic [AW-1:0]           gx_q [NP];
-  logic [AW-1:0]           gy_q [NP];
-  logic [AW-1:0]           acc_q [NP];
-  logic [AW-1:0]           accs_q [NP];
+  logic                    sweep_q;   // SerialPlanes: the planes are being stepped (0 otherwise)
+  logic                    hold;      // SerialPlanes: setup writes the plane RAM; nothing moves
+  logic                    load_last; // SerialPlanes: StLoad writes the last plane
+  logic                    accept;    // the triangle is taken this clock
 
   // ---- Coverage at x - 1, x, x + 1 ---------------------------------------------------------------
   logic signed [EW-1:0] step_a [3];
@@ -157,6 +170,11 @@ module htx_raster_traverse #(
         act = ActRowCur;
       end
     end
+    if (SerialPlanes && (sweep_q || hold)) begin
+      // The planes of the last step are still being stepped, or setup writes the plane RAM: no
+      // decision this clock.
+      act = ActNone; emit = 1'b0; save = 1'b0; first = 1'b0; mode_next = state_q;
+    end
     want_emit = emit;
     if (emit && !can_emit) begin
       act  = ActNone;
@@ -187,16 +205,6 @@ module htx_raster_traverse #(
       .sum_o(e_next[k])
     );
   end
-  logic [AW-1:0] acc_next [NP];
-  for (genvar p = 0; p < NP; p++) begin : g_step
-    htx_raster_addsub #(.W(AW)) u_step (
-      .a_i  (step_saved ? accs_q[p] : acc_q[p]),
-      .b_i  (step_row ? (gy_q[p] << 8) : (gx_q[p] << 8)),
-      .sub_i(step_neg),
-      .sum_o(acc_next[p])
-    );
-  end
-
   // ---- State -----------------------------------------------------------------------------------
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -216,13 +224,12 @@ module htx_raster_traverse #(
       for (int k = 0; k < 3; k++) begin
         a_q[k] <= '0; b_q[k] <= '0; e_q[k] <= '0; es_q[k] <= '0;
       end
-      for (int p = 0; p < NP; p++) begin
-        gx_q[p] <= '0; gy_q[p] <= '0; acc_q[p] <= '0; accs_q[p] <= '0;
-      end
     end else if (abort_i) begin
       state_q <= StIdle;
-    end else if (state_q == StIdle) begin
-      if (tri_valid_i) begin
+    end else if ((state_q == StIdle) || (state_q == StLoad)) begin
+      // SerialPlanes: the start values go into the RAM first (StLoad), after the last step's planes.
+      if (SerialPlanes && (state_q == StIdle) && tri_valid_i && !sweep_q) state_q <= StLoad;
+      if (accept) begin
         tnew_q     <= 1'b1;
         side_q     <= tri_side_i;
         x_lo_q     <= XCW'(tri_x_lo_i);
@@ -243,11 +250,6 @@ module htx_raster_traverse #(
           b_q[k] <= tri_b_i[DW*k +: DW];
           e_q[k] <= tri_e_i[EW*k +: EW];
         end
-        for (int p = 0; p < NP; p++) begin
-          gx_q[p]  <= tri_p_i[3*AW*p +: AW];
-          gy_q[p]  <= tri_p_i[3*AW*p + AW +: AW];
-          acc_q[p] <= tri_p_i[3*AW*p + 2*AW +: AW];
-        end
         state_q <= SerialRowBase ? StBase : StSeek;
       end
     end else if (SerialRowBase && (state_q == StBase)) begin
@@ -261,13 +263,11 @@ module htx_raster_traverse #(
       if (save) begin
         xs_q <= x_q;
         for (int k = 0; k < 3; k++) es_q[k] <= e_q[k];
-        for (int p = 0; p < NP; p++) accs_q[p] <= acc_q[p];
       end
       unique case (act)
         ActLeft, ActRight: begin
           x_q <= (act == ActRight) ? x_q + 1'b1 : x_q - 1'b1;
           for (int k = 0; k < 3; k++) e_q[k] <= e_next[k];
-          for (int p = 0; p < NP; p++) acc_q[p] <= acc_next[p];
           state_q <= mode_next;
         end
         ActRowCur, ActRowSaved: begin
@@ -278,7 +278,6 @@ module htx_raster_traverse #(
             row_base_q <= row_base_q + AddrW'(stride_i);
             if (act == ActRowSaved) x_q <= xs_q;
             for (int k = 0; k < 3; k++) e_q[k] <= e_next[k];
-            for (int p = 0; p < NP; p++) acc_q[p] <= acc_next[p];
             state_q <= StSeek;
           end
         end
@@ -287,10 +286,256 @@ module htx_raster_traverse #(
     end
   end
 
+  // ---- Planes ----------------------------------------------------------------------------------
+  // decide: the state machine acts on act, emit and save this clock.
+  logic decide, plane_step, out_load;
+  logic [NP*AW-1:0] out_p_q;
+  assign decide     = !abort_i && (state_q != StIdle) && (state_q != StLoad) && (state_q != StBase);
+  assign plane_step = decide && ((act == ActLeft) || (act == ActRight) || (step_row && !last_row));
+
+  if (!SerialPlanes) begin : g_planes_par
+    // One adder per plane: every plane steps in the clock its pixel is decided.
+    logic [AW-1:0] gx_q [NP];
+    logic [AW-1:0] gy_q [NP];
+    logic [AW-1:0] acc_q [NP];
+    logic [AW-1:0] accs_q [NP];
+    logic [AW-1:0] acc_next [NP];
+    for (genvar p = 0; p < NP; p++) begin : g_step
+      htx_raster_addsub #(.W(AW)) u_step (
+        .a_i  (step_saved ? accs_q[p] : acc_q[p]),
+        .b_i  (step_row ? (gy_q[p] << 8) : (gx_q[p] << 8)),
+        .sub_i(step_neg),
+        .sum_o(acc_next[p])
+      );
+    end
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        for (int p = 0; p < NP; p++) begin
+          gx_q[p] <= '0; gy_q[p] <= '0; acc_q[p] <= '0; accs_q[p] <= '0;
+        end
+        out_p_q <= '0;
+      end else begin
+        if (accept) begin
+          for (int p = 0; p < NP; p++) begin
+            gx_q[p]  <= tri_p_i[3*AW*p +: AW];
+            gy_q[p]  <= tri_p_i[3*AW*p + AW +: AW];
+            acc_q[p] <= tri_p_i[3*AW*p + 2*AW +: AW];
+          end
+        end
+        if (decide && save) begin
+          for (int p = 0; p < NP; p++) accs_q[p] <= acc_q[p];
+        end
+        if (plane_step) begin
+          for (int p = 0; p < NP; p++) acc_q[p] <= acc_next[p];
+        end
+        if (decide && emit) begin
+          for (int p = 0; p < NP; p++) out_p_q[AW*p +: AW] <= acc_q[p];
+        end
+      end
+    end
+    assign sweep_q   = 1'b0;
+    assign hold      = 1'b0;
+    assign load_last = 1'b1;
+    assign out_load  = decide && emit;
+    logic unused_pl;
+    assign unused_pl = ^{pl_we_i, pl_sel_i, pl_idx_i, pl_data_i};
+  end else begin : g_planes_ser
+    // The planes in one block RAM, stepped one a clock on one adder. Its regions (the top address
+    // bits): 0 and 1 the two banks of accumulators, 2, 3, 4 the gradients g_x, g_y and the start
+    // values that setup writes there for the next triangle. StLoad copies the gradients into
+    // registers and the start values into bank 0 (3 NP + 1 clocks), then takes the triangle.
+    // The register after the RAM always holds plane 0 of the current bank when a pixel is decided,
+    // so the deciding clock captures or steps plane 0 itself, and planes 1 .. NP-1 follow one a
+    // clock (a pass): NP clocks a step. A pass may capture the values into the fragment (the decided
+    // pixel's), step them (write), or both. A row end after a span takes two passes: capture the
+    // pixel from the current bank, then step the saved bank's values into the current one.
+    // A clock in which setup writes (hold) changes nothing here. (NP >= 2.)
+    localparam int unsigned IW = $clog2(NP);
+    localparam logic [2:0]  RegGx = 3'd2, RegGy = 3'd3, RegSt = 3'd4;
+    // The gradients in two rings of registers that turn by one plane each clock of a pass (a pass
+    // turns them all the way round), so plane c_idx's are always at the front: no multiplexer
+    // over the planes. StLoad shifts them in at the back in plane order.
+    logic [AW-1:0] gx_q [NP];
+    logic [AW-1:0] gy_q [NP];
+    (* ram_style = "block" *) logic [AW-1:0] mem_q [2**(IW+3)];
+    logic [AW-1:0] base_q, sum, grad;
+    logic [IW-1:0] idx_q;
+    logic [IW+2:0] raddr, waddr;
+    logic          cur_q;                      // bank of the current pixel's values
+    logic          rd_bank_q, wr_bank_q;       // the pass's banks
+    logic          cap_q, wr_q, row_q, neg_q;  // the pass captures, writes, steps a row, subtracts
+    logic          more_q;                     // a stepping pass from the saved bank follows
+    logic          start_pass, active, pass_end;
+    // StLoad: the word read (region, plane) and the word arriving in base_q.
+    logic [2:0]    ld_reg_q, got_reg_q;
+    logic [IW-1:0] ld_p_q, got_p_q;
+    logic          got_q, loading;
+    // This clock's plane and what is done with it: the pass's registers, or in the deciding clock
+    // the decision itself.
+    logic [IW-1:0] c_idx;
+    logic          c_cap, c_wr, c_wr_bank, c_row, c_neg;
+
+    assign hold       = pl_we_i;
+    assign loading    = (state_q == StLoad) && !hold;
+    assign start_pass = !hold && !sweep_q && ((decide && emit) || plane_step);
+    assign active     = !hold && (sweep_q || start_pass);
+    assign pass_end   = !hold && sweep_q && (idx_q == IW'(NP - 1));
+    assign c_idx      = sweep_q ? idx_q : '0;
+    assign c_cap      = sweep_q ? cap_q : emit;
+    assign c_wr       = sweep_q ? wr_q : !step_saved;
+    assign c_wr_bank  = sweep_q ? wr_bank_q : (save ? !cur_q : cur_q);
+    assign c_row      = sweep_q ? row_q : step_row;
+    assign c_neg      = sweep_q ? neg_q : step_neg;
+
+    assign grad = c_row ? gy_q[0] : gx_q[0];
+    htx_raster_addsub #(.W(AW)) u_step (
+      .a_i  (base_q),
+      .b_i  (grad << 8),
+      .sub_i(c_neg),
+      .sum_o(sum)
+    );
+
+    // Read: StLoad's next word; the pass's next plane; at a pass's end plane 0 of the bank read
+    // next (the saved one when a stepping pass follows, else the current one, ready for the next
+    // decision).
+    always_comb begin
+      if (state_q == StLoad) raddr = {ld_reg_q, ld_p_q};
+      else if (start_pass)   raddr = {2'b00, cur_q, IW'(1)};
+      else if (pass_end)     raddr = {2'b00, more_q ? !cur_q : cur_q, IW'(0)};
+      else if (sweep_q)      raddr = {2'b00, rd_bank_q, idx_q + 1'b1};
+      else                   raddr = {2'b00, cur_q, IW'(0)};
+    end
+    // Write: setup's words; the steps; StLoad's start values into bank 0.
+    logic          we;
+    logic [AW-1:0] wdata;
+    always_comb begin
+      if (hold) begin
+        we    = 1'b1;
+        waddr = {3'(pl_sel_i) + 3'd2, IW'(pl_idx_i)};
+        wdata = pl_data_i;
+      end else if (active) begin
+        we    = c_wr;
+        waddr = {2'b00, c_wr_bank, c_idx};
+        wdata = sum;
+      end else begin
+        we    = loading && got_q && (got_reg_q == RegSt);
+        waddr = {3'b000, got_p_q};
+        wdata = base_q;
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (we) mem_q[waddr] <= wdata;
+      if (!hold) base_q <= mem_q[raddr];
+    end
+
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        sweep_q   <= 1'b0;
+        idx_q     <= '0;
+        cur_q     <= 1'b0;
+        rd_bank_q <= 1'b0;
+        wr_bank_q <= 1'b0;
+        cap_q     <= 1'b0;
+        wr_q      <= 1'b0;
+        row_q     <= 1'b0;
+        neg_q     <= 1'b0;
+        more_q    <= 1'b0;
+        ld_reg_q  <= RegGx;
+        ld_p_q    <= '0;
+        got_reg_q <= RegGx;
+        got_p_q   <= '0;
+        got_q     <= 1'b0;
+        out_p_q   <= '0;
+        for (int p = 0; p < NP; p++) begin
+          gx_q[p] <= '0; gy_q[p] <= '0;
+        end
+      end else if (abort_i) begin
+        sweep_q  <= 1'b0;
+        ld_reg_q <= RegGx;
+        ld_p_q   <= '0;
+        got_q    <= 1'b0;
+      end else begin
+        if (state_q == StIdle) cur_q <= 1'b0;  // StLoad fills bank 0
+        if (loading) begin
+          // Read g_x of every plane, then g_y, then the start values; each arrives a clock later.
+          got_q     <= !load_last;
+          got_reg_q <= ld_reg_q;
+          got_p_q   <= ld_p_q;
+          if (ld_p_q == IW'(NP - 1)) begin
+            ld_p_q   <= '0;
+            ld_reg_q <= (ld_reg_q == RegSt) ? RegGx : ld_reg_q + 3'd1;
+          end else begin
+            ld_p_q <= ld_p_q + 1'b1;
+          end
+          if (load_last) begin
+            ld_reg_q <= RegGx;
+            ld_p_q   <= '0;
+          end
+          if (got_q && (got_reg_q == RegGx)) begin
+            for (int p = 0; p < NP - 1; p++) gx_q[p] <= gx_q[p+1];
+            gx_q[NP-1] <= base_q;
+          end
+          if (got_q && (got_reg_q == RegGy)) begin
+            for (int p = 0; p < NP - 1; p++) gy_q[p] <= gy_q[p+1];
+            gy_q[NP-1] <= base_q;
+          end
+        end
+        if (active) begin
+          for (int p = 0; p < NP - 1; p++) begin
+            gx_q[p] <= gx_q[p+1];
+            gy_q[p] <= gy_q[p+1];
+          end
+          gx_q[NP-1] <= gx_q[0];
+          gy_q[NP-1] <= gy_q[0];
+        end
+        for (int p = 0; p < NP; p++) begin
+          if (active && c_cap && (c_idx == IW'(p))) out_p_q[AW*p +: AW] <= base_q;
+        end
+        if (start_pass) begin
+          sweep_q   <= 1'b1;
+          idx_q     <= IW'(1);
+          rd_bank_q <= cur_q;
+          cap_q     <= emit;
+          row_q     <= step_row;
+          neg_q     <= step_neg;
+          wr_q      <= !step_saved;
+          wr_bank_q <= c_wr_bank;
+          // A row end after a span captures first; its step from the saved bank follows.
+          more_q    <= step_saved && !last_row;
+          // Leaving a span's first pixel: the step goes to the other bank, which becomes the
+          // current one; the bank left behind keeps the first pixel's values for the next row.
+          if (save) cur_q <= !cur_q;
+        end else if (pass_end) begin
+          idx_q <= '0;
+          if (more_q) begin
+            // The row end's stepping pass: the saved bank's values plus 256 g_y, into the current.
+            more_q    <= 1'b0;
+            rd_bank_q <= !cur_q;
+            wr_bank_q <= cur_q;
+            cap_q     <= 1'b0;
+            wr_q      <= 1'b1;
+            row_q     <= 1'b1;
+            neg_q     <= 1'b0;
+          end else begin
+            sweep_q <= 1'b0;
+          end
+        end else if (active) begin
+          idx_q <= idx_q + 1'b1;
+        end
+      end
+    end
+    // The last word (plane NP-1's start value) arrives and is written: the triangle is taken.
+    assign load_last = loading && got_q && (got_reg_q == RegSt) && (got_p_q == IW'(NP - 1));
+    // The fragment is complete when its capture pass ends.
+    assign out_load  = pass_end && cap_q;
+    logic unused_tri_p;
+    assign unused_tri_p = ^tri_p_i;
+  end
+  assign accept = tri_valid_i && tri_ready_o;
+
   // ---- Output register -------------------------------------------------------------------------
   logic [12:0]       out_x_q, out_y_q;
   logic [AddrW-1:0]  out_addr_q;
-  logic [NP*AW-1:0]  out_p_q;
   logic [SideW-1:0]  out_side_q;
   logic              out_first_q, out_last_q, out_tfirst_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -299,7 +544,6 @@ module htx_raster_traverse #(
       out_x_q     <= '0;
       out_y_q     <= '0;
       out_addr_q  <= '0;
-      out_p_q     <= '0;
       out_side_q  <= '0;
       out_first_q <= 1'b0;
       out_last_q  <= 1'b0;
@@ -308,12 +552,11 @@ module htx_raster_traverse #(
       out_valid_q <= 1'b0;
     end else begin
       if (frag_ready_i) out_valid_q <= 1'b0;
+      if (out_load) out_valid_q <= 1'b1;
       if (emit) begin
-        out_valid_q <= 1'b1;
         out_x_q     <= 13'(x_q);
         out_y_q     <= y_q;
         out_addr_q  <= row_base_q + AddrW'(x_q);
-        for (int p = 0; p < NP; p++) out_p_q[AW*p +: AW] <= acc_q[p];
         out_side_q  <= side_q;
         out_first_q <= first;
         out_last_q  <= !in_next;
@@ -322,8 +565,8 @@ module htx_raster_traverse #(
     end
   end
 
-
-  assign tri_ready_o      = (state_q == StIdle) && !abort_i;
+  assign tri_ready_o      = (SerialPlanes ? ((state_q == StLoad) && load_last) : (state_q == StIdle)) &&
+                            !abort_i;
   assign frag_valid_o     = out_valid_q;
   assign frag_x_o         = out_x_q;
   assign frag_y_o         = out_y_q;
@@ -333,6 +576,6 @@ module htx_raster_traverse #(
   assign frag_first_o     = out_first_q;
   assign frag_last_o      = out_last_q;
   assign frag_tfirst_o    = out_tfirst_q;
-  assign busy_o           = (state_q != StIdle) || out_valid_q;
+  assign busy_o           = (state_q != StIdle) || out_valid_q || sweep_q;
   assign stall_o          = want_emit && !can_emit;
 endmodule
