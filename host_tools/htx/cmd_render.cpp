@@ -70,13 +70,19 @@ void run_render(const RenderArgs& a) {
     const Filter f = parse_filter(a.filter);
     for (ScreenTri& t : screen.tris) t.state.filter = f;
   }
+  // icebreaker-board: `icebreaker` with the board GPU's methods only (AFFINE, RECIP_LUT); the rtl
+  // engine draws it on that GPU, the design gpu_icebreaker_up5k synthesises. A triangle that asks
+  // for another method is refused with the engines' error (pick --method affine, recip_lut or auto).
+  const bool board = a.config == "icebreaker-board";
+  const std::string base_config = board ? "icebreaker" : a.config;
 #ifdef HTX_HAVE_RTL_ENGINE
   // The RTL builds Gouraud colour linear in screen space; `rtl` and its model comparison use that.
-  const ModelConfig config = a.engine == "rtl" ? rtl_config(a.config) : model_config(a.config);
+  ModelConfig config = a.engine == "rtl" ? rtl_config(base_config) : model_config(base_config);
   RtlStats rtl_stats;
 #else
-  const ModelConfig& config = model_config(a.config);
+  ModelConfig config = model_config(base_config);
 #endif
+  if (board) config.methods &= icebreaker_board_methods();
   // AUTO: the firmware's per-triangle choice (docs/auto.md) within --tolerance texels.
   if (!(a.tolerance > 0)) throw std::invalid_argument("--tolerance must be > 0 texels");
   fw::resolve_auto_methods(screen, config, static_cast<float>(a.tolerance));
@@ -143,7 +149,10 @@ void register_render(CLI::App& app) {
   cmd->add_option("--tolerance", args->tolerance, "AUTO: largest predicted texel-coordinate error (texels)")
       ->capture_default_str();
   cmd->add_option("--filter", args->filter, "override every triangle's filter: nearest, bilinear, trilinear");
-  cmd->add_option("--config", args->config, "model configuration: full | icebreaker")->capture_default_str();
+  cmd->add_option("--config", args->config,
+                  "model configuration: full | icebreaker | icebreaker-board (icebreaker with the board GPU's "
+                  "methods only: affine, recip_lut)")
+      ->capture_default_str();
   cmd->add_option("--size", args->size, "frame size WxH")->capture_default_str();
   cmd->add_option("--out", args->out, "output PNG")->required();
   cmd->add_option("--metrics", args->metrics, "also render ref and write the metrics JSON here");

@@ -89,4 +89,8 @@ const ModelConfig& model_config(std::string_view name) {
 
 std::vector<std::string> model_config_names() { return {"icebreaker", "full"}; }
 
+uint32_t icebreaker_board_methods() {
+  return (1u << static_cast<unsigned>(Method::Affine)) | (1u << static_cast<unsigned>(Method::RecipLut));
+}
+
 }  // namespace htx

@@ -28,14 +28,11 @@ constexpr uint32_t off(size_t o) { return static_cast<uint32_t>(o); }
 // Perspective methods the Verilated GPU builds (htx_gpu_full / htx_gpu_icebreaker `Methods`):
 // AFFINE, SUBDIV, RECIP_LUT, RECIP_NR, DIVFREE in both configurations.
 constexpr uint32_t kRtlMethods = 0x1F;
-// The board's methods (AFFINE, RECIP_LUT): an `icebreaker` configuration that names no others is
-// rendered on the GPU built with only those, the design the synthesis report measures.
-constexpr uint32_t kBoardMethods = (1u << static_cast<unsigned>(Method::Affine)) |
-                                   (1u << static_cast<unsigned>(Method::RecipLut));
-
-// The Verilated GPU that renders a configuration.
+// The Verilated GPU that renders a configuration: an `icebreaker` configuration that names no
+// methods beyond the board's (icebreaker_board_methods) is rendered on the GPU built with only
+// those, the design the synthesis report measures.
 std::string gpu_variant(const ModelConfig& c) {
-  if (c.name == "icebreaker" && (c.methods & ~kBoardMethods) == 0) return "icebreaker_board";
+  if (c.name == "icebreaker" && (c.methods & ~icebreaker_board_methods()) == 0) return "icebreaker_board";
   return c.name;
 }
 
@@ -145,7 +142,7 @@ ModelConfig rtl_config(const std::string& name) {
 
 ModelConfig rtl_board_config() {
   ModelConfig c = rtl_config("icebreaker");
-  c.methods = kBoardMethods;
+  c.methods = icebreaker_board_methods();
   return c;
 }
 

@@ -77,4 +77,8 @@ struct ModelConfig {
 const ModelConfig& model_config(std::string_view name);
 std::vector<std::string> model_config_names();
 
+// The methods the board's GPU builds (AFFINE and RECIP_LUT: the design the synthesis report's
+// gpu_icebreaker_up5k measures). "icebreaker" restricted to them is the board's configuration.
+uint32_t icebreaker_board_methods();
+
 }  // namespace htx
