@@ -11,7 +11,8 @@
 // SerialPlanes = 1 (`icebreaker`) keeps the plane accumulators in one block RAM and steps them one
 // plane a clock on one adder: a step costs NP clocks (a row end after a span 2 NP), not one.
 // The row's saved copy needs no copy: the RAM holds two banks, and the step that leaves a span's
-// first pixel writes the other bank, so the bank it leaves keeps that pixel's values.
+// first pixel writes the other bank, so the bank it leaves keeps that pixel's values. Setup then
+// writes the planes into that RAM (pl_*_i) instead of handing them over on tri_p_i.
 // The covered set is exactly the model's: E_k >= threshold_k for all k, cov the clipped box.
 // Each fragment carries its plane values (NP planes, modulo 2^AW), the triangle's sideband (state,
 // flat colour, texel offsets, LOD gradients) and whether it is its span's first or last pixel.
