@@ -83,6 +83,8 @@ module htx_raster_traverse #(
   logic signed [EW-1:0]    es_q [3];
   logic                    sweep_q;   // SerialPlanes: the planes are being stepped (0 otherwise)
   logic                    hold;      // SerialPlanes: setup writes the plane RAM; nothing moves
+  logic [2:0]              la_q;      // SerialPlanes: coverage of x + 1 by each edge
+  logic                    la_valid_q;  // SerialPlanes: la_q is for the current e_q
   logic                    load_last; // SerialPlanes: StLoad writes the last plane
   logic                    accept;    // the triangle is taken this clock
 
@@ -91,12 +93,17 @@ module htx_raster_traverse #(
   logic signed [EW-1:0] step_b [3];
   logic [2:0] in_cur, in_prev_e, in_next_e, fail_pos, fail_neg, fail_zero;
   for (genvar k = 0; k < 3; k++) begin : g_cov
-    logic signed [EW-1:0] en;
     assign step_a[k] = EW'(a_q[k]) <<< 8;
     assign step_b[k] = EW'(b_q[k]) <<< 8;
-    assign en = e_q[k] + step_a[k];
     assign in_cur[k]    = !e_q[k][EW-1] && (!thr_q[k] || (e_q[k] != '0));
-    assign in_next_e[k] = !en[EW-1] && (!thr_q[k] || (en != '0));
+    if (SerialPlanes) begin : g_next_la
+      // Registered: the edge's step adder computes e + 256 a in a clock without a step (below).
+      assign in_next_e[k] = la_q[k];
+    end else begin : g_next_add
+      logic signed [EW-1:0] en;
+      assign en = e_q[k] + step_a[k];
+      assign in_next_e[k] = !en[EW-1] && (!thr_q[k] || (en != '0));
+    end
     if (LookBehind) begin : g_prev
       logic signed [EW-1:0] ep;
       assign ep = e_q[k] - step_a[k];
@@ -171,9 +178,9 @@ module htx_raster_traverse #(
         act = ActRowCur;
       end
     end
-    if (SerialPlanes && (sweep_q || hold)) begin
-      // The planes of the last step are still being stepped, or setup writes the plane RAM: no
-      // decision this clock.
+    if (SerialPlanes && (sweep_q || hold || !la_valid_q)) begin
+      // The planes of the last step are still being stepped, setup writes the plane RAM, or the
+      // look at x + 1 is not there yet: no decision this clock.
       act = ActNone; emit = 1'b0; save = 1'b0; first = 1'b0; mode_next = state_q;
     end
     want_emit = emit;
@@ -206,6 +213,38 @@ module htx_raster_traverse #(
       .sum_o(e_next[k])
     );
   end
+  // decide: the state machine acts on act, emit and save this clock; plane_step: it moves (the edges
+  // and planes step).
+  logic decide, plane_step;
+  assign decide     = !abort_i && (state_q != StIdle) && (state_q != StLoad) && (state_q != StBase);
+  assign plane_step = decide && ((act == ActLeft) || (act == ActRight) || (step_row && !last_row));
+
+  // SerialPlanes: the look at x + 1 (e + 256 a) comes from the edges' step adders in a clock in
+  // which they step nothing (act is ActNone: they compute exactly that), registered, instead of
+  // from three adders of its own. After a step it is there a clock later, inside the planes' pass.
+  if (SerialPlanes) begin : g_lookahead
+    logic [2:0] la_d;
+    for (genvar k = 0; k < 3; k++) begin : g_la
+      assign la_d[k] = !e_next[k][EW-1] && (!thr_q[k] || (e_next[k] != '0));
+    end
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        la_q       <= '0;
+        la_valid_q <= 1'b0;
+      end else if (accept || plane_step) begin
+        la_valid_q <= 1'b0;  // e_q changes
+      end else if (act == ActNone) begin
+        la_q       <= la_d;
+        la_valid_q <= 1'b1;
+      end
+    end
+  end else begin : g_no_lookahead
+    assign la_q       = '0;
+    assign la_valid_q = 1'b1;
+    logic unused_la;
+    assign unused_la = ^la_q;
+  end
+
   // ---- State -----------------------------------------------------------------------------------
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -288,11 +327,8 @@ module htx_raster_traverse #(
   end
 
   // ---- Planes ----------------------------------------------------------------------------------
-  // decide: the state machine acts on act, emit and save this clock.
-  logic decide, plane_step, out_load;
+  logic out_load;
   logic [NP*AW-1:0] out_p_q;
-  assign decide     = !abort_i && (state_q != StIdle) && (state_q != StLoad) && (state_q != StBase);
-  assign plane_step = decide && ((act == ActLeft) || (act == ActRight) || (step_row && !last_row));
 
   if (!SerialPlanes) begin : g_planes_par
     // One adder per plane: every plane steps in the clock its pixel is decided.
