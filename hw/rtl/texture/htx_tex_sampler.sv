@@ -2,7 +2,7 @@
 // banks per level, decode, bilinear blend, trilinear blend. Stages, each a valid/ready register:
 //   R  request: per-axis indices and weights at level l0 + pass. A trilinear request with a
 //      non-zero level weight makes two passes (levels l0 and l0 + 1, one clock each); every other
-//      request one.
+//      request one. Lanes = 1 has one axis unit for both axes: two clocks a pass.
 //   A  the four bank addresses of a pass; the read is issued when B takes it.
 //   B  bank data (held in the RAMs' output registers): select each footprint texel, decode.
 //   C  blend: Lanes = 4 blends all channels in one clock; Lanes = 1 one channel at a time, one
@@ -64,11 +64,12 @@ module htx_tex_sampler #(
   logic [15:0]       r_lod_q;
   logic [TagW-1:0]   r_tag_q;
   logic              a_ready, r_issue, r_last, r_two;
+  logic              r_axes_done;  // both axes' indices are there (Lanes = 1: the second clock)
   logic [3:0]        level;
 
   assign r_two   = HasTri && (r_wtri_q != 8'd0);
   assign r_last  = !r_two || r_pass_q;
-  assign r_issue = r_valid_q && a_ready;
+  assign r_issue = r_valid_q && a_ready && r_axes_done;
   assign in_ready_o = !r_valid_q || (r_issue && r_last);
   assign level   = HasTri ? r_l0_q + 4'(r_pass_q) : 4'd0;
 
@@ -102,12 +103,47 @@ module htx_tex_sampler #(
   logic [13:0] row0, row1;
   logic [7:0] x0, x1, y0, y1, wu, wv;
   logic [3:0] lwu, lwv;
-  htx_tex_axis #(.CoordW(CoordW), .TF(TF)) u_axis_u (
-    .coord_i(r_u_q), .level_i(level), .log2_size_i(r_desc_q[19:16]), .wrap_i(r_wrap_u_q),
-    .nearest_i(r_nearest_q), .i0_o(x0), .i1_o(x1), .weight_o(wu), .log2_level_o(lwu));
-  htx_tex_axis #(.CoordW(CoordW), .TF(TF)) u_axis_v (
-    .coord_i(r_v_q), .level_i(level), .log2_size_i(r_desc_q[23:20]), .wrap_i(r_wrap_v_q),
-    .nearest_i(r_nearest_q), .i0_o(y0), .i1_o(y1), .weight_o(wv), .log2_level_o(lwv));
+  if (Lanes >= 4) begin : g_axes
+    // One axis unit per axis: a request (pass) a clock.
+    htx_tex_axis #(.CoordW(CoordW), .TF(TF)) u_axis_u (
+      .coord_i(r_u_q), .level_i(level), .log2_size_i(r_desc_q[19:16]), .wrap_i(r_wrap_u_q),
+      .nearest_i(r_nearest_q), .i0_o(x0), .i1_o(x1), .weight_o(wu), .log2_level_o(lwu));
+    htx_tex_axis #(.CoordW(CoordW), .TF(TF)) u_axis_v (
+      .coord_i(r_v_q), .level_i(level), .log2_size_i(r_desc_q[23:20]), .wrap_i(r_wrap_v_q),
+      .nearest_i(r_nearest_q), .i0_o(y0), .i1_o(y1), .weight_o(wv), .log2_level_o(lwv));
+    assign r_axes_done = 1'b1;
+  end else begin : g_axis_shared
+    // Lanes = 1 (`icebreaker`, area first): one axis unit, u in a pass's first clock (its results
+    // registered), v in the second, which issues the pass: two clocks a pass (the blend takes 12
+    // for a bilinear texel, and the board's raster delivers a fragment every 9 clocks at most).
+    logic       r_phase_q;  // 0: the u axis this clock; 1: the v axis (u's results registered)
+    logic [7:0] ax_i0, ax_i1, ax_w, u_i0_q, u_i1_q, u_w_q;
+    logic [3:0] ax_lw, u_lw_q;
+    htx_tex_axis #(.CoordW(CoordW), .TF(TF)) u_axis (
+      .coord_i(r_phase_q ? r_v_q : r_u_q), .level_i(level),
+      .log2_size_i(r_phase_q ? r_desc_q[23:20] : r_desc_q[19:16]),
+      .wrap_i(r_phase_q ? r_wrap_v_q : r_wrap_u_q),
+      .nearest_i(r_nearest_q), .i0_o(ax_i0), .i1_o(ax_i1), .weight_o(ax_w), .log2_level_o(ax_lw));
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) r_phase_q <= 1'b0;
+      else if (in_ready_o || r_issue) r_phase_q <= 1'b0;  // a new request, or the next pass
+      else if (r_valid_q) r_phase_q <= 1'b1;
+    end
+    always_ff @(posedge clk_i) begin
+      if (r_valid_q && !r_phase_q) begin
+        u_i0_q <= ax_i0; u_i1_q <= ax_i1; u_w_q <= ax_w; u_lw_q <= ax_lw;
+      end
+    end
+    assign x0  = u_i0_q;
+    assign x1  = u_i1_q;
+    assign wu  = u_w_q;
+    assign lwu = u_lw_q;
+    assign y0  = ax_i0;
+    assign y1  = ax_i1;
+    assign wv  = ax_w;
+    assign lwv = ax_lw;
+    assign r_axes_done = r_phase_q;
+  end
 
   // ---- Stage A: bank addresses, read issue ---------------------------------------------------------
   logic              a_valid_q, a_first_q, a_second_q, a_nearest_q;
@@ -122,7 +158,7 @@ module htx_tex_sampler #(
   assign a_issue = a_valid_q && b_ready;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) a_valid_q <= 1'b0;
-    else if (a_ready) a_valid_q <= r_valid_q;
+    else if (a_ready) a_valid_q <= r_valid_q && r_axes_done;  // (= r_issue)
   end
   always_ff @(posedge clk_i) begin
     if (r_issue) begin

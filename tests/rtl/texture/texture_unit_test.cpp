@@ -433,7 +433,8 @@ TEST(TextureThroughput, Measured) {
   EXPECT_GE(full_near, 0.95);
   EXPECT_GE(full_tri1, 0.95);
   EXPECT_GE(full_tri2, 0.45);
-  EXPECT_GE(ice_near, 0.95);
+  // icebreaker has one axis unit for u and v (Lanes = 1): two clocks a request.
+  EXPECT_GE(ice_near, 0.49);
   // icebreaker blends one product per clock on one DSP: 3 clocks a channel, 12 a bilinear texel.
   EXPECT_GE(ice_bil, 0.083);
 }
