@@ -323,8 +323,9 @@ module htx_raster_setup #(
     assign sv[VSW*(24+i) +: VSW] = VSW'($signed(va_v[i]));
   end
 
-  // Planes not built (ua, va without AFFINE) give zeros.
-  for (genvar p = NS; p < NP; p++) begin : g_plane_off
+  // Planes not built (ua, va without AFFINE), and every plane with the shared unit (its planes go
+  // to the traversal's RAM instead), give zeros on tri_p_o.
+  for (genvar p = SharedPlanes ? 0 : NS; p < NP; p++) begin : g_plane_off
     assign pgx[p] = '0;
     assign pgy[p] = '0;
     assign pst[p] = '0;
@@ -426,11 +427,6 @@ module htx_raster_setup #(
     assign pl_sel_o  = pw_q;
     assign pl_idx_o  = s_idx;
     assign pl_data_o = (pw_q == 2'd0) ? AW'(s_gx) : (pw_q == 2'd1) ? AW'(s_gy) : AW'(s_st);
-    for (genvar p = 0; p < NS; p++) begin : g_store
-      assign pgx[p] = '0;
-      assign pgy[p] = '0;
-      assign pst[p] = '0;
-    end
     // Full-precision gradients of uq, vq (GWU bits) and q (GWQ bits, sign-extended) for the LOD unit.
     logic [GWU-1:0] lgx_q [3];
     logic [GWU-1:0] lgy_q [3];

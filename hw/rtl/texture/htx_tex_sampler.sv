@@ -117,8 +117,9 @@ module htx_tex_sampler #(
     // registered), v in the second, which issues the pass: two clocks a pass (the blend takes 12
     // for a bilinear texel, and the board's raster delivers a fragment every 9 clocks at most).
     logic       r_phase_q;  // 0: the u axis this clock; 1: the v axis (u's results registered)
-    logic [7:0] ax_i0, ax_i1, ax_w, u_i0_q, u_i1_q, u_w_q;
-    logic [3:0] ax_lw, u_lw_q;
+    logic [7:0]  ax_i0, ax_i1, ax_w;
+    logic [3:0]  ax_lw;
+    logic [27:0] u_q;       // u's i0, i1, weight, level size
     htx_tex_axis #(.CoordW(CoordW), .TF(TF)) u_axis (
       .coord_i(r_phase_q ? r_v_q : r_u_q), .level_i(level),
       .log2_size_i(r_phase_q ? r_desc_q[23:20] : r_desc_q[19:16]),
@@ -130,18 +131,10 @@ module htx_tex_sampler #(
       else if (r_valid_q) r_phase_q <= 1'b1;
     end
     always_ff @(posedge clk_i) begin
-      if (r_valid_q && !r_phase_q) begin
-        u_i0_q <= ax_i0; u_i1_q <= ax_i1; u_w_q <= ax_w; u_lw_q <= ax_lw;
-      end
+      if (r_valid_q && !r_phase_q) u_q <= {ax_i0, ax_i1, ax_w, ax_lw};
     end
-    assign x0  = u_i0_q;
-    assign x1  = u_i1_q;
-    assign wu  = u_w_q;
-    assign lwu = u_lw_q;
-    assign y0  = ax_i0;
-    assign y1  = ax_i1;
-    assign wv  = ax_w;
-    assign lwv = ax_lw;
+    assign {x0, x1, wu, lwu} = u_q;
+    assign {y0, y1, wv, lwv} = {ax_i0, ax_i1, ax_w, ax_lw};
     assign r_axes_done = r_phase_q;
   end
 
@@ -158,7 +151,7 @@ module htx_tex_sampler #(
   assign a_issue = a_valid_q && b_ready;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) a_valid_q <= 1'b0;
-    else if (a_ready) a_valid_q <= r_valid_q && r_axes_done;  // (= r_issue)
+    else if (a_ready) a_valid_q <= r_issue;  // A takes a pass only when R issues it
   end
   always_ff @(posedge clk_i) begin
     if (r_issue) begin
