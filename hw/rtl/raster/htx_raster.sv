@@ -195,11 +195,20 @@ module htx_raster #(
   logic [6*GWU-1:0]   tri_dfg;
   logic [DfgW-1:0]    tri_dfg_side;
   logic               setup_busy, setup_stall, setup_taken, setup_err;
+  // The iterative divider's reciprocal unit also serves setup (1/|det| and AFFINE's 1/q_i): one
+  // unit, table and multiplier instead of two. The pipelined divider's unit cannot take requests
+  // between fragments, so there setup keeps its own.
+  localparam bit          SharedRecip = !PixelPipelined;
+  localparam int unsigned DetW        = 2 * DW + 1;
+  logic                      rq_start, rq_done;
+  logic [DetW-1:0]           rq_x;
+  logic [RecipW:0]           rq_r;
+  logic [$clog2(DetW)-1:0]   rq_msb;
   htx_raster_setup #(
     .XyIntBits(XyIntBits), .ZBits(ZBits), .GF(GF), .RecipW(RecipW), .RecipK(RecipK),
     .RecipG(RecipG), .NrSteps(SetupSteps), .Iterative(Iterative), .QBits(QBits),
     .UvIntBits(UvIntBits), .TF(TF), .GradW(GradW), .Methods(Methods), .PerspColor(PerspColor),
-    .Lod(TexLod || HasDf), .AW(AW), .NP(NP)
+    .Lod(TexLod || HasDf), .ExtRecip(SharedRecip), .AW(AW), .NP(NP)
   ) u_setup (
     .clk_i, .rst_ni,
     .abort_i        (abort),
@@ -243,7 +252,12 @@ module htx_raster #(
     .busy_o         (setup_busy),
     .stall_o        (setup_stall),
     .taken_o        (setup_taken),
-    .err_o          (setup_err)
+    .err_o          (setup_err),
+    .rq_start_o     (rq_start),
+    .rq_x_o         (rq_x),
+    .rq_done_i      (rq_done),
+    .rq_r_i         (rq_r),
+    .rq_msb_i       (rq_msb)
   );
 
   // ---- Traversal -------------------------------------------------------------------------------
@@ -441,10 +455,13 @@ module htx_raster #(
   logic [LocW-1:0]   dv_u, dv_v;
   logic [23:0]       dv_rgb;
   logic [PayD-1:0]   dv_pay;
+  localparam int unsigned RqXW = (SharedRecip && DetW > AccQ) ? DetW : AccQ;
+  logic [$clog2(RqXW)-1:0] dv_rq_msb;
   htx_raster_divider #(
     .AccQ(AccQ), .AccU(AccU), .AccC(AccC), .UvIntBits(UvIntBits), .W(RecipW), .K(RecipK), .G(RecipG),
     .Steps(PixelSteps), .TF(TF), .LocW(LocW), .PayW(PayD), .Pipelined(PixelPipelined),
-    .Color(PerspColor), .MulIterative(PixelMulIterative), .MulDigits(Iterative)
+    .Color(PerspColor), .MulIterative(PixelMulIterative), .MulDigits(Iterative),
+    .Aux(SharedRecip), .AuxW(DetW), .AuxSteps(SetupSteps)
   ) u_divider (
     .clk_i, .rst_ni,
     .abort_i    (abort),
@@ -462,8 +479,15 @@ module htx_raster #(
     .out_u_o    (dv_u),
     .out_v_o    (dv_v),
     .out_rgb_o  (dv_rgb),
-    .out_pay_o  (dv_pay)
+    .out_pay_o  (dv_pay),
+    .aux_start_i(rq_start),
+    .aux_x_i    (rq_x),
+    .aux_done_o (rq_done),
+    .aux_r_o    (rq_r),
+    .aux_msb_o  (dv_rq_msb)
   );
+  // The unit's X is at least as wide as the determinant, so msb fits setup's width.
+  assign rq_msb = $clog2(DetW)'(dv_rq_msb);
 
   logic [SideW-1:0] dv_side;
   logic [AddrW-1:0] dv_addr;

@@ -172,7 +172,7 @@ module htx_raster_divfree #(
   htx_recip #(.XWidth(AccQ), .W(W), .K(K), .G(G), .Steps(Steps), .Iterative(MulIterative),
               .Pipelined(1'b0)) u_recip (
     .clk_i, .rst_ni, .abort_i,
-    .start_i(r_start), .en_i(1'b1), .table_only_i(1'b0), .x_i(q_eff),
+    .start_i(r_start), .en_i(1'b1), .table_only_i(1'b0), .alt_i(1'b0), .x_i(q_eff),
     .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
     .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(1'b0), .mul_p_i('0)
   );

@@ -23,7 +23,14 @@ module htx_raster_divider #(
   parameter bit          Pipelined    = 1'b1,
   parameter bit          Color        = 1'b1,
   parameter bit          MulIterative = 1'b0,
-  parameter bit          MulDigits    = 1'b0    // Pipelined = 0: the multiplier digit-serial (2 DSPs)
+  parameter bit          MulDigits    = 1'b0,   // Pipelined = 0: the multiplier digit-serial (2 DSPs)
+  // Pipelined = 0: the reciprocal unit also serves a second client (setup: the determinant and
+  // AFFINE's vertex reciprocals), with AuxSteps Newton steps, between fragments.
+  parameter bit          Aux          = 1'b0,
+  parameter int unsigned AuxW         = AccQ,
+  parameter int unsigned AuxSteps     = Steps,
+  parameter int unsigned RXW          = (Aux && AuxW > AccQ) ? AuxW : AccQ,  // the unit's X width
+  parameter int unsigned RMsbW        = $clog2(RXW)
 ) (
   input  logic                clk_i,
   input  logic                rst_ni,
@@ -42,7 +49,15 @@ module htx_raster_divider #(
   input  logic                out_ready_i,
   output logic [LocW-1:0]     out_u_o, out_v_o,
   output logic [23:0]         out_rgb_o,
-  output logic [PayW-1:0]     out_pay_o
+  output logic [PayW-1:0]     out_pay_o,
+
+  // Aux: a reciprocal request (a pulse; aux_x_i is taken with it). aux_done_o pulses with the
+  // result on aux_r_o and aux_msb_o (valid in that clock only), as htx_recip's done_o, r_o, msb_o.
+  input  logic                aux_start_i,
+  input  logic [AuxW-1:0]     aux_x_i,
+  output logic                aux_done_o,
+  output logic [W:0]          aux_r_o,
+  output logic [RMsbW-1:0]    aux_msb_o
 );
   localparam int unsigned MsbW = $clog2(AccQ);
   localparam int unsigned NIN  = (AccU > AccC) ? AccU : AccC;   // numerator input width
@@ -120,7 +135,7 @@ module htx_raster_divider #(
     logic [W+2:0] r_mul_a, r_mul_b;
     htx_recip #(.XWidth(AccQ), .W(W), .K(K), .G(G), .Steps(Steps), .Pipelined(1'b1)) u_recip (
       .clk_i, .rst_ni, .abort_i,
-      .start_i(va_q), .en_i(en), .table_only_i(1'b0), .x_i(qa_q),
+      .start_i(va_q), .en_i(en), .table_only_i(1'b0), .alt_i(1'b0), .x_i(qa_q),
       .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
       .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(1'b0), .mul_p_i('0)
     );
@@ -178,7 +193,10 @@ module htx_raster_divider #(
     assign out_rgb_o   = rgb_q;
     assign out_pay_o   = pay_q;
     logic unused_p;
-    assign unused_p = in_need_i;
+    assign unused_p = ^{in_need_i, aux_start_i, aux_x_i};
+    assign aux_done_o = 1'b0;
+    assign aux_r_o    = '0;
+    assign aux_msb_o  = '0;
   end else begin : g_iter
     typedef enum logic [1:0] {StIdle, StRecip, StMul, StOut} state_e;
     state_e              state_q;
@@ -188,25 +206,62 @@ module htx_raster_divider #(
     logic [2:0]          k_q;
     logic                r_start, r_done, r_busy;
     logic [W:0]          r_nr, r_t, r_sel;
-    logic [MsbW-1:0]     r_msb;
+    logic [RMsbW-1:0]    r_msb;
     logic [LocW-1:0]     u_q, v_q;
     logic [23:0]         rgb_q;
 
-    assign in_ready_o = (state_q == StIdle) || ((state_q == StOut) && out_ready_i);
+    // An aux request waits (aux_pend_q) until the unit is idle between fragments and then runs
+    // (aux_run_q) while no fragment is taken; it goes first when both wait, so setup, which asks
+    // a few times a triangle, is never starved by a stream of fragments.
+    logic            aux_pend_q, aux_run_q, aux_go;
+    logic [RXW-1:0]  aux_x_q;
+    if (Aux) begin : g_aux
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          aux_pend_q <= 1'b0;
+          aux_run_q  <= 1'b0;
+        end else if (abort_i) begin
+          aux_pend_q <= 1'b0;
+          aux_run_q  <= 1'b0;
+        end else begin
+          if (aux_start_i) aux_pend_q <= 1'b1;
+          else if (aux_go) aux_pend_q <= 1'b0;
+          if (aux_go) aux_run_q <= 1'b1;
+          else if (r_done) aux_run_q <= 1'b0;
+        end
+      end
+      always_ff @(posedge clk_i) begin
+        if (aux_start_i) aux_x_q <= RXW'(aux_x_i);
+      end
+    end else begin : g_no_aux
+      assign aux_pend_q = 1'b0;
+      assign aux_run_q  = 1'b0;
+      assign aux_x_q    = '0;
+      logic unused_aux;
+      assign unused_aux = ^{aux_start_i, aux_x_i};
+    end
+    assign aux_go     = aux_pend_q && !aux_run_q && (state_q == StIdle);
+    assign aux_done_o = aux_run_q && r_done;
+    assign aux_r_o    = r_nr;
+    assign aux_msb_o  = r_msb;
+
+    assign in_ready_o = !aux_pend_q && !aux_run_q &&
+                        ((state_q == StIdle) || ((state_q == StOut) && out_ready_i));
     assign take       = in_valid_i && in_ready_o;
     // The reciprocal starts as the fragment is taken (it is idle then: the last one finished before
     // the products).
-    assign r_start    = take && in_need_i;
+    assign r_start    = (take && in_need_i) || aux_go;
 
     // The reciprocal's Newton products go through the numerators' multiplier (ExtMul): the two
     // never work at once (the numerators wait for the reciprocal), so one multiplier serves both.
     logic                   r_mul_start, r_mul_done;
     logic signed [W+2:0]    r_mul_a, r_mul_b;
     logic signed [2*W+5:0]  r_mul_p;
-    htx_recip #(.XWidth(AccQ), .W(W), .K(K), .G(G), .Steps(Steps), .Iterative(MulIterative),
-                .Pipelined(1'b0), .ExtMul(1'b1)) u_recip (
+    htx_recip #(.XWidth(RXW), .W(W), .K(K), .G(G), .Steps(Steps), .Iterative(MulIterative),
+                .Pipelined(1'b0), .ExtMul(1'b1), .AltSteps(AuxSteps)) u_recip (
       .clk_i, .rst_ni, .abort_i,
-      .start_i(r_start), .en_i(1'b1), .table_only_i(in_lut_i && !Color), .x_i(q_eff),
+      .start_i(r_start), .en_i(1'b1), .table_only_i(!aux_go && in_lut_i && !Color),
+      .alt_i(aux_go), .x_i(aux_go ? aux_x_q : RXW'(q_eff)),
       .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
       .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(r_mul_done),
       .mul_p_i(r_mul_p)
@@ -232,7 +287,7 @@ module htx_raster_divider #(
       n_sel = n_q[0];
       for (int i = 1; i < NN; i++) if (32'(k_q) == i) n_sel = n_q[i];
     end
-    assign shn   = shift_num(n_sel, r_msb);
+    assign shn   = shift_num(n_sel, MsbW'(r_msb));
     assign r_sel = (k_q < 3'd2 && lut_q) ? r_t : r_nr;
     assign m_a   = (k_q < 3'd2) ? MA'($signed(NSU'(shn))) : MA'($signed(NSC'(shn)));
     assign m_b   = $signed({1'b0, r_sel});

@@ -24,6 +24,9 @@ module htx_raster_setup #(
   // The LOD gradients are built (a trilinear texture unit or DIVFREE takes them); 0: tri_lod_*_o
   // are 0 and the LOD block is left out.
   parameter bit          Lod       = 1'b1,
+  // The reciprocals go to a unit outside (rq_*: the `icebreaker` divider's, shared) instead of a
+  // unit of setup's own.
+  parameter bit          ExtRecip  = 1'b0,
   // Derived widths (docs/raster.md).
   parameter int unsigned UQ   = QBits + UvIntBits,            // uq, vq vertex values (signed)
   parameter int unsigned LocW = UvIntBits + TF,               // local texel coordinates (signed)
@@ -32,7 +35,9 @@ module htx_raster_setup #(
   parameter int unsigned NP   = 9,                            // z, r, g, b, q, uq, vq, ua, va
   parameter int unsigned XW   = XyIntBits + 8,   // vertex x, y (signed, 1/256 pixel)
   parameter int unsigned DW   = XW + 1,          // coordinate deltas
-  parameter int unsigned EW   = 2 * DW + 2       // edge function values
+  parameter int unsigned EW   = 2 * DW + 2,      // edge function values
+  parameter int unsigned DetW = 2 * DW + 1,      // determinant
+  parameter int unsigned MsbW = $clog2(DetW)
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
@@ -80,12 +85,18 @@ module htx_raster_setup #(
   output logic                 busy_o,        // computing (not waiting for input or traversal)
   output logic                 stall_o,       // a finished triangle waits for traversal
   output logic                 taken_o,       // a triangle was taken from the input (pulse)
-  output logic                 err_o          // a triangle asked for what is not built (pulse)
+  output logic                 err_o,         // a triangle asked for what is not built (pulse)
+
+  // ExtRecip: a reciprocal request (a pulse with its operand) and its result (rq_done_i pulses with
+  // rq_r_i and rq_msb_i, as htx_recip's done_o, r_o and msb_o with NrSteps Newton steps).
+  output logic                 rq_start_o,
+  output logic [DetW-1:0]      rq_x_o,
+  input  logic                 rq_done_i,
+  input  logic [RecipW:0]      rq_r_i,
+  input  logic [MsbW-1:0]      rq_msb_i
 );
-  localparam int unsigned DetW   = 2 * DW + 1;
   localparam int unsigned BoxW   = XW - 7;      // signed pixel index of a box bound
   localparam int unsigned ShiftW = 8;
-  localparam int unsigned MsbW   = $clog2(DetW);
 
   typedef enum logic [2:0] {StIdle, StDet0, StDet1, StEdges, StWait, StOut} state_e;
 
@@ -225,8 +236,6 @@ module htx_raster_setup #(
   logic                recip_start, recip_done, recip_busy, recip_valid_q, det_pend_q;
   logic [RecipW:0]     recip_r, recip_r0, rdet_q;
   logic [MsbW-1:0]     recip_msb, msbdet_q;
-  logic                recip_mul_start;      // (setup's unit has its own multiplier)
-  logic [RecipW+2:0]   recip_mul_a, recip_mul_b;
   logic [DetW-1:0]     det_abs, recip_x;
   logic [ShiftW-1:0]   grad_shift;
   logic                planes_abort, det_start, av_start, affine_q;
@@ -238,27 +247,42 @@ module htx_raster_setup #(
   assign planes_abort = abort_i || ((state_q == StDet1) && emul_done && ((det_next == 0) || box_empty));
   assign grad_shift = ShiftW'(RecipW) + ShiftW'(msbdet_q) - ShiftW'(GF);
 
-  htx_recip #(.XWidth(DetW), .W(RecipW), .K(RecipK), .G(RecipG), .Steps(NrSteps),
-              .Iterative(Iterative), .SerialNorm(Iterative)) u_recip (
-    .clk_i, .rst_ni,
-    .abort_i,
-    .start_i     (recip_start),
-    .en_i        (1'b1),
-    .table_only_i(1'b0),
-    .x_i         (recip_x),
-    .busy_o      (recip_busy),
-    .done_o      (recip_done),
-    .r_o         (recip_r),
-    .r0_o        (recip_r0),
-    .msb_o       (recip_msb),
-    .mul_start_o (recip_mul_start),
-    .mul_a_o     (recip_mul_a),
-    .mul_b_o     (recip_mul_b),
-    .mul_done_i  (1'b0),
-    .mul_p_i     ('0)
-  );
-  logic unused_recip_mul;
-  assign unused_recip_mul = ^{recip_mul_start, recip_mul_a, recip_mul_b};
+  if (ExtRecip) begin : g_ext_recip
+    assign rq_start_o  = recip_start;
+    assign rq_x_o      = recip_x;
+    assign recip_done  = rq_done_i;
+    assign recip_r     = rq_r_i;
+    assign recip_msb   = rq_msb_i;
+    assign recip_r0    = '0;
+    assign recip_busy  = 1'b0;
+  end else begin : g_own_recip
+    logic                recip_mul_start;      // (setup's unit has its own multiplier)
+    logic [RecipW+2:0]   recip_mul_a, recip_mul_b;
+    htx_recip #(.XWidth(DetW), .W(RecipW), .K(RecipK), .G(RecipG), .Steps(NrSteps),
+                .Iterative(Iterative), .SerialNorm(Iterative)) u_recip (
+      .clk_i, .rst_ni,
+      .abort_i,
+      .start_i     (recip_start),
+      .en_i        (1'b1),
+      .table_only_i(1'b0),
+      .alt_i       (1'b0),
+      .x_i         (recip_x),
+      .busy_o      (recip_busy),
+      .done_o      (recip_done),
+      .r_o         (recip_r),
+      .r0_o        (recip_r0),
+      .msb_o       (recip_msb),
+      .mul_start_o (recip_mul_start),
+      .mul_a_o     (recip_mul_a),
+      .mul_b_o     (recip_mul_b),
+      .mul_done_i  (1'b0),
+      .mul_p_i     ('0)
+    );
+    assign rq_start_o = 1'b0;
+    assign rq_x_o     = '0;
+    logic unused_recip_mul;
+    assign unused_recip_mul = ^{recip_mul_start, recip_mul_a, recip_mul_b, rq_done_i, rq_r_i, rq_msb_i};
+  end
 
   // ---- Planes: z, r, g, b, q, uq, vq, and for AFFINE ua, va -------------------------------------
   // Nine plane units working in parallel, or (Iterative, the `icebreaker` configuration) one unit

@@ -12,6 +12,8 @@
 // SerialNorm (FSM form only; setup's unit in `icebreaker`) shifts X left one bit per clock until its
 // top bit is set, up to XWidth - 1 clocks, instead of a priority encoder and a barrel shifter.
 // ExtMul (FSM form only; the `icebreaker` divider's unit) uses the caller's multiplier.
+// AltSteps (FSM form only): a start with alt_i set runs AltSteps Newton steps instead of Steps (the
+// `icebreaker` divider's unit also serves setup, whose reciprocals take more steps than a pixel's).
 module htx_recip #(
   parameter int unsigned XWidth    = 51,
   parameter int unsigned W         = 32,
@@ -22,6 +24,7 @@ module htx_recip #(
   parameter bit          Pipelined = 1'b0,
   parameter bit          SerialNorm = 1'b0,  // FSM form: normalise one bit per clock (no barrel shifter)
   parameter bit          ExtMul    = 1'b0,  // FSM form: the Newton products go to the mul_* port
+  parameter int unsigned AltSteps  = Steps, // FSM form: Newton steps of a start with alt_i set
   parameter int unsigned MsbWidth  = $clog2(XWidth)
 ) (
   input  logic                clk_i,
@@ -30,6 +33,7 @@ module htx_recip #(
   input  logic                start_i,
   input  logic                en_i,          // Pipelined: the stages advance
   input  logic                table_only_i,  // iterative: no Newton step this time
+  input  logic                alt_i,         // iterative: AltSteps Newton steps this time
   input  logic [XWidth-1:0]   x_i,
   output logic                busy_o,
   output logic                done_o,
@@ -159,7 +163,7 @@ module htx_recip #(
     assign r0_o   = r0_p[Lat-1];
     assign msb_o  = msb_p[Lat-1];
     logic unused_pipe;
-    assign unused_pipe = ^{table_only_i, m_p[Lat-1], mul_done_i, mul_p_i};
+    assign unused_pipe = ^{table_only_i, alt_i, m_p[Lat-1], mul_done_i, mul_p_i};
     assign mul_start_o = 1'b0;
     assign mul_a_o     = '0;
     assign mul_b_o     = '0;
@@ -177,7 +181,8 @@ module htx_recip #(
   logic [2*MulW-1:0]   prod;
   logic [W+1:0]        e;
 
-  logic                only_q;
+  logic                only_q, alt_q;
+  logic                last_step, no_steps;
   logic                norm_done;  // mant and msb hold x_i's normalised form (StNorm)
   if (Serial) begin : g_norm_serial
     localparam int unsigned NW = (XWidth > W) ? XWidth : W;
@@ -207,6 +212,8 @@ module htx_recip #(
   end else begin : g_norm_at_start
     assign norm_done = 1'b1;
   end
+  assign last_step = alt_q ? (32'(step_q) + 1 == AltSteps) : (32'(step_q) + 1 == Steps);
+  assign no_steps  = only_q || (alt_q ? (AltSteps == 0) : (Steps == 0));
   assign mul_start = (state_q == StMulE) || (state_q == StMulR);
   assign mul_a = (state_q == StMulE) ? MulW'(m_q) : MulW'(r_q);
   assign mul_b = (state_q == StMulE) ? MulW'(r_q) : MulW'(c_q);
@@ -245,12 +252,14 @@ module htx_recip #(
       c_q     <= '0;
       msb_q   <= '0;
       only_q  <= 1'b0;
+      alt_q   <= 1'b0;
     end else if (abort_i) begin
       state_q <= StIdle;
     end else begin
       unique case (state_q)
         StIdle: if (start_i) begin
           only_q  <= table_only_i;
+          alt_q   <= alt_i;
           step_q  <= '0;
           if (Serial) begin
             state_q <= StNorm;
@@ -267,7 +276,7 @@ module htx_recip #(
         end
         StTable: begin
           r_q     <= (W + 1)'(entry_q) << (W - K - G - 1);
-          state_q <= (Steps == 0 || only_q) ? StDone : StMulE;
+          state_q <= no_steps ? StDone : StMulE;
         end
         StMulE: if (mul_done) begin
           // e < 2^(W+1) always (M < 2^W, R <= 2^W); the guard keeps 2 - m r non-negative anyway.
@@ -277,7 +286,7 @@ module htx_recip #(
         StMulR: if (mul_done) begin
           r_q     <= (W + 1)'((prod + ((2*MulW)'(1) << (W - 1))) >> W);
           step_q  <= step_q + 1'b1;
-          state_q <= (32'(step_q) + 1 == Steps) ? StDone : StMulE;
+          state_q <= last_step ? StDone : StMulE;
         end
         StDone: state_q <= StIdle;
         default: state_q <= StIdle;
