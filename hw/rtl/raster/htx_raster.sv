@@ -116,6 +116,7 @@ module htx_raster #(
   logic [23:0] clear_depth_q;
   logic [12:0] width_q, height_q, stride_q;
   logic        abort, clear_req, cnt_reset;
+  logic        cnt_read, cnt_ack;
   logic        clr_pend_q, clr_color_q, clr_depth_q;
   logic [LvlW-1:0] fifo_level;
 
@@ -123,7 +124,8 @@ module htx_raster #(
   assign wr      = req_we_i && (&req_be_i);
   assign is_fifo = (offset == htx_raster_reg_pkg::RASTER_FIFO_OFFSET);
   // A full FIFO holds the write on the bus until a word leaves: back-pressure, never a drop.
-  assign req_ready_o = !(is_fifo && req_we_i && fifo_full);
+  // A counter read waits for its counter's turn in the counter RAM (htx_raster_counters).
+  assign req_ready_o = !(is_fifo && req_we_i && fifo_full) && !(cnt_read && !cnt_ack);
   assign accept = req_valid_i && req_ready_o;
 
   logic ctrl_wr;
@@ -739,8 +741,21 @@ module htx_raster #(
                 (out_cnt_q != 0) || cmb_busy || frag_busy || clr_pend_q;
 
   // ---- Counters --------------------------------------------------------------------------------
-  logic [31:0] cnt_busy_q, cnt_stall_in_q, cnt_stall_setup_q, cnt_stall_frag_q, cnt_setup_q;
-  logic [31:0] cnt_tri_q, cnt_frag_q, cnt_pix_q, cnt_df_q;
+  // CNT_BUSY .. CNT_PIXELS are eight consecutive words from a 32-byte boundary, counter i at
+  // CNT_BUSY + 4 i, kept in block RAM; CNT_DIVFREE_STEPS adds several a clock and stays a register.
+  logic [31:0] cnt_rdata, cnt_df_q;
+  assign cnt_read = !req_we_i &&
+                    ((offset & ~12'h01F) == htx_raster_reg_pkg::RASTER_CNT_BUSY_OFFSET);
+  htx_raster_counters #(.N(8), .W(32)) u_counters (
+    .clk_i, .rst_ni,
+    .clear_i  (cnt_reset),
+    .inc_i    ({pixel, tv_valid && tv_ready, setup_taken, setup_busy, trav_stall, setup_stall,
+                in_partial, busy}),
+    .rd_i     (req_valid_i && cnt_read),
+    .rd_idx_i (offset[4:2]),
+    .rd_ack_o (cnt_ack),
+    .rd_data_o(cnt_rdata)
+  );
 
   // ---- Register writes and reads ---------------------------------------------------------------
   logic [31:0] rdata_d, rsp_rdata_q;
@@ -768,14 +783,14 @@ module htx_raster #(
       end
       htx_raster_reg_pkg::RASTER_FB_STRIDE_OFFSET: rdata_d = 32'(stride_q);
       htx_raster_reg_pkg::RASTER_STATE_OFFSET: rdata_d = last_state_q;
-      htx_raster_reg_pkg::RASTER_CNT_BUSY_OFFSET:           rdata_d = cnt_busy_q;
-      htx_raster_reg_pkg::RASTER_CNT_STALL_INPUT_OFFSET:    rdata_d = cnt_stall_in_q;
-      htx_raster_reg_pkg::RASTER_CNT_STALL_SETUP_OFFSET:    rdata_d = cnt_stall_setup_q;
-      htx_raster_reg_pkg::RASTER_CNT_STALL_FRAGMENT_OFFSET: rdata_d = cnt_stall_frag_q;
-      htx_raster_reg_pkg::RASTER_CNT_SETUP_BUSY_OFFSET:     rdata_d = cnt_setup_q;
-      htx_raster_reg_pkg::RASTER_CNT_TRIANGLES_OFFSET:      rdata_d = cnt_tri_q;
-      htx_raster_reg_pkg::RASTER_CNT_FRAGMENTS_OFFSET:      rdata_d = cnt_frag_q;
-      htx_raster_reg_pkg::RASTER_CNT_PIXELS_OFFSET:         rdata_d = cnt_pix_q;
+      htx_raster_reg_pkg::RASTER_CNT_BUSY_OFFSET,
+      htx_raster_reg_pkg::RASTER_CNT_STALL_INPUT_OFFSET,
+      htx_raster_reg_pkg::RASTER_CNT_STALL_SETUP_OFFSET,
+      htx_raster_reg_pkg::RASTER_CNT_STALL_FRAGMENT_OFFSET,
+      htx_raster_reg_pkg::RASTER_CNT_SETUP_BUSY_OFFSET,
+      htx_raster_reg_pkg::RASTER_CNT_TRIANGLES_OFFSET,
+      htx_raster_reg_pkg::RASTER_CNT_FRAGMENTS_OFFSET,
+      htx_raster_reg_pkg::RASTER_CNT_PIXELS_OFFSET:         rdata_d = cnt_rdata;
       htx_raster_reg_pkg::RASTER_CNT_DIVFREE_STEPS_OFFSET:  rdata_d = cnt_df_q;
       default: ;
     endcase
@@ -796,8 +811,7 @@ module htx_raster #(
       last_state_q  <= '0;
       rsp_valid_q   <= 1'b0;
       rsp_rdata_q   <= '0;
-      cnt_busy_q <= '0; cnt_stall_in_q <= '0; cnt_stall_setup_q <= '0; cnt_stall_frag_q <= '0;
-      cnt_setup_q <= '0; cnt_tri_q <= '0; cnt_frag_q <= '0; cnt_pix_q <= '0; cnt_df_q <= '0;
+      cnt_df_q      <= '0;
     end else begin
       rsp_valid_q <= accept;
       if (accept && !req_we_i) rsp_rdata_q <= rdata_d;
@@ -830,18 +844,9 @@ module htx_raster #(
         clr_pend_q <= 1'b0;
       end
       if (cnt_reset) begin
-        cnt_busy_q <= '0; cnt_stall_in_q <= '0; cnt_stall_setup_q <= '0; cnt_stall_frag_q <= '0;
-        cnt_setup_q <= '0; cnt_tri_q <= '0; cnt_frag_q <= '0; cnt_pix_q <= '0; cnt_df_q <= '0;
+        cnt_df_q <= '0;
       end else begin
-        cnt_busy_q        <= cnt_busy_q + 32'(busy);
-        cnt_stall_in_q    <= cnt_stall_in_q + 32'(in_partial);
-        cnt_stall_setup_q <= cnt_stall_setup_q + 32'(setup_stall);
-        cnt_stall_frag_q  <= cnt_stall_frag_q + 32'(trav_stall);
-        cnt_setup_q       <= cnt_setup_q + 32'(setup_busy);
-        cnt_tri_q         <= cnt_tri_q + 32'(setup_taken);
-        cnt_frag_q        <= cnt_frag_q + 32'(tv_valid && tv_ready);
-        cnt_pix_q         <= cnt_pix_q + 32'(pixel);
-        cnt_df_q          <= cnt_df_q + (df_steps_valid ? 32'(df_steps) : 32'd0);
+        cnt_df_q <= cnt_df_q + (df_steps_valid ? 32'(df_steps) : 32'd0);
       end
     end
   end
