@@ -742,11 +742,11 @@ module htx_raster #(
 
   // ---- Counters --------------------------------------------------------------------------------
   // CNT_BUSY .. CNT_PIXELS are eight consecutive words from a 32-byte boundary, counter i at
-  // CNT_BUSY + 4 i, kept in block RAM; CNT_DIVFREE_STEPS adds several a clock and stays a register.
+  // CNT_BUSY + 4 i, kept in one block RAM; CNT_DIVFREE_STEPS adds several a clock and stays a register.
   logic [31:0] cnt_rdata, cnt_df_q;
   assign cnt_read = !req_we_i &&
                     ((offset & ~12'h01F) == htx_raster_reg_pkg::RASTER_CNT_BUSY_OFFSET);
-  htx_raster_counters #(.N(8), .W(32)) u_counters (
+  htx_raster_counters #(.N(8)) u_counters (
     .clk_i, .rst_ni,
     .clear_i  (cnt_reset),
     .inc_i    ({pixel, tv_valid && tv_ready, setup_taken, setup_busy, trav_stall, setup_stall,

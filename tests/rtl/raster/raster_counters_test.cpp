@@ -1,6 +1,6 @@
-// htx_raster_counters Verilated alone (eight 32-bit counters in block RAM): every read returns the
-// exact count of the events up to two clocks before its acknowledge (zero in the clock after a
-// clear), within N + 1 clocks of asking; a clear zeroes every counter; an idle bank's state stands still, so a bank whose clock stops while
+// htx_raster_counters Verilated alone (eight 32-bit counters as 16-bit halves in one block RAM):
+// every read returns the exact count of the events up to three clocks before its acknowledge (zero
+// in the two clocks after a clear), within 2N + 1 clocks of asking; a clear zeroes every counter; an idle bank's state stands still, so a bank whose clock stops while
 // idle (the simulated SoC's GPU clock gate) behaves as one clocked throughout (label `rtl`).
 #include <gtest/gtest.h>
 
@@ -43,12 +43,12 @@ class Bank {
     m_.eval();
     const bool ack = rd && m_.rd_ack_o;
     if (ack) {
-      // This clock is number counts_after_.size(); the value counts the events up to two clocks
-      // before it, i.e. after edge size() - 2 (and zero before the first edges), except that a
-      // clear in the clock before already shows.
+      // This clock is number counts_after_.size(); the value counts the events up to three clocks
+      // before it, i.e. after edge size() - 3 (and zero before the first edges), except that a
+      // clear in one of the two clocks before already shows.
       const size_t t = counts_after_.size();
-      const bool cleared = cleared_at_.size() == t && cleared_at_.back();
-      const uint32_t want = (t >= 2 && !cleared) ? counts_after_[t - 2][idx] : 0;
+      const bool cleared = cleared_at_[t - 1] || (t >= 2 && cleared_at_[t - 2]);
+      const uint32_t want = (t >= 3 && !cleared) ? counts_after_[t - 3][idx] : 0;
       EXPECT_EQ(m_.rd_data_o, want) << "counter " << idx << " read at clock " << t;
       last_value = m_.rd_data_o;
     }
@@ -83,7 +83,7 @@ class Bank {
   std::vector<bool> cleared_at_;  // cleared_at_[k]: clear_i was set in the clock ending at edge k
 };
 
-TEST(RasterCounters, ReadsDuringRandomEventsAreExactTwoClocksBack) {
+TEST(RasterCounters, ReadsDuringRandomEventsAreExactThreeClocksBack) {
   std::mt19937 rng(7);
   Bank bank;
   bool reading = false;
@@ -108,30 +108,41 @@ TEST(RasterCounters, ReadsDuringRandomEventsAreExactTwoClocksBack) {
       ++reads;
     }
   }
-  EXPECT_GT(reads, 3000);
-  EXPECT_LE(worst, kN + 1) << "a read waits at most N + 1 clocks";
+  EXPECT_GT(reads, 1500);
+  EXPECT_LE(worst, 2 * kN + 1) << "a read waits at most 2N + 1 clocks";
 }
 
 TEST(RasterCounters, IdleReadsAreExactAndAClearZeroesEveryCounter) {
   std::mt19937 rng(11);
   Bank bank;
+  // Idle means no event for the three clocks a value lags.
+  auto idle = [&] {
+    for (int t = 0; t < 3; ++t) bank.clock(0, false, false, 0);
+  };
   for (int t = 0; t < 500; ++t) bank.clock(static_cast<uint8_t>(rng()), false, false, 0);
+  idle();
   for (int i = 0; i < kN; ++i) {
     bank.read(i);
     EXPECT_EQ(bank.last_value, bank.now()[i]) << "counter " << i;
     EXPECT_GT(bank.last_value, 200u) << "counter " << i;
   }
+  // Past 2^16: the carry from the low half into the high half.
+  for (int t = 0; t < 70000; ++t) bank.clock(0x01, false, false, 0);
+  idle();
+  bank.read(0);
+  EXPECT_EQ(bank.last_value, bank.now()[0]);
+  EXPECT_GT(bank.last_value, 65536u);
   bank.clock(0xFF, true, false, 0);  // a clear: its own clock's events are not counted
   for (int i = 0; i < kN; ++i) {
     bank.read(i);
     EXPECT_EQ(bank.last_value, 0u) << "counter " << i;
   }
   for (int t = 0; t < 37; ++t) bank.clock(static_cast<uint8_t>(1u << (t % kN)), false, false, 0);
+  idle();
   for (int i = 0; i < kN; ++i) {
     bank.read(i);
     EXPECT_EQ(bank.last_value, bank.now()[i]) << "counter " << i;
   }
-  // 32-bit wrap is not reachable here in reasonable time; the adder is the RAM word's own width.
 }
 
 // Two banks see the same events; one keeps clocking through an idle gap, the other's clock stops
@@ -149,7 +160,7 @@ TEST(RasterCounters, AnIdleBankStandsStillSoAStoppedClockChangesNothing) {
   for (int round = 0; round < 20; ++round) {
     const int busy = 5 + static_cast<int>(rng() % 40);
     for (int t = 0; t < busy; ++t) both(static_cast<uint8_t>(rng()), false, 0);
-    for (int t = 0; t < kN + 2; ++t) both(0, false, 0);  // the gate's hold time covers this
+    for (int t = 0; t < 2 * kN + 3; ++t) both(0, false, 0);  // the gate's hold time covers this
     const int gap = 1 + static_cast<int>(rng() % 20);
     for (int t = 0; t < gap; ++t) free_running.clock(0, false, false, 0);  // gated: no clock
     const int idx = static_cast<int>(rng() % kN);
