@@ -53,6 +53,7 @@ module htx_raster_divider #(
 
   // Aux: a reciprocal request (a pulse; aux_x_i is taken with it). aux_done_o pulses with the
   // result on aux_r_o and aux_msb_o (valid in that clock only), as htx_recip's done_o, r_o, msb_o.
+  // One request at a time: the client waits for aux_done_o before it asks again (setup does).
   input  logic                aux_start_i,
   input  logic [AuxW-1:0]     aux_x_i,
   output logic                aux_done_o,

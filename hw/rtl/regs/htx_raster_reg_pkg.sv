@@ -148,7 +148,7 @@ package htx_raster_reg_pkg;
   localparam logic [31:0] RASTER_STATE_TEXTURE_MASK = 32'hFF000000;
   localparam logic [31:0] RASTER_STATE_TEXTURE_RESET = 32'h00000000;
 
-  // CNT_BUSY (ro): Clocks with STATUS.BUSY set
+  // CNT_BUSY (ro): Clocks with STATUS.BUSY set. CNT_BUSY to CNT_PIXELS live in block RAM: a read of one waits up to 17 clocks and returns the count three clocks before it completes (exact once the unit is idle)
   localparam logic [11:0] RASTER_CNT_BUSY_OFFSET = 12'h040;
   localparam logic [31:0] RASTER_CNT_BUSY_RESET = 32'h00000000;
   localparam int unsigned RASTER_CNT_BUSY_COUNT_LSB = 0;
