@@ -457,8 +457,6 @@ module htx_raster #(
   logic [LocW-1:0]   dv_u, dv_v;
   logic [23:0]       dv_rgb;
   logic [PayD-1:0]   dv_pay;
-  localparam int unsigned RqXW = (SharedRecip && DetW > AccQ) ? DetW : AccQ;
-  logic [$clog2(RqXW)-1:0] dv_rq_msb;
   htx_raster_divider #(
     .AccQ(AccQ), .AccU(AccU), .AccC(AccC), .UvIntBits(UvIntBits), .W(RecipW), .K(RecipK), .G(RecipG),
     .Steps(PixelSteps), .TF(TF), .LocW(LocW), .PayW(PayD), .Pipelined(PixelPipelined),
@@ -486,10 +484,8 @@ module htx_raster #(
     .aux_x_i    (rq_x),
     .aux_done_o (rq_done),
     .aux_r_o    (rq_r),
-    .aux_msb_o  (dv_rq_msb)
+    .aux_msb_o  (rq_msb)
   );
-  // The unit's X is at least as wide as the determinant, so msb fits setup's width.
-  assign rq_msb = $clog2(DetW)'(dv_rq_msb);
 
   logic [SideW-1:0] dv_side;
   logic [AddrW-1:0] dv_addr;

@@ -29,8 +29,7 @@ module htx_raster_divider #(
   parameter bit          Aux          = 1'b0,
   parameter int unsigned AuxW         = AccQ,
   parameter int unsigned AuxSteps     = Steps,
-  parameter int unsigned RXW          = (Aux && AuxW > AccQ) ? AuxW : AccQ,  // the unit's X width
-  parameter int unsigned RMsbW        = $clog2(RXW)
+  parameter int unsigned AuxMsbW      = $clog2(AuxW)
 ) (
   input  logic                clk_i,
   input  logic                rst_ni,
@@ -58,9 +57,11 @@ module htx_raster_divider #(
   input  logic [AuxW-1:0]     aux_x_i,
   output logic                aux_done_o,
   output logic [W:0]          aux_r_o,
-  output logic [RMsbW-1:0]    aux_msb_o
+  output logic [AuxMsbW-1:0]  aux_msb_o
 );
   localparam int unsigned MsbW = $clog2(AccQ);
+  localparam int unsigned RXW  = (Aux && AuxW > AccQ) ? AuxW : AccQ;  // the unit's X width
+  localparam int unsigned RMsbW = $clog2(RXW);
   localparam int unsigned NIN  = (AccU > AccC) ? AccU : AccC;   // numerator input width
   localparam int unsigned WSH  = NIN + W;                       // after a left shift by < W
   localparam int unsigned NSU  = UvIntBits + W + 2;             // |U'| < |u| 2^W
@@ -212,23 +213,22 @@ module htx_raster_divider #(
     logic [23:0]         rgb_q;
 
     // An aux request waits (aux_pend_q) until the unit is idle between fragments and then runs
-    // (aux_run_q) while no fragment is taken; it goes first when both wait, so setup, which asks
-    // a few times a triangle, is never starved by a stream of fragments.
-    logic            aux_pend_q, aux_run_q, aux_go;
+    // while no fragment is taken; it goes first when both wait, so setup, which asks a few times a
+    // triangle, is never starved by a stream of fragments. A fragment's reciprocal starts as the
+    // divider leaves StIdle, so a busy reciprocal unit in StIdle is running an aux request.
+    logic            aux_pend_q, aux_run, aux_go;
     logic [RXW-1:0]  aux_x_q;
+    assign aux_run = r_busy && (state_q == StIdle);
     if (Aux) begin : g_aux
       always_ff @(posedge clk_i or negedge rst_ni) begin
         if (!rst_ni) begin
           aux_pend_q <= 1'b0;
-          aux_run_q  <= 1'b0;
         end else if (abort_i) begin
           aux_pend_q <= 1'b0;
-          aux_run_q  <= 1'b0;
-        end else begin
-          if (aux_start_i) aux_pend_q <= 1'b1;
-          else if (aux_go) aux_pend_q <= 1'b0;
-          if (aux_go) aux_run_q <= 1'b1;
-          else if (r_done) aux_run_q <= 1'b0;
+        end else if (aux_start_i) begin
+          aux_pend_q <= 1'b1;
+        end else if (aux_go) begin
+          aux_pend_q <= 1'b0;
         end
       end
       always_ff @(posedge clk_i) begin
@@ -236,17 +236,16 @@ module htx_raster_divider #(
       end
     end else begin : g_no_aux
       assign aux_pend_q = 1'b0;
-      assign aux_run_q  = 1'b0;
       assign aux_x_q    = '0;
       logic unused_aux;
       assign unused_aux = ^{aux_start_i, aux_x_i};
     end
-    assign aux_go     = aux_pend_q && !aux_run_q && (state_q == StIdle);
-    assign aux_done_o = aux_run_q && r_done;
+    assign aux_go     = aux_pend_q && !aux_run && (state_q == StIdle);
+    assign aux_done_o = aux_run && r_done;
     assign aux_r_o    = r_nr;
-    assign aux_msb_o  = r_msb;
+    assign aux_msb_o  = AuxMsbW'(r_msb);  // an aux X has at most AuxW bits
 
-    assign in_ready_o = !aux_pend_q && !aux_run_q &&
+    assign in_ready_o = !aux_pend_q && !aux_run &&
                         ((state_q == StIdle) || ((state_q == StOut) && out_ready_i));
     assign take       = in_valid_i && in_ready_o;
     // The reciprocal starts as the fragment is taken (it is idle then: the last one finished before
@@ -312,7 +311,7 @@ module htx_raster_divider #(
     assign m_ru = (m_p + $signed((MA+W+2)'(1) << (RSU - 1))) >>> RSU;
     assign m_rc = (m_p + $signed((MA+W+2)'(1) << (RSC - 1))) >>> RSC;
     logic unused_m;
-    assign unused_m = ^{shn, m_ru, r_busy};
+    assign unused_m = ^{shn, m_ru};
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin

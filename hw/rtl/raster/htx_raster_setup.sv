@@ -233,8 +233,8 @@ module htx_raster_setup #(
 
   // ---- Reciprocals: 1/|det|, then (AFFINE) 1/q_i of each vertex -------------------------------
   localparam bit HasAffine = Methods[0];
-  logic                recip_start, recip_done, recip_busy, recip_valid_q, det_pend_q;
-  logic [RecipW:0]     recip_r, recip_r0, rdet_q;
+  logic                recip_start, recip_done, recip_valid_q, det_pend_q;
+  logic [RecipW:0]     recip_r, rdet_q;
   logic [MsbW-1:0]     recip_msb, msbdet_q;
   logic [DetW-1:0]     det_abs, recip_x;
   logic [ShiftW-1:0]   grad_shift;
@@ -253,11 +253,11 @@ module htx_raster_setup #(
     assign recip_done  = rq_done_i;
     assign recip_r     = rq_r_i;
     assign recip_msb   = rq_msb_i;
-    assign recip_r0    = '0;
-    assign recip_busy  = 1'b0;
   end else begin : g_own_recip
     logic                recip_mul_start;      // (setup's unit has its own multiplier)
     logic [RecipW+2:0]   recip_mul_a, recip_mul_b;
+    logic                recip_busy;           // (setup waits for done_o)
+    logic [RecipW:0]     recip_r0;             // (the table value: setup always takes Newton steps)
     htx_recip #(.XWidth(DetW), .W(RecipW), .K(RecipK), .G(RecipG), .Steps(NrSteps),
                 .Iterative(Iterative), .SerialNorm(Iterative)) u_recip (
       .clk_i, .rst_ni,
@@ -281,7 +281,8 @@ module htx_raster_setup #(
     assign rq_start_o = 1'b0;
     assign rq_x_o     = '0;
     logic unused_recip_mul;
-    assign unused_recip_mul = ^{recip_mul_start, recip_mul_a, recip_mul_b, rq_done_i, rq_r_i, rq_msb_i};
+    assign unused_recip_mul = ^{recip_mul_start, recip_mul_a, recip_mul_b, recip_busy, recip_r0,
+                                rq_done_i, rq_r_i, rq_msb_i};
   end
 
   // ---- Planes: z, r, g, b, q, uq, vq, and for AFFINE ua, va -------------------------------------
@@ -646,8 +647,6 @@ module htx_raster_setup #(
       assign ua_v[i] = ua_q[i];
       assign va_v[i] = va_q[i];
     end
-    logic unused_a;
-    assign unused_a = ^recip_r0;
   end else begin : g_no_affine
     assign av_start = 1'b0;
     assign av_i     = 2'd0;
@@ -658,7 +657,7 @@ module htx_raster_setup #(
       assign va_v[i] = '0;
     end
     logic unused_a;
-    assign unused_a = ^{recip_r0, affine_q};
+    assign unused_a = affine_q;
   end
 
   // ---- Sequencer -------------------------------------------------------------------------------
@@ -745,7 +744,7 @@ module htx_raster_setup #(
 
   // ---- Outputs ---------------------------------------------------------------------------------
   logic unused;
-  assign unused = ^{det_q, recip_busy, rec_state_i, plane_done[8:7]};
+  assign unused = ^{det_q, rec_state_i, plane_done[8:7]};
 
   assign tri_valid_o     = (state_q == StOut);
   assign tri_state_o     = st_q;
