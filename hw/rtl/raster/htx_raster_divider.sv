@@ -258,10 +258,11 @@ module htx_raster_divider #(
     logic signed [W+2:0]    r_mul_a, r_mul_b;
     logic signed [2*W+5:0]  r_mul_p;
     htx_recip #(.XWidth(RXW), .W(W), .K(K), .G(G), .Steps(Steps), .Iterative(MulIterative),
-                .Pipelined(1'b0), .ExtMul(1'b1), .AltSteps(AuxSteps)) u_recip (
+                .Pipelined(1'b0), .SerialNorm(1'b1), .ExtMul(1'b1), .AltSteps(AuxSteps),
+                .NormSkip(RXW - AccQ)) u_recip (
       .clk_i, .rst_ni, .abort_i,
       .start_i(r_start), .en_i(1'b1), .table_only_i(!aux_go && in_lut_i && !Color),
-      .alt_i(aux_go), .x_i(aux_go ? aux_x_q : RXW'(q_eff)),
+      .alt_i(aux_go), .x_i(aux_go ? aux_x_q : RXW'(q_eff) << (RXW - AccQ)),
       .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
       .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(r_mul_done),
       .mul_p_i(r_mul_p)

@@ -9,8 +9,11 @@
 // pipeline advances (en_i), the result 2 + 2 Steps advancing clocks later with done_o set (start_i is
 // the input's valid bit, table_only_i is ignored: r0_o carries the table value alongside).
 // X = 0 yields msb_o = 0 and an unspecified r_o (setup never asks: a zero determinant draws nothing).
-// SerialNorm (FSM form only; setup's unit in `icebreaker`) shifts X left one bit per clock until its
-// top bit is set, up to XWidth - 1 clocks, instead of a priority encoder and a barrel shifter.
+// SerialNorm (FSM form only; the `icebreaker` divider's unit) shifts X left until its top bit is set,
+// eight bits a clock while its top eight bits are zero and then one, instead of a priority encoder
+// and a barrel shifter (at most 5 + 7 clocks for 47 bits). NormSkip: a start with alt_i clear
+// brings x_i already shifted left by NormSkip (the caller knows that many top bits of its X are
+// zero), which the count starts from.
 // ExtMul (FSM form only; the `icebreaker` divider's unit) uses the caller's multiplier.
 // AltSteps (FSM form only): a start with alt_i set runs AltSteps Newton steps instead of Steps (the
 // `icebreaker` divider's unit also serves setup, whose reciprocals take more steps than a pixel's).
@@ -25,6 +28,7 @@ module htx_recip #(
   parameter bit          SerialNorm = 1'b0,  // FSM form: normalise one bit per clock (no barrel shifter)
   parameter bit          ExtMul    = 1'b0,  // FSM form: the Newton products go to the mul_* port
   parameter int unsigned AltSteps  = Steps, // FSM form: Newton steps of a start with alt_i set
+  parameter int unsigned NormSkip  = 0,     // SerialNorm: x_i = X 2^NormSkip when alt_i is clear
   parameter int unsigned MsbWidth  = $clog2(XWidth)
 ) (
   input  logic                clk_i,
@@ -189,19 +193,22 @@ module htx_recip #(
     localparam int unsigned CW = $clog2(NW);
     logic [NW-1:0] nx_q;
     logic [CW-1:0] ncnt_q;  // shifts so far
+    logic          fast;    // eight bits this clock: the top eight are zero and eight more shifts are left
+    assign fast = (nx_q[NW-1 -: 8] == 8'd0) && (ncnt_q <= CW'(NW - 1 - 8));
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         nx_q   <= '0;
         ncnt_q <= '0;
       end else if ((state_q == StIdle) && start_i) begin
         nx_q   <= NW'(x_i);
-        ncnt_q <= '0;
+        ncnt_q <= alt_i ? '0 : CW'(NormSkip);
       end else if ((state_q == StNorm) && !norm_done) begin
-        nx_q   <= nx_q << 1;
-        ncnt_q <= ncnt_q + 1'b1;
+        nx_q   <= fast ? nx_q << 8 : nx_q << 1;
+        ncnt_q <= ncnt_q + (fast ? CW'(8) : CW'(1));
       end
     end
-    // X = 0 stops after NW - 1 shifts with msb 0 and a zero mantissa, as the combinational form.
+    // X = 0 stops after NW - 1 shifts with msb 0 and a zero mantissa, as the combinational form
+    // (a fast step never passes NW - 1, and a shift by eight never drops a set bit).
     assign norm_done = nx_q[NW-1] || (ncnt_q == CW'(NW - 1));
     assign mant      = nx_q[NW-1 -: W];
     assign msb       = MsbWidth'(CW'(NW - 1) - ncnt_q);

@@ -1,0 +1,162 @@
+// htx_recip Verilated alone as the `icebreaker` divider's unit uses it: the FSM form with the serial
+// normaliser (eight bits a clock, then one), X of 47 bits (setup's determinant, alt_i: 2 Newton
+// steps) or of 42 bits brought shifted left by NormSkip = 5 (a pixel's Q: 1 step, or the table only).
+// Every result against the model's reciprocal (value and shift), for X with its leading one at
+// every position, and the clocks each normalisation takes (label `rtl`).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+
+#include "Vhtx_recip_serial.h"
+#include "htx/model/recip.hpp"
+
+namespace {
+
+// The Verilated parameters (tests/rtl/raster/CMakeLists.txt).
+constexpr unsigned kX = 47, kW = 24, kK = 8, kG = 2, kSkip = 5;
+constexpr unsigned kSteps = 1, kAltSteps = 2;
+
+struct Result {
+  uint64_t r = 0;
+  unsigned msb = 0;
+  int clocks = 0;  // from the clock that takes start_i to the one that shows done_o
+};
+
+class Recip {
+ public:
+  Recip() {
+    m_.clk_i = 0;
+    m_.rst_ni = 0;
+    m_.abort_i = 0;
+    m_.start_i = 0;
+    m_.en_i = 1;
+    m_.table_only_i = 0;
+    m_.alt_i = 0;
+    m_.mul_done_i = 0;
+    m_.mul_p_i = 0;
+    m_.eval();
+    m_.rst_ni = 1;
+    m_.eval();
+  }
+  void clock() {
+    m_.clk_i = 1;
+    m_.eval();
+    m_.clk_i = 0;
+    m_.eval();
+  }
+  // x is X itself; a start without alt_i gets it shifted left by kSkip, as the divider sends it.
+  Result run(uint64_t x, bool alt, bool table_only) {
+    m_.x_i = alt ? x : x << kSkip;
+    m_.alt_i = alt;
+    m_.table_only_i = table_only;
+    m_.start_i = 1;
+    clock();
+    m_.start_i = 0;
+    Result res;
+    res.clocks = 1;
+    while (!m_.done_o && res.clocks < 1000) {
+      clock();
+      ++res.clocks;
+    }
+    res.r = table_only ? m_.r0_o : m_.r_o;
+    res.msb = m_.msb_o;
+    clock();
+    EXPECT_FALSE(m_.done_o) << "done_o is a one-clock pulse";
+    return res;
+  }
+  Vhtx_recip_serial& model() { return m_; }
+
+ private:
+  Vhtx_recip_serial m_;
+};
+
+// The normaliser's clocks for X: eight-bit shifts while the top eight bits are zero and eight
+// more shifts are allowed, then one-bit shifts, until the top bit is set or kX - 1 shifts are done.
+int norm_clocks(uint64_t x, bool alt) {
+  unsigned n = alt ? 0 : kSkip;
+  uint64_t v = alt ? x : x << kSkip;
+  const uint64_t top = uint64_t{1} << (kX - 1), mask = (uint64_t{1} << kX) - 1;
+  int clocks = 0;
+  while (!(v & top) && n != kX - 1) {
+    const bool fast = (v >> (kX - 8)) == 0 && n <= kX - 1 - 8;
+    v = (v << (fast ? 8 : 1)) & mask;
+    n += fast ? 8 : 1;
+    ++clocks;
+  }
+  return clocks;
+}
+
+void expect_model(const Result& got, uint64_t x, unsigned steps) {
+  htx::model::RecipParams p;
+  p.k = kK;
+  p.g = kG;
+  p.width = kW;
+  p.steps = steps;
+  const htx::model::Reciprocal want = htx::model::reciprocal(p, x);
+  EXPECT_EQ(got.r, want.value) << "X = " << x << ", " << steps << " steps";
+  EXPECT_EQ(static_cast<int>(got.msb + kW), want.shift) << "X = " << x;
+}
+
+TEST(RasterRecip, SerialNormalisationMatchesTheModelAtEveryLeadingOne) {
+  Recip unit;
+  std::mt19937_64 rng(20261202);
+  // Setup's X (47 bits, AltSteps) and a pixel's Q (42 bits, Steps, or the table only).
+  const struct { bool alt, table_only; unsigned bits, steps; } kinds[] = {
+      {true, false, kX, kAltSteps}, {false, false, kX - kSkip, kSteps}, {false, true, kX - kSkip, 0}};
+  for (const auto& kind : kinds) {
+    // The clocks of an X whose top bit needs no shift: the rest of the unit's work.
+    const uint64_t full = uint64_t{1} << (kind.bits - 1);
+    const int base = unit.run(full, kind.alt, kind.table_only).clocks - norm_clocks(full, kind.alt);
+    for (unsigned msb = 0; msb < kind.bits; ++msb) {
+      for (int i = 0; i < 20; ++i) {
+        const uint64_t low = msb == 0 ? 0 : rng() & ((uint64_t{1} << msb) - 1);
+        const uint64_t x = (uint64_t{1} << msb) | (i == 0 ? 0 : i == 1 ? low | ((uint64_t{1} << msb) - 1) : low);
+        const Result got = unit.run(x, kind.alt, kind.table_only);
+        expect_model(got, x, kind.steps);
+        EXPECT_EQ(got.clocks, base + norm_clocks(x, kind.alt)) << "X = " << x;
+      }
+    }
+  }
+}
+
+TEST(RasterRecip, SerialNormalisationTakesAtMostTwelveClocks) {
+  // Eight-bit shifts while possible, then at most seven one-bit shifts: 5 + 7 for 47 bits.
+  Recip unit;
+  const uint64_t full = uint64_t{1} << (kX - 1);
+  const int base = unit.run(full, true, false).clocks;
+  int worst = 0;
+  for (unsigned msb = 0; msb < kX; ++msb) {
+    worst = std::max(worst, unit.run(uint64_t{1} << msb, true, false).clocks - base);
+  }
+  EXPECT_LE(worst, 12);
+  EXPECT_GE(worst, 7);  // the one-bit steps are still there
+}
+
+TEST(RasterRecip, ZeroGivesMsbZeroAndTheUnitStaysUsable) {
+  Recip unit;
+  const Result zero = unit.run(0, true, false);
+  EXPECT_EQ(zero.msb, 0u);
+  expect_model(unit.run(12345, true, false), 12345, kAltSteps);
+}
+
+TEST(RasterRecip, AbortDuringNormalisationLeavesItIdle) {
+  Recip unit;
+  auto& m = unit.model();
+  m.x_i = 1;  // the longest normalisation
+  m.alt_i = 1;
+  m.start_i = 1;
+  unit.clock();
+  m.start_i = 0;
+  unit.clock();
+  m.abort_i = 1;
+  unit.clock();
+  m.abort_i = 0;
+  unit.clock();
+  EXPECT_FALSE(m.busy_o);
+  EXPECT_FALSE(m.done_o);
+  expect_model(unit.run(987654321, true, false), 987654321, kAltSteps);
+}
+
+}  // namespace
