@@ -135,14 +135,16 @@ module htx_raster_divider #(
 
     logic         r_mul_start;  // (the pipelined unit has its own products)
     logic [W+2:0] r_mul_a, r_mul_b;
+    logic         r_norm_shift, r_norm_fast;  // (no serial normaliser)
     htx_recip #(.XWidth(AccQ), .W(W), .K(K), .G(G), .Steps(Steps), .Pipelined(1'b1)) u_recip (
       .clk_i, .rst_ni, .abort_i,
       .start_i(va_q), .en_i(en), .table_only_i(1'b0), .alt_i(1'b0), .x_i(qa_q),
       .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
-      .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(1'b0), .mul_p_i('0)
+      .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(1'b0), .mul_p_i('0),
+      .norm_shift_o(r_norm_shift), .norm_fast_o(r_norm_fast)
     );
     logic unused_r_mul;
-    assign unused_r_mul = ^{r_mul_start, r_mul_a, r_mul_b};
+    assign unused_r_mul = ^{r_mul_start, r_mul_a, r_mul_b, r_norm_shift, r_norm_fast};
 
     logic [WSH-1:0] sh [NN];
     logic unused_sh;
@@ -203,7 +205,6 @@ module htx_raster_divider #(
     typedef enum logic [1:0] {StIdle, StRecip, StMul, StOut} state_e;
     state_e              state_q;
     logic                lut_q, take;
-    logic [NIN-1:0]      n_q [NN];
     logic [PayW-1:0]     pay_q;
     logic [2:0]          k_q;
     logic                r_start, r_done, r_busy;
@@ -257,6 +258,7 @@ module htx_raster_divider #(
     logic                   r_mul_start, r_mul_done;
     logic signed [W+2:0]    r_mul_a, r_mul_b;
     logic signed [2*W+5:0]  r_mul_p;
+    logic                   r_shift, r_fast;
     htx_recip #(.XWidth(RXW), .W(W), .K(K), .G(G), .Steps(Steps), .Iterative(MulIterative),
                 .Pipelined(1'b0), .SerialNorm(1'b1), .ExtMul(1'b1), .AltSteps(AuxSteps),
                 .NormSkip(RXW - AccQ)) u_recip (
@@ -265,13 +267,23 @@ module htx_raster_divider #(
       .alt_i(aux_go), .x_i(aux_go ? aux_x_q : RXW'(q_eff) << (RXW - AccQ)),
       .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
       .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(r_mul_done),
-      .mul_p_i(r_mul_p)
+      .mul_p_i(r_mul_p), .norm_shift_o(r_shift), .norm_fast_o(r_fast)
     );
 
     // One multiplier for the numerators in turn: u, v, then the colour channels.
-    logic [WSH-1:0]         shn;
     logic                   m_start, m_done;
     localparam int unsigned MA = Color ? ((NSU > NSC) ? NSU : NSC) : NSU;
+    // The numerators shift in step with the unit's serial normaliser instead of through a barrel
+    // shifter keyed to msb. Q arrives NormSkip bits up and shifts left c times in all (c counting
+    // NormSkip), so msb = RXW - 1 - c and s = msb - (W - 1) = NL - c with NL = RXW - W. Register i
+    // holds N_i 2^c (its low NL + MA bits, which is all the MA-bit result depends on): N 2^-s is
+    // its bits from NL up, and for s > 0 round(N 2^-s) = (floor(N 2^(1-s)) + 1) >> 1 adds its bit
+    // NL - 1 to them. (The model's divide_fixed, bit for bit; NL >= 1 as RXW >= AccQ > W.)
+    localparam int unsigned NL = RXW - W;
+    localparam int unsigned NRW = NL + MA;
+    logic [NRW-1:0]         nr_q [NN];
+    logic [NRW-1:0]         nr_sel;
+    logic [MA-1:0]          shn;
     localparam int unsigned SA = (MA > W + 3) ? MA : W + 3;  // the shared multiplier's operands
     localparam int unsigned SB = W + 3;
     logic signed [MA-1:0]   m_a;  // wide enough for both numerator kinds
@@ -283,12 +295,11 @@ module htx_raster_divider #(
     logic                   s_done;
     logic [2:0]             kmax;
     assign kmax  = 3'(NN - 1);
-    logic [NIN-1:0] n_sel;
     always_comb begin
-      n_sel = n_q[0];
-      for (int i = 1; i < NN; i++) if (32'(k_q) == i) n_sel = n_q[i];
+      nr_sel = nr_q[0];
+      for (int i = 1; i < NN; i++) if (32'(k_q) == i) nr_sel = nr_q[i];
     end
-    assign shn   = shift_num(n_sel, MsbW'(r_msb));
+    assign shn   = nr_sel[NL +: MA] + MA'((32'(r_msb) >= W) && nr_sel[NL-1]);
     assign r_sel = (k_q < 3'd2 && lut_q) ? r_t : r_nr;
     assign m_a   = (k_q < 3'd2) ? MA'($signed(NSU'(shn))) : MA'($signed(NSC'(shn)));
     assign m_b   = $signed({1'b0, r_sel});
@@ -317,7 +328,7 @@ module htx_raster_divider #(
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         state_q <= StIdle; lut_q <= 1'b0; pay_q <= '0; k_q <= '0;
-        for (int i = 0; i < NN; i++) n_q[i] <= '0;
+        for (int i = 0; i < NN; i++) nr_q[i] <= '0;
         u_q <= '0; v_q <= '0; rgb_q <= '0;
       end else if (abort_i) begin
         state_q <= StIdle;
@@ -326,9 +337,14 @@ module htx_raster_divider #(
           lut_q <= in_lut_i;
           pay_q <= in_pay_i;
           k_q   <= '0;
-          for (int i = 0; i < NN; i++) n_q[i] <= nin[i];
+          for (int i = 0; i < NN; i++) nr_q[i] <= NRW'($signed(nin[i])) << (RXW - AccQ);
           state_q <= in_need_i ? StRecip : StOut;
         end else begin
+          // (An aux request's normalisation shifts them too, between fragments: the next take
+          // loads them again.)
+          if (r_shift) begin
+            for (int i = 0; i < NN; i++) nr_q[i] <= r_fast ? nr_q[i] << 8 : nr_q[i] << 1;
+          end
           unique case (state_q)
             StRecip: if (r_done) state_q <= StMul;
             StMul: if (m_done) begin

@@ -50,7 +50,12 @@ module htx_recip #(
   output logic                mul_start_o,
   output logic [W+2:0]        mul_a_o, mul_b_o,   // signed
   input  logic                mul_done_i,
-  input  logic [2*W+5:0]      mul_p_i             // signed a b
+  input  logic [2*W+5:0]      mul_p_i,            // signed a b
+
+  // SerialNorm: X shifts this clock (norm_shift_o), by eight bits (norm_fast_o) or by one, so a
+  // caller can shift values of its own in step (the `icebreaker` divider's numerators); else 0.
+  output logic                norm_shift_o,
+  output logic                norm_fast_o
 );
   localparam int unsigned EntryW = K + G + 1;
   localparam int unsigned MulW   = W + 3;
@@ -171,6 +176,8 @@ module htx_recip #(
     assign mul_start_o = 1'b0;
     assign mul_a_o     = '0;
     assign mul_b_o     = '0;
+    assign norm_shift_o = 1'b0;
+    assign norm_fast_o  = 1'b0;
   end else begin : g_fsm
   state_e              state_q;
   logic [StepW-1:0]    step_q;
@@ -212,12 +219,16 @@ module htx_recip #(
     assign norm_done = nx_q[NW-1] || (ncnt_q == CW'(NW - 1));
     assign mant      = nx_q[NW-1 -: W];
     assign msb       = MsbWidth'(CW'(NW - 1) - ncnt_q);
+    assign norm_shift_o = (state_q == StNorm) && !norm_done;
+    assign norm_fast_o  = fast;
     if (NW > W) begin : g_low
       logic unused_low;
       assign unused_low = ^nx_q[NW-W-1:0];
     end
   end else begin : g_norm_at_start
-    assign norm_done = 1'b1;
+    assign norm_done    = 1'b1;
+    assign norm_shift_o = 1'b0;
+    assign norm_fast_o  = 1'b0;
   end
   assign last_step = alt_q ? (32'(step_q) + 1 == AltSteps) : (32'(step_q) + 1 == Steps);
   assign no_steps  = only_q || (alt_q ? (AltSteps == 0) : (Steps == 0));
