@@ -5,8 +5,9 @@
 //   c = clamp(round(C' R 2^(-2W + 1)), 0, 255) per colour channel (Color: perspective-correct
 //   Gouraud colour, C = c q plane, always with the Newton steps).
 // Pipelined = 1: a new fragment every clock, 4 + 2 Steps clocks of latency, one stall for all
-// stages. Pipelined = 0: one fragment at a time through an iterative htx_recip and one multiplier
-// (MulIterative: shift-and-add); fragments whose need_i is clear pass in one clock. A payload
+// stages. Pipelined = 0: one fragment at a time through an iterative htx_recip, whose serial
+// normaliser also shifts the numerators (no barrel shifter), and one multiplier (MulIterative:
+// shift-and-add); fragments whose need_i is clear pass in one clock. A payload
 // travels with each fragment; order is kept.
 module htx_raster_divider #(
   parameter int unsigned AccQ         = 58,

@@ -25,7 +25,7 @@ module htx_recip #(
   parameter int unsigned Steps     = 2,
   parameter bit          Iterative = 1'b0,
   parameter bit          Pipelined = 1'b0,
-  parameter bit          SerialNorm = 1'b0,  // FSM form: normalise one bit per clock (no barrel shifter)
+  parameter bit          SerialNorm = 1'b0,  // FSM form: normalise by shifting, 8 or 1 bits a clock
   parameter bit          ExtMul    = 1'b0,  // FSM form: the Newton products go to the mul_* port
   parameter int unsigned AltSteps  = Steps, // FSM form: Newton steps of a start with alt_i set
   parameter int unsigned NormSkip  = 0,     // SerialNorm: x_i = X 2^NormSkip when alt_i is clear
