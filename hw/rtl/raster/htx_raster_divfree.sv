@@ -169,17 +169,17 @@ module htx_raster_divfree #(
   logic [MsbW-1:0] r_msb;
   logic             r_mul_start;  // (its own multiplier)
   logic [W+2:0]     r_mul_a, r_mul_b;
-  logic             r_norm_shift, r_norm_fast;  // (no serial normaliser)
+  logic             r_norm_shift;  // (no serial normaliser)
   htx_recip #(.XWidth(AccQ), .W(W), .K(K), .G(G), .Steps(Steps), .Iterative(MulIterative),
               .Pipelined(1'b0)) u_recip (
     .clk_i, .rst_ni, .abort_i,
     .start_i(r_start), .en_i(1'b1), .table_only_i(1'b0), .alt_i(1'b0), .x_i(q_eff),
     .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
     .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(1'b0), .mul_p_i('0),
-    .norm_shift_o(r_norm_shift), .norm_fast_o(r_norm_fast)
+    .norm_shift_o(r_norm_shift)
   );
   logic             unused_r_mul;
-  assign unused_r_mul = ^{r_mul_start, r_mul_a, r_mul_b, r_norm_shift, r_norm_fast};
+  assign unused_r_mul = ^{r_mul_start, r_mul_a, r_mul_b, r_norm_shift};
 
   // Product k: 0 c_u = U / Q, 1 c_v, 2..5 the seed derivatives (u x, u y, v x, v y), 16 fraction bits:
   // round(((256 (g_num 2^TF - c g_q)) clamped to +-2^(UvIntBits+TF+1) Q) / Q).

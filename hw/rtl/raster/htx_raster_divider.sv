@@ -136,16 +136,16 @@ module htx_raster_divider #(
 
     logic         r_mul_start;  // (the pipelined unit has its own products)
     logic [W+2:0] r_mul_a, r_mul_b;
-    logic         r_norm_shift, r_norm_fast;  // (no serial normaliser)
+    logic         r_norm_shift;  // (no serial normaliser)
     htx_recip #(.XWidth(AccQ), .W(W), .K(K), .G(G), .Steps(Steps), .Pipelined(1'b1)) u_recip (
       .clk_i, .rst_ni, .abort_i,
       .start_i(va_q), .en_i(en), .table_only_i(1'b0), .alt_i(1'b0), .x_i(qa_q),
       .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
       .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(1'b0), .mul_p_i('0),
-      .norm_shift_o(r_norm_shift), .norm_fast_o(r_norm_fast)
+      .norm_shift_o(r_norm_shift)
     );
     logic unused_r_mul;
-    assign unused_r_mul = ^{r_mul_start, r_mul_a, r_mul_b, r_norm_shift, r_norm_fast};
+    assign unused_r_mul = ^{r_mul_start, r_mul_a, r_mul_b, r_norm_shift};
 
     logic [WSH-1:0] sh [NN];
     logic unused_sh;
@@ -259,7 +259,7 @@ module htx_raster_divider #(
     logic                   r_mul_start, r_mul_done;
     logic signed [W+2:0]    r_mul_a, r_mul_b;
     logic signed [2*W+5:0]  r_mul_p;
-    logic                   r_shift, r_fast;
+    logic                   r_shift;
     htx_recip #(.XWidth(RXW), .W(W), .K(K), .G(G), .Steps(Steps), .Iterative(MulIterative),
                 .Pipelined(1'b0), .SerialNorm(1'b1), .ExtMul(1'b1), .AltSteps(AuxSteps),
                 .NormSkip(RXW - AccQ)) u_recip (
@@ -268,7 +268,7 @@ module htx_raster_divider #(
       .alt_i(aux_go), .x_i(aux_go ? aux_x_q : RXW'(q_eff) << (RXW - AccQ)),
       .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
       .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(r_mul_done),
-      .mul_p_i(r_mul_p), .norm_shift_o(r_shift), .norm_fast_o(r_fast)
+      .mul_p_i(r_mul_p), .norm_shift_o(r_shift)
     );
 
     // One multiplier for the numerators in turn: u, v, then the colour channels.
@@ -344,7 +344,7 @@ module htx_raster_divider #(
           // (An aux request's normalisation shifts them too, between fragments: the next take
           // loads them again.)
           if (r_shift) begin
-            for (int i = 0; i < NN; i++) nr_q[i] <= r_fast ? nr_q[i] << 8 : nr_q[i] << 1;
+            for (int i = 0; i < NN; i++) nr_q[i] <= nr_q[i] << 1;
           end
           unique case (state_q)
             StRecip: if (r_done) state_q <= StMul;

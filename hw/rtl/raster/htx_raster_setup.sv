@@ -258,7 +258,7 @@ module htx_raster_setup #(
     logic [RecipW+2:0]   recip_mul_a, recip_mul_b;
     logic                recip_busy;           // (setup waits for done_o)
     logic [RecipW:0]     recip_r0;             // (the table value: setup always takes Newton steps)
-    logic                recip_norm_shift, recip_norm_fast;  // (nothing shifts in step)
+    logic                recip_norm_shift;  // (nothing shifts in step)
     htx_recip #(.XWidth(DetW), .W(RecipW), .K(RecipK), .G(RecipG), .Steps(NrSteps),
                 .Iterative(Iterative), .SerialNorm(Iterative)) u_recip (
       .clk_i, .rst_ni,
@@ -278,14 +278,13 @@ module htx_raster_setup #(
       .mul_b_o     (recip_mul_b),
       .mul_done_i  (1'b0),
       .mul_p_i     ('0),
-      .norm_shift_o(recip_norm_shift),
-      .norm_fast_o (recip_norm_fast)
+      .norm_shift_o(recip_norm_shift)
     );
     assign rq_start_o = 1'b0;
     assign rq_x_o     = '0;
     logic unused_recip_mul;
     assign unused_recip_mul = ^{recip_mul_start, recip_mul_a, recip_mul_b, recip_busy, recip_r0,
-                                recip_norm_shift, recip_norm_fast, rq_done_i, rq_r_i, rq_msb_i};
+                                recip_norm_shift, rq_done_i, rq_r_i, rq_msb_i};
   end
 
   // ---- Planes: z, r, g, b, q, uq, vq, and for AFFINE ua, va -------------------------------------

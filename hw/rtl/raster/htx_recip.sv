@@ -9,11 +9,10 @@
 // pipeline advances (en_i), the result 2 + 2 Steps advancing clocks later with done_o set (start_i is
 // the input's valid bit, table_only_i is ignored: r0_o carries the table value alongside).
 // X = 0 yields msb_o = 0 and an unspecified r_o (setup never asks: a zero determinant draws nothing).
-// SerialNorm (FSM form only; the `icebreaker` divider's unit) shifts X left until its top bit is set,
-// eight bits a clock while its top eight bits are zero and then one, instead of a priority encoder
-// and a barrel shifter (at most 5 + 7 clocks for 47 bits). NormSkip: a start with alt_i clear
-// brings x_i already shifted left by NormSkip (the caller knows that many top bits of its X are
-// zero), which the count starts from.
+// SerialNorm (FSM form only; the `icebreaker` divider's unit) shifts X left one bit a clock until
+// its top bit is set, up to XWidth - 1 clocks, instead of a priority encoder and a barrel shifter.
+// NormSkip: a start with alt_i clear brings x_i already shifted left by NormSkip (the caller knows
+// that many top bits of its X are zero), which the count starts from.
 // ExtMul (FSM form only; the `icebreaker` divider's unit) uses the caller's multiplier.
 // AltSteps (FSM form only): a start with alt_i set runs AltSteps Newton steps instead of Steps (the
 // `icebreaker` divider's unit also serves setup, whose reciprocals take more steps than a pixel's).
@@ -25,7 +24,7 @@ module htx_recip #(
   parameter int unsigned Steps     = 2,
   parameter bit          Iterative = 1'b0,
   parameter bit          Pipelined = 1'b0,
-  parameter bit          SerialNorm = 1'b0,  // FSM form: normalise by shifting, 8 or 1 bits a clock
+  parameter bit          SerialNorm = 1'b0,  // FSM form: normalise one bit per clock (no barrel shifter)
   parameter bit          ExtMul    = 1'b0,  // FSM form: the Newton products go to the mul_* port
   parameter int unsigned AltSteps  = Steps, // FSM form: Newton steps of a start with alt_i set
   parameter int unsigned NormSkip  = 0,     // SerialNorm: x_i = X 2^NormSkip when alt_i is clear
@@ -52,10 +51,9 @@ module htx_recip #(
   input  logic                mul_done_i,
   input  logic [2*W+5:0]      mul_p_i,            // signed a b
 
-  // SerialNorm: X shifts this clock (norm_shift_o), by eight bits (norm_fast_o) or by one, so a
-  // caller can shift values of its own in step (the `icebreaker` divider's numerators); else 0.
-  output logic                norm_shift_o,
-  output logic                norm_fast_o
+  // SerialNorm: X shifts left by one this clock, so a caller can shift values of its own in step
+  // (the `icebreaker` divider's numerators); else 0.
+  output logic                norm_shift_o
 );
   localparam int unsigned EntryW = K + G + 1;
   localparam int unsigned MulW   = W + 3;
@@ -177,7 +175,6 @@ module htx_recip #(
     assign mul_a_o     = '0;
     assign mul_b_o     = '0;
     assign norm_shift_o = 1'b0;
-    assign norm_fast_o  = 1'b0;
   end else begin : g_fsm
   state_e              state_q;
   logic [StepW-1:0]    step_q;
@@ -200,8 +197,6 @@ module htx_recip #(
     localparam int unsigned CW = $clog2(NW);
     logic [NW-1:0] nx_q;
     logic [CW-1:0] ncnt_q;  // shifts so far
-    logic          fast;    // eight bits this clock: the top eight are zero and eight more shifts are left
-    assign fast = (nx_q[NW-1 -: 8] == 8'd0) && (ncnt_q <= CW'(NW - 1 - 8));
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         nx_q   <= '0;
@@ -210,17 +205,15 @@ module htx_recip #(
         nx_q   <= NW'(x_i);
         ncnt_q <= alt_i ? '0 : CW'(NormSkip);
       end else if ((state_q == StNorm) && !norm_done) begin
-        nx_q   <= fast ? nx_q << 8 : nx_q << 1;
-        ncnt_q <= ncnt_q + (fast ? CW'(8) : CW'(1));
+        nx_q   <= nx_q << 1;
+        ncnt_q <= ncnt_q + 1'b1;
       end
     end
-    // X = 0 stops after NW - 1 shifts with msb 0 and a zero mantissa, as the combinational form
-    // (a fast step never passes NW - 1, and a shift by eight never drops a set bit).
+    // X = 0 stops after NW - 1 shifts with msb 0 and a zero mantissa, as the combinational form.
     assign norm_done = nx_q[NW-1] || (ncnt_q == CW'(NW - 1));
     assign mant      = nx_q[NW-1 -: W];
     assign msb       = MsbWidth'(CW'(NW - 1) - ncnt_q);
     assign norm_shift_o = (state_q == StNorm) && !norm_done;
-    assign norm_fast_o  = fast;
     if (NW > W) begin : g_low
       logic unused_low;
       assign unused_low = ^nx_q[NW-W-1:0];
@@ -228,7 +221,6 @@ module htx_recip #(
   end else begin : g_norm_at_start
     assign norm_done    = 1'b1;
     assign norm_shift_o = 1'b0;
-    assign norm_fast_o  = 1'b0;
   end
   assign last_step = alt_q ? (32'(step_q) + 1 == AltSteps) : (32'(step_q) + 1 == Steps);
   assign no_steps  = only_q || (alt_q ? (AltSteps == 0) : (Steps == 0));

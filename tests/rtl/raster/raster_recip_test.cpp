@@ -1,11 +1,10 @@
 // htx_recip Verilated alone as the `icebreaker` divider's unit uses it: the FSM form with the serial
-// normaliser (eight bits a clock, then one), X of 47 bits (setup's determinant, alt_i: 2 Newton
+// normaliser (one bit a clock), X of 47 bits (setup's determinant, alt_i: 2 Newton
 // steps) or of 42 bits brought shifted left by NormSkip = 5 (a pixel's Q: 1 step, or the table only).
 // Every result against the model's reciprocal (value and shift), for X with its leading one at
 // every position, and the clocks each normalisation takes (label `rtl`).
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdint>
 #include <random>
 
@@ -72,17 +71,16 @@ class Recip {
   Vhtx_recip_serial m_;
 };
 
-// The normaliser's clocks for X: eight-bit shifts while the top eight bits are zero and eight
-// more shifts are allowed, then one-bit shifts, until the top bit is set or kX - 1 shifts are done.
+// The normaliser's clocks for X: one shift a clock until the top bit is set or kX - 1 shifts are
+// done (counting the kSkip a pixel's Q arrives with).
 int norm_clocks(uint64_t x, bool alt) {
   unsigned n = alt ? 0 : kSkip;
   uint64_t v = alt ? x : x << kSkip;
   const uint64_t top = uint64_t{1} << (kX - 1), mask = (uint64_t{1} << kX) - 1;
   int clocks = 0;
   while (!(v & top) && n != kX - 1) {
-    const bool fast = (v >> (kX - 8)) == 0 && n <= kX - 1 - 8;
-    v = (v << (fast ? 8 : 1)) & mask;
-    n += fast ? 8 : 1;
+    v = (v << 1) & mask;
+    ++n;
     ++clocks;
   }
   return clocks;
@@ -121,17 +119,21 @@ TEST(RasterRecip, SerialNormalisationMatchesTheModelAtEveryLeadingOne) {
   }
 }
 
-TEST(RasterRecip, SerialNormalisationTakesAtMostTwelveClocks) {
-  // Eight-bit shifts while possible, then at most seven one-bit shifts: 5 + 7 for 47 bits.
+TEST(RasterRecip, SerialNormalisationTakesOneClockPerShift) {
+  // Setup's X with its leading one at bit m takes 46 - m clocks more than one at the top; a pixel's
+  // Q, which arrives five bits up, 41 - m (at most 41 for Q = 1).
   Recip unit;
-  const uint64_t full = uint64_t{1} << (kX - 1);
-  const int base = unit.run(full, true, false).clocks;
-  int worst = 0;
+  const int base_alt = unit.run(uint64_t{1} << (kX - 1), true, false).clocks;
+  const int base_pix = unit.run(uint64_t{1} << (kX - kSkip - 1), false, false).clocks;
   for (unsigned msb = 0; msb < kX; ++msb) {
-    worst = std::max(worst, unit.run(uint64_t{1} << msb, true, false).clocks - base);
+    EXPECT_EQ(unit.run(uint64_t{1} << msb, true, false).clocks - base_alt, static_cast<int>(kX - 1 - msb))
+        << "msb " << msb;
   }
-  EXPECT_LE(worst, 12);
-  EXPECT_GE(worst, 7);  // the one-bit steps are still there
+  for (unsigned msb = 0; msb < kX - kSkip; ++msb) {
+    EXPECT_EQ(unit.run(uint64_t{1} << msb, false, false).clocks - base_pix,
+              static_cast<int>(kX - kSkip - 1 - msb))
+        << "msb " << msb;
+  }
 }
 
 TEST(RasterRecip, ZeroGivesMsbZeroAndTheUnitStaysUsable) {
