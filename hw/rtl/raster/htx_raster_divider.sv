@@ -63,6 +63,7 @@ module htx_raster_divider #(
   localparam int unsigned MsbW = $clog2(AccQ);
   localparam int unsigned RXW  = (Aux && AuxW > AccQ) ? AuxW : AccQ;  // the unit's X width
   localparam int unsigned RMsbW = $clog2(RXW);
+  localparam int unsigned QSkip = RXW - AccQ;  // top bits of the unit's X that a pixel's Q leaves 0
   localparam int unsigned NIN  = (AccU > AccC) ? AccU : AccC;   // numerator input width
   localparam int unsigned WSH  = NIN + W;                       // after a left shift by < W
   localparam int unsigned NSU  = UvIntBits + W + 2;             // |U'| < |u| 2^W
@@ -262,10 +263,10 @@ module htx_raster_divider #(
     logic                   r_shift;
     htx_recip #(.XWidth(RXW), .W(W), .K(K), .G(G), .Steps(Steps), .Iterative(MulIterative),
                 .Pipelined(1'b0), .SerialNorm(1'b1), .ExtMul(1'b1), .AltSteps(AuxSteps),
-                .NormSkip(RXW - AccQ)) u_recip (
+                .NormSkip(QSkip)) u_recip (
       .clk_i, .rst_ni, .abort_i,
       .start_i(r_start), .en_i(1'b1), .table_only_i(!aux_go && in_lut_i && !Color),
-      .alt_i(aux_go), .x_i(aux_go ? aux_x_q : RXW'(q_eff) << (RXW - AccQ)),
+      .alt_i(aux_go), .x_i(aux_go ? aux_x_q : RXW'(q_eff) << QSkip),
       .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
       .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(r_mul_done),
       .mul_p_i(r_mul_p), .norm_shift_o(r_shift)
@@ -338,7 +339,7 @@ module htx_raster_divider #(
           lut_q <= in_lut_i;
           pay_q <= in_pay_i;
           k_q   <= '0;
-          for (int i = 0; i < NN; i++) nr_q[i] <= NRW'($signed(nin[i])) << (RXW - AccQ);
+          for (int i = 0; i < NN; i++) nr_q[i] <= NRW'($signed(nin[i])) << QSkip;
           state_q <= in_need_i ? StRecip : StOut;
         end else begin
           // (An aux request's normalisation shifts them too, between fragments: the next take

@@ -258,7 +258,7 @@ module htx_raster_setup #(
     logic [RecipW+2:0]   recip_mul_a, recip_mul_b;
     logic                recip_busy;           // (setup waits for done_o)
     logic [RecipW:0]     recip_r0;             // (the table value: setup always takes Newton steps)
-    logic                recip_norm_shift;  // (nothing shifts in step)
+    logic                recip_norm_shift;     // (nothing shifts in step)
     htx_recip #(.XWidth(DetW), .W(RecipW), .K(RecipK), .G(RecipG), .Steps(NrSteps),
                 .Iterative(Iterative), .SerialNorm(Iterative)) u_recip (
       .clk_i, .rst_ni,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "Vhtx_raster_counters.h"
+#include "vmodel_clock.hpp"
 
 namespace {
 
@@ -20,15 +21,11 @@ using Counts = std::array<uint32_t, kN>;
 class Bank {
  public:
   Bank() {
-    m_.clk_i = 0;
-    m_.rst_ni = 0;
     m_.clear_i = 0;
     m_.inc_i = 0;
     m_.rd_i = 0;
     m_.rd_idx_i = 0;
-    m_.eval();
-    m_.rst_ni = 1;
-    m_.eval();
+    htx::raster_test::reset_model(m_);
     counts_after_.push_back(Counts{});
     cleared_at_.push_back(false);
   }
@@ -52,10 +49,7 @@ class Bank {
       EXPECT_EQ(m_.rd_data_o, want) << "counter " << idx << " read at clock " << t;
       last_value = m_.rd_data_o;
     }
-    m_.clk_i = 1;
-    m_.eval();
-    m_.clk_i = 0;
-    m_.eval();
+    htx::raster_test::clock_edge(m_);
     Counts c = counts_after_.back();
     for (int i = 0; i < kN; ++i) {
       c[i] = clear ? 0 : c[i] + ((inc >> i) & 1);

@@ -12,6 +12,7 @@
 #include "Vhtx_raster_mul_digits.h"
 #include "Vhtx_raster_mul_digits_wide_b.h"
 #include "htx/model/wide.hpp"
+#include "vmodel_clock.hpp"
 
 namespace {
 
@@ -21,20 +22,11 @@ template <class V>
 class Mul {
  public:
   Mul() {
-    m_.clk_i = 0;
-    m_.rst_ni = 0;
     m_.abort_i = 0;
     m_.start_i = 0;
-    m_.eval();
-    m_.rst_ni = 1;
-    m_.eval();
+    htx::raster_test::reset_model(m_);
   }
-  void clock() {
-    m_.clk_i = 1;
-    m_.eval();
-    m_.clk_i = 0;
-    m_.eval();
-  }
+  void clock() { htx::raster_test::clock_edge(m_); }
   void operands(int64_t a, int64_t b, unsigned extra = 0) {
     m_.extra_i = static_cast<uint8_t>(extra);
     m_.a_i = static_cast<uint64_t>(a) & ((uint64_t{1} << kA) - 1);

@@ -10,6 +10,7 @@
 
 #include "Vhtx_recip_serial.h"
 #include "htx/model/recip.hpp"
+#include "vmodel_clock.hpp"
 
 namespace {
 
@@ -26,8 +27,6 @@ struct Result {
 class Recip {
  public:
   Recip() {
-    m_.clk_i = 0;
-    m_.rst_ni = 0;
     m_.abort_i = 0;
     m_.start_i = 0;
     m_.en_i = 1;
@@ -35,16 +34,9 @@ class Recip {
     m_.alt_i = 0;
     m_.mul_done_i = 0;
     m_.mul_p_i = 0;
-    m_.eval();
-    m_.rst_ni = 1;
-    m_.eval();
+    htx::raster_test::reset_model(m_);
   }
-  void clock() {
-    m_.clk_i = 1;
-    m_.eval();
-    m_.clk_i = 0;
-    m_.eval();
-  }
+  void clock() { htx::raster_test::clock_edge(m_); }
   // x is X itself; a start without alt_i gets it shifted left by kSkip, as the divider sends it.
   Result run(uint64_t x, bool alt, bool table_only) {
     m_.x_i = alt ? x : x << kSkip;
