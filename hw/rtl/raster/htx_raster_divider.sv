@@ -312,7 +312,7 @@ module htx_raster_divider #(
     htx_raster_mul #(.AWidth(SA), .BWidth(SB), .Iterative(MulIterative), .DigitSerial(MulDigits),
                      .DigitSplitB(1'b0), .ExtraW(1)) u_mul (
       .clk_i, .rst_ni, .abort_i, .start_i(m_start || r_mul_start), .a_i(s_a), .b_i(s_b),
-      .extra_i(1'b0), .done_o(s_done), .p_o(s_p)
+      .neg_i(1'b0), .extra_i(1'b0), .done_o(s_done), .p_o(s_p)
     );
     // Both products fit their own widths, so the low bits of the wider product are exact.
     assign m_p        = (MA+W+2)'(s_p);

@@ -1,4 +1,6 @@
-// Signed multiplier of the raster setup with a start/done handshake; p_o = (a b) >>> extra_i.
+// Signed multiplier of the raster setup with a start/done handshake; p_o = (a b) >>> extra_i, or
+// (-(a b)) >>> extra_i with neg_i (not DigitSerial, where neg_i must be 0): the iterative form
+// subtracts where it would add, so a caller negating a product pays one LUT, not a negator.
 // Iterative = 0: the product (and its shift) is combinational and done_o follows start_i in the
 // same cycle (the `full` configuration: one product per clock). Iterative = 1: one bit of b per
 // clock, BWidth clocks, then extra_i clocks of right shift in the same registers (the `icebreaker`
@@ -22,6 +24,7 @@ module htx_raster_mul #(
   input  logic                             start_i,
   input  logic signed [AWidth-1:0]         a_i,
   input  logic signed [BWidth-1:0]         b_i,
+  input  logic                             neg_i,    // the product negated (with the operands)
   input  logic [ExtraW-1:0]                extra_i,  // p_o = (a b) >>> extra_i
   output logic                             done_o,
   output logic signed [AWidth+BWidth-1:0]  p_o
@@ -136,6 +139,8 @@ module htx_raster_mul #(
       end
     end
 
+    logic unused_neg;
+    assign unused_neg = neg_i;
     logic signed [PWidth-1:0] prod_all;
     assign prod_all = PWidth'({acc_q, low_q});
     assign done_o   = done_q;
@@ -145,7 +150,7 @@ module htx_raster_mul #(
     logic signed [PWidth-1:0] prod;
     assign unused = ^{clk_i, rst_ni, abort_i};
     assign done_o = start_i;
-    assign prod   = PWidth'(a_i) * PWidth'(b_i);
+    assign prod   = neg_i ? -(PWidth'(a_i) * PWidth'(b_i)) : PWidth'(a_i) * PWidth'(b_i);
     assign p_o    = prod >>> extra_i;
   end else begin : g_iter
     // The textbook sequential signed multiplier: {h, l} starts as {0, b}; each clock adds a to h
@@ -164,9 +169,11 @@ module htx_raster_mul #(
     assign last   = (cnt_q == CntW'(BWidth - 1));
     assign finish = (cnt_q == CntW'(BWidth - 1) + CntW'(extra_i));
     assign addend = (l_q[0] && in_mul) ? (AWidth + 1)'(a_i) : '0;
-    // h + addend, or h - addend for b's sign bit: one adder (htx_raster_addsub), not two.
+    // h + addend, or h - addend for b's sign bit: one adder (htx_raster_addsub), not two. A
+    // negated product swaps the two: -(a b) = sum of -b_i a 2^i + b_(B-1) a 2^(B-1), and its
+    // partial sums are bounded as the positive product's are.
     htx_raster_addsub #(.W(AWidth + 1)) u_addsub (
-      .a_i(h_q), .b_i(addend), .sub_i(last), .sum_o(sum)
+      .a_i(h_q), .b_i(addend), .sub_i(last ^ neg_i), .sum_o(sum)
     );
 
     always_ff @(posedge clk_i or negedge rst_ni) begin

@@ -61,10 +61,14 @@ module htx_raster_plane #(
   assign a2e = Signed ? $signed({a2_i[VB-1], a2_i}) : $signed({1'b0, a2_i});
   assign da1 = a1e - a0e;
   assign da2 = a2e - a0e;
-  // One negation for both numerators (a negation on each cost a second NW-bit adder).
+  // The numerator of this gradient, negated when setup swapped vertices 1 and 2. The iterative
+  // multiplier negates the product itself (mul_neg: the same n R, as the model's -n times R, before
+  // the rounding); the combinational one takes n negated, one negation for both numerators.
   logic signed [NW-1:0] nxy;
-  assign nxy  = (state_q == StGx) ? nx_q : ny_q;
-  assign nsel = det_neg_i ? -nxy : nxy;
+  logic                 mul_neg;
+  assign nxy     = (state_q == StGx) ? nx_q : ny_q;
+  assign nsel    = (det_neg_i && !Iterative) ? -nxy : nxy;
+  assign mul_neg = Iterative && det_neg_i && ((state_q == StGx) || (state_q == StGy));
 
   always_comb begin
     mul_a = '0;
@@ -92,6 +96,7 @@ module htx_raster_plane #(
     .start_i(mul_start),
     .a_i    (mul_a),
     .b_i    (mul_b),
+    .neg_i  (mul_neg),
     .extra_i(mul_extra),
     .done_o (mul_done),
     .p_o    (mul_p)

@@ -187,14 +187,14 @@ module htx_raster_setup #(
   logic [2:0]           ethr;
   for (genvar k = 0; k < 3; k++) begin : g_edge
     localparam int unsigned K1 = (k + 1) % 3;
-    logic signed [DW-1:0] edx, edy;
+    logic signed [DW-1:0] edx;
     assign edx = DW'(sx[K1]) - DW'(sx[k]);
-    assign edy = DW'(sy[K1]) - DW'(sy[k]);
-    assign ea[k] = -edy;
+    // a = -(y_k1 - y_k), formed as y_k - y_k1: one subtractor, not a subtractor and a negation.
+    assign ea[k] = DW'(sy[k]) - DW'(sy[K1]);
     assign eb[k] = edx;
     // y points down and inside is E > 0: an edge going up is a left edge, a horizontal edge going
     // right a top edge; pixel centres exactly on them belong to this triangle (threshold 0).
-    assign ethr[k] = !((edy < 0) || ((edy == 0) && (edx > 0)));
+    assign ethr[k] = !((ea[k] > 0) || ((ea[k] == 0) && (edx > 0)));
   end
 
   // ---- Determinant and edge values: one multiplier, eight products ------------------------------
@@ -223,6 +223,7 @@ module htx_raster_setup #(
     .start_i(emul_start),
     .a_i    (emul_a),
     .b_i    (emul_b),
+    .neg_i  (1'b0),
     .extra_i(1'b0),
     .done_o (emul_done),
     .p_o    (emul_p)
@@ -606,6 +607,7 @@ module htx_raster_setup #(
       .start_i(amul_start),
       .a_i    (amul_a),
       .b_i    ($signed({1'b0, r_q})),
+      .neg_i  (1'b0),
       .extra_i(amul_extra),
       .done_o (amul_done),
       .p_o    (amul_p)

@@ -240,6 +240,7 @@ module htx_recip #(
       .start_i(mul_start),
       .a_i    (mul_a),
       .b_i    (mul_b),
+      .neg_i  (1'b0),
       .extra_i(1'b0),
       .done_o (mul_done),
       .p_o    (mul_p)

@@ -24,6 +24,7 @@ class Mul {
   Mul() {
     m_.abort_i = 0;
     m_.start_i = 0;
+    m_.neg_i = 0;
     htx::raster_test::reset_model(m_);
   }
   void clock() { htx::raster_test::clock_edge(m_); }
@@ -124,6 +125,34 @@ TEST(RasterMul, ExtraClocksShiftTheProductRight) {
 }
 
 TEST(RasterMul, AbortDropsTheProductInFlight) { check_abort<Vhtx_raster_mul>(kB / 2, kB + 1); }
+
+// neg_i: the product negated, then shifted (the plane unit's gradient of a swapped triangle), on
+// the operand extremes and random operands, in the same clocks.
+TEST(RasterMul, NegatedProductsMatchExactProducts) {
+  Mul<Vhtx_raster_mul> mul;
+  auto& m = mul.model();
+  const int64_t amin = -(int64_t{1} << (kA - 1)), amax = (int64_t{1} << (kA - 1)) - 1;
+  const int64_t bmin = -(int64_t{1} << (kB - 1)), bmax = (int64_t{1} << (kB - 1)) - 1;
+  std::vector<std::pair<int64_t, int64_t>> cases;
+  for (int64_t a : {amin, amin + 1, int64_t{-1}, int64_t{0}, int64_t{1}, amax}) {
+    for (int64_t b : {bmin, bmin + 1, int64_t{-1}, int64_t{0}, int64_t{1}, bmax}) cases.emplace_back(a, b);
+  }
+  std::mt19937_64 rng(11);
+  for (int i = 0; i < 2000; ++i) cases.emplace_back(random_a(rng), random_b(rng));
+  int clocks = 0;
+  for (unsigned extra : {0u, 1u, 23u}) {
+    for (const auto& [a, b] : cases) {
+      m.neg_i = 1;
+      const htx::model::i128 p = -(static_cast<htx::model::i128>(a) * b);
+      ASSERT_EQ(mul.product(a, b, &clocks, extra), static_cast<uint64_t>(p >> extra))
+          << "-(" << a << " * " << b << ") >> " << extra;
+      ASSERT_EQ(clocks, kB + 1 + static_cast<int>(extra));
+    }
+  }
+  // And back to positive products.
+  m.neg_i = 0;
+  EXPECT_EQ(mul.product(amin, bmin, &clocks), expected(amin, bmin));
+}
 
 // Digit-serial: a in 15-bit digits (38 bits: 3), b in 15-bit digits (26 bits: 2) or whole; one
 // digit pair per clock, the first in the clock that takes start_i.
