@@ -110,12 +110,12 @@ module htx_raster_setup #(
   logic [UQ-1:0]          uq_q [3];
   logic [UQ-1:0]          vq_q [3];
   logic [31:0]            u_off_q, v_off_q;
-  logic signed [DetW-1:0] det_q, p0_q;
+  logic signed [DetW-1:0] det_q;
   logic                   det_neg_q;
   logic [2:0]             edge_k_q;
   logic                   edge_half_q;
   logic signed [EW-1:0]   e_q [3];
-  logic signed [EW-1:0]   e_part_q;
+  logic signed [EW-1:0]   part_q;    // the first product of det or of an edge value
 
   // ---- Accept and check the state word --------------------------------------------------------
   // A method this build leaves out, a subdivision length outside 2..64 or a depth function beyond
@@ -223,14 +223,18 @@ module htx_raster_setup #(
     .start_i(emul_start),
     .a_i    (emul_a),
     .b_i    (emul_b),
-    .neg_i  (1'b0),
+    .neg_i  (state_q == StDet1),
     .extra_i(1'b0),
     .done_o (emul_done),
     .p_o    (emul_p)
   );
 
+  // det = dx1 dy2 + (-(dx2 dy1)) and E_k = a_k (px - x_k) + b_k (py - y_k): the multiplier negates
+  // det's second product itself (neg_i), so one adder serves both.
+  logic signed [EW-1:0]   part_sum;
   logic signed [DetW-1:0] det_next;
-  assign det_next = p0_q - DetW'(emul_p);
+  assign part_sum = part_q + EW'(emul_p);
+  assign det_next = DetW'(part_sum);
 
   // ---- Reciprocals: 1/|det|, then (AFFINE) 1/q_i of each vertex -------------------------------
   localparam bit HasAffine = Methods[0];
@@ -680,11 +684,10 @@ module htx_raster_setup #(
       det_pend_q    <= 1'b0;
       affine_q      <= 1'b0;
       det_q         <= '0;
-      p0_q          <= '0;
       det_neg_q     <= 1'b0;
       edge_k_q      <= '0;
       edge_half_q   <= 1'b0;
-      e_part_q      <= '0;
+      part_q        <= '0;
       plane_start_q <= 1'b0;
       recip_valid_q <= 1'b0;
     end else if (abort_i) begin
@@ -720,7 +723,7 @@ module htx_raster_setup #(
           recip_valid_q <= 1'b0;
           state_q       <= StDet0;
         end
-        StDet0: if (emul_done) begin p0_q <= DetW'(emul_p); state_q <= StDet1; end
+        StDet0: if (emul_done) begin part_q <= EW'(emul_p); state_q <= StDet1; end
         StDet1: if (emul_done) begin
           det_q     <= det_next;
           det_neg_q <= det_next[DetW-1];
@@ -730,10 +733,10 @@ module htx_raster_setup #(
         end
         StEdges: if (emul_done) begin
           if (!edge_half_q) begin
-            e_part_q    <= EW'(emul_p);
+            part_q      <= EW'(emul_p);
             edge_half_q <= 1'b1;
           end else begin
-            e_q[ek]     <= e_part_q + EW'(emul_p);
+            e_q[ek]     <= part_sum;
             edge_half_q <= 1'b0;
             edge_k_q    <= edge_k_q + 1'b1;
             if (ek == 2'd2) state_q <= StWait;
