@@ -37,6 +37,7 @@ module htx_raster_plane #(
   localparam int unsigned MA = (NW > AccW) ? NW : AccW;
   localparam int unsigned MB = (DW > W + 2) ? DW : W + 2;
   localparam int unsigned PW = MA + MB;
+  localparam int unsigned SW = (NW > AccW) ? NW : AccW;  // the accumulator: n, then start
 
   typedef enum logic [3:0] {
     StIdle, StNx0, StNx1, StNy0, StNy1, StWait, StGx, StGy, StSx, StSy, StDone
@@ -44,8 +45,9 @@ module htx_raster_plane #(
 
   state_e state_q;
   logic signed [VB:0]   da1, da2;
-  logic signed [NW-1:0] t_q, nx_q, ny_q, nsel;
-  logic [AccW-1:0]      gx_q, gy_q, acc_q;
+  logic signed [NW-1:0] nx_q, ny_q, nsel;
+  logic [AccW-1:0]      gx_q, gy_q;
+  logic [SW-1:0]        acc_q;
   logic [GW-1:0]        gxw_q, gyw_q;
   logic signed [VB:0]   a0e, a1e, a2e;
   logic signed [MA-1:0] mul_a;
@@ -68,7 +70,10 @@ module htx_raster_plane #(
   logic                 mul_neg;
   assign nxy     = (state_q == StGx) ? nx_q : ny_q;
   assign nsel    = (det_neg_i && !Iterative) ? -nxy : nxy;
-  assign mul_neg = Iterative && det_neg_i && ((state_q == StGx) || (state_q == StGy));
+  // The second product of each numerator is negated too, so n = t + (-p) goes through the
+  // accumulator's adder (no subtractor of its own).
+  assign mul_neg = (state_q == StNx1) || (state_q == StNy1) ||
+                   (Iterative && det_neg_i && ((state_q == StGx) || (state_q == StGy)));
 
   always_comb begin
     mul_a = '0;
@@ -104,14 +109,19 @@ module htx_raster_plane #(
   // Round to nearest, ties up: (p + 2^(shift-1)) >>> shift = ((p >>> (shift - 1)) + 1) >>> 1.
   assign rounded = (mul_p + $signed(PW'(1))) >>> 1;
 
-  // start = a0 2^GF + g_x dxs + g_y dys: the two products go into one adder.
-  logic [AccW-1:0] acc_sum;
-  assign acc_sum = ((state_q == StSx) ? (AccW'(a0e) << GF) : acc_q) + AccW'(mul_p);
+  // One adder for both sums of two products: n_x = da1 dy2 + (-(da2 dy1)) (n_y likewise), then
+  // start = a0 2^GF + g_x dxs + g_y dys (kept modulo 2^AccW).
+  logic [SW-1:0] acc_base, acc_sum;
+  always_comb begin
+    if (state_q == StSx)                             acc_base = SW'(a0e) << GF;
+    else if ((state_q == StNx0) || (state_q == StNy0)) acc_base = '0;
+    else                                              acc_base = acc_q;
+  end
+  assign acc_sum = acc_base + SW'(mul_p);
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       state_q <= StIdle;
-      t_q     <= '0;
       nx_q    <= '0;
       ny_q    <= '0;
       gx_q    <= '0;
@@ -124,10 +134,10 @@ module htx_raster_plane #(
     end else begin
       unique case (state_q)
         StIdle, StDone: if (start_i) state_q <= StNx0;
-        StNx0: if (mul_done) begin t_q <= NW'(mul_p); state_q <= StNx1; end
-        StNx1: if (mul_done) begin nx_q <= t_q - NW'(mul_p); state_q <= StNy0; end
-        StNy0: if (mul_done) begin t_q <= NW'(mul_p); state_q <= StNy1; end
-        StNy1: if (mul_done) begin ny_q <= t_q - NW'(mul_p); state_q <= StWait; end
+        StNx0: if (mul_done) begin acc_q <= acc_sum; state_q <= StNx1; end
+        StNx1: if (mul_done) begin nx_q <= NW'(acc_sum); state_q <= StNy0; end
+        StNy0: if (mul_done) begin acc_q <= acc_sum; state_q <= StNy1; end
+        StNy1: if (mul_done) begin ny_q <= NW'(acc_sum); state_q <= StWait; end
         StWait: if (recip_valid_i) state_q <= StGx;
         StGx: if (mul_done) begin
           gx_q <= AccW'(rounded); gxw_q <= GW'(rounded); state_q <= StGy;
@@ -145,7 +155,7 @@ module htx_raster_plane #(
   assign done_o  = (state_q == StDone);
   assign gx_o    = gx_q;
   assign gy_o    = gy_q;
-  assign start_o = acc_q;
+  assign start_o = AccW'(acc_q);
   assign gxw_o   = gxw_q;
   assign gyw_o   = gyw_q;
 endmodule
