@@ -171,6 +171,9 @@ module htx_raster_setup #(
   logic signed [DW-1:0] pxs, pys;
   assign pxs = (DW'(x_lo) <<< 8) + DW'(128);
   assign pys = (DW'(y_lo) <<< 8) + DW'(128);
+  logic signed [DW-1:0] dxs, dys;  // the first pixel centre relative to vertex 0
+  assign dxs = pxs - DW'(x_q[0]);
+  assign dys = pys - DW'(y_q[0]);
 
   // Vertices after the winding swap, for the edges.
   logic signed [XW-1:0] sx [3];
@@ -209,9 +212,12 @@ module htx_raster_setup #(
     unique case (state_q)
       StDet0: begin emul_a = dx1; emul_b = dy2; end
       StDet1: begin emul_a = dx2; emul_b = dy1; end
+      // E_k = a_k (px - x_k) + b_k (py - y_k) = a_k dxs + b_k dys + E_k(v0), exactly, and E_k(v0)
+      // is 0 for the two edges through vertex 0 and |det| for edge 1 (the first product is added
+      // to it): every edge multiplies the deltas that the planes use, no per-edge subtraction.
       StEdges: begin
-        if (!edge_half_q) begin emul_a = ea[ek]; emul_b = pxs - DW'(sx[ek]); end
-        else              begin emul_a = eb[ek]; emul_b = pys - DW'(sy[ek]); end
+        if (!edge_half_q) begin emul_a = ea[ek]; emul_b = dxs; end
+        else              begin emul_a = eb[ek]; emul_b = dys; end
       end
       default: ;
     endcase
@@ -231,9 +237,16 @@ module htx_raster_setup #(
 
   // det = dx1 dy2 + (-(dx2 dy1)) and E_k = a_k (px - x_k) + b_k (py - y_k): the multiplier negates
   // det's second product itself (neg_i), so one adder serves both.
-  logic signed [EW-1:0]   part_sum;
+  logic signed [EW-1:0]   part_base, part_sum;
   logic signed [DetW-1:0] det_next;
-  assign part_sum = part_q + EW'(emul_p);
+  always_comb begin
+    if ((state_q == StDet0) || ((state_q == StEdges) && !edge_half_q)) begin
+      part_base = ((state_q == StEdges) && (ek == 2'd1)) ? EW'(det_q) : '0;  // det_q: |det|
+    end else begin
+      part_base = part_q;
+    end
+  end
+  assign part_sum = part_base + EW'(emul_p);
   assign det_next = DetW'(part_sum);
 
   // ---- Reciprocals: 1/|det|, then (AFFINE) 1/q_i of each vertex -------------------------------
@@ -303,12 +316,9 @@ module htx_raster_setup #(
   logic [LocW-1:0]      va_v [3];
   logic                 plane_start_q;
   logic [NP-1:0]        plane_done;
-  logic signed [DW-1:0] dxs, dys;
   logic [AW-1:0]        pgx [NP];
   logic [AW-1:0]        pgy [NP];
   logic [AW-1:0]        pst [NP];
-  assign dxs = pxs - DW'(x_q[0]);
-  assign dys = pys - DW'(y_q[0]);
 
   localparam int unsigned GWU = UQ + DW + 2 + GF + 1;     // full-precision gradient of uq, vq
   localparam int unsigned GWQ = QBits + DW + 2 + GF + 1;  // and of q
@@ -723,9 +733,9 @@ module htx_raster_setup #(
           recip_valid_q <= 1'b0;
           state_q       <= StDet0;
         end
-        StDet0: if (emul_done) begin part_q <= EW'(emul_p); state_q <= StDet1; end
+        StDet0: if (emul_done) begin part_q <= part_sum; state_q <= StDet1; end
         StDet1: if (emul_done) begin
-          det_q     <= det_next;
+          det_q     <= det_abs;
           det_neg_q <= det_next[DetW-1];
           edge_k_q  <= '0;
           edge_half_q <= 1'b0;
@@ -733,7 +743,7 @@ module htx_raster_setup #(
         end
         StEdges: if (emul_done) begin
           if (!edge_half_q) begin
-            part_q      <= EW'(emul_p);
+            part_q      <= part_sum;
             edge_half_q <= 1'b1;
           end else begin
             e_q[ek]     <= part_sum;
@@ -751,7 +761,7 @@ module htx_raster_setup #(
 
   // ---- Outputs ---------------------------------------------------------------------------------
   logic unused;
-  assign unused = ^{det_q, rec_state_i, plane_done[8:7]};
+  assign unused = ^{rec_state_i, plane_done[8:7]};
 
   assign tri_valid_o     = (state_q == StOut);
   assign tri_state_o     = st_q;
