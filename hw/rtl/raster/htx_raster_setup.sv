@@ -229,7 +229,7 @@ module htx_raster_setup #(
     .start_i(emul_start),
     .a_i    (emul_a),
     .b_i    (emul_b),
-    .neg_i  (state_q == StDet1),
+    .neg_i  (redo_q ? (state_q == StDet0) : (state_q == StDet1)),
     .extra_i(1'b0),
     .done_o (emul_done),
     .p_o    (emul_p)
@@ -258,8 +258,14 @@ module htx_raster_setup #(
   logic [ShiftW-1:0]   grad_shift;
   logic                planes_abort, det_start, av_start, affine_q;
   logic [1:0]          av_i;
-  assign det_abs = det_next[DetW-1] ? DetW'(-det_next) : DetW'(det_next);
-  assign det_start = (state_q == StDet1) && emul_done && (det_next != 0) && !box_empty;
+  // Iterative (DetRedo): a negative det is computed again with the other product negated,
+  // -dx1 dy2 + dx2 dy1 = |det| (two more serial products, for half the triangles), instead of
+  // through a negator; then det_next is |det| when det_start rises.
+  localparam bit DetRedo = Iterative;
+  logic redo_q, det_again;
+  assign det_again = DetRedo && !redo_q && det_next[DetW-1];
+  assign det_abs   = (det_next[DetW-1] && !DetRedo) ? DetW'(-det_next) : DetW'(det_next);
+  assign det_start = (state_q == StDet1) && emul_done && (det_next != 0) && !box_empty && !det_again;
   assign recip_start = det_start || av_start;
   assign recip_x = det_start ? det_abs : DetW'(q_q[av_i]);
   assign planes_abort = abort_i || ((state_q == StDet1) && emul_done && ((det_next == 0) || box_empty));
@@ -695,6 +701,7 @@ module htx_raster_setup #(
       affine_q      <= 1'b0;
       det_q         <= '0;
       det_neg_q     <= 1'b0;
+      redo_q        <= 1'b0;
       edge_k_q      <= '0;
       edge_half_q   <= 1'b0;
       part_q        <= '0;
@@ -731,15 +738,18 @@ module htx_raster_setup #(
           affine_q <= HasAffine && (rec_method == htx_raster_pkg::MethodAffine);
           plane_start_q <= 1'b1;
           recip_valid_q <= 1'b0;
+          redo_q        <= 1'b0;
           state_q       <= StDet0;
         end
         StDet0: if (emul_done) begin part_q <= part_sum; state_q <= StDet1; end
         StDet1: if (emul_done) begin
           det_q     <= det_abs;
-          det_neg_q <= det_next[DetW-1];
+          det_neg_q <= redo_q || det_next[DetW-1];
           edge_k_q  <= '0;
           edge_half_q <= 1'b0;
-          state_q   <= ((det_next == 0) || box_empty) ? StIdle : StEdges;
+          if ((det_next == 0) || box_empty) state_q <= StIdle;
+          else if (det_again) begin redo_q <= 1'b1; state_q <= StDet0; end
+          else state_q <= StEdges;
         end
         StEdges: if (emul_done) begin
           if (!edge_half_q) begin
