@@ -34,10 +34,9 @@ module htx_raster_plane #(
   output logic [GW-1:0]          gxw_o, gyw_o
 );
   localparam int unsigned NW = VB + DW + 2;
-  localparam int unsigned MA = (NW > AccW) ? NW : AccW;
+  localparam int unsigned MA = (NW > AccW) ? NW : AccW;  // also the accumulator: n, then start
   localparam int unsigned MB = (DW > W + 2) ? DW : W + 2;
   localparam int unsigned PW = MA + MB;
-  localparam int unsigned SW = (NW > AccW) ? NW : AccW;  // the accumulator: n, then start
 
   typedef enum logic [3:0] {
     StIdle, StNx0, StNx1, StNy0, StNy1, StWait, StGx, StGy, StSx, StSy, StDone
@@ -47,7 +46,7 @@ module htx_raster_plane #(
   logic signed [VB:0]   da1, da2;
   logic signed [NW-1:0] nx_q, ny_q, nsel;
   logic [AccW-1:0]      gx_q, gy_q;
-  logic [SW-1:0]        acc_q;
+  logic [MA-1:0]        acc_q;
   logic [GW-1:0]        gxw_q, gyw_q;
   logic signed [VB:0]   a0e, a1e, a2e;
   logic signed [MA-1:0] mul_a;
@@ -111,13 +110,13 @@ module htx_raster_plane #(
 
   // One adder for both sums of two products: n_x = da1 dy2 + (-(da2 dy1)) (n_y likewise), then
   // start = a0 2^GF + g_x dxs + g_y dys (kept modulo 2^AccW).
-  logic [SW-1:0] acc_base, acc_sum;
+  logic [MA-1:0] acc_base, acc_sum;
   always_comb begin
-    if (state_q == StSx)                             acc_base = SW'(a0e) << GF;
+    if (state_q == StSx)                             acc_base = MA'(a0e) << GF;
     else if ((state_q == StNx0) || (state_q == StNy0)) acc_base = '0;
     else                                              acc_base = acc_q;
   end
-  assign acc_sum = acc_base + SW'(mul_p);
+  assign acc_sum = acc_base + MA'(mul_p);
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin

@@ -110,7 +110,7 @@ module htx_raster_setup #(
   logic [UQ-1:0]          uq_q [3];
   logic [UQ-1:0]          vq_q [3];
   logic [31:0]            u_off_q, v_off_q;
-  logic signed [DetW-1:0] det_q;
+  logic signed [DetW-1:0] det_q;     // |det|, from StDet1 on (edge 1 starts from it)
   logic                   det_neg_q;
   logic [2:0]             edge_k_q;
   logic                   edge_half_q;

@@ -140,9 +140,9 @@ TEST(RasterMul, NegatedProductsMatchExactProducts) {
   std::mt19937_64 rng(11);
   for (int i = 0; i < 2000; ++i) cases.emplace_back(random_a(rng), random_b(rng));
   int clocks = 0;
+  m.neg_i = 1;
   for (unsigned extra : {0u, 1u, 23u}) {
     for (const auto& [a, b] : cases) {
-      m.neg_i = 1;
       const htx::model::i128 p = -(static_cast<htx::model::i128>(a) * b);
       ASSERT_EQ(mul.product(a, b, &clocks, extra), static_cast<uint64_t>(p >> extra))
           << "-(" << a << " * " << b << ") >> " << extra;
