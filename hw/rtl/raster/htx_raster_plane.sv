@@ -44,7 +44,7 @@ module htx_raster_plane #(
 
   state_e state_q;
   logic signed [VB:0]   da1, da2;
-  logic signed [NW-1:0] nx_q, ny_q, nsel;
+  logic signed [NW-1:0] nx_q, nsel;
   logic [AccW-1:0]      gx_q, gy_q;
   logic [MA-1:0]        acc_q;
   logic [GW-1:0]        gxw_q, gyw_q;
@@ -67,7 +67,7 @@ module htx_raster_plane #(
   // the rounding); the combinational one takes n negated, one negation for both numerators.
   logic signed [NW-1:0] nxy;
   logic                 mul_neg;
-  assign nxy     = (state_q == StGx) ? nx_q : ny_q;
+  assign nxy     = (state_q == StGx) ? nx_q : NW'(acc_q);  // n_y stays in the accumulator
   assign nsel    = (det_neg_i && !Iterative) ? -nxy : nxy;
   // The second product of each numerator is negated too, so n = t + (-p) goes through the
   // accumulator's adder (no subtractor of its own).
@@ -122,7 +122,6 @@ module htx_raster_plane #(
     if (!rst_ni) begin
       state_q <= StIdle;
       nx_q    <= '0;
-      ny_q    <= '0;
       gx_q    <= '0;
       gy_q    <= '0;
       gxw_q   <= '0;
@@ -136,7 +135,7 @@ module htx_raster_plane #(
         StNx0: if (mul_done) begin acc_q <= acc_sum; state_q <= StNx1; end
         StNx1: if (mul_done) begin nx_q <= NW'(acc_sum); state_q <= StNy0; end
         StNy0: if (mul_done) begin acc_q <= acc_sum; state_q <= StNy1; end
-        StNy1: if (mul_done) begin ny_q <= NW'(acc_sum); state_q <= StWait; end
+        StNy1: if (mul_done) begin acc_q <= acc_sum; state_q <= StWait; end
         StWait: if (recip_valid_i) state_q <= StGx;
         StGx: if (mul_done) begin
           gx_q <= AccW'(rounded); gxw_q <= GW'(rounded); state_q <= StGy;
