@@ -147,10 +147,11 @@ module htx_raster_mul #(
     assign p_o      = prod_all >>> extra_i;
   end else if (!Iterative) begin : g_comb
     logic unused;
-    logic signed [PWidth-1:0] prod;
+    logic signed [PWidth-1:0] ab, prod;
     assign unused = ^{clk_i, rst_ni, abort_i};
     assign done_o = start_i;
-    assign prod   = neg_i ? -(PWidth'(a_i) * PWidth'(b_i)) : PWidth'(a_i) * PWidth'(b_i);
+    assign ab     = PWidth'(a_i) * PWidth'(b_i);
+    assign prod   = neg_i ? -ab : ab;
     assign p_o    = prod >>> extra_i;
   end else begin : g_iter
     // The textbook sequential signed multiplier: {h, l} starts as {0, b}; each clock adds a to h

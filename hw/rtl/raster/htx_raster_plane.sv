@@ -44,7 +44,7 @@ module htx_raster_plane #(
 
   state_e state_q;
   logic signed [VB:0]   da1, da2;
-  logic signed [NW-1:0] nx_q, nsel;
+  logic signed [NW-1:0] nx_q;
   logic [AccW-1:0]      gx_q, gy_q;
   logic [MA-1:0]        acc_q;
   logic [GW-1:0]        gxw_q, gyw_q;
@@ -62,17 +62,15 @@ module htx_raster_plane #(
   assign a2e = Signed ? $signed({a2_i[VB-1], a2_i}) : $signed({1'b0, a2_i});
   assign da1 = a1e - a0e;
   assign da2 = a2e - a0e;
-  // The numerator of this gradient, negated when setup swapped vertices 1 and 2. The iterative
-  // multiplier negates the product itself (mul_neg: the same n R, as the model's -n times R, before
-  // the rounding); the combinational one takes n negated, one negation for both numerators.
+  // The numerator of this gradient. When setup swapped vertices 1 and 2 the multiplier negates
+  // the product n R itself (neg_i: the model's -n times R, before the rounding), so n is never
+  // negated here. The second product of each numerator is negated the same way, so
+  // n = t + (-p) goes through the accumulator's adder (no subtractor of its own).
   logic signed [NW-1:0] nxy;
   logic                 mul_neg;
   assign nxy     = (state_q == StGx) ? nx_q : NW'(acc_q);  // n_y stays in the accumulator
-  assign nsel    = (det_neg_i && !Iterative) ? -nxy : nxy;
-  // The second product of each numerator is negated too, so n = t + (-p) goes through the
-  // accumulator's adder (no subtractor of its own).
   assign mul_neg = (state_q == StNx1) || (state_q == StNy1) ||
-                   (Iterative && det_neg_i && ((state_q == StGx) || (state_q == StGy)));
+                   (det_neg_i && ((state_q == StGx) || (state_q == StGy)));
 
   always_comb begin
     mul_a = '0;
@@ -82,7 +80,7 @@ module htx_raster_plane #(
       StNx1: begin mul_a = MA'(da2); mul_b = MB'(dy1_i); end
       StNy0: begin mul_a = MA'(da2); mul_b = MB'(dx1_i); end
       StNy1: begin mul_a = MA'(da1); mul_b = MB'(dx2_i); end
-      StGx, StGy: begin mul_a = MA'(nsel); mul_b = MB'($signed({1'b0, r_i})); end
+      StGx, StGy: begin mul_a = MA'(nxy); mul_b = MB'($signed({1'b0, r_i})); end
       StSx: begin mul_a = MA'($signed(gx_q)); mul_b = MB'(dxs_i); end
       StSy: begin mul_a = MA'($signed(gy_q)); mul_b = MB'(dys_i); end
       default: ;
