@@ -210,7 +210,7 @@ module htx_raster #(
     .XyIntBits(XyIntBits), .ZBits(ZBits), .GF(GF), .RecipW(RecipW), .RecipK(RecipK),
     .RecipG(RecipG), .NrSteps(SetupSteps), .Iterative(Iterative), .QBits(QBits),
     .UvIntBits(UvIntBits), .TF(TF), .GradW(GradW), .Methods(Methods), .PerspColor(PerspColor),
-    .Lod(TexLod || HasDf), .ExtRecip(SharedRecip), .AW(AW), .NP(NP)
+    .Lod(TexLod || HasDf), .ExtRecip(SharedRecip), .HoldRecord(Iterative), .AW(AW), .NP(NP)
   ) u_setup (
     .clk_i, .rst_ni,
     .abort_i        (abort),

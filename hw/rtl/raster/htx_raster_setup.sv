@@ -27,6 +27,11 @@ module htx_raster_setup #(
   // The reciprocals go to a unit outside (rq_*: the `icebreaker` divider's, shared) instead of a
   // unit of setup's own.
   parameter bit          ExtRecip  = 1'b0,
+  // Setup works on the input stage's registers, which hold the record until setup releases it
+  // (rec_ready_o), instead of on a copy of its own taken at the start. The input stage then
+  // assembles the next record only after the release (31 clocks a triangle, hidden whenever
+  // traversal or setup itself takes longer), and setup has no vertex registers.
+  parameter bit          HoldRecord = 1'b0,
   // Derived widths (docs/raster.md).
   parameter int unsigned UQ   = QBits + UvIntBits,            // uq, vq vertex values (signed)
   parameter int unsigned LocW = UvIntBits + TF,               // local texel coordinates (signed)
@@ -101,15 +106,15 @@ module htx_raster_setup #(
   typedef enum logic [2:0] {StIdle, StDet0, StDet1, StEdges, StWait, StOut} state_e;
 
   state_e state_q;
-  logic [31:0]            st_q;
-  logic signed [XW-1:0]   x_q [3];
-  logic signed [XW-1:0]   y_q [3];
-  logic [ZBits-1:0]       z_q [3];
-  logic [31:0]            rgba_q [3];
-  logic [QBits-1:0]       q_q [3];
-  logic [UQ-1:0]          uq_q [3];
-  logic [UQ-1:0]          vq_q [3];
-  logic [31:0]            u_off_q, v_off_q;
+  logic [31:0]            st_v;      // the record's values (HoldRecord: the input stage's)
+  logic signed [XW-1:0]   x_v [3];
+  logic signed [XW-1:0]   y_v [3];
+  logic [ZBits-1:0]       z_v [3];
+  logic [31:0]            rgba_v [3];
+  logic [QBits-1:0]       q_v [3];
+  logic [UQ-1:0]          uq_v [3];
+  logic [UQ-1:0]          vq_v [3];
+  logic [31:0]            u_off_v, v_off_v;
   logic signed [DetW-1:0] det_q;     // |det|, from StDet1 on (edge 1 starts from it)
   logic                   det_neg_q;
   logic [2:0]             edge_k_q;
@@ -120,7 +125,7 @@ module htx_raster_setup #(
   // ---- Accept and check the state word --------------------------------------------------------
   // A method this build leaves out, a subdivision length outside 2..64 or a depth function beyond
   // `always` is consumed, draws nothing and raises ERR_STATE.
-  logic take, state_bad, method_bad;
+  logic take, state_bad, method_bad, tri_skip;
   logic [2:0] rec_method;
   logic [6:0] rec_n;
   assign rec_method  = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
@@ -129,31 +134,76 @@ module htx_raster_setup #(
   assign method_bad  = (rec_method > 3'd4) || !Methods[rec_method] ||
                        ((rec_method == htx_raster_pkg::MethodSubdiv) && ((rec_n < 7'd2) || (rec_n > 7'd64))) ||
                        ((rec_method == htx_raster_pkg::MethodDivFree) && (rec_n > 7'd8));
-  assign rec_ready_o = (state_q == StIdle) && !hold_i;
-  assign take        = rec_valid_i && rec_ready_o;
+  // take: setup starts on a record. Without HoldRecord it copies the record and releases it at
+  // once; with it, it releases it when nothing reads it any more: a bad state word at once, a
+  // triangle that draws nothing after the determinant, any other when traversal takes it.
+  assign take        = rec_valid_i && (state_q == StIdle) && !hold_i;
+  assign rec_ready_o = HoldRecord ? ((take && state_bad) || tri_skip || ((state_q == StOut) && tri_ready_i))
+                                  : ((state_q == StIdle) && !hold_i);
   assign state_bad   = method_bad ||
                        (rec_state_i[htx_raster_reg_pkg::RASTER_STATE_DEPTH_FUNC_LSB +: 3] > 3'd5);
   assign taken_o     = take;
   assign err_o       = take && state_bad;
 
+  // ---- The record's values -------------------------------------------------------------------
+  if (HoldRecord) begin : g_rec_held
+    assign st_v    = rec_state_i;
+    assign u_off_v = rec_u_off_i;
+    assign v_off_v = rec_v_off_i;
+    for (genvar i = 0; i < 3; i++) begin : g_v
+      assign x_v[i]    = rec_x_i[XW*i +: XW];
+      assign y_v[i]    = rec_y_i[XW*i +: XW];
+      assign z_v[i]    = rec_z_i[ZBits*i +: ZBits];
+      assign rgba_v[i] = rec_rgba_i[32*i +: 32];
+      assign q_v[i]    = rec_q_i[QBits*i +: QBits];
+      assign uq_v[i]   = rec_uq_i[UQ*i +: UQ];
+      assign vq_v[i]   = rec_vq_i[UQ*i +: UQ];
+    end
+  end else begin : g_rec_copy
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        st_v    <= '0;
+        u_off_v <= '0;
+        v_off_v <= '0;
+        for (int i = 0; i < 3; i++) begin
+          x_v[i] <= '0; y_v[i] <= '0; z_v[i] <= '0; rgba_v[i] <= '0;
+          q_v[i] <= '0; uq_v[i] <= '0; vq_v[i] <= '0;
+        end
+      end else if (take && !state_bad && !abort_i) begin
+        st_v    <= rec_state_i;
+        u_off_v <= rec_u_off_i;
+        v_off_v <= rec_v_off_i;
+        for (int i = 0; i < 3; i++) begin
+          x_v[i]    <= rec_x_i[XW*i +: XW];
+          y_v[i]    <= rec_y_i[XW*i +: XW];
+          z_v[i]    <= rec_z_i[ZBits*i +: ZBits];
+          rgba_v[i] <= rec_rgba_i[32*i +: 32];
+          q_v[i]    <= rec_q_i[QBits*i +: QBits];
+          uq_v[i]   <= rec_uq_i[UQ*i +: UQ];
+          vq_v[i]   <= rec_vq_i[UQ*i +: UQ];
+        end
+      end
+    end
+  end
+
   // ---- Deltas, box -----------------------------------------------------------------------------
   logic signed [DW-1:0] dx1, dy1, dx2, dy2;
-  assign dx1 = DW'(x_q[1]) - DW'(x_q[0]);
-  assign dy1 = DW'(y_q[1]) - DW'(y_q[0]);
-  assign dx2 = DW'(x_q[2]) - DW'(x_q[0]);
-  assign dy2 = DW'(y_q[2]) - DW'(y_q[0]);
+  assign dx1 = DW'(x_v[1]) - DW'(x_v[0]);
+  assign dy1 = DW'(y_v[1]) - DW'(y_v[0]);
+  assign dx2 = DW'(x_v[2]) - DW'(x_v[0]);
+  assign dy2 = DW'(y_v[2]) - DW'(y_v[0]);
 
   logic signed [XW-1:0]   minx, maxx, miny, maxy;
   logic signed [BoxW-1:0] xl, xh, yl, yh;
   logic signed [BoxW-1:0] x_lo, x_hi, y_lo, y_hi;
   logic                   box_empty;
   always_comb begin
-    minx = x_q[0]; maxx = x_q[0]; miny = y_q[0]; maxy = y_q[0];
+    minx = x_v[0]; maxx = x_v[0]; miny = y_v[0]; maxy = y_v[0];
     for (int i = 1; i < 3; i++) begin
-      if (x_q[i] < minx) minx = x_q[i];
-      if (x_q[i] > maxx) maxx = x_q[i];
-      if (y_q[i] < miny) miny = y_q[i];
-      if (y_q[i] > maxy) maxy = y_q[i];
+      if (x_v[i] < minx) minx = x_v[i];
+      if (x_v[i] > maxx) maxx = x_v[i];
+      if (y_v[i] < miny) miny = y_v[i];
+      if (y_v[i] > maxy) maxy = y_v[i];
     end
     // Pixel centres 256 i + 128 inside [min, max]: ceil((min - 128) / 256) .. floor((max - 128) / 256).
     xl = BoxW'((XW'(minx) + XW'(127)) >>> 8);
@@ -172,18 +222,18 @@ module htx_raster_setup #(
   assign pxs = (DW'(x_lo) <<< 8) + DW'(128);
   assign pys = (DW'(y_lo) <<< 8) + DW'(128);
   logic signed [DW-1:0] dxs, dys;  // the first pixel centre relative to vertex 0
-  assign dxs = pxs - DW'(x_q[0]);
-  assign dys = pys - DW'(y_q[0]);
+  assign dxs = pxs - DW'(x_v[0]);
+  assign dys = pys - DW'(y_v[0]);
 
   // Vertices after the winding swap, for the edges.
   logic signed [XW-1:0] sx [3];
   logic signed [XW-1:0] sy [3];
-  assign sx[0] = x_q[0];
-  assign sy[0] = y_q[0];
-  assign sx[1] = det_neg_q ? x_q[2] : x_q[1];
-  assign sy[1] = det_neg_q ? y_q[2] : y_q[1];
-  assign sx[2] = det_neg_q ? x_q[1] : x_q[2];
-  assign sy[2] = det_neg_q ? y_q[1] : y_q[2];
+  assign sx[0] = x_v[0];
+  assign sy[0] = y_v[0];
+  assign sx[1] = det_neg_q ? x_v[2] : x_v[1];
+  assign sy[1] = det_neg_q ? y_v[2] : y_v[1];
+  assign sx[2] = det_neg_q ? x_v[1] : x_v[2];
+  assign sy[2] = det_neg_q ? y_v[1] : y_v[2];
 
   logic signed [DW-1:0] ea [3];
   logic signed [DW-1:0] eb [3];
@@ -265,10 +315,11 @@ module htx_raster_setup #(
   logic redo_q, det_again;
   assign det_again = DetRedo && !redo_q && det_next[DetW-1];
   assign det_abs   = (det_next[DetW-1] && !DetRedo) ? DetW'(-det_next) : DetW'(det_next);
+  assign tri_skip  = (state_q == StDet1) && emul_done && ((det_next == 0) || box_empty);
   assign det_start = (state_q == StDet1) && emul_done && (det_next != 0) && !box_empty && !det_again;
   assign recip_start = det_start || av_start;
-  assign recip_x = det_start ? det_abs : DetW'(q_q[av_i]);
-  assign planes_abort = abort_i || ((state_q == StDet1) && emul_done && ((det_next == 0) || box_empty));
+  assign recip_x = det_start ? det_abs : DetW'(q_v[av_i]);
+  assign planes_abort = abort_i || tri_skip;
   assign grad_shift = ShiftW'(RecipW) + ShiftW'(msbdet_q) - ShiftW'(GF);
 
   if (ExtRecip) begin : g_ext_recip
@@ -336,9 +387,9 @@ module htx_raster_setup #(
   for (genvar c = 0; c < 3; c++) begin : g_cv
     for (genvar i = 0; i < 3; i++) begin : g_v
       if (PerspColor) begin : g_cq
-        assign cv[3*c+i] = CB'(rgba_q[i][8*c +: 8]) * CB'(q_q[i]);  // c q: 8 x q_bits at setup
+        assign cv[3*c+i] = CB'(rgba_v[i][8*c +: 8]) * CB'(q_v[i]);  // c q: 8 x q_bits at setup
       end else begin : g_c
-        assign cv[3*c+i] = CB'(rgba_q[i][8*c +: 8]);
+        assign cv[3*c+i] = CB'(rgba_v[i][8*c +: 8]);
       end
     end
   end
@@ -360,13 +411,13 @@ module htx_raster_setup #(
   logic                unused_sv;
   assign unused_sv = ^sv;  // the parallel units take only their planes' low bits
   for (genvar i = 0; i < 3; i++) begin : g_sv
-    assign sv[VSW*(0+i) +: VSW] = VSW'(z_q[i]);
+    assign sv[VSW*(0+i) +: VSW] = VSW'(z_v[i]);
     for (genvar c = 0; c < 3; c++) begin : g_c
       assign sv[VSW*(3*(1+c)+i) +: VSW] = VSW'(cv[3*c+i]);
     end
-    assign sv[VSW*(12+i) +: VSW] = VSW'(q_q[i]);
-    assign sv[VSW*(15+i) +: VSW] = VSW'($signed(uq_q[i]));
-    assign sv[VSW*(18+i) +: VSW] = VSW'($signed(vq_q[i]));
+    assign sv[VSW*(12+i) +: VSW] = VSW'(q_v[i]);
+    assign sv[VSW*(15+i) +: VSW] = VSW'($signed(uq_v[i]));
+    assign sv[VSW*(18+i) +: VSW] = VSW'($signed(vq_v[i]));
     assign sv[VSW*(21+i) +: VSW] = VSW'($signed(ua_v[i]));
     assign sv[VSW*(24+i) +: VSW] = VSW'($signed(va_v[i]));
   end
@@ -620,7 +671,7 @@ module htx_raster_setup #(
     logic signed [UQ-1:0]        amul_a;
     logic signed [UQ+RecipW+1:0] amul_p, arnd;
     logic [AE-1:0]               amul_extra;
-    assign amul_a     = (av_q == AvMulU) ? $signed(uq_q[ai_q]) : $signed(vq_q[ai_q]);
+    assign amul_a     = (av_q == AvMulU) ? $signed(uq_v[ai_q]) : $signed(vq_v[ai_q]);
     assign amul_extra = AE'(RS - RecipW) + AE'(m_q);
     htx_raster_mul #(.AWidth(UQ), .BWidth(RecipW + 2), .Iterative(Iterative), .ExtraW(AE)) u_amul (
       .clk_i, .rst_ni, .abort_i(planes_abort),
@@ -688,13 +739,7 @@ module htx_raster_setup #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       state_q       <= StIdle;
-      st_q          <= '0;
-      for (int i = 0; i < 3; i++) begin
-        x_q[i] <= '0; y_q[i] <= '0; z_q[i] <= '0; rgba_q[i] <= '0; e_q[i] <= '0;
-        q_q[i] <= '0; uq_q[i] <= '0; vq_q[i] <= '0;
-      end
-      u_off_q       <= '0;
-      v_off_q       <= '0;
+      for (int i = 0; i < 3; i++) e_q[i] <= '0;
       rdet_q        <= '0;
       msbdet_q      <= '0;
       det_pend_q    <= 1'b0;
@@ -723,18 +768,6 @@ module htx_raster_setup #(
       end
       unique case (state_q)
         StIdle: if (take && !state_bad) begin
-          st_q <= rec_state_i;
-          for (int i = 0; i < 3; i++) begin
-            x_q[i]    <= rec_x_i[XW*i +: XW];
-            y_q[i]    <= rec_y_i[XW*i +: XW];
-            z_q[i]    <= rec_z_i[ZBits*i +: ZBits];
-            rgba_q[i] <= rec_rgba_i[32*i +: 32];
-            q_q[i]    <= rec_q_i[QBits*i +: QBits];
-            uq_q[i]   <= rec_uq_i[UQ*i +: UQ];
-            vq_q[i]   <= rec_vq_i[UQ*i +: UQ];
-          end
-          u_off_q  <= rec_u_off_i;
-          v_off_q  <= rec_v_off_i;
           affine_q <= HasAffine && (rec_method == htx_raster_pkg::MethodAffine);
           plane_start_q <= 1'b1;
           recip_valid_q <= 1'b0;
@@ -747,7 +780,7 @@ module htx_raster_setup #(
           det_neg_q <= redo_q || det_next[DetW-1];
           edge_k_q  <= '0;
           edge_half_q <= 1'b0;
-          if ((det_next == 0) || box_empty) state_q <= StIdle;
+          if (tri_skip) state_q <= StIdle;
           else if (det_again) begin redo_q <= 1'b1; state_q <= StDet0; end
           else state_q <= StEdges;
         end
@@ -774,8 +807,8 @@ module htx_raster_setup #(
   assign unused = ^{rec_state_i, plane_done[8:7]};
 
   assign tri_valid_o     = (state_q == StOut);
-  assign tri_state_o     = st_q;
-  assign tri_flat_rgba_o = rgba_q[0];  // vertex 0 is never reordered
+  assign tri_state_o     = st_v;
+  assign tri_flat_rgba_o = rgba_v[0];  // vertex 0 is never reordered
   assign tri_x_lo_o      = 13'(x_lo);
   assign tri_x_hi_o      = 13'(x_hi);
   assign tri_y_lo_o      = 13'(y_lo);
@@ -788,8 +821,8 @@ module htx_raster_setup #(
   for (genvar p = 0; p < NP; p++) begin : g_plane_out
     assign tri_p_o[3*AW*p +: 3*AW] = {pst[p], pgy[p], pgx[p]};
   end
-  assign tri_u_off_o = u_off_q;
-  assign tri_v_off_o = v_off_q;
+  assign tri_u_off_o = u_off_v;
+  assign tri_v_off_o = v_off_v;
   assign tri_thr_o = ethr;
   assign busy_o    = (state_q != StIdle) && (state_q != StOut);
   assign stall_o   = (state_q == StOut) && !tri_ready_i;
