@@ -328,7 +328,7 @@ module htx_raster #(
   logic [SideT-1:0]  sh_side;
   htx_raster_shade #(.ZBits(ZBits), .GF(GF), .NP(NP), .AW(AW), .SideW(SideT), .AccC(AccC),
                      .AccQ(AccQ), .AccU(AccU), .LocW(LocW), .PerspColor(PerspColor),
-                     .AddrW(AddrW)) u_shade (
+                     .AddrW(AddrW), .Registered(!Iterative)) u_shade (
     .clk_i, .rst_ni,
     .abort_i        (abort),
     .in_valid_i     (tv_valid),
