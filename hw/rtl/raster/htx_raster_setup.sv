@@ -198,13 +198,6 @@ module htx_raster_setup #(
   logic signed [BoxW-1:0] x_lo, x_hi, y_lo, y_hi;
   logic                   box_empty;
   always_comb begin
-    minx = x_v[0]; maxx = x_v[0]; miny = y_v[0]; maxy = y_v[0];
-    for (int i = 1; i < 3; i++) begin
-      if (x_v[i] < minx) minx = x_v[i];
-      if (x_v[i] > maxx) maxx = x_v[i];
-      if (y_v[i] < miny) miny = y_v[i];
-      if (y_v[i] > maxy) maxy = y_v[i];
-    end
     // Pixel centres 256 i + 128 inside [min, max]: ceil((min - 128) / 256) .. floor((max - 128) / 256).
     xl = BoxW'((XW'(minx) + XW'(127)) >>> 8);
     xh = BoxW'((XW'(maxx) - XW'(128)) >>> 8);
@@ -249,6 +242,31 @@ module htx_raster_setup #(
     // right a top edge; pixel centres exactly on them belong to this triangle (threshold 0).
     assign ethr[k] = !((ea[k] > 0) || ((ea[k] == 0) && (edx > 0)));
   end
+
+  // The box's bounds without comparators of their own: the edges' coefficients are the vertices'
+  // differences around the triangle, so their signs order the vertices (b_k = x_k1 - x_k and
+  // a_k = y_k - y_k1, in the swapped order; the minimum and maximum do not depend on the order).
+  // Vertex k is the least of three when it is not above its successor and below its predecessor;
+  // when none is (all equal) vertex 0 is.
+  function automatic logic [1:0] least(input logic [2:0] next_lt);  // bit k: v_k1 < v_k
+    if (!next_lt[1] && next_lt[0])      least = 2'd1;
+    else if (!next_lt[2] && next_lt[1]) least = 2'd2;
+    else                                least = 2'd0;
+  endfunction
+  logic [2:0] xs_lt, ys_gt;  // bit k: x_k1 < x_k; y_k1 > y_k (the order of -y)
+  logic [1:0] minx_sel, maxx_sel, miny_sel, maxy_sel;
+  for (genvar k = 0; k < 3; k++) begin : g_order
+    assign xs_lt[k] = eb[k][DW-1];
+    assign ys_gt[k] = ea[k][DW-1];
+  end
+  assign minx_sel = least(xs_lt);
+  assign maxx_sel = least(~xs_lt);
+  assign miny_sel = least(~ys_gt);
+  assign maxy_sel = least(ys_gt);
+  assign minx = (minx_sel == 2'd1) ? sx[1] : (minx_sel == 2'd2) ? sx[2] : sx[0];
+  assign maxx = (maxx_sel == 2'd1) ? sx[1] : (maxx_sel == 2'd2) ? sx[2] : sx[0];
+  assign miny = (miny_sel == 2'd1) ? sy[1] : (miny_sel == 2'd2) ? sy[2] : sy[0];
+  assign maxy = (maxy_sel == 2'd1) ? sy[1] : (maxy_sel == 2'd2) ? sy[2] : sy[0];
 
   // ---- Determinant and edge values: one multiplier, eight products ------------------------------
   logic                     emul_start, emul_done;

@@ -188,6 +188,47 @@ TEST(RasterRobust, DegenerateOffscreenAndHugeTriangles) {
   }
 }
 
+// Setup takes the box's bounds from the signs of the edge coefficients (no comparators): every
+// order of the vertices, with two of them sharing x or y or all three on a line, must give the
+// model's box. A box too small drops pixels, so the covered pixel counts and the frames are compared.
+TEST(RasterRobust, BoxHoldsInEveryVertexOrderAndTie) {
+  struct Shape {
+    double x[3], y[3];
+  };
+  const Shape shapes[] = {
+      {{4, 20, 4}, {4, 4, 18}},          // right angle: x0 = x2, y0 = y1
+      {{4, 20, 12}, {4, 4, 18.5}},       // flat top: y0 = y1
+      {{4, 20, 12}, {18, 18, 3.5}},      // flat bottom
+      {{5.5, 5.5, 19}, {3, 17, 10.25}},  // vertical left edge: x0 = x1
+      {{3, 21, 11}, {6, 9, 16}},         // no ties
+      {{6, 6, 6}, {3, 9, 15}},           // all on one vertical line: nothing drawn
+  };
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  ScreenScene s;
+  s.width = 6 * 24;
+  s.height = 6 * 22;
+  s.clear_color = 0x0841;
+  s.clear_depth = 0xFFFFFFFFu;
+  for (int si = 0; si < 6; ++si) {
+    for (int pi = 0; pi < 6; ++pi) {
+      const Shape& sh = shapes[si];
+      const int* p = perms[pi];
+      const double ox = 24.0 * pi, oy = 22.0 * si;  // each in a cell of its own
+      s.tris.push_back(tri(ox + sh.x[p[0]], oy + sh.y[p[0]], ox + sh.x[p[1]], oy + sh.y[p[1]],
+                           ox + sh.x[p[2]], oy + sh.y[p[2]]));
+    }
+  }
+  for (const char* name : {"full", "icebreaker"}) {
+    const ModelConfig cfg = rtl_config(name);
+    RtlStats st;
+    const Frame r = render_rtl(s, cfg, &st);
+    const Frame m = render_model(s, cfg);
+    EXPECT_GT(m.counters.fragments, 0u);
+    EXPECT_EQ(st.covered_pixels, m.counters.fragments) << name;
+    EXPECT_EQ(frame_mismatch_pixels(r, m), 0u) << name;
+  }
+}
+
 TEST(RasterRobust, TinyTriangleSetupThroughput) {
   ScreenScene s;
   s.width = 64;
