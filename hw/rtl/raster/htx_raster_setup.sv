@@ -297,7 +297,7 @@ module htx_raster_setup #(
     .start_i(emul_start),
     .a_i    (emul_a),
     .b_i    (emul_b),
-    .neg_i  (redo_q ? (state_q == StDet0) : (state_q == StDet1)),
+    .neg_i  ((state_q == StEdges) ? ethr[ek] : redo_q ? (state_q == StDet0) : (state_q == StDet1)),
     .extra_i(1'b0),
     .done_o (emul_done),
     .p_o    (emul_p)
@@ -314,7 +314,14 @@ module htx_raster_setup #(
       part_base = part_q;
     end
   end
-  assign part_sum = part_base + EW'(emul_p);
+  // An edge whose threshold is 1 goes to traversal negated (-E: its coverage test is then a sign,
+  // docs/raster.md): both products negated (neg_i) and |det| subtracted.
+  htx_raster_addsub #(.W(EW)) u_part (
+    .a_i  (EW'(emul_p)),
+    .b_i  (part_base),
+    .sub_i((state_q == StEdges) && !edge_half_q && ethr[ek]),
+    .sum_o(part_sum)
+  );
   assign det_next = DetW'(part_sum);
 
   // ---- Reciprocals: 1/|det|, then (AFFINE) 1/q_i of each vertex -------------------------------

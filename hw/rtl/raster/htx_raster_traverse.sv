@@ -92,9 +92,11 @@ module htx_raster_traverse #(
   logic signed [EW-1:0] step_a [3];
   logic signed [EW-1:0] step_b [3];
   logic [2:0] in_cur, in_prev_e, in_next_e, fail_pos, fail_neg, fail_zero;
-  // An edge value covers its pixel: E >= 0, and E > 0 where the edge's threshold is 1.
+  // An edge value covers its pixel: E >= 0, and E > 0 where the edge's threshold is 1. Setup
+  // delivers an edge whose threshold is 1 negated (-E; its steps subtract), so both tests are a
+  // sign: E >= 0 is a clear sign bit of E, E >= 1 a set sign bit of -E. No comparison with zero.
   function automatic logic covers(input logic signed [EW-1:0] e, input logic thr);
-    covers = !e[EW-1] && (!thr || (e != '0));
+    covers = (e[EW-1] == thr);
   endfunction
   for (genvar k = 0; k < 3; k++) begin : g_cov
     assign step_a[k] = EW'(a_q[k]) <<< 8;
@@ -105,12 +107,12 @@ module htx_raster_traverse #(
       assign in_next_e[k] = la_q[k];
     end else begin : g_next_add
       logic signed [EW-1:0] en;
-      assign en = e_q[k] + step_a[k];
+      assign en = thr_q[k] ? e_q[k] - step_a[k] : e_q[k] + step_a[k];
       assign in_next_e[k] = covers(en, thr_q[k]);
     end
     if (LookBehind) begin : g_prev
       logic signed [EW-1:0] ep;
-      assign ep = e_q[k] - step_a[k];
+      assign ep = thr_q[k] ? e_q[k] + step_a[k] : e_q[k] - step_a[k];
       assign in_prev_e[k] = covers(ep, thr_q[k]);
     end else begin : g_no_prev
       assign in_prev_e[k] = 1'b0;
@@ -213,7 +215,7 @@ module htx_raster_traverse #(
     htx_raster_addsub #(.W(EW)) u_step (
       .a_i  (step_saved ? es_q[k] : e_q[k]),
       .b_i  (step_row ? step_b[k] : step_a[k]),
-      .sub_i(step_neg),
+      .sub_i(step_neg ^ thr_q[k]),  // a negated edge steps the other way
       .sum_o(e_next[k])
     );
   end
