@@ -2,7 +2,8 @@
 # BUILD/reports/synth.json, one object per design with lut4, dsp, ebr, spram (cells after Debian
 # Yosys `synth_ice40 -dsp`) and fmax_mhz (nextpnr-ice40 --up5k). Not part of the default build or
 # the tests: place-and-route takes minutes. `--target synth-breakdown-NAME` counts design NAME's
-# cells per module instead (BUILD/reports/synth/NAME.modules.txt).
+# cells per module instead (BUILD/reports/synth/NAME.modules.txt), `--target
+# synth-attribution-NAME` the flattened design's cells by signal scope (NAME.attribution.txt).
 #
 # HTX_SYNTH_DESIGNS lists the designs. For each design NAME:
 #   HTX_SYNTH_<NAME>_AREA_TOP  top whose cells are counted (registered with htx_rtl_top)
@@ -19,6 +20,7 @@ set(HTX_SYNTH_soc_up5k_AREA_TOP htx_soc_synth_top)
 
 find_program(HTX_NEXTPNR_ICE40 nextpnr-ice40)
 set(HTX_SYNTH_DIR ${CMAKE_BINARY_DIR}/reports/synth)
+set(HTX_SYNTH_ATTRIB_DEPTH 7 CACHE STRING "scope parts in the synth-attribution tables")
 set(outputs)
 foreach(d IN LISTS HTX_SYNTH_DESIGNS)
   set(area_top ${HTX_SYNTH_${d}_AREA_TOP})
@@ -57,6 +59,17 @@ foreach(d IN LISTS HTX_SYNTH_DESIGNS)
       -P ${CMAKE_SOURCE_DIR}/cmake/HtxSynthBreakdown.cmake
     DEPENDS htx_regs_sv
     COMMENT "synth-breakdown: ${d} (yosys synth_ice40 -noflatten, by module)"
+    VERBATIM)
+  # The same area top flattened, by signal scope (docs/area.md): `--target synth-attribution-NAME`;
+  # HTX_SYNTH_ATTRIB_DEPTH scope parts deep.
+  add_custom_target(synth-attribution-${d}
+    COMMAND ${CMAKE_COMMAND} -DNAME=${d} -DTOP=${area_top} "-DSOURCES=${area_src_arg}"
+      -DWORK=${HTX_SYNTH_DIR} -DYOSYS=${HTX_YOSYS_BIN} "-DYOSYS_DEFINES=${HTX_YOSYS_DEFINES}"
+      -DTOOL=$<TARGET_FILE:htx-synth-attrib> -DDEPTH=${HTX_SYNTH_ATTRIB_DEPTH}
+      -DOUT=${HTX_SYNTH_DIR}/${d}.attribution.txt
+      -P ${CMAKE_SOURCE_DIR}/cmake/HtxSynthAttribution.cmake
+    DEPENDS htx_regs_sv htx-synth-attrib
+    COMMENT "synth-attribution: ${d} (yosys synth_ice40, flattened, by signal scope)"
     VERBATIM)
 endforeach()
 

@@ -1,0 +1,196 @@
+// htx-synth-attrib's attribution: where a flattened iCE40 netlist's area goes. Counting per module needs an
+// unflattened synthesis, which cannot trim a module to what each instance uses and so misleads
+// (docs/area.md); this reads Yosys's JSON netlist of the flattened design instead. Every
+// flip-flop belongs to the scope of its register (the hierarchical name without its last part); every SB_LUT4 and SB_CARRY to the scope of the first named signal found by following
+// its output forward (LUTs that ABC made out of several signals name none themselves). A signal
+// named in several scopes counts where it is made (see better()). Scopes are cut to --depth parts
+// below the common prefix and summed. The split is a heuristic; the total is exact.
+#include "attrib.hpp"
+
+#include <algorithm>
+#include <map>
+#include <unordered_map>
+#include <vector>
+
+namespace htx::synth {
+
+namespace {
+
+// The scope of a net name: the part before any "$" (Yosys appends "$func$FILE:LINE..." whose file
+// name holds dots), without its last dotted part.
+std::string scope_of(const std::string& name) {
+  std::string s = name.substr(0, name.find('$'));
+  const size_t dot = s.rfind('.');
+  return dot == std::string::npos ? std::string() : s.substr(0, dot);
+}
+
+std::string cut(const std::string& scope, size_t skip, int depth) {
+  std::string s = scope.size() > skip ? scope.substr(skip) : std::string();
+  size_t pos = 0;
+  for (int i = 0; i < depth; ++i) {
+    pos = s.find('.', pos);
+    if (pos == std::string::npos) return s;
+    ++pos;
+  }
+  return s.substr(0, pos - 1);
+}
+
+size_t depth_of(const std::string& name) {
+  const std::string s = name.substr(0, name.find('$'));
+  return static_cast<size_t>(std::count(s.begin(), s.end(), '.'));
+}
+
+// lowRISC port names: an input port ("_i") is the consumer's alias of a signal made elsewhere;
+// an output port ("_o") is usually made in its module but may only pass a signal through.
+bool is_port(const std::string& name, char dir) {
+  const std::string s = name.substr(0, name.find('$'));
+  return s.size() >= 2 && s[s.size() - 2] == '_' && s.back() == dir;
+}
+
+// Of two names of one bit, whether a is the better place to count it: not an input port; then
+// the deepest (a bit has a name in every scope it passes through, and is made in the deepest);
+// then not an output port (a pass-through's output and its source are equally deep); then the
+// shorter.
+bool better(const std::string& a, const std::string& b) {
+  if (is_port(a, 'i') != is_port(b, 'i')) return !is_port(a, 'i');
+  const size_t da = depth_of(a), db = depth_of(b);
+  if (da != db) return da > db;
+  if (is_port(a, 'o') != is_port(b, 'o')) return !is_port(a, 'o');
+  return a.size() < b.size();
+}
+
+class Netlist {
+ public:
+  explicit Netlist(const Json& module) : module_(module) {
+    for (const auto& [name, net] : module["netnames"].items()) {
+      if (net.value("hide_name", 0) != 0) continue;
+      for (const Json& bit : net["bits"]) {
+        if (!bit.is_number_integer()) continue;
+        auto [it, fresh] = name_of_bit_.emplace(bit.get<long>(), name);
+        if (!fresh && better(name, it->second)) it->second = name;
+      }
+    }
+    for (const auto& [cell, body] : module["cells"].items()) {
+      const Json& dirs = body.value("port_directions", Json::object());
+      for (const auto& [port, bits] : body["connections"].items()) {
+        const bool out = dirs.value(port, std::string("input")) == "output";
+        for (const Json& bit : bits) {
+          if (!bit.is_number_integer()) continue;
+          if (!out) sinks_[bit.get<long>()].push_back(cell);
+        }
+      }
+    }
+  }
+
+  // The scope a cell's area belongs to ("" when no named signal is reachable).
+  std::string owner(const std::string& cell) {
+    auto memo = owner_.find(cell);
+    if (memo != owner_.end()) return memo->second;
+    owner_[cell] = "";  // breaks cycles through flip-flop-free loops
+    const Json& body = module_["cells"][cell];
+    const std::string type = body["type"];
+    std::string result;
+    const char* out_port = type == "SB_LUT4" ? "O" : type == "SB_CARRY" ? "CO" : nullptr;
+    if (type.rfind("SB_DFF", 0) == 0) {
+      // Yosys names a flip-flop after its register ("..._q_SB_DFFER_Q_3"), which is better than
+      // any alias of the Q net; a generated name ("$auto$...") falls back to the net.
+      const size_t cut_at = cell.find("_SB_DFF");
+      result = (cell[0] != '$' && cut_at != std::string::npos) ? cell.substr(0, cut_at)
+                                                                : named(body["connections"]["Q"][0]);
+    } else if (out_port != nullptr) {
+      const Json& bit = body["connections"][out_port][0];
+      result = named(bit);
+      if (result.empty() && bit.is_number_integer()) {
+        auto s = sinks_.find(bit.get<long>());
+        if (s != sinks_.end()) {
+          for (const std::string& next : s->second) {
+            result = owner(next);
+            if (!result.empty()) break;
+          }
+        }
+      }
+    }
+    owner_[cell] = result;
+    return result;
+  }
+
+ private:
+  std::string named(const Json& bit) const {
+    if (!bit.is_number_integer()) return "";
+    auto it = name_of_bit_.find(bit.get<long>());
+    return it == name_of_bit_.end() ? "" : it->second;
+  }
+
+  const Json& module_;
+  std::unordered_map<long, std::string> name_of_bit_;
+  std::unordered_map<long, std::vector<std::string>> sinks_;
+  std::unordered_map<std::string, std::string> owner_;
+};
+
+}  // namespace
+
+std::string attribute(const Json& module, const std::string& top, int depth) {
+  Netlist net(module);
+
+  // (scope, type); the top module's own signals have the scope "(top)", cells that reach no
+  // named signal "(unnamed)".
+  std::vector<std::pair<std::string, std::string>> cells;
+  bool any_top = false;
+  for (const auto& [cell, body] : module["cells"].items()) {
+    const std::string type = body["type"];
+    if (type == "SB_LUT4" || type == "SB_CARRY" || type.rfind("SB_DFF", 0) == 0) {
+      const std::string name = net.owner(cell);
+      std::string scope = name.empty() ? "(unnamed)" : scope_of(name);
+      if (scope.empty()) {
+        scope = "(top)";
+        any_top = true;
+      }
+      cells.emplace_back(scope, type);
+    }
+  }
+  // The common prefix of the named scopes (whole parts), left out of the table.
+  std::string prefix;
+  bool first = true;
+  for (const auto& [scope, type] : cells) {
+    if (any_top) break;  // the table starts at the top
+    if (scope == "(unnamed)") continue;
+    const std::string dotted = scope + ".";
+    if (first) {
+      prefix = dotted;
+      first = false;
+    }
+    size_t n = 0;
+    while (n < prefix.size() && n < dotted.size() && prefix[n] == dotted[n]) ++n;
+    prefix.resize(prefix.rfind('.', n == 0 ? 0 : n - 1) == std::string::npos ? 0 : prefix.rfind('.', n - 1) + 1);
+  }
+  std::map<std::string, Counts> by_scope;
+  Counts total;
+  for (const auto& [scope, type] : cells) {
+    Counts& c = by_scope[scope.front() == '(' ? scope : cut(scope, prefix.size(), depth)];
+    if (type == "SB_LUT4") {
+      ++c.lut4;
+      ++total.lut4;
+    } else if (type == "SB_CARRY") {
+      ++c.carry;
+      ++total.carry;
+    } else {
+      ++c.ff;
+      ++total.ff;
+    }
+  }
+  std::vector<std::pair<std::string, Counts>> rows(by_scope.begin(), by_scope.end());
+  std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) {
+    return a.second.lut4 != b.second.lut4 ? a.second.lut4 > b.second.lut4 : a.first < b.first;
+  });
+  std::string table = "scope (below " + (prefix.empty() ? top : prefix.substr(0, prefix.size() - 1)) +
+                      ") | SB_LUT4 | SB_CARRY | flip-flops\n";
+  for (const auto& [scope, c] : rows) {
+    table += scope + " | " + std::to_string(c.lut4) + " | " + std::to_string(c.carry) + " | " +
+             std::to_string(c.ff) + "\n";
+  }
+  table += "total | " + std::to_string(total.lut4) + " | " + std::to_string(total.carry) + " | " +
+           std::to_string(total.ff) + "\n";
+  return table;
+}
+
+}  // namespace htx::synth
