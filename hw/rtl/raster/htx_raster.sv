@@ -186,6 +186,7 @@ module htx_raster #(
   logic [12:0]        tri_x_lo, tri_x_hi, tri_y_lo, tri_y_hi;
   logic [3*DW-1:0]    tri_a, tri_b;
   logic [2:0]         tri_thr;
+  logic               tri_dneg;
   logic [3*EW-1:0]    tri_e;
   logic [3*NP*AW-1:0] tri_p;
   logic               pl_we;
@@ -240,6 +241,7 @@ module htx_raster #(
     .tri_a_o        (tri_a),
     .tri_b_o        (tri_b),
     .tri_thr_o      (tri_thr),
+    .tri_dneg_o     (tri_dneg),
     .tri_e_o        (tri_e),
     .tri_p_o        (tri_p),
     .pl_we_o        (pl_we),
@@ -295,6 +297,7 @@ module htx_raster #(
     .tri_a_i         (tri_a),
     .tri_b_i         (tri_b),
     .tri_thr_i       (tri_thr),
+    .tri_dneg_i      (tri_dneg),
     .tri_e_i         (tri_e),
     .tri_p_i         (tri_p),
     .pl_we_i         (pl_we),

@@ -1,5 +1,5 @@
-// Triangle setup (docs/model.md §2, docs/raster.md): determinant, winding (a negative determinant
-// swaps vertices 1 and 2: both windings are drawn), edge functions with the top-left rule, the pixel
+// Triangle setup (docs/model.md §2, docs/raster.md): determinant, winding (the model swaps vertices
+// 1 and 2 for a negative determinant: both windings are drawn), edge functions with the top-left rule, the pixel
 // box clipped to the screen, 1/det from the shared reciprocal unit, and the planes of z, the colour
 // channels (c q with PerspColor), q, uq, vq and, for AFFINE, the vertex texel coordinates
 // u_i = uq_i / q_i (three more reciprocals from the same unit, docs/model.md §5.1), and the LOD
@@ -72,7 +72,8 @@ module htx_raster_setup #(
   output logic [31:0]          tri_flat_rgba_o,
   output logic [12:0]          tri_x_lo_o, tri_x_hi_o, tri_y_lo_o, tri_y_hi_o,
   output logic [3*DW-1:0]      tri_a_o, tri_b_o,
-  output logic [2:0]           tri_thr_o,
+  output logic [2:0]           tri_thr_o,     // of the edges as given (see tri_dneg_o)
+  output logic                 tri_dneg_o,    // det < 0: the model's edges are these reversed
   output logic [3*EW-1:0]      tri_e_o,
   output logic [3*NP*AW-1:0]   tri_p_o,       // plane p at 3 AW p: {start, gy, gx}, mod 2^AW
   // Iterative: the planes go instead (tri_p_o is zero) to the traversal's plane RAM, one word a
@@ -218,25 +219,20 @@ module htx_raster_setup #(
   assign dxs = pxs - DW'(x_v[0]);
   assign dys = pys - DW'(y_v[0]);
 
-  // Vertices after the winding swap, for the edges.
-  logic signed [XW-1:0] sx [3];
-  logic signed [XW-1:0] sy [3];
-  assign sx[0] = x_v[0];
-  assign sy[0] = y_v[0];
-  assign sx[1] = det_neg_q ? x_v[2] : x_v[1];
-  assign sy[1] = det_neg_q ? y_v[2] : y_v[1];
-  assign sx[2] = det_neg_q ? x_v[1] : x_v[2];
-  assign sy[2] = det_neg_q ? y_v[1] : y_v[2];
-
+  // The edges of the triangle as given, in the order v0 v1, v1 v2, v2 v0. The model swaps v1 and v2
+  // when det < 0, which reverses every edge: E' = -E and, the top-left rule being antisymmetric,
+  // threshold' = 1 - threshold (an edge of zero length has det = 0 and is never drawn). Traversal
+  // takes the winding (tri_dneg_o) and tests the reversed edges from these (docs/raster.md), so
+  // setup swaps nothing: no vertex multiplexers.
   logic signed [DW-1:0] ea [3];
   logic signed [DW-1:0] eb [3];
   logic [2:0]           ethr;
   for (genvar k = 0; k < 3; k++) begin : g_edge
     localparam int unsigned K1 = (k + 1) % 3;
     logic signed [DW-1:0] edx;
-    assign edx = DW'(sx[K1]) - DW'(sx[k]);
+    assign edx = DW'(x_v[K1]) - DW'(x_v[k]);
     // a = -(y_k1 - y_k), formed as y_k - y_k1: one subtractor, not a subtractor and a negation.
-    assign ea[k] = DW'(sy[k]) - DW'(sy[K1]);
+    assign ea[k] = DW'(y_v[k]) - DW'(y_v[K1]);
     assign eb[k] = edx;
     // y points down and inside is E > 0: an edge going up is a left edge, a horizontal edge going
     // right a top edge; pixel centres exactly on them belong to this triangle (threshold 0).
@@ -245,7 +241,7 @@ module htx_raster_setup #(
 
   // The box's bounds without comparators of their own: the edges' coefficients are the vertices'
   // differences around the triangle, so their signs order the vertices (b_k = x_k1 - x_k and
-  // a_k = y_k - y_k1, in the swapped order; the minimum and maximum do not depend on the order).
+  // a_k = y_k - y_k1).
   // Vertex k is the least of three when it is not above its successor and below its predecessor;
   // when none is (all equal) vertex 0 is.
   function automatic logic [1:0] least(input logic [2:0] next_lt);  // bit k: v_k1 < v_k
@@ -263,10 +259,10 @@ module htx_raster_setup #(
   assign maxx_sel = least(~xs_lt);
   assign miny_sel = least(~ys_gt);
   assign maxy_sel = least(ys_gt);
-  assign minx = (minx_sel == 2'd1) ? sx[1] : (minx_sel == 2'd2) ? sx[2] : sx[0];
-  assign maxx = (maxx_sel == 2'd1) ? sx[1] : (maxx_sel == 2'd2) ? sx[2] : sx[0];
-  assign miny = (miny_sel == 2'd1) ? sy[1] : (miny_sel == 2'd2) ? sy[2] : sy[0];
-  assign maxy = (maxy_sel == 2'd1) ? sy[1] : (maxy_sel == 2'd2) ? sy[2] : sy[0];
+  assign minx = (minx_sel == 2'd1) ? x_v[1] : (minx_sel == 2'd2) ? x_v[2] : x_v[0];
+  assign maxx = (maxx_sel == 2'd1) ? x_v[1] : (maxx_sel == 2'd2) ? x_v[2] : x_v[0];
+  assign miny = (miny_sel == 2'd1) ? y_v[1] : (miny_sel == 2'd2) ? y_v[2] : y_v[0];
+  assign maxy = (maxy_sel == 2'd1) ? y_v[1] : (maxy_sel == 2'd2) ? y_v[2] : y_v[0];
 
   // ---- Determinant and edge values: one multiplier, eight products ------------------------------
   logic                     emul_start, emul_done;
@@ -281,7 +277,7 @@ module htx_raster_setup #(
       StDet0: begin emul_a = dx1; emul_b = dy2; end
       StDet1: begin emul_a = dx2; emul_b = dy1; end
       // E_k = a_k (px - x_k) + b_k (py - y_k) = a_k dxs + b_k dys + E_k(v0), exactly, and E_k(v0)
-      // is 0 for the two edges through vertex 0 and |det| for edge 1 (the first product is added
+      // is 0 for the two edges through vertex 0 and det for edge 1 (the first product is added
       // to it): every edge multiplies the deltas that the planes use, no per-edge subtraction.
       StEdges: begin
         if (!edge_half_q) begin emul_a = ea[ek]; emul_b = dxs; end
@@ -315,11 +311,12 @@ module htx_raster_setup #(
     end
   end
   // An edge whose threshold is 1 goes to traversal negated (-E: its coverage test is then a sign,
-  // docs/raster.md): both products negated (neg_i) and |det| subtracted.
+  // docs/raster.md): both products negated (neg_i). Edge 1's value at v0 is det itself, |det| or
+  // -|det|: added or subtracted by the sign of det and the negation.
   htx_raster_addsub #(.W(EW)) u_part (
     .a_i  (EW'(emul_p)),
     .b_i  (part_base),
-    .sub_i((state_q == StEdges) && !edge_half_q && ethr[ek]),
+    .sub_i((state_q == StEdges) && !edge_half_q && (ethr[ek] ^ det_neg_q)),
     .sum_o(part_sum)
   );
   assign det_next = DetW'(part_sum);
@@ -849,6 +846,7 @@ module htx_raster_setup #(
   assign tri_u_off_o = u_off_v;
   assign tri_v_off_o = v_off_v;
   assign tri_thr_o = ethr;
+  assign tri_dneg_o = det_neg_q;
   assign busy_o    = (state_q != StIdle) && (state_q != StOut);
   assign stall_o   = (state_q == StOut) && !tri_ready_i;
 endmodule

@@ -38,6 +38,7 @@ module htx_raster_traverse #(
   input  logic [12:0]       tri_x_lo_i, tri_x_hi_i, tri_y_lo_i, tri_y_hi_i,
   input  logic [3*DW-1:0]   tri_a_i, tri_b_i,
   input  logic [2:0]        tri_thr_i,
+  input  logic              tri_dneg_i,  // det < 0: the edges are to be taken reversed
   input  logic [3*EW-1:0]   tri_e_i,
   input  logic [3*NP*AW-1:0] tri_p_i,
   // SerialPlanes: the planes come instead through this write port into the plane RAM (setup's
@@ -77,6 +78,7 @@ module htx_raster_traverse #(
   logic [12:0]             base_y_q;   // SerialRowBase: y_lo's bits not yet taken, MSB first
   logic [3:0]              base_n_q;   // SerialRowBase: bits left
   logic [2:0]              thr_q;
+  logic                    dneg_q;
   logic signed [DW-1:0]    a_q [3];
   logic signed [DW-1:0]    b_q [3];
   logic signed [EW-1:0]    e_q [3];
@@ -95,30 +97,36 @@ module htx_raster_traverse #(
   // An edge value covers its pixel: E >= 0, and E > 0 where the edge's threshold is 1. Setup
   // delivers an edge whose threshold is 1 negated (-E; its steps subtract), so both tests are a
   // sign: E >= 0 is a clear sign bit of E, E >= 1 a set sign bit of -E. No comparison with zero.
-  function automatic logic covers(input logic signed [EW-1:0] e, input logic thr);
-    covers = (e[EW-1] == thr);
+  // A triangle with det < 0 comes with its edges as given, where the model reverses them
+  // (E' = -E, threshold' = 1 - threshold): the stored value is then the same and only the sign
+  // tested flips (pol).
+  function automatic logic covers(input logic signed [EW-1:0] e, input logic pol);
+    covers = (e[EW-1] == pol);
   endfunction
+  logic [2:0] pol;
+  assign pol = thr_q ^ {3{dneg_q}};
   for (genvar k = 0; k < 3; k++) begin : g_cov
     assign step_a[k] = EW'(a_q[k]) <<< 8;
     assign step_b[k] = EW'(b_q[k]) <<< 8;
-    assign in_cur[k]    = covers(e_q[k], thr_q[k]);
+    assign in_cur[k]    = covers(e_q[k], pol[k]);
     if (SerialPlanes) begin : g_next_la
       // Registered: the edge's step adder computes e + 256 a in a clock without a step (below).
       assign in_next_e[k] = la_q[k];
     end else begin : g_next_add
       logic signed [EW-1:0] en;
       assign en = thr_q[k] ? e_q[k] - step_a[k] : e_q[k] + step_a[k];
-      assign in_next_e[k] = covers(en, thr_q[k]);
+      assign in_next_e[k] = covers(en, pol[k]);
     end
     if (LookBehind) begin : g_prev
       logic signed [EW-1:0] ep;
       assign ep = thr_q[k] ? e_q[k] + step_a[k] : e_q[k] - step_a[k];
-      assign in_prev_e[k] = covers(ep, thr_q[k]);
+      assign in_prev_e[k] = covers(ep, pol[k]);
     end else begin : g_no_prev
       assign in_prev_e[k] = 1'b0;
     end
-    assign fail_pos[k]  = !in_cur[k] && (a_q[k] > 0);
-    assign fail_neg[k]  = !in_cur[k] && (a_q[k] < 0);
+    // Coverage grows to the right where a > 0 (a < 0 for a reversed edge).
+    assign fail_pos[k]  = !in_cur[k] && (dneg_q ? (a_q[k] < 0) : (a_q[k] > 0));
+    assign fail_neg[k]  = !in_cur[k] && (dneg_q ? (a_q[k] > 0) : (a_q[k] < 0));
     assign fail_zero[k] = !in_cur[k] && (a_q[k] == 0);
   end
 
@@ -231,7 +239,7 @@ module htx_raster_traverse #(
   if (SerialPlanes) begin : g_lookahead
     logic [2:0] la_d;
     for (genvar k = 0; k < 3; k++) begin : g_la
-      assign la_d[k] = covers(e_next[k], thr_q[k]);
+      assign la_d[k] = covers(e_next[k], pol[k]);
     end
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -267,6 +275,7 @@ module htx_raster_traverse #(
       base_y_q   <= '0;
       base_n_q   <= '0;
       thr_q      <= '0;
+      dneg_q     <= 1'b0;
       for (int k = 0; k < 3; k++) begin
         a_q[k] <= '0; b_q[k] <= '0; e_q[k] <= '0; es_q[k] <= '0;
       end
@@ -291,6 +300,7 @@ module htx_raster_traverse #(
           row_base_q <= AddrW'(tri_y_lo_i) * AddrW'(stride_i);
         end
         thr_q      <= tri_thr_i;
+        dneg_q     <= tri_dneg_i;
         for (int k = 0; k < 3; k++) begin
           a_q[k] <= tri_a_i[DW*k +: DW];
           b_q[k] <= tri_b_i[DW*k +: DW];
