@@ -66,7 +66,7 @@ module htx_raster_traverse #(
 
   // StBack (LookBehind = 0): walking left over covered pixels to the first one of the span.
   // StBase (SerialRowBase = 1): forming y_lo * stride before the first row.
-  // StLoad (SerialPlanes = 1): writing the planes' start values into the RAM, one a clock; the
+  // StLoad (SerialPlanes = 1): copying the planes' gradients out of the RAM, one a clock; the
   // triangle is taken in its last clock.
   typedef enum logic [2:0] {StIdle, StSeek, StSeekL, StSeekR, StEmit, StBack, StBase, StLoad} state_e;
 
@@ -87,7 +87,7 @@ module htx_raster_traverse #(
   logic                    hold;      // SerialPlanes: setup writes the plane RAM; nothing moves
   logic [2:0]              la_q;      // SerialPlanes: coverage of x + 1 by each edge
   logic                    la_valid_q;  // SerialPlanes: la_q is for the current e_q
-  logic                    load_last; // SerialPlanes: StLoad writes the last plane
+  logic                    load_last; // SerialPlanes: StLoad copies the last gradient
   logic                    accept;    // the triangle is taken this clock
 
   // ---- Coverage at x - 1, x, x + 1 ---------------------------------------------------------------
@@ -282,7 +282,7 @@ module htx_raster_traverse #(
     end else if (abort_i) begin
       state_q <= StIdle;
     end else if ((state_q == StIdle) || (state_q == StLoad)) begin
-      // SerialPlanes: the start values go into the RAM first (StLoad), after the last step's planes.
+      // SerialPlanes: the gradients come out of the RAM first (StLoad), after the last step's planes.
       if (SerialPlanes && (state_q == StIdle) && tri_valid_i && !sweep_q) state_q <= StLoad;
       if (accept) begin
         tnew_q     <= 1'b1;
@@ -394,9 +394,11 @@ module htx_raster_traverse #(
     assign unused_pl = ^{pl_we_i, pl_sel_i, pl_idx_i, pl_data_i};
   end else begin : g_planes_ser
     // The planes in one block RAM, stepped one a clock on one adder. Its regions (the top address
-    // bits): 0 and 1 the two banks of accumulators, 2, 3, 4 the gradients g_x, g_y and the start
-    // values that setup writes there for the next triangle. StLoad copies the gradients into
-    // registers and the start values into bank 0 (3 NP + 1 clocks), then takes the triangle.
+    // bits): 1 the second bank of accumulators, 2 and 3 the gradients g_x and g_y that setup
+    // writes there for the next triangle, 4 and 5 the start values, which setup writes into the
+    // one the current triangle does not use and which are then that triangle's first bank of
+    // accumulators. StLoad copies the gradients into registers (2 NP + 1 clocks), then takes the
+    // triangle.
     // The register after the RAM always holds plane 0 of the current bank when a pixel is decided,
     // so the deciding clock captures or steps plane 0 itself, and planes 1 .. NP-1 follow one a
     // clock (a pass): NP clocks a step. A pass may capture the values into the fragment (the decided
@@ -404,7 +406,15 @@ module htx_raster_traverse #(
     // pixel from the current bank, then step the saved bank's values into the current one.
     // A clock in which setup writes (hold) changes nothing here. (NP >= 2.)
     localparam int unsigned IW = $clog2(NP);
-    localparam logic [2:0]  RegGx = 3'd2, RegGy = 3'd3, RegSt = 3'd4;
+    localparam logic [2:0]  RegGx = 3'd2, RegGy = 3'd3, RegSt = 3'd4;  // RegSt and RegSt + 1
+    // Setup writes a triangle's start values into one of two regions (RegSt + parity), and that
+    // region is the triangle's bank 0, so StLoad copies only the gradients. par_q is the parity of
+    // the triangle taken last; setup's words go to the other region (the next triangle's). Setup
+    // writes a triangle's planes only after the traversal took the one before.
+    logic          par_q;
+    function automatic logic [2:0] bank_reg(input logic b, input logic par);
+      bank_reg = b ? 3'd1 : (RegSt | {2'b00, par});
+    endfunction
     // The gradients in two rings of registers that turn by one plane each clock of a pass (a pass
     // turns them all the way round), so plane c_idx's are always at the front: no multiplexer
     // over the planes. StLoad shifts them in at the back in plane order.
@@ -456,27 +466,28 @@ module htx_raster_traverse #(
     // decision).
     always_comb begin
       if (state_q == StLoad) raddr = {ld_reg_q, ld_p_q};
-      else if (start_pass)   raddr = {2'b00, cur_q, IW'(1)};
-      else if (pass_end)     raddr = {2'b00, more_q ? !cur_q : cur_q, IW'(0)};
-      else if (sweep_q)      raddr = {2'b00, rd_bank_q, idx_q + 1'b1};
-      else                   raddr = {2'b00, cur_q, IW'(0)};
+      else if (start_pass)   raddr = {bank_reg(cur_q, par_q), IW'(1)};
+      else if (pass_end)     raddr = {bank_reg(more_q ? !cur_q : cur_q, par_q), IW'(0)};
+      else if (sweep_q)      raddr = {bank_reg(rd_bank_q, par_q), idx_q + 1'b1};
+      else                   raddr = {bank_reg(cur_q, par_q), IW'(0)};
     end
-    // Write: setup's words; the steps; StLoad's start values into bank 0.
+    // Write: setup's words (start values into the next triangle's region); the steps.
     logic          we;
     logic [AW-1:0] wdata;
     always_comb begin
       if (hold) begin
         we    = 1'b1;
-        waddr = {RegGx + 3'(pl_sel_i), IW'(pl_idx_i)};  // pl_sel_i: 0 g_x, 1 g_y, 2 start
+        waddr = {(pl_sel_i == 2'd2) ? bank_reg(1'b0, !par_q) : RegGx + 3'(pl_sel_i),
+                 IW'(pl_idx_i)};  // pl_sel_i: 0 g_x, 1 g_y, 2 start
         wdata = pl_data_i;
       end else if (active) begin
         we    = c_wr;
-        waddr = {2'b00, c_wr_bank, c_idx};
+        waddr = {bank_reg(c_wr_bank, par_q), c_idx};
         wdata = sum;
       end else begin
-        we    = loading && got_q && (got_reg_q == RegSt);
-        waddr = {3'b000, got_p_q};
-        wdata = base_q;
+        we    = 1'b0;
+        waddr = {bank_reg(c_wr_bank, par_q), c_idx};
+        wdata = sum;
       end
     end
     always_ff @(posedge clk_i) begin
@@ -501,6 +512,7 @@ module htx_raster_traverse #(
         got_reg_q <= RegGx;
         got_p_q   <= '0;
         got_q     <= 1'b0;
+        par_q     <= 1'b1;  // the first triangle's start values go to region RegSt
         out_p_q   <= '0;
         for (int p = 0; p < NP; p++) begin
           gx_q[p] <= '0; gy_q[p] <= '0;
@@ -510,10 +522,12 @@ module htx_raster_traverse #(
         ld_reg_q <= RegGx;
         ld_p_q   <= '0;
         got_q    <= 1'b0;
+        par_q    <= 1'b1;  // setup starts over too
       end else begin
-        if (state_q == StIdle) cur_q <= 1'b0;  // StLoad fills bank 0
+        if (state_q == StIdle) cur_q <= 1'b0;  // bank 0 holds the start values
+        if (load_last) par_q <= !par_q;
         if (loading) begin
-          // Read g_x of every plane, then g_y, then the start values; each arrives a clock later.
+          // Read g_x of every plane, then g_y; each arrives a clock later.
           got_q     <= !load_last;
           got_reg_q <= ld_reg_q;
           got_p_q   <= ld_p_q;
@@ -522,9 +536,9 @@ module htx_raster_traverse #(
             ld_p_q   <= '0;
           end else if (ld_p_q == IW'(NP - 1)) begin
             ld_p_q   <= '0;
-            // (load_last resets it anyway; wrapping here keeps the read address inside the three
-            // setup regions, which synthesis uses: 10,437 LUT4 without it, 10,381 with it.)
-            ld_reg_q <= (ld_reg_q == RegSt) ? RegGx : ld_reg_q + 3'd1;
+            // (load_last resets it anyway; wrapping here keeps the read address inside the two
+            // gradient regions, which synthesis uses: 10,437 LUT4 without it, 10,381 with it.)
+            ld_reg_q <= (ld_reg_q == RegGy) ? RegGx : ld_reg_q + 3'd1;
           end else begin
             ld_p_q <= ld_p_q + 1'b1;
           end
@@ -577,7 +591,7 @@ module htx_raster_traverse #(
       end
     end
     // The last word (plane NP-1's start value) arrives and is written: the triangle is taken.
-    assign load_last = loading && got_q && (got_reg_q == RegSt) && (got_p_q == IW'(NP - 1));
+    assign load_last = loading && got_q && (got_reg_q == RegGy) && (got_p_q == IW'(NP - 1));
     // The fragment is complete when its capture pass ends.
     assign out_load  = pass_end && cap_q;
     logic unused_tri_p;
