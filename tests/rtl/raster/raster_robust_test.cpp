@@ -156,6 +156,33 @@ TEST(RasterRobust, AbortMidTriangleThenCleanFrame) {
   }
 }
 
+// A triangle whose state word asks for what is not built (here a depth function beyond `always`)
+// is consumed: ERR_STATE rises, it draws nothing, and the triangles around it are drawn. In
+// `icebreaker` setup works on the input stage's registers and releases such a record at once.
+TEST(RasterRobust, BadStateWordIsConsumedBetweenGoodTriangles) {
+  for (const char* name : {"full", "icebreaker"}) {
+    const ModelConfig cfg = rtl_config(name);
+    rtl::RasterSim sim(name);
+    const ScreenScene s = small_scene();  // three triangles
+    setup_frame(sim, s);
+    std::vector<uint32_t> w = words_of(s, cfg);
+    const size_t rec = 1 + fw::kTriangleWords;
+    ASSERT_EQ(w.size(), 3 * rec);
+    // A copy of the second triangle with a bad depth function, before it and after the last.
+    std::vector<uint32_t> bad(w.begin() + rec, w.begin() + 2 * rec);
+    bad[0] |= RASTER_STATE_DEPTH_FUNC_Msk;  // 7
+    std::vector<uint32_t> stream(w.begin(), w.begin() + rec);
+    stream.insert(stream.end(), bad.begin(), bad.end());
+    stream.insert(stream.end(), w.begin() + rec, w.end());
+    stream.insert(stream.end(), bad.begin(), bad.end());
+    sim.push_words(stream);
+    sim.wait_idle(1'000'000);
+    EXPECT_TRUE(sim.read_reg(R(STATUS)) & RASTER_STATUS_ERR_STATE_Msk) << name;
+    EXPECT_EQ(sim.read_reg(R(STATUS)) & RASTER_STATUS_BUSY_Msk, 0u) << name;
+    expect_frame(sim, s, cfg);
+  }
+}
+
 TEST(RasterRobust, DegenerateOffscreenAndHugeTriangles) {
   ScreenScene s;
   s.width = 80;

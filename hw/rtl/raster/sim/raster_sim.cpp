@@ -225,8 +225,12 @@ void RasterSim::push_words(const std::vector<uint32_t>& words, unsigned gap_ever
   q.valid = true;
   q.we = true;
   q.addr = HTX_RASTER_BASE + offsetof(HTX_RASTER_Type, FIFO);
+  // A word may wait while the unit draws a whole large triangle (a few million clocks at most on
+  // the test scenes); a unit that never takes it again is a deadlock, reported, not waited out.
+  constexpr uint64_t kWordWaitLimit = uint64_t{1} << 23;
   size_t i = 0;
   size_t since_gap = 0;
+  uint64_t waited = 0;
   while (i < words.size()) {
     q.wdata = words[i];
     bool rr = false, mr = false;
@@ -236,8 +240,12 @@ void RasterSim::push_words(const std::vector<uint32_t>& words, unsigned gap_ever
     ++cycles_;
     if (!rr) {
       ++fifo_stall_cycles_;
+      if (++waited > kWordWaitLimit)
+        throw std::runtime_error("rtl engine: RASTER.FIFO took no word for " + std::to_string(kWordWaitLimit) +
+                                 " clocks");
       continue;
     }
+    waited = 0;
     ++i;
     if (gap_every && ++since_gap == gap_every) {
       since_gap = 0;
