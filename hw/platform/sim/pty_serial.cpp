@@ -1,5 +1,6 @@
 // Pseudo-terminal endpoint: posix_openpt/grantpt/unlockpt/ptsname, raw mode, non-blocking master.
 #include <fcntl.h>
+#include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -41,6 +42,18 @@ class PtySerial final : public SerialEndpoint {
   }
   ~PtySerial() override {
     flush();
+    // Closing the master hangs the terminal up, and what it has not read yet is lost (the echo
+    // firmware's last byte, for one). Give an attached program up to a second to read it: the
+    // slave's input queue, which our own slave descriptor can measure, empties as it reads. The
+    // kernel moves written bytes into that queue a little later, so it must stay empty for 50 ms.
+    int empty_ms = 0;
+    for (int waited_ms = 0; waited_ms < 1000 && empty_ms < 50; waited_ms += 5) {
+      flush();
+      int unread = 0;
+      const bool empty = pending_.empty() && (::ioctl(slave_, FIONREAD, &unread) != 0 || unread == 0);
+      empty_ms = empty ? empty_ms + 5 : 0;
+      ::usleep(5000);
+    }
     if (slave_ >= 0) ::close(slave_);
     if (master_ >= 0) ::close(master_);
   }
