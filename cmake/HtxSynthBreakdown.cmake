@@ -3,21 +3,13 @@
 # and flip-flops times the number of its instances, summed by module name (parameterisations
 # together), largest first. Writes OUT (a text table) and prints it. Flattening optimises across
 # modules, so the total is larger than the synth-report's flattened count (docs/area.md).
-foreach(v NAME TOP SOURCES WORK YOSYS YOSYS_DEFINES OUT)
-  if(NOT DEFINED ${v} OR "${${v}}" STREQUAL "")
-    message(FATAL_ERROR "HtxSynthBreakdown: ${v} is not set (is yosys installed?)")
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/HtxSynthCommon.cmake)
+htx_synth_require(HtxSynthBreakdown NAME TOP SOURCES WORK YOSYS YOSYS_DEFINES OUT)
 file(MAKE_DIRECTORY ${WORK})
 string(REPLACE "|" " " files "${SOURCES}")
 set(stat_json ${WORK}/${NAME}.modules.stat.json)
-set(log ${WORK}/${NAME}.modules.yosys.log)
-execute_process(COMMAND ${YOSYS} -q -l ${log} -p
-  "read_verilog -sv ${YOSYS_DEFINES} ${files}; synth_ice40 -dsp -noflatten -top ${TOP}; tee -q -o ${stat_json} stat -json"
-  RESULT_VARIABLE rc)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "synth-breakdown ${NAME}: yosys failed; see ${log}")
-endif()
+htx_synth_yosys("synth-breakdown ${NAME}" ${WORK}/${NAME}.modules.yosys.log
+  "read_verilog -sv ${YOSYS_DEFINES} ${files}; synth_ice40 -dsp -noflatten -top ${TOP}; tee -q -o ${stat_json} stat -json")
 # Yosys 0.23 prints the design hierarchy (lines of a name and a count) into the JSON when the
 # design has a top; keep only the lines that are JSON.
 file(STRINGS ${stat_json} lines)

@@ -1,10 +1,11 @@
-// htx-synth-attrib's attribution: where a flattened iCE40 netlist's area goes. Counting per module needs an
-// unflattened synthesis, which cannot trim a module to what each instance uses and so misleads
-// (docs/area.md); this reads Yosys's JSON netlist of the flattened design instead. Every
-// flip-flop belongs to the scope of its register (the hierarchical name without its last part); every SB_LUT4 and SB_CARRY to the scope of the first named signal found by following
-// its output forward (LUTs that ABC made out of several signals name none themselves). A signal
-// named in several scopes counts where it is made (see better()). Scopes are cut to --depth parts
-// below the common prefix and summed. The split is a heuristic; the total is exact.
+// htx-synth-attrib's attribution: where a flattened iCE40 netlist's area goes. Counting per
+// module needs an unflattened synthesis, which cannot trim a module to what each instance uses and
+// so misleads (docs/area.md); this reads Yosys's JSON netlist of the flattened design instead.
+// Every flip-flop belongs to the scope of its register (the hierarchical name without its last
+// part); every SB_LUT4 and SB_CARRY to the scope of the first named signal found by following its
+// output forward (LUTs that ABC made out of several signals name none themselves). A signal named
+// in several scopes counts where it is made (see better()). Scopes are cut to --depth parts below
+// the common prefix and summed. The split is a heuristic; the total is exact.
 #include "attrib.hpp"
 
 #include <algorithm>
@@ -16,10 +17,15 @@ namespace htx::synth {
 
 namespace {
 
-// The scope of a net name: the part before any "$" (Yosys appends "$func$FILE:LINE..." whose file
-// name holds dots), without its last dotted part.
+// A net name without what Yosys appends after a "$" ("$func$FILE:LINE...", whose file name
+// holds dots).
+std::string base_name(const std::string& name) { return name.substr(0, name.find('$')); }
+
+bool is_ff(const std::string& type) { return type.rfind("SB_DFF", 0) == 0; }
+
+// The scope of a net name: its base name without its last dotted part.
 std::string scope_of(const std::string& name) {
-  std::string s = name.substr(0, name.find('$'));
+  const std::string s = base_name(name);
   const size_t dot = s.rfind('.');
   return dot == std::string::npos ? std::string() : s.substr(0, dot);
 }
@@ -36,14 +42,14 @@ std::string cut(const std::string& scope, size_t skip, int depth) {
 }
 
 size_t depth_of(const std::string& name) {
-  const std::string s = name.substr(0, name.find('$'));
+  const std::string s = base_name(name);
   return static_cast<size_t>(std::count(s.begin(), s.end(), '.'));
 }
 
 // lowRISC port names: an input port ("_i") is the consumer's alias of a signal made elsewhere;
 // an output port ("_o") is usually made in its module but may only pass a signal through.
 bool is_port(const std::string& name, char dir) {
-  const std::string s = name.substr(0, name.find('$'));
+  const std::string s = base_name(name);
   return s.size() >= 2 && s[s.size() - 2] == '_' && s.back() == dir;
 }
 
@@ -91,7 +97,7 @@ class Netlist {
     const std::string type = body["type"];
     std::string result;
     const char* out_port = type == "SB_LUT4" ? "O" : type == "SB_CARRY" ? "CO" : nullptr;
-    if (type.rfind("SB_DFF", 0) == 0) {
+    if (is_ff(type)) {
       // Yosys names a flip-flop after its register ("..._q_SB_DFFER_Q_3"), which is better than
       // any alias of the Q net; a generated name ("$auto$...") falls back to the net.
       const size_t cut_at = cell.find("_SB_DFF");
@@ -138,7 +144,7 @@ std::string attribute(const Json& module, const std::string& top, int depth) {
   bool any_top = false;
   for (const auto& [cell, body] : module["cells"].items()) {
     const std::string type = body["type"];
-    if (type == "SB_LUT4" || type == "SB_CARRY" || type.rfind("SB_DFF", 0) == 0) {
+    if (type == "SB_LUT4" || type == "SB_CARRY" || is_ff(type)) {
       const std::string name = net.owner(cell);
       std::string scope = name.empty() ? "(unnamed)" : scope_of(name);
       if (scope.empty()) {
@@ -148,11 +154,12 @@ std::string attribute(const Json& module, const std::string& top, int depth) {
       cells.emplace_back(scope, type);
     }
   }
-  // The common prefix of the named scopes (whole parts), left out of the table.
+  // The common prefix of the named scopes, in whole parts ("a.b."), left out of the table; none
+  // when the top module has cells of its own.
   std::string prefix;
   bool first = true;
   for (const auto& [scope, type] : cells) {
-    if (any_top) break;  // the table starts at the top
+    if (any_top) break;
     if (scope == "(unnamed)") continue;
     const std::string dotted = scope + ".";
     if (first) {
@@ -161,21 +168,15 @@ std::string attribute(const Json& module, const std::string& top, int depth) {
     }
     size_t n = 0;
     while (n < prefix.size() && n < dotted.size() && prefix[n] == dotted[n]) ++n;
-    prefix.resize(prefix.rfind('.', n == 0 ? 0 : n - 1) == std::string::npos ? 0 : prefix.rfind('.', n - 1) + 1);
+    const size_t dot = n == 0 ? std::string::npos : prefix.rfind('.', n - 1);  // last whole part
+    prefix.resize(dot == std::string::npos ? 0 : dot + 1);
   }
   std::map<std::string, Counts> by_scope;
   Counts total;
   for (const auto& [scope, type] : cells) {
-    Counts& c = by_scope[scope.front() == '(' ? scope : cut(scope, prefix.size(), depth)];
-    if (type == "SB_LUT4") {
-      ++c.lut4;
-      ++total.lut4;
-    } else if (type == "SB_CARRY") {
-      ++c.carry;
-      ++total.carry;
-    } else {
-      ++c.ff;
-      ++total.ff;
+    Counts& row = by_scope[scope.front() == '(' ? scope : cut(scope, prefix.size(), depth)];
+    for (Counts* c : {&row, &total}) {
+      ++(type == "SB_LUT4" ? c->lut4 : type == "SB_CARRY" ? c->carry : c->ff);
     }
   }
   std::vector<std::pair<std::string, Counts>> rows(by_scope.begin(), by_scope.end());

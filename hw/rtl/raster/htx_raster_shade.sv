@@ -109,89 +109,49 @@ module htx_raster_shade #(
   logic unused;
   assign unused = ^{z_round_full[AccZ-1:ZR], flat[31:24], in_p_i};
 
-  logic [6:0] k_d;
-  assign k_d = (k + 7'd1 >= n) ? 7'd0 : k + 7'd1;
+  // Everything the stage gives, computed once; registered (Registered) or passed on as it is.
+  localparam int unsigned RW = AddrW + 2 * 13 + 3 + ZBits + 24 + 2 + 2 * LocW + AccQ + 2 * AccU +
+                               3 * AccC + SideW;
+  logic [RW-1:0] res_d, res;
+  assign res_d = {in_addr_i, in_x_i, in_y_i, in_first_i, in_last_i, in_tfirst_i, z_clamped, rgb,
+                  gouraud && PerspColor, (k == 7'd0) || in_last_i, ua, va,
+                  in_p_i[AW*4 +: AccQ], in_p_i[AW*5 +: AccU], in_p_i[AW*6 +: AccU],
+                  in_p_i[AW*3 +: AccC], in_p_i[AW*2 +: AccC], in_p_i[AW*1 +: AccC], in_side_i};
+  assign {out_addr_o, out_x_o, out_y_o, out_first_o, out_last_o, out_tfirst_o, out_z_o, out_rgb_o,
+          out_div_color_o, out_exact_o, out_ua_o, out_va_o, out_q_o, out_u_o, out_v_o, out_c_o,
+          out_side_o} = res;
 
+  logic advance;  // a fragment goes through this clock
   if (Registered) begin : g_reg
-    logic valid_q;
+    logic          valid_q;
+    logic [RW-1:0] res_q;
     assign in_ready_o  = !valid_q || out_ready_i;
     assign out_valid_o = valid_q;
-
+    assign res         = res_q;
+    assign advance     = in_ready_o && in_valid_i;
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
-        valid_q         <= 1'b0;
-        k_q             <= '0;
-        out_addr_o      <= '0;
-        out_x_o         <= '0;
-        out_y_o         <= '0;
-        out_first_o     <= 1'b0;
-        out_last_o      <= 1'b0;
-        out_tfirst_o    <= 1'b0;
-        out_z_o         <= '0;
-        out_rgb_o       <= '0;
-        out_div_color_o <= 1'b0;
-        out_exact_o     <= 1'b0;
-        out_ua_o        <= '0;
-        out_va_o        <= '0;
-        out_q_o         <= '0;
-        out_u_o         <= '0;
-        out_v_o         <= '0;
-        out_c_o         <= '0;
-        out_side_o      <= '0;
+        valid_q <= 1'b0;
+        res_q   <= '0;
       end else if (abort_i) begin
         valid_q <= 1'b0;
       end else if (in_ready_o) begin
         valid_q <= in_valid_i;
-        if (in_valid_i) begin
-          k_q             <= k_d;
-          out_addr_o      <= in_addr_i;
-          out_x_o         <= in_x_i;
-          out_y_o         <= in_y_i;
-          out_first_o     <= in_first_i;
-          out_last_o      <= in_last_i;
-          out_tfirst_o    <= in_tfirst_i;
-          out_z_o         <= z_clamped;
-          out_rgb_o       <= rgb;
-          out_div_color_o <= gouraud && PerspColor;
-          out_exact_o     <= (k == 7'd0) || in_last_i;
-          out_ua_o        <= ua;
-          out_va_o        <= va;
-          out_q_o         <= in_p_i[AW*4 +: AccQ];
-          out_u_o         <= in_p_i[AW*5 +: AccU];
-          out_v_o         <= in_p_i[AW*6 +: AccU];
-          for (int c = 0; c < 3; c++) out_c_o[AccC*c +: AccC] <= in_p_i[AW*(c+1) +: AccC];
-        end
-        if (in_valid_i) out_side_o <= in_side_i;
+        if (in_valid_i) res_q <= res_d;
       end
     end
   end else begin : g_comb
     assign in_ready_o  = out_ready_i;
     assign out_valid_o = in_valid_i;
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        k_q <= '0;
-      end else if (!abort_i && in_valid_i && out_ready_i) begin
-        k_q <= k_d;
-      end
+    assign res         = res_d;
+    assign advance     = in_valid_i && out_ready_i;
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      k_q <= '0;
+    end else if (!abort_i && advance) begin
+      k_q <= (k + 7'd1 >= n) ? 7'd0 : k + 7'd1;
     end
-    assign out_addr_o      = in_addr_i;
-    assign out_x_o         = in_x_i;
-    assign out_y_o         = in_y_i;
-    assign out_first_o     = in_first_i;
-    assign out_last_o      = in_last_i;
-    assign out_tfirst_o    = in_tfirst_i;
-    assign out_z_o         = z_clamped;
-    assign out_rgb_o       = rgb;
-    assign out_div_color_o = gouraud && PerspColor;
-    assign out_exact_o     = (k == 7'd0) || in_last_i;
-    assign out_ua_o        = ua;
-    assign out_va_o        = va;
-    assign out_q_o         = in_p_i[AW*4 +: AccQ];
-    assign out_u_o         = in_p_i[AW*5 +: AccU];
-    assign out_v_o         = in_p_i[AW*6 +: AccU];
-    for (genvar c = 0; c < 3; c++) begin : g_c
-      assign out_c_o[AccC*c +: AccC] = in_p_i[AW*(c+1) +: AccC];
-    end
-    assign out_side_o      = in_side_i;
   end
 endmodule

@@ -480,12 +480,8 @@ module htx_raster_traverse #(
         waddr = {(pl_sel_i == 2'd2) ? bank_reg(1'b0, !par_q) : RegGx + 3'(pl_sel_i),
                  IW'(pl_idx_i)};  // pl_sel_i: 0 g_x, 1 g_y, 2 start
         wdata = pl_data_i;
-      end else if (active) begin
-        we    = c_wr;
-        waddr = {bank_reg(c_wr_bank, par_q), c_idx};
-        wdata = sum;
       end else begin
-        we    = 1'b0;
+        we    = active && c_wr;
         waddr = {bank_reg(c_wr_bank, par_q), c_idx};
         wdata = sum;
       end
@@ -590,7 +586,7 @@ module htx_raster_traverse #(
         end
       end
     end
-    // The last word (plane NP-1's start value) arrives and is written: the triangle is taken.
+    // The last word (plane NP-1's g_y) arrives and enters its ring: the triangle is taken.
     assign load_last = loading && got_q && (got_reg_q == RegGy) && (got_p_q == IW'(NP - 1));
     // The fragment is complete when its capture pass ends.
     assign out_load  = pass_end && cap_q;
