@@ -9,6 +9,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "frame_size.hpp"
 #include "htx/fw/auto_scene.h"
 #include "htx/model/geometry.hpp"
 #include "htx/model/image_io.hpp"
@@ -38,13 +39,6 @@ struct RenderArgs {
   double tolerance = 1.0 / 64;
   bool untextured = false;
 };
-
-void parse_size(const std::string& text, int& w, int& h) {
-  int n = 0;
-  if (std::sscanf(text.c_str(), "%dx%d%n", &w, &h, &n) != 2 || static_cast<size_t>(n) != text.size() || w < 1 ||
-      h < 1 || w > kMaxScreenSize || h > kMaxScreenSize)
-    throw std::invalid_argument("--size '" + text + "': want WxH with 1 <= W, H <= " + std::to_string(kMaxScreenSize));
-}
 
 void run_render(const RenderArgs& a) {
   int width = 0, height = 0;

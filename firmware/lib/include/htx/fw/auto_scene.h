@@ -18,6 +18,32 @@ struct AutoSceneSummary {
   double predicted_cycles = 0;    // sum of the chosen methods' predicted cycles
 };
 
+// The chooser's view of a host screen triangle (float copies of its screen, depth and texel
+// coordinates) and of how it samples its texture.
+template <class ScreenTri>
+AutoTriangle auto_triangle_of(const ScreenTri& tri) {
+  AutoTriangle t;
+  for (int i = 0; i < 3; ++i) {
+    t.x[i] = static_cast<float>(tri.v[i].x);
+    t.y[i] = static_cast<float>(tri.v[i].y);
+    t.w[i] = static_cast<float>(tri.v[i].w);
+    t.u[i] = static_cast<float>(tri.v[i].u);
+    t.v[i] = static_cast<float>(tri.v[i].v);
+  }
+  return t;
+}
+
+template <class ScreenScene, class ScreenTri>
+AutoSampling auto_sampling_of(const ScreenScene& scene, const ScreenTri& tri) {
+  AutoSampling s;
+  s.filter = static_cast<uint8_t>(tri.state.filter);
+  if (tri.state.texture >= 0 && static_cast<size_t>(tri.state.texture) < scene.textures.size()) {
+    const auto& tex = scene.textures[static_cast<size_t>(tri.state.texture)];
+    s.top_level = static_cast<uint8_t>(tex.log2_width > tex.log2_height ? tex.log2_width : tex.log2_height);
+  }
+  return s;
+}
+
 // Untextured triangles have no texel error: they get the cheapest method.
 template <class ScreenScene, class Config>
 AutoSceneSummary resolve_auto_methods(ScreenScene& scene, const Config& cfg, float tolerance) {
@@ -26,21 +52,8 @@ AutoSceneSummary resolve_auto_methods(ScreenScene& scene, const Config& cfg, flo
   for (auto& tri : scene.tris) {
     using Method = decltype(tri.state.method);
     if (tri.state.method != Method::Auto) continue;
-    AutoTriangle t;
-    for (int i = 0; i < 3; ++i) {
-      t.x[i] = static_cast<float>(tri.v[i].x);
-      t.y[i] = static_cast<float>(tri.v[i].y);
-      t.w[i] = static_cast<float>(tri.v[i].w);
-      t.u[i] = static_cast<float>(tri.v[i].u);
-      t.v[i] = static_cast<float>(tri.v[i].v);
-    }
-    AutoSampling s;
-    s.filter = static_cast<uint8_t>(tri.state.filter);
-    if (tri.state.texture >= 0 && static_cast<size_t>(tri.state.texture) < scene.textures.size()) {
-      const auto& tex = scene.textures[static_cast<size_t>(tri.state.texture)];
-      s.top_level = static_cast<uint8_t>(tex.log2_width > tex.log2_height ? tex.log2_width : tex.log2_height);
-    }
-    const AutoChoice c = choose_method(t, ac, s, cfg.methods, tri.state.textured ? tolerance : 1e12f);
+    const AutoChoice c = choose_method(auto_triangle_of(tri), ac, auto_sampling_of(scene, tri), cfg.methods,
+                                       tri.state.textured ? tolerance : 1e12f);
     tri.state.method = static_cast<Method>(c.method);
     tri.state.subdiv_n = c.subdiv_n;
     ++sum.resolved;

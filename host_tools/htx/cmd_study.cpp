@@ -1,0 +1,134 @@
+// htx study: the speed/accuracy study (docs/study.md). Each sweep point is rendered by the model
+// against ref for accuracy and timed on the Verilated GPU (or the model's estimate) for speed; the
+// results go to a CSV, a Markdown summary and gnuplot charts.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "frame_size.hpp"
+#include "htx/model/names.hpp"
+#include "htx/study/study.hpp"
+#if __has_include("htx/rtl/raster_engine.hpp")
+#include "htx/rtl/raster_engine.hpp"
+#define HTX_HAVE_RTL_ENGINE 1
+#endif
+
+namespace htx {
+
+namespace {
+
+struct StudyArgs {
+  std::vector<std::string> sweeps;
+  std::string config = "icebreaker";
+  std::string size = "160x120";
+  std::string clocks;
+  std::string out_dir = "study-out";
+  bool quick = false;
+  bool no_charts = false;
+};
+
+bool gnuplot_available() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+
+study::Options make_options(const StudyArgs& a) {
+  study::Options o;
+  parse_size(a.size, o.width, o.height);
+  o.config_name = a.config;
+#ifdef HTX_HAVE_RTL_ENGINE
+  const std::string clocks = a.clocks.empty() ? "rtl" : a.clocks;
+#else
+  const std::string clocks = a.clocks.empty() ? "estimate" : a.clocks;
+#endif
+  if (clocks == "estimate") {
+    o.config = model_config(a.config);
+    return o;
+  }
+  if (clocks != "rtl") throw std::invalid_argument("--clocks '" + clocks + "': want rtl or estimate");
+#ifdef HTX_HAVE_RTL_ENGINE
+  // The model runs with the configuration the RTL builds, so its frame is the RTL's (checked).
+  o.config = rtl_config(a.config);
+  o.clock_source = "rtl";
+  o.timer = [](const ScreenScene& scene, const ModelConfig& config, const Frame& model) {
+    RtlStats stats;
+    const Frame frame = render_rtl(scene, config, &stats);
+    return study::Timing{stats.cycles, stats.covered_pixels, static_cast<int64_t>(frame_mismatch_pixels(frame, model))};
+  };
+  return o;
+#else
+  throw std::invalid_argument("--clocks rtl: this build has no rtl engine (use --clocks estimate)");
+#endif
+}
+
+void run_study(const StudyArgs& a) {
+  const study::Options options = make_options(a);
+  const std::vector<std::string> sweeps = a.sweeps.empty() ? study::sweep_names() : a.sweeps;
+  std::vector<study::Point> points;
+  for (const std::string& sweep : sweeps)
+    for (const study::Point& p : study::sweep_points(sweep, a.quick))
+      if (p.method == "auto" || options.config.has_method(parse_method(p.method).method)) points.push_back(p);
+
+  namespace fs = std::filesystem;
+  fs::create_directories(a.out_dir);
+  std::vector<study::Result> results;
+  size_t mismatched = 0, not_finite = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const study::Result r = study::run_point(points[i], options);
+    std::cout << "[" << i + 1 << "/" << points.size() << "] " << r.point.sweep << " " << r.point.scene << " "
+              << r.point.method << (r.point.method == "auto" ? " " + std::to_string(r.point.tolerance) : "")
+              << ": max error " << r.max_error << ", " << r.clocks_per_pixel << " clocks/pixel"
+              << (r.mismatch > 0 ? ", FRAME DIFFERS FROM THE MODEL'S" : "") << std::endl;
+    mismatched += r.mismatch > 0 ? 1 : 0;
+    not_finite += r.finite ? 0 : 1;
+    results.push_back(r);
+  }
+
+  const std::string csv_path = a.out_dir + "/study.csv", md_path = a.out_dir + "/study.md";
+  std::ofstream csv(csv_path);
+  study::write_csv(csv, results);
+  const std::string summary = study::summary_markdown(results, options);
+  std::ofstream md(md_path);
+  md << summary;
+  if (!csv || !md) throw std::runtime_error("cannot write the results into '" + a.out_dir + "'");
+  std::cout << "\n" << summary << "\nresults -> " << csv_path << ", " << md_path << "\n";
+
+  const std::vector<std::string> scripts = study::write_chart_scripts(a.out_dir, results, options);
+  if (a.no_charts) {
+    std::cout << "chart scripts (not run) -> " << a.out_dir << "\n";
+  } else if (!gnuplot_available()) {
+    std::cout << "gnuplot not found: chart scripts written to " << a.out_dir << " but not drawn\n";
+  } else {
+    for (const std::string& script : scripts) {
+      const std::string command = "cd '" + a.out_dir + "' && gnuplot '" + script + "'";
+      if (std::system(command.c_str()) != 0) throw std::runtime_error("gnuplot failed on " + a.out_dir + "/" + script);
+      std::cout << "chart -> " << a.out_dir << "/" << fs::path(script).replace_extension(".svg").string() << "\n";
+    }
+  }
+  if (mismatched)
+    throw std::runtime_error(std::to_string(mismatched) + " point(s) where the RTL frame differs from the model's");
+  if (not_finite) throw std::runtime_error(std::to_string(not_finite) + " point(s) with a figure that is not finite");
+}
+
+}  // namespace
+
+void register_study(CLI::App& app) {
+  auto args = std::make_shared<StudyArgs>();
+  auto* cmd = app.add_subcommand("study", "The speed/accuracy study: sweeps of methods and scenes, tables and charts");
+  cmd->add_option("sweep", args->sweeps, "sweeps to run: ratio, range, subdiv, tradeoff (default: all)")
+      ->check(CLI::IsMember(study::sweep_names()));
+  cmd->add_option("--config", args->config, "configuration: full | icebreaker")->capture_default_str();
+  cmd->add_option("--size", args->size, "frame size WxH")->capture_default_str();
+  cmd->add_option("--clocks", args->clocks,
+                  "where clocks come from: rtl (the Verilated GPU, the default when built) or estimate (the model's)");
+  cmd->add_option("--out-dir", args->out_dir, "directory for study.csv, study.md and the charts")
+      ->capture_default_str();
+  cmd->add_flag("--quick", args->quick, "a few points per sweep (the ends and the middle)");
+  cmd->add_flag("--no-charts", args->no_charts, "write the gnuplot scripts without running gnuplot");
+  cmd->callback([args] { run_study(*args); });
+}
+
+}  // namespace htx

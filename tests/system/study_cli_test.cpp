@@ -1,0 +1,73 @@
+// `htx study` end to end: a quick sweep timed on the Verilated GPU writes its CSV (every point's RTL
+// frame equal to the model's), its summary and its chart; bad arguments are refused clearly.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "subprocess.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::string field;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) fields.push_back(std::exchange(field, ""));
+    else field += c;
+  }
+  fields.push_back(field);
+  return fields;
+}
+
+TEST(SystemStudyCli, QuickRatioSweepOnTheRtl) {
+  const std::string dir = ::testing::TempDir() + "htx_study_cli";
+  std::filesystem::remove_all(dir);
+  const auto r = htx::test::run_program({HTX_BIN, "study", "ratio", "--quick", "--out-dir", dir}, 300s);
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("clocks from rtl"), std::string::npos) << r.out;
+
+  std::ifstream csv(dir + "/study.csv");
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  const std::vector<std::string> header = split(line);
+  const auto column = [&](const std::string& name) {
+    return static_cast<size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const size_t mismatch = column("mismatch"), clocks = column("clocks"), method = column("method");
+  ASSERT_LT(mismatch, header.size());
+  size_t rows = 0;
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> f = split(line);
+    ASSERT_EQ(f.size(), header.size()) << line;
+    EXPECT_EQ(f[mismatch], "0") << line;  // the RTL drew the model's frame
+    EXPECT_GT(std::stoull(f[clocks]), 1000u) << line;
+    EXPECT_NE(f[method], "quadratic");  // the RTL builds no QUADRATIC: such points are left out
+    ++rows;
+  }
+  EXPECT_EQ(rows, 15u);  // 3 ratios x 5 methods
+  EXPECT_TRUE(std::filesystem::exists(dir + "/study.md"));
+  EXPECT_GT(std::filesystem::file_size(dir + "/study_ratio.svg"), 1000u);
+}
+
+TEST(SystemStudyCli, RefusesUnknownSweepsAndClockSources) {
+  const auto sweep = htx::test::run_program({HTX_BIN, "study", "nosuch", "--out-dir", ::testing::TempDir()}, 60s);
+  EXPECT_NE(sweep.status, 0);
+  EXPECT_NE(sweep.err.find("nosuch"), std::string::npos) << sweep.err;
+  const auto clocks =
+      htx::test::run_program({HTX_BIN, "study", "ratio", "--clocks", "sundial", "--out-dir", ::testing::TempDir()}, 60s);
+  EXPECT_NE(clocks.status, 0);
+  EXPECT_NE(clocks.err.find("--clocks 'sundial'"), std::string::npos) << clocks.err;
+}
+
+}  // namespace
