@@ -206,7 +206,7 @@ TEST(SystemRender, SocConfigIsTheIcebreakerRasterUnit) {
   EXPECT_EQ(render_app::kRecordFormat.uv_int_bits, f.uv_int_bits);
   EXPECT_EQ(render_app::kMethodsBuilt, cfg.methods);
   const htx::fw::AutoConfig a = htx::fw::auto_config_of(cfg);
-  EXPECT_EQ(0, std::memcmp(&render_app::kAutoConfig, &a, sizeof a)) << "AUTO's configuration";
+  EXPECT_TRUE(render_app::kAutoConfig == a) << "AUTO's configuration";
   EXPECT_EQ(render_app::kAutoTolerance, htx::render::kOne / 16);
 }
 

@@ -141,14 +141,19 @@ float auto_cycles(const AutoTriangle& t, const AutoConfig& cfg, uint8_t method, 
   const float rows = e.y_hi - e.y_lo + 1.0f;
   const float interval = static_cast<float>(cfg.recip_issue_interval);
   const float fixed = 26.0f + 7.0f * interval + rows;  // setup, one clock per span
+  // The traversal and the reciprocal unit work side by side: a method takes the longer of the
+  // traversal's clocks and the divider's.
+  const float traverse = static_cast<float>(cfg.pixel_cost16) / 16.0f * pixels;
+  const float nr_divide = static_cast<float>(cfg.nr_divide_cost16) / 16.0f;
   switch (method) {
-    case kAutoRecipNr: return fixed + interval * pixels;
+    case kAutoRecipNr: return fixed + maxf(traverse, nr_divide * pixels);
+    case kAutoRecipLut: return fixed + maxf(traverse, static_cast<float>(cfg.lut_divide_cost16) / 16.0f * pixels);
     case kAutoSubdiv: {
       const float points = minf(pixels, pixels / static_cast<float>(n) + 2.0f * rows);
-      return fixed + pixels + interval * points;
+      return fixed + maxf(traverse, nr_divide * points);
     }
-    case kAutoDivFree: return fixed + pixels + interval;  // one seed division, ~1 step per pixel
-    default: return fixed + pixels;                       // AFFINE, RECIP_LUT
+    case kAutoDivFree: return fixed + traverse + interval;  // one seed division
+    default: return fixed + traverse + static_cast<float>(cfg.affine_setup_cost16) / 16.0f;  // AFFINE
   }
 }
 

@@ -121,5 +121,23 @@ TEST(GpuEngine, AutoTakesFewerClocksThanRecipNrOnIcebreaker) {
   }
 }
 
+// At a loose tolerance AUTO must not pay for a division the RTL does not need: RECIP_LUT is within
+// 1 texel on cube, but SUBDIV is too and costs the traversal's clocks alone there (docs/study.md's
+// finding; AUTO used to price RECIP_LUT like AFFINE and drew cube at RECIP_LUT's clocks).
+TEST(GpuEngine, AutoAtALooseToleranceIsCheaperThanRecipLutOnIcebreaker) {
+  const ModelConfig cfg = rtl_config("icebreaker");
+  ScreenScene lut = scene("cube", 160, 120);
+  ScreenScene au = lut;
+  for (ScreenTri& t : lut.tris) t.state.method = Method::RecipLut;
+  for (ScreenTri& t : au.tris) t.state.method = Method::Auto;
+  const fw::AutoSceneSummary sum = fw::resolve_auto_methods(au, cfg, 1.0f);
+  EXPECT_EQ(sum.not_within, 0u);
+  EXPECT_EQ(sum.per_method[fw::kAutoRecipLut], 0u);
+  RtlStats st_lut, st_au;
+  EXPECT_EQ(mismatches(lut, "icebreaker", &st_lut), 0u);
+  EXPECT_EQ(mismatches(au, "icebreaker", &st_au), 0u);
+  EXPECT_LT(st_au.cycles * 10, st_lut.cycles * 9) << st_au.cycles << " against " << st_lut.cycles;
+}
+
 }  // namespace
 }  // namespace htx

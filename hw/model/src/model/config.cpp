@@ -30,6 +30,13 @@ ModelConfig make_icebreaker() {
   c.setup_nr_steps = 2;
   c.pixel_nr_steps = 1;
   c.recip_issue_interval = 3;  // one shared unit: table, then one multiply pair per Newton step
+  // Measured on the Verilated icebreaker GPU, wsweep:r=10 at 320x240 (31,104 pixels): 12.08
+  // clocks a pixel for AFFINE, SUBDIV (n >= 4) and DIVFREE, 15.30 for RECIP_LUT, 23.30 for
+  // RECIP_NR; AFFINE's vertex divisions about 160 clocks a triangle on floor (docs/auto.md).
+  c.auto_pixel_cost16 = 193;
+  c.auto_lut_divide_cost16 = 245;
+  c.auto_nr_divide_cost16 = 373;
+  c.auto_affine_setup_cost16 = 2560;
   c.texcoord_frac_bits = 10;
   c.divfree_frac_bits = 2;
   c.divfree_cap = 64;

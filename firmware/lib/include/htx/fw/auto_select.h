@@ -32,9 +32,26 @@ struct AutoConfig {
   uint8_t recip_issue_interval = 1;  // clocks between divisions of the shared reciprocal unit
   uint8_t texcoord_frac_bits = 16;   // TF
   uint8_t divfree_frac_bits = 4;     // f
+  // The cost model (docs/auto.md), in sixteenths of a raster clock: traversal clocks per pixel,
+  // clocks per division of RECIP_LUT and of RECIP_NR (SUBDIV's exact points are RECIP_NR divisions),
+  // and AFFINE's extra setup per triangle (its vertex divisions).
+  uint16_t pixel_cost16 = 16;
+  uint16_t lut_divide_cost16 = 16;
+  uint16_t nr_divide_cost16 = 16;
+  uint16_t affine_setup_cost16 = 0;
 };
-inline constexpr AutoConfig kAutoConfigFull{10, 2, 32, 2, 1, 16, 4};
-inline constexpr AutoConfig kAutoConfigIcebreaker{8, 2, 24, 1, 3, 10, 2};
+// `full`: one pixel a clock and a division a clock. `icebreaker`: measured on its RTL (docs/auto.md).
+inline constexpr AutoConfig kAutoConfigFull{10, 2, 32, 2, 1, 16, 4, 16, 16, 16, 0};
+inline constexpr AutoConfig kAutoConfigIcebreaker{8, 2, 24, 1, 3, 10, 2, 193, 245, 373, 2560};
+
+inline bool operator==(const AutoConfig& a, const AutoConfig& b) {
+  return a.recip_table_bits == b.recip_table_bits && a.recip_guard_bits == b.recip_guard_bits &&
+         a.recip_width == b.recip_width && a.pixel_nr_steps == b.pixel_nr_steps &&
+         a.recip_issue_interval == b.recip_issue_interval && a.texcoord_frac_bits == b.texcoord_frac_bits &&
+         a.divfree_frac_bits == b.divfree_frac_bits && a.pixel_cost16 == b.pixel_cost16 &&
+         a.lut_divide_cost16 == b.lut_divide_cost16 && a.nr_divide_cost16 == b.nr_divide_cost16 &&
+         a.affine_setup_cost16 == b.affine_setup_cost16;
+}
 
 // Any configuration type with the ModelConfig field names (the host's htx::ModelConfig).
 template <class Config>
@@ -47,6 +64,10 @@ AutoConfig auto_config_of(const Config& c) {
   a.recip_issue_interval = static_cast<uint8_t>(c.recip_issue_interval);
   a.texcoord_frac_bits = static_cast<uint8_t>(c.texcoord_frac_bits);
   a.divfree_frac_bits = static_cast<uint8_t>(c.divfree_frac_bits);
+  a.pixel_cost16 = static_cast<uint16_t>(c.auto_pixel_cost16);
+  a.lut_divide_cost16 = static_cast<uint16_t>(c.auto_lut_divide_cost16);
+  a.nr_divide_cost16 = static_cast<uint16_t>(c.auto_nr_divide_cost16);
+  a.affine_setup_cost16 = static_cast<uint16_t>(c.auto_affine_setup_cost16);
   return a;
 }
 

@@ -36,6 +36,15 @@ struct ModelConfig {
   // on a small FPGA takes 1 + steps). Used by the cycle estimate.
   unsigned recip_issue_interval = 1;
 
+  // AUTO's cost model (docs/auto.md), in sixteenths of a raster clock: traversal clocks per pixel,
+  // clocks per RECIP_LUT and per RECIP_NR division (SUBDIV's exact points are RECIP_NR divisions),
+  // AFFINE's extra setup per triangle. `full`'s follow from its pipeline; `icebreaker`'s are
+  // measured on its RTL. The model's cycle estimate (§9) does not use them.
+  unsigned auto_pixel_cost16 = 16;
+  unsigned auto_lut_divide_cost16 = 16;
+  unsigned auto_nr_divide_cost16 = 16;
+  unsigned auto_affine_setup_cost16 = 0;
+
   // Texel coordinates leave the divider as signed fixed point with this many fractional bits.
   unsigned texcoord_frac_bits = 16;
 
