@@ -1,0 +1,186 @@
+#include "commands.hpp"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "frame_download.hpp"
+#include "htx_regs.h"
+#include "scene_render.hpp"
+#include "scenes.hpp"
+#include "soc_config.hpp"
+
+namespace console_app {
+
+namespace {
+
+constexpr const char* kVersion = "0.1";
+
+struct Settings {
+  render_app::DrawSettings draw;
+  const char* method_name = "auto";
+  uint32_t tolerance_denominator = 16;  // AUTO's tolerance: 1 / this texel (1..65536)
+  char method_text[12] = "auto";
+};
+Settings g_settings;
+render_app::DrawResult g_last;
+const char* g_last_scene = nullptr;
+
+// Splits off the next space-separated word (NUL-terminating it); returns nullptr at the end.
+char* next_word(char** rest) {
+  char* s = *rest;
+  while (*s == ' ') ++s;
+  if (*s == '\0') return nullptr;
+  char* w = s;
+  while (*s != '\0' && *s != ' ') ++s;
+  if (*s == ' ') *s++ = '\0';
+  *rest = s;
+  return w;
+}
+
+// A decimal number in [lo, hi] and nothing else.
+bool parse_uint(const char* s, uint32_t lo, uint32_t hi, uint32_t* out) {
+  if (*s == '\0') return false;
+  uint32_t v = 0;
+  for (; *s; ++s) {
+    if (*s < '0' || *s > '9') return false;
+    v = v * 10 + static_cast<uint32_t>(*s - '0');
+    if (v > hi) return false;
+  }
+  if (v < lo) return false;
+  *out = v;
+  return true;
+}
+
+void error(const char* what, const char* arg = "") { printf("error: %s%s\r\n", what, arg); }
+
+void cmd_help() {
+  fputs("commands:\r\n"
+        "  help                  this list\r\n"
+        "  info                  the SoC, the screen and the settings\r\n"
+        "  scenes                the scenes `render` draws\r\n"
+        "  set method NAME       auto, affine, subdivN (N = 2..64), recip_lut, recip_nr, divfree\r\n"
+        "  set tolerance 1/N     AUTO's largest predicted texel error (N = 1..65536)\r\n"
+        "  render SCENE          draw a scene; prints its figures and the frame's CRC-32\r\n"
+        "  stats                 the raster unit's counters after the last render\r\n"
+        "  grab                  send the frame as binary packets (for `htx grab`)\r\n"
+        "  quit                  leave the console (the simulation ends)\r\n",
+        stdout);
+}
+
+void cmd_info() {
+  printf("hypertex console %s: soc %08lx at %lu Hz\r\n", kVersion, static_cast<unsigned long>(HTX_SYSCTRL->ID),
+         static_cast<unsigned long>(HTX_SYSCTRL->CLOCK_HZ));
+  printf("screen %ldx%ld rgb565; methods affine subdiv recip_lut recip_nr divfree\r\n",
+         static_cast<long>(render_app::kWidth), static_cast<long>(render_app::kHeight));
+  printf("method %s; tolerance 1/%lu texel\r\n", g_settings.method_text,
+         static_cast<unsigned long>(g_settings.tolerance_denominator));
+}
+
+void cmd_scenes() {
+  uint32_t n = 0;
+  const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
+  for (uint32_t i = 0; i < n; ++i) printf("%s\r\n", scenes[i].name);
+}
+
+bool set_method(const char* name) {
+  using namespace htx::render;
+  uint8_t method = 0, n = 16;
+  uint32_t span = 0;
+  if (strcmp(name, "auto") == 0) method = kMethodAuto;
+  else if (strcmp(name, "affine") == 0) method = kMethodAffine;
+  else if (strcmp(name, "recip_lut") == 0) method = kMethodRecipLut;
+  else if (strcmp(name, "recip_nr") == 0) method = kMethodRecipNr;
+  else if (strcmp(name, "divfree") == 0) method = kMethodDivFree;
+  else if (strncmp(name, "subdiv", 6) == 0 && parse_uint(name + 6, 2, 64, &span)) {
+    method = kMethodSubdiv;
+    n = static_cast<uint8_t>(span);
+  } else return false;
+  g_settings.draw.method = method;
+  g_settings.draw.subdiv_n = n;
+  strncpy(g_settings.method_text, name, sizeof g_settings.method_text - 1);
+  return true;
+}
+
+void cmd_set(char* rest) {
+  const char* what = next_word(&rest);
+  const char* value = next_word(&rest);
+  if (!what || !value || next_word(&rest)) return error("usage: set method NAME | set tolerance 1/N");
+  if (strcmp(what, "method") == 0) {
+    if (!set_method(value)) return error("unknown method ", value);
+  } else if (strcmp(what, "tolerance") == 0) {
+    uint32_t d = 0;
+    if (strncmp(value, "1/", 2) != 0 || !parse_uint(value + 2, 1, 65536, &d))
+      return error("tolerance wants 1/N with N = 1..65536, not ", value);
+    g_settings.tolerance_denominator = d;
+    g_settings.draw.auto_tolerance = htx::render::kOne / d;
+  } else {
+    return error("unknown setting ", what);
+  }
+  printf("ok\r\n");
+}
+
+void cmd_render(char* rest) {
+  const char* name = next_word(&rest);
+  if (!name || next_word(&rest)) return error("usage: render SCENE");
+  uint32_t n = 0;
+  const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
+  for (uint32_t i = 0; i < n; ++i) {
+    if (strcmp(scenes[i].name, name) != 0) continue;
+    render_app::DrawSettings draw = g_settings.draw;
+    draw.time_geometry = false;
+    g_last = render_app::draw_scene(scenes[i], draw);
+    g_last_scene = scenes[i].name;
+    if (!g_last.ok) return error("render failed: ", g_last.error);
+    printf("render %s method %s triangles %lu sent %lu frame_cycles %lu raster_cycles %lu fragments %lu crc32 %08lx\r\n",
+           name, g_settings.method_text, static_cast<unsigned long>(g_last.stats.triangles),
+           static_cast<unsigned long>(g_last.stats.sent), static_cast<unsigned long>(g_last.frame_cycles),
+           static_cast<unsigned long>(g_last.counters.busy), static_cast<unsigned long>(g_last.counters.fragments),
+           static_cast<unsigned long>(g_last.crc));
+    return;
+  }
+  error("unknown scene ", name);
+}
+
+void cmd_stats() {
+  if (!g_last_scene || !g_last.ok) return error("nothing rendered yet");
+  const htx::hal::RasterCounters& c = g_last.counters;
+  printf("scene %s busy %lu stall_input %lu stall_setup %lu stall_fragment %lu setup_busy %lu\r\n", g_last_scene,
+         static_cast<unsigned long>(c.busy), static_cast<unsigned long>(c.stall_input),
+         static_cast<unsigned long>(c.stall_setup), static_cast<unsigned long>(c.stall_fragment),
+         static_cast<unsigned long>(c.setup_busy));
+  printf("triangles %lu fragments %lu pixels %lu divfree_steps %lu\r\n", static_cast<unsigned long>(c.triangles),
+         static_cast<unsigned long>(c.fragments), static_cast<unsigned long>(c.pixels),
+         static_cast<unsigned long>(c.divfree_steps));
+}
+
+}  // namespace
+
+CommandResult run_command(char* line) {
+  char* rest = line;
+  const char* cmd = next_word(&rest);
+  if (!cmd) return CommandResult::kDone;
+  if (strcmp(cmd, "quit") == 0) return CommandResult::kQuit;
+  if (strcmp(cmd, "set") == 0) {
+    cmd_set(rest);
+  } else if (strcmp(cmd, "render") == 0) {
+    cmd_render(rest);
+  } else if (next_word(&rest)) {
+    error("this command takes no arguments: ", cmd);
+  } else if (strcmp(cmd, "help") == 0) {
+    cmd_help();
+  } else if (strcmp(cmd, "info") == 0) {
+    cmd_info();
+  } else if (strcmp(cmd, "scenes") == 0) {
+    cmd_scenes();
+  } else if (strcmp(cmd, "stats") == 0) {
+    cmd_stats();
+  } else if (strcmp(cmd, "grab") == 0) {
+    console_app::send_frame(render_app::kWidth, render_app::kHeight);
+  } else {
+    error("unknown command (type help): ", cmd);
+  }
+  return CommandResult::kDone;
+}
+
+}  // namespace console_app

@@ -1,0 +1,17 @@
+// A command line typed at the console: printable characters are echoed, backspace (BS or DEL)
+// erases, Ctrl-C abandons the line, CR or LF ends it (an LF right after a CR is ignored).
+#pragma once
+
+#include <stddef.h>
+
+namespace console_app {
+
+inline constexpr size_t kMaxLine = 96;
+
+enum class LineStatus { kLine, kTooLong, kEndOfInput };
+
+// Reads one line into buf (kMaxLine + 1 bytes, NUL-terminated). A line longer than kMaxLine is
+// read to its end and reported as kTooLong (its text is dropped).
+LineStatus read_line(char* buf);
+
+}  // namespace console_app

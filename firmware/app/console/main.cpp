@@ -1,0 +1,34 @@
+// Console firmware (docs/console.md): uploads the render firmware's texture, greets, then reads
+// command lines from the UART and carries them out (commands.hpp) until `quit` or the end of input.
+#include <stdio.h>
+
+#include "commands.hpp"
+#include "line_reader.hpp"
+#include "soc_texture.hpp"
+
+namespace {
+constexpr uint32_t kMaxPolls = 20'000'000;
+constexpr const char* kPrompt = "htx> ";
+}  // namespace
+
+int main() {
+  const htx::render::UploadStatus up = render_app::upload_scene_texture(kMaxPolls);
+  if (up != htx::render::kUploadOk) {
+    printf("console: texture upload failed with status %d\r\n", up);
+    return 1;
+  }
+  fputs("hypertex console. Type help.\r\n", stdout);
+  char line[console_app::kMaxLine + 1];
+  for (;;) {
+    fputs(kPrompt, stdout);
+    const console_app::LineStatus st = console_app::read_line(line);
+    if (st == console_app::LineStatus::kEndOfInput) break;
+    if (st == console_app::LineStatus::kTooLong) {
+      printf("error: line longer than %u characters\r\n", static_cast<unsigned>(console_app::kMaxLine));
+      continue;
+    }
+    if (console_app::run_command(line) == console_app::CommandResult::kQuit) break;
+  }
+  fputs("bye\r\n", stdout);
+  return 0;
+}

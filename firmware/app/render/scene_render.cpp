@@ -1,0 +1,88 @@
+#include "scene_render.hpp"
+
+#include <stdio.h>
+
+#include "frame_crc.hpp"
+#include "htx/hal/timer.h"
+#include "htx/render/frame.h"
+#include "render_state.hpp"
+#include "soc_config.hpp"
+
+namespace render_app {
+
+namespace {
+
+constexpr uint32_t kMaxVertices = 128;
+constexpr uint32_t kMaxPolls = 20'000'000;  // far beyond any frame of these scenes
+
+htx::render::ClipVert g_clip[kMaxVertices];
+htx::render::ScreenVert g_screen[kMaxVertices];
+uint8_t g_codes[kMaxVertices];
+
+// CPU cycles and vertex count of the geometry stage over every mesh of a scene, kGeometryRuns times.
+void time_geometry(const SceneData& sc, const htx::render::Viewport& vp, htx::render::VertexCache* cache,
+                   DrawResult* r) {
+  for (uint32_t m = 0; m < sc.mesh_count; ++m) {
+    const htx::render::Mesh& mesh = sc.meshes[m];
+    const htx::render::VertexTransform vt =
+        htx::render::make_vertex_transform(htx::render::mat4_mul(sc.view_proj, mesh.model), mesh.position_bits);
+    htx::render::process_vertices(vt, mesh.vertices, mesh.vertex_count, vp, cache);  // warm up
+    const uint64_t t0 = htx::hal::cpu_cycles();
+    for (uint32_t run = 0; run < kGeometryRuns; ++run)
+      htx::render::process_vertices(vt, mesh.vertices, mesh.vertex_count, vp, cache);
+    r->geometry_cycles += htx::hal::cpu_cycles() - t0;
+    r->geometry_vertices += uint64_t{kGeometryRuns} * mesh.vertex_count;
+  }
+}
+
+}  // namespace
+
+void print_ratio(uint64_t num, uint64_t den) {
+  const uint64_t hundredths = den ? (num * 100 + den / 2) / den : 0;
+  printf("%lu.%02lu", static_cast<unsigned long>(hundredths / 100), static_cast<unsigned long>(hundredths % 100));
+}
+
+DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
+  DrawResult r;
+  for (uint32_t m = 0; m < sc.mesh_count; ++m) {
+    if (sc.meshes[m].vertex_count > kMaxVertices) {
+      r.error = "a mesh has more vertices than the vertex cache";
+      return r;
+    }
+    apply_soc_render_state(&sc.meshes[m]);
+    sc.meshes[m].state.method = settings.method;
+    sc.meshes[m].state.subdiv_n = settings.subdiv_n;
+  }
+  htx::render::VertexCache cache{g_clip, g_screen, g_codes, kMaxVertices};
+  htx::render::FrameParams frame;
+  frame.viewport = {kWidth, kHeight};
+  frame.format = kRecordFormat;
+  frame.methods_built = kMethodsBuilt;
+  frame.auto_config = kAutoConfig;
+  frame.auto_tolerance = settings.auto_tolerance > 0 ? settings.auto_tolerance : kAutoTolerance;
+  frame.cull_backfaces = sc.cull_backfaces;
+
+  if (settings.time_geometry) time_geometry(sc, frame.viewport, &cache, &r);
+
+  htx::render::DrawStatus mesh_status = htx::render::kDrawOk;
+  htx::hal::raster_clear_state_error();
+  const uint64_t f0 = htx::hal::cpu_cycles();
+  const htx::render::FrameStatus st = htx::render::render_frame(
+      frame, {kClearColor, kClearDepth}, sc.view_proj, sc.meshes, sc.mesh_count, &cache, kMaxPolls, &r.stats,
+      &mesh_status);
+  r.frame_cycles = htx::hal::cpu_cycles() - f0;
+  if (st != htx::render::kFrameOk) {
+    r.error = "render_frame failed";
+    return r;
+  }
+  if (htx::hal::raster_state_error()) {
+    r.error = "the raster unit reports a state error";
+    return r;
+  }
+  htx::hal::raster_read_counters(&r.counters);
+  r.crc = frame_crc32(kWidth, kHeight);
+  r.ok = true;
+  return r;
+}
+
+}  // namespace render_app

@@ -1,0 +1,38 @@
+// Drawing one compiled-in scene on the SoC's GPU with the firmware render pipeline, and what it
+// cost: shared by the render firmware (which prints it) and the console (`render SCENE`).
+#pragma once
+
+#include <stdint.h>
+
+#include "htx/hal/raster.h"
+#include "htx/render/pipeline.h"
+#include "scenes.hpp"
+
+namespace render_app {
+
+struct DrawSettings {
+  uint8_t method = htx::render::kMethodAuto;  // every triangle's method (AUTO: the firmware picks)
+  uint8_t subdiv_n = 16;                      // for SUBDIV
+  int64_t auto_tolerance = 0;                 // AUTO's tolerance, Q16.16 texels (0: soc_config's)
+  bool time_geometry = true;                  // also time the geometry stage alone (kGeometryRuns runs)
+};
+
+inline constexpr uint32_t kGeometryRuns = 4;
+
+struct DrawResult {
+  bool ok = false;
+  const char* error = "";                     // why not, when !ok
+  htx::render::DrawStats stats;
+  uint64_t geometry_cycles = 0, geometry_vertices = 0;  // over kGeometryRuns runs
+  uint64_t frame_cycles = 0;                  // CPU cycles of render_frame
+  htx::hal::RasterCounters counters;          // the raster unit's, after the frame
+  uint32_t crc = 0;                           // frame_crc32 of the colour window
+};
+
+// Applies the SoC render state (render_state.hpp) with `settings` to the scene's meshes and draws it.
+DrawResult draw_scene(const SceneData& scene, const DrawSettings& settings);
+
+// x.xx without floating point.
+void print_ratio(uint64_t num, uint64_t den);
+
+}  // namespace render_app

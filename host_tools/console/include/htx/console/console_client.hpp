@@ -1,0 +1,49 @@
+// The host side of the console's exchange (docs/console.md): command lines out, their output back
+// up to the next prompt; `grab`'s packets checked and decoded into a frame.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "htx/console/serial_port.hpp"
+
+namespace htx::console {
+
+inline constexpr const char* kPrompt = "htx> ";
+
+struct GrabbedFrame {
+  int width = 0, height = 0;
+  std::vector<uint16_t> pixels;  // RGB565, row-major
+  uint32_t crc32 = 0;            // the console's checksum of the pixels (checked against them)
+  size_t coded_bytes = 0, data_packets = 0;
+};
+
+class ConsoleClient {
+ public:
+  // `timeout`: the longest silence to wait through (a render in the simulator is seconds of it).
+  ConsoleClient(SerialPort& port, std::chrono::milliseconds timeout);
+
+  // Brings the exchange to a fresh prompt: sends a line break and reads until a prompt followed by
+  // a moment of silence, so a greeting or prompt printed before we attached is consumed.
+  void sync();
+  // Sends one line and returns what the console printed for it, without the echoed line and the
+  // prompt, with CR LF as LF. Throws std::runtime_error on a timeout.
+  std::string command(const std::string& line);
+  // Sends `grab` and receives the frame. Throws std::runtime_error with the reason on any protocol
+  // error (a bad packet, a gap in the sequence, a checksum or size that does not match).
+  GrabbedFrame grab(const std::function<void(size_t coded_bytes)>& progress = {});
+
+ private:
+  uint8_t next_byte();
+  std::string read_until_prompt(std::string text = {});
+
+  SerialPort& port_;
+  std::chrono::milliseconds timeout_;
+  std::vector<uint8_t> buf_;
+  size_t pos_ = 0;
+};
+
+}  // namespace htx::console

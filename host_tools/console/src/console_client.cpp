@@ -1,0 +1,156 @@
+#include "htx/console/console_client.hpp"
+
+#include <stdexcept>
+
+#include "htx/fw/console_packet.h"
+#include "htx/fw/crc32.h"
+#include "htx/fw/rle16.h"
+
+namespace htx::console {
+
+namespace {
+
+constexpr auto kSettle = std::chrono::milliseconds(300);
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+std::string unix_lines(const std::string& s) {
+  std::string out;
+  for (char c : s)
+    if (c != '\r') out += c;
+  return out;
+}
+
+// Drops the echoed command line (everything up to the first line break).
+std::string without_echo(const std::string& s) {
+  const size_t nl = s.find('\n');
+  return nl == std::string::npos ? std::string() : s.substr(nl + 1);
+}
+
+const char* status_name(fw::PacketStatus s) {
+  switch (s) {
+    case fw::kPacketBadCobs: return "not COBS";
+    case fw::kPacketTooLong: return "too long";
+    case fw::kPacketBadLength: return "length field does not match";
+    case fw::kPacketBadCrc: return "CRC-32 does not match";
+    default: return "bad";
+  }
+}
+
+}  // namespace
+
+ConsoleClient::ConsoleClient(SerialPort& port, std::chrono::milliseconds timeout) : port_(port), timeout_(timeout) {}
+
+uint8_t ConsoleClient::next_byte() {
+  if (pos_ == buf_.size()) {
+    buf_.resize(4096);
+    const size_t n = port_.read_some(buf_.data(), buf_.size(), timeout_);
+    if (n == 0) {
+      buf_.clear();
+      pos_ = 0;
+      throw std::runtime_error("the console said nothing for " + std::to_string(timeout_.count() / 1000.0) +
+                               " s (is the firmware running the console?)");
+    }
+    buf_.resize(n);
+    pos_ = 0;
+  }
+  return buf_[pos_++];
+}
+
+std::string ConsoleClient::read_until_prompt(std::string text) {
+  while (!ends_with(text, kPrompt)) text += static_cast<char>(next_byte());
+  return text.substr(0, text.size() - std::string(kPrompt).size());
+}
+
+void ConsoleClient::sync() {
+  port_.write("\r");
+  read_until_prompt();
+  // A prompt printed before ours (the greeting's) may be followed by ours: wait for silence.
+  for (;;) {
+    uint8_t b[256];
+    if (pos_ < buf_.size()) {
+      pos_ = buf_.size();
+      continue;
+    }
+    if (port_.read_some(b, sizeof b, kSettle) == 0) return;
+  }
+}
+
+std::string ConsoleClient::command(const std::string& line) {
+  if (line.find_first_of("\r\n") != std::string::npos) throw std::invalid_argument("a command is one line");
+  port_.write(line + "\r");
+  return unix_lines(without_echo(read_until_prompt()));
+}
+
+GrabbedFrame ConsoleClient::grab(const std::function<void(size_t)>& progress) {
+  port_.write("grab\r");
+  // The echo and any message come as text; the packets start at the first zero byte.
+  std::string text;
+  for (;;) {
+    const uint8_t b = next_byte();
+    if (b == 0) break;
+    text += static_cast<char>(b);
+    if (ends_with(text, kPrompt))
+      throw std::runtime_error("grab: the console sent no frame: " + unix_lines(without_echo(text)));
+  }
+  fw::PacketDecoder decoder;
+  GrabbedFrame f;
+  std::vector<uint8_t> coded;
+  uint32_t frame_crc = 0;
+  int expect_seq = -1;
+  bool have_info = false;
+  for (;;) {
+    fw::Packet p;
+    const fw::PacketStatus st = fw::packet_feed(&decoder, next_byte(), &p);
+    if (st == fw::kPacketNone) continue;
+    if (st != fw::kPacketReady) throw std::runtime_error(std::string("grab: a packet arrived damaged: ") + status_name(st));
+    if (expect_seq >= 0 && p.seq != expect_seq)
+      throw std::runtime_error("grab: packet " + std::to_string(expect_seq) + " is missing (got " +
+                               std::to_string(p.seq) + ")");
+    expect_seq = (p.seq + 1) & 0xFF;
+    if (!have_info) {
+      if (p.type != fw::kPacketFrameInfo || p.len < 10) throw std::runtime_error("grab: the frame's header is missing");
+      f.width = static_cast<int>(fw::get_le16(p.payload));
+      f.height = static_cast<int>(fw::get_le16(p.payload + 2));
+      if (p.payload[4] != 0 || p.payload[5] != 1)
+        throw std::runtime_error("grab: unknown pixel format or coding (" + std::to_string(p.payload[4]) + ", " +
+                                 std::to_string(p.payload[5]) + ")");
+      if (f.width < 1 || f.height < 1 || f.width > 4096 || f.height > 4096)
+        throw std::runtime_error("grab: impossible frame size " + std::to_string(f.width) + "x" + std::to_string(f.height));
+      frame_crc = fw::get_le32(p.payload + 6);
+      have_info = true;
+    } else if (p.type == fw::kPacketFrameData) {
+      coded.insert(coded.end(), p.payload, p.payload + p.len);
+      ++f.data_packets;
+      if (progress) progress(coded.size());
+    } else if (p.type == fw::kPacketFrameEnd && p.len >= 8) {
+      if (fw::get_le32(p.payload) != f.data_packets || fw::get_le32(p.payload + 4) != coded.size())
+        throw std::runtime_error("grab: the frame ended after " + std::to_string(f.data_packets) + " packets and " +
+                                 std::to_string(coded.size()) + " bytes, but the console sent " +
+                                 std::to_string(fw::get_le32(p.payload)) + " and " +
+                                 std::to_string(fw::get_le32(p.payload + 4)));
+      break;
+    } else {
+      throw std::runtime_error("grab: unexpected packet type " + std::to_string(p.type));
+    }
+  }
+  read_until_prompt();
+  const size_t count = static_cast<size_t>(f.width) * static_cast<size_t>(f.height);
+  f.pixels.resize(count);
+  if (fw::rle16_decode(coded.data(), coded.size(), f.pixels.data(), count) != static_cast<long>(count))
+    throw std::runtime_error("grab: the pixels do not decode to a " + std::to_string(f.width) + "x" +
+                             std::to_string(f.height) + " frame");
+  uint32_t reg = fw::kCrc32Init;
+  for (uint16_t px : f.pixels) {
+    reg = fw::crc32_update_byte(reg, static_cast<uint8_t>(px & 0xFF));
+    reg = fw::crc32_update_byte(reg, static_cast<uint8_t>(px >> 8));
+  }
+  if (~reg != frame_crc) throw std::runtime_error("grab: the frame's CRC-32 does not match its pixels");
+  f.crc32 = frame_crc;
+  f.coded_bytes = coded.size();
+  return f;
+}
+
+}  // namespace htx::console

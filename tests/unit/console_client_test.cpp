@@ -1,0 +1,166 @@
+// htx's console client (host_tools/console) against a scripted console on a pseudo-terminal: the
+// command exchange, a good frame download, and every way a download can go wrong (a damaged
+// packet, a missing one, a checksum that does not match, no frame, silence) ending in a clear error.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <pty.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "htx/console/console_client.hpp"
+#include "htx/console/serial_port.hpp"
+#include "htx/fw/console_packet.h"
+#include "htx/fw/crc32.h"
+#include "htx/fw/rle16.h"
+
+namespace {
+
+using namespace std::chrono_literals;
+using htx::console::ConsoleClient;
+using htx::console::SerialPort;
+
+enum class GrabMode { kGood, kGap, kDamaged, kBadCrc, kNoFrame, kSilent };
+
+// The console's side: answers each line it reads from the master end of a pty.
+class FakeConsole {
+ public:
+  explicit FakeConsole(GrabMode mode) : mode_(mode) {
+    if (::openpty(&master_, &slave_, nullptr, nullptr, nullptr) != 0) throw std::runtime_error("openpty");
+    path_ = ::ptsname(master_);
+    thread_ = std::thread([this] { serve(); });
+  }
+  ~FakeConsole() {
+    stop_ = true;
+    thread_.join();
+    ::close(master_);
+    ::close(slave_);
+  }
+  const std::string& path() const { return path_; }
+  // The frame it sends: 3 x 2 pixels.
+  static std::vector<uint16_t> pixels() { return {0x1234, 0x1234, 0x1234, 0xF800, 0x07E0, 0x001F}; }
+
+ private:
+  void put(const std::string& s) { (void)!::write(master_, s.data(), s.size()); }
+  void put(const std::vector<uint8_t>& b) { (void)!::write(master_, b.data(), b.size()); }
+  void packet(uint8_t type, uint8_t seq, const std::vector<uint8_t>& payload, bool damage = false) {
+    std::vector<uint8_t> line(htx::fw::kPacketMaxLine);
+    line.resize(htx::fw::packet_encode(type, seq, payload.data(), payload.size(), line.data()));
+    if (damage) line[3] ^= 0x10;
+    put(line);
+  }
+  void send_frame() {
+    const std::vector<uint16_t> px = pixels();
+    std::vector<uint8_t> raw;
+    for (uint16_t p : px) raw.insert(raw.end(), {static_cast<uint8_t>(p), static_cast<uint8_t>(p >> 8)});
+    std::vector<uint8_t> info(10);
+    htx::fw::put_le16(info.data(), 3);
+    htx::fw::put_le16(info.data() + 2, 2);
+    info[4] = 0;
+    info[5] = 1;
+    htx::fw::put_le32(info.data() + 6, htx::fw::crc32(raw.data(), raw.size()) ^ (mode_ == GrabMode::kBadCrc ? 1u : 0u));
+    std::vector<uint8_t> code(htx::fw::rle16_max_size(px.size()));
+    code.resize(htx::fw::rle16_encode(px.data(), px.size(), code.data()));
+    const std::vector<uint8_t> first(code.begin(), code.begin() + 3), second(code.begin() + 3, code.end());
+    packet(htx::fw::kPacketFrameInfo, 7, info);
+    packet(htx::fw::kPacketFrameData, 8, first, mode_ == GrabMode::kDamaged);
+    packet(htx::fw::kPacketFrameData, mode_ == GrabMode::kGap ? 10 : 9, second);
+    std::vector<uint8_t> end(8);
+    htx::fw::put_le32(end.data(), 2);
+    htx::fw::put_le32(end.data() + 4, static_cast<uint32_t>(code.size()));
+    packet(htx::fw::kPacketFrameEnd, mode_ == GrabMode::kGap ? 11 : 10, end);
+  }
+  void answer(const std::string& line) {
+    if (line.empty()) return put("\r\nhtx> ");
+    put(line + "\r\n");
+    if (line == "info") return put("line one\r\nline two\r\nhtx> ");
+    if (line != "grab") return put("error: unknown command (type help): " + line + "\r\nhtx> ");
+    if (mode_ == GrabMode::kSilent) return;
+    if (mode_ == GrabMode::kNoFrame) return put("error: no framebuffer\r\nhtx> ");
+    send_frame();
+    put("htx> ");
+  }
+  void serve() {
+    put("hypertex console. Type help.\r\nhtx> ");
+    std::string line;
+    while (!stop_) {
+      pollfd p{master_, POLLIN, 0};
+      if (::poll(&p, 1, 20) <= 0) continue;
+      char c;
+      if (::read(master_, &c, 1) != 1) continue;
+      if (c == '\r') {
+        answer(line);
+        line.clear();
+      } else {
+        line += c;
+      }
+    }
+  }
+
+  GrabMode mode_;
+  int master_ = -1, slave_ = -1;
+  std::string path_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+std::string grab_error(GrabMode mode) {
+  FakeConsole fake(mode);
+  SerialPort port(fake.path(), 115200);
+  ConsoleClient client(port, 1500ms);
+  client.sync();
+  try {
+    client.grab();
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(ConsoleClient, CommandOutputWithoutEchoOrPrompt) {
+  FakeConsole fake(GrabMode::kGood);
+  SerialPort port(fake.path(), 115200);
+  ConsoleClient client(port, 2s);
+  client.sync();
+  EXPECT_EQ(client.command("info"), "line one\nline two\n");
+  EXPECT_EQ(client.command("bogus"), "error: unknown command (type help): bogus\n");
+  EXPECT_THROW(client.command("two\nlines"), std::invalid_argument);
+}
+
+TEST(ConsoleClient, GrabDecodesAndChecksTheFrame) {
+  FakeConsole fake(GrabMode::kGood);
+  SerialPort port(fake.path(), 115200);
+  ConsoleClient client(port, 2s);
+  client.sync();
+  size_t progress = 0;
+  const htx::console::GrabbedFrame f = client.grab([&progress](size_t bytes) { progress = bytes; });
+  EXPECT_EQ(f.width, 3);
+  EXPECT_EQ(f.height, 2);
+  EXPECT_EQ(f.pixels, FakeConsole::pixels());
+  EXPECT_EQ(f.data_packets, 2u);
+  EXPECT_EQ(progress, f.coded_bytes);
+  // The exchange is back at a prompt: the next command works.
+  EXPECT_EQ(client.command("info"), "line one\nline two\n");
+}
+
+TEST(ConsoleClient, GrabFailuresSayWhatWentWrong) {
+  EXPECT_NE(grab_error(GrabMode::kDamaged).find("damaged"), std::string::npos) << grab_error(GrabMode::kDamaged);
+  EXPECT_NE(grab_error(GrabMode::kGap).find("packet 9 is missing"), std::string::npos);
+  EXPECT_NE(grab_error(GrabMode::kBadCrc).find("CRC-32 does not match"), std::string::npos);
+  EXPECT_NE(grab_error(GrabMode::kNoFrame).find("sent no frame: error: no framebuffer"), std::string::npos);
+  EXPECT_NE(grab_error(GrabMode::kSilent).find("said nothing for"), std::string::npos);
+}
+
+TEST(ConsoleClient, RefusesAPathThatIsNotATerminal) {
+  EXPECT_THROW(SerialPort("/nonexistent/tty", 115200), std::runtime_error);
+  EXPECT_THROW(SerialPort("/dev/null", 115200), std::runtime_error);
+  FakeConsole fake(GrabMode::kGood);
+  EXPECT_THROW(SerialPort(fake.path(), 12345), std::invalid_argument);
+}
+
+}  // namespace
