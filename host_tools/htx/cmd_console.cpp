@@ -11,7 +11,11 @@
 #include "commands.hpp"
 #include "htx/console/console_client.hpp"
 #include "htx/console/serial_port.hpp"
+#include "frame_size.hpp"
+#include "htx/host/render_scene.hpp"
 #include "htx/model/image_io.hpp"
+#include "htx/model/scenes.hpp"
+#include "htx/render/scene_pack.h"
 
 namespace htx {
 
@@ -50,6 +54,8 @@ void run_console(const ConsoleArgs& a) {
         return;
       }
       if (c == "grab") throw std::invalid_argument("use `htx grab --port " + a.port + " --out FRAME.png` for grab");
+      if (c.rfind("upload", 0) == 0)
+        throw std::invalid_argument("use `htx upload SCENE --port " + a.port + "` to send a scene");
       std::cout << client.command(c) << std::flush;
     }
     return;
@@ -64,8 +70,9 @@ void run_console(const ConsoleArgs& a) {
       port.write("quit\r");
       break;
     }
-    if (line == "grab") {
-      std::cout << "use `htx grab --port " << a.port << " --out FRAME.png` to download the frame\n";
+    if (line == "grab" || line.rfind("upload", 0) == 0) {
+      std::cout << "use `htx grab --port " << a.port << " --out FRAME.png` to download the frame, `htx upload SCENE --port "
+                << a.port << "` to send a scene\n";
       continue;
     }
     std::cout << client.command(line) << std::flush;
@@ -95,6 +102,32 @@ void run_grab(const GrabArgs& a) {
             << f.data_packets << " packets, crc32 " << crc << " -> " << a.out << "\n";
 }
 
+struct UploadArgs : PortArgs {
+  std::string scene;
+  std::string size = "160x120";
+};
+
+void run_upload(const UploadArgs& a) {
+  int width = 0, height = 0;
+  parse_size(a.size, width, height);
+  // The firmware's form of the scene (as the render firmware's compiled-in scenes are made), packed.
+  const host::RenderScene rs = host::to_render_scene(load_scene(a.scene), width, height);
+  std::vector<render::Mesh> meshes;
+  for (const host::RenderScene::MeshData& d : rs.meshes) meshes.push_back(d.mesh);
+  const uint32_t count = static_cast<uint32_t>(meshes.size());
+  std::vector<uint8_t> packed(render::packed_scene_size(meshes.data(), count));
+  if (render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(), count, packed.data(), packed.size()) == 0)
+    throw std::runtime_error("'" + a.scene + "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
+  console::SerialPort port(a.port, a.baud);
+  console::ConsoleClient client(port, timeout_of(a));
+  client.sync();
+  const std::string verdict = client.upload(packed, [&packed](size_t sent) {
+    std::cerr << "\rupload: " << sent << " of " << packed.size() << " bytes" << std::flush;
+  });
+  std::cerr << "\n";
+  std::cout << verdict;
+}
+
 }  // namespace
 
 void register_console(CLI::App& app) {
@@ -110,6 +143,13 @@ void register_console(CLI::App& app) {
   add_port_options(grab, gargs.get());
   grab->add_option("--out", gargs->out, "output PNG")->required();
   grab->callback([gargs] { run_grab(*gargs); });
+
+  auto uargs = std::make_shared<UploadArgs>();
+  auto* upload = app.add_subcommand("upload", "Send a scene (built-in NAME[:k=v,...] or FILE.obj) to the console firmware");
+  add_port_options(upload, uargs.get());
+  upload->add_option("scene", uargs->scene, "built-in scene spec or an OBJ file")->required();
+  upload->add_option("--size", uargs->size, "the console's screen, for the camera's aspect")->capture_default_str();
+  upload->callback([uargs] { run_upload(*uargs); });
 }
 
 }  // namespace htx

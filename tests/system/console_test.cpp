@@ -1,11 +1,16 @@
 // The console firmware on the simulated SoC, driven by htx's own console tools through the
 // pseudo-terminal of `htx sim --uart pty`, as a user would drive a board: commands and their
-// errors, a render, a frame download equal to the frame the render firmware leaves on the SoC,
-// and `quit` ending the simulation with status 0.
+// errors, a render, a frame download equal to the frame the render firmware leaves on the SoC, a
+// scene upload drawing that frame too, refused uploads leaving the scene as it was, and `quit`
+// ending the simulation with status 0.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <termios.h>
+#include <unistd.h>
 
 #include <string>
 
+#include "htx/fw/console_packet.h"
 #include "subprocess.hpp"
 
 namespace {
@@ -17,6 +22,19 @@ std::string field_after(const std::string& text, const std::string& key) {
   if (at == std::string::npos) return "";
   const size_t start = at + key.size();
   return text.substr(start, text.find_first_of(" \r\n", start) - start);
+}
+
+// Reads from the terminal until a whole packet has arrived (or four frames went by without one).
+htx::fw::PacketStatus read_packet(int fd, htx::fw::Packet* p) {
+  static htx::fw::PacketDecoder decoder;
+  for (int frames = 0; frames < 4; ++frames) {
+    std::string acc;
+    if (!htx::test::read_fd_until(fd, acc, std::string(1, '\0'), 60s)) return htx::fw::kPacketNone;
+    for (char c : acc)
+      if (htx::fw::packet_feed(&decoder, static_cast<uint8_t>(c), p) == htx::fw::kPacketReady)
+        return htx::fw::kPacketReady;
+  }
+  return htx::fw::kPacketNone;
 }
 
 TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
@@ -55,6 +73,50 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   ASSERT_EQ(g.status, 0) << g.err;
   EXPECT_NE(g.out.find("160x120 frame"), std::string::npos) << g.out;
   EXPECT_EQ(field_after(g.out, "crc32 "), crc) << g.out;
+
+  // A scene upload: the cube from the host draws the same frame as the compiled-in cube.
+  const auto up = htx::test::run_program({HTX_BIN, "upload", "cube", "--port", pty, "--timeout", "60"}, 180s);
+  ASSERT_EQ(up.status, 0) << up.err;
+  EXPECT_NE(up.out.find("upload ok: 816 bytes, 1 meshes, 12 triangles"), std::string::npos) << up.out;
+  // Refused scenes leave it as it was: one too large for the store, and one abandoned after a
+  // damaged packet (sent by hand: the console asks for it again, then the host gives up).
+  const auto big = htx::test::run_program({HTX_BIN, "upload", "tunnel", "--port", pty, "--timeout", "60"}, 180s);
+  EXPECT_NE(big.status, 0);
+  EXPECT_NE(big.err.find("does not fit the store (1..3072)"), std::string::npos) << big.err;
+  {
+    const int fd = open(pty.c_str(), O_RDWR | O_NOCTTY);
+    ASSERT_GE(fd, 0);
+    termios tio{};
+    ASSERT_EQ(tcgetattr(fd, &tio), 0);
+    cfmakeraw(&tio);
+    ASSERT_EQ(tcsetattr(fd, TCSANOW, &tio), 0);
+    const std::string cmd = "upload 816 0badf00d\r";
+    ASSERT_EQ(write(fd, cmd.data(), cmd.size()), static_cast<ssize_t>(cmd.size()));
+    std::string got;
+    ASSERT_TRUE(htx::test::read_fd_until(fd, got, "ready\r\n", 60s)) << got;
+    const uint8_t payload[4] = {1, 2, 3, 4};
+    uint8_t line[htx::fw::kPacketMaxLine];
+    size_t n = htx::fw::packet_encode(htx::fw::kPacketSceneData, 0, payload, sizeof payload, line);
+    line[5] ^= 0x01;  // damaged in flight
+    ASSERT_EQ(write(fd, line, n), static_cast<ssize_t>(n));
+    // The answer: a Nak packet asking for packet 0 again.
+    htx::fw::Packet answer{};
+    const htx::fw::PacketStatus st = read_packet(fd, &answer);
+    ASSERT_EQ(st, htx::fw::kPacketReady);
+    EXPECT_EQ(answer.type, htx::fw::kPacketNak);
+    ASSERT_EQ(answer.len, 1);
+    EXPECT_EQ(answer.payload[0], 0);
+    n = htx::fw::packet_encode(htx::fw::kPacketAbort, 0, payload, 1, line);
+    ASSERT_EQ(write(fd, line, n), static_cast<ssize_t>(n));
+    std::string verdict;
+    ASSERT_TRUE(htx::test::read_fd_until(fd, verdict, "htx> ", 60s)) << verdict;
+    EXPECT_NE(verdict.find("error: the host abandoned the upload; the scene is unchanged"), std::string::npos) << verdict;
+    close(fd);
+  }
+  const auto again = console({"scenes", "render upload"});
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_NE(again.out.find("upload (816 bytes)"), std::string::npos) << again.out;
+  EXPECT_EQ(field_after(again.out.substr(again.out.find("render upload method")), "crc32 "), crc) << again.out;
 
   const auto q = console({"quit"});
   EXPECT_EQ(q.status, 0) << q.err;

@@ -92,7 +92,8 @@ CosimFrame cosim_frame(const std::string& scene_name) {
   const ModelConfig cfg = rtl_config("icebreaker");
   hal::sim::GpuSimBus bus("icebreaker");
   hal::sim::ScopedBus attach(bus);
-  if (render_app::upload_scene_texture(1000) != render::kUploadOk)
+  std::vector<uint32_t> image(render_app::kTextureTexels);
+  if (render_app::upload_scene_texture(1000, image.data()) != render::kUploadOk)
     throw std::runtime_error("cosim texture upload failed");
   render::FrameParams frame;
   frame.viewport = {kW, kH};

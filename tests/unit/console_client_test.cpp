@@ -25,7 +25,7 @@ using namespace std::chrono_literals;
 using htx::console::ConsoleClient;
 using htx::console::SerialPort;
 
-enum class GrabMode { kGood, kGap, kDamaged, kBadCrc, kNoFrame, kSilent };
+enum class GrabMode { kGood, kGap, kDamaged, kBadCrc, kNoFrame, kSilent, kNakOnce, kRefuse, kNeverAck };
 
 // The console's side: answers each line it reads from the master end of a pty.
 class FakeConsole {
@@ -85,22 +85,66 @@ class FakeConsole {
     send_frame();
     put("htx> ");
   }
+  void reply(uint8_t type, uint8_t seq) { packet(type, 0, {seq}); }
+  // A packet of an upload arrived: acknowledge it (or not, as the mode says).
+  void upload_packet(const htx::fw::Packet& p) {
+    if (p.type == htx::fw::kPacketAbort) {
+      uploading_ = false;
+      return put("error: the host abandoned the upload; the scene is unchanged\r\nhtx> ");
+    }
+    if (mode_ == GrabMode::kNeverAck || (mode_ == GrabMode::kNakOnce && naks_ == 0)) {
+      ++naks_;
+      return reply(htx::fw::kPacketNak, p.seq);
+    }
+    received_ += p.len;
+    ++upload_packets_;
+    reply(htx::fw::kPacketAck, p.seq);
+    if (received_ == upload_size_) {
+      uploading_ = false;
+      put("upload ok: " + std::to_string(received_) + " bytes\r\nhtx> ");
+    }
+  }
   void serve() {
     put("hypertex console. Type help.\r\nhtx> ");
     std::string line;
+    htx::fw::PacketDecoder decoder;
     while (!stop_) {
       pollfd p{master_, POLLIN, 0};
       if (::poll(&p, 1, 20) <= 0) continue;
       char c;
       if (::read(master_, &c, 1) != 1) continue;
-      if (c == '\r') {
-        answer(line);
+      if (uploading_) {
+        htx::fw::Packet packet;
+        if (htx::fw::packet_feed(&decoder, static_cast<uint8_t>(c), &packet) == htx::fw::kPacketReady)
+          upload_packet(packet);
+      } else if (c == '\r') {
+        if (line.rfind("upload ", 0) == 0) {
+          put(line + "\r\n");
+          upload_size_ = std::stoul(line.substr(7));
+          if (mode_ == GrabMode::kRefuse) {
+            put("error: a scene of " + std::to_string(upload_size_) + " bytes does not fit the store (1..3072)\r\nhtx> ");
+          } else {
+            put("ready\r\n");
+            uploading_ = true;
+          }
+        } else {
+          answer(line);
+        }
         line.clear();
       } else {
         line += c;
       }
     }
   }
+
+ public:
+  int naks() const { return naks_; }
+  size_t upload_packets() const { return upload_packets_; }
+
+ private:
+  bool uploading_ = false;
+  size_t upload_size_ = 0, received_ = 0, upload_packets_ = 0;
+  int naks_ = 0;
 
   GrabMode mode_;
   int master_ = -1, slave_ = -1;
@@ -154,6 +198,37 @@ TEST(ConsoleClient, GrabFailuresSayWhatWentWrong) {
   EXPECT_NE(grab_error(GrabMode::kBadCrc).find("CRC-32 does not match"), std::string::npos);
   EXPECT_NE(grab_error(GrabMode::kNoFrame).find("sent no frame: error: no framebuffer"), std::string::npos);
   EXPECT_NE(grab_error(GrabMode::kSilent).find("said nothing for"), std::string::npos);
+}
+
+TEST(ConsoleClient, UploadResendsWhatWasNotTakenAndReportsTheVerdict) {
+  std::vector<uint8_t> scene(600);
+  for (size_t i = 0; i < scene.size(); ++i) scene[i] = static_cast<uint8_t>(i * 7);
+  {
+    FakeConsole fake(GrabMode::kNakOnce);
+    SerialPort port(fake.path(), 115200);
+    ConsoleClient client(port, 2s);
+    client.sync();
+    EXPECT_EQ(client.upload(scene), "upload ok: 600 bytes\n");
+    EXPECT_EQ(fake.naks(), 1);
+    EXPECT_EQ(fake.upload_packets(), 3u);  // 240 + 240 + 120, the first sent twice
+    EXPECT_EQ(client.command("info"), "line one\nline two\n");
+  }
+  const auto upload_error = [&scene](GrabMode mode) -> std::string {
+    FakeConsole fake(mode);
+    SerialPort port(fake.path(), 115200);
+    ConsoleClient client(port, 2s);
+    client.sync();
+    try {
+      client.upload(scene);
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(upload_error(GrabMode::kRefuse),
+            "upload: the console refused: error: a scene of 600 bytes does not fit the store (1..3072)\n");
+  EXPECT_EQ(upload_error(GrabMode::kNeverAck),
+            "upload: packet 0 was not taken after 8 tries; the console's scene is unchanged");
 }
 
 TEST(ConsoleClient, RefusesAPathThatIsNotATerminal) {

@@ -1,5 +1,5 @@
-// Test support: a host Scene (hw/model) as the firmware render pipeline takes it (Q16.16 meshes and
-// matrices), and the triangles the pipeline streams, captured and decoded. Shared by the unit tests
+// Test support: the triangles the firmware render pipeline streams for a host Scene converted by
+// host_tools/scene_convert, captured and decoded. Shared by the unit tests
 // of firmware/render and the cosim tests.
 #pragma once
 
@@ -7,33 +7,19 @@
 #include <vector>
 
 #include "htx/fw/vertex_record.h"
+#include "htx/host/render_scene.hpp"
 #include "htx/model/scene.hpp"
 #include "htx/render/pipeline.h"
 
 namespace htx::test {
 
-int32_t to_q16(double x);  // round(x * 2^16), checked against the Q16.16 range (throws)
-// Linear part with the most fraction bits (16..30) its largest entry allows, translation Q16.16.
-render::Mat4 to_mat4_fx(const Mat4& m);
+// The conversion lives in host_tools/scene_convert; the tests keep their names for it.
+using host::RenderScene;
+using host::to_mat4_fx;
+using host::to_q16;
+using host::to_render_scene;
+using host::to_render_state;
 
-// The firmware form of a scene's meshes; owns the arrays the render::Mesh views point at.
-struct RenderScene {
-  struct MeshData {
-    std::vector<render::MeshVertex> vertices;
-    std::vector<uint16_t> indices;
-    render::Mesh mesh{};
-  };
-  std::vector<MeshData> meshes;
-  render::Mat4 view_proj{};
-  int width = 0, height = 0;
-  bool cull_backfaces = true;
-};
-
-// Converts with the host's camera (projection * view for the screen's aspect). Throws when a
-// value leaves Q16.16 or a mesh has more than 65536 vertices.
-RenderScene to_render_scene(const Scene& scene, int width, int height);
-
-render::TriState to_render_state(const TriState& s);
 // The host TriState a STATE word (hw/regs/raster.json) stands for.
 TriState from_state_word(uint32_t word);
 

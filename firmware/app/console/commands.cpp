@@ -5,6 +5,8 @@
 #include <string.h>
 
 #include "frame_download.hpp"
+#include "scene_store.hpp"
+#include "scene_upload.hpp"
 #include "htx_regs.h"
 #include "scene_render.hpp"
 #include "scenes.hpp"
@@ -62,6 +64,7 @@ void cmd_help() {
         "  set method NAME       auto, affine, subdivN (N = 2..64), recip_lut, recip_nr, divfree\r\n"
         "  set tolerance 1/N     AUTO's largest predicted texel error (N = 1..65536)\r\n"
         "  render SCENE          draw a scene; prints its figures and the frame's CRC-32\r\n"
+        "  upload SIZE CRC32     receive a packed scene as packets (for `htx upload`); SCENE `upload`\r\n"
         "  stats                 the raster unit's counters after the last render\r\n"
         "  grab                  send the frame as binary packets (for `htx grab`)\r\n"
         "  quit                  leave the console (the simulation ends)\r\n",
@@ -81,6 +84,31 @@ void cmd_scenes() {
   uint32_t n = 0;
   const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
   for (uint32_t i = 0; i < n; ++i) printf("%s\r\n", scenes[i].name);
+  if (uploaded_scene()) printf("upload (%lu bytes)\r\n", static_cast<unsigned long>(uploaded_size()));
+}
+
+// A number of 1..8 hex digits.
+bool parse_hex(const char* s, uint32_t* out) {
+  uint32_t v = 0, digits = 0;
+  for (; *s; ++s, ++digits) {
+    const char c = *s;
+    const int d = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+    if (d < 0 || digits == 8) return false;
+    v = v * 16 + static_cast<uint32_t>(d);
+  }
+  if (digits == 0) return false;
+  *out = v;
+  return true;
+}
+
+void cmd_upload(char* rest) {
+  const char* size_text = next_word(&rest);
+  const char* crc_text = next_word(&rest);
+  uint32_t size = 0, crc = 0;
+  if (!size_text || !crc_text || next_word(&rest) || !parse_uint(size_text, 0, 0x7FFFFFFF, &size) ||
+      !parse_hex(crc_text, &crc))
+    return error("usage: upload SIZE CRC32 (decimal bytes, hex checksum; `htx upload` sends them)");
+  receive_scene(size, crc);
 }
 
 bool set_method(const char* name) {
@@ -125,12 +153,18 @@ void cmd_render(char* rest) {
   if (!name || next_word(&rest)) return error("usage: render SCENE");
   uint32_t n = 0;
   const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
-  for (uint32_t i = 0; i < n; ++i) {
-    if (strcmp(scenes[i].name, name) != 0) continue;
+  const render_app::SceneData* scene = nullptr;
+  for (uint32_t i = 0; i < n; ++i)
+    if (strcmp(scenes[i].name, name) == 0) scene = &scenes[i];
+  if (strcmp(name, "upload") == 0) {
+    scene = uploaded_scene();
+    if (!scene) return error("no scene uploaded yet (htx upload)");
+  }
+  if (scene) {
     render_app::DrawSettings draw = g_settings.draw;
     draw.time_geometry = false;
-    g_last = render_app::draw_scene(scenes[i], draw);
-    g_last_scene = scenes[i].name;
+    g_last = render_app::draw_scene(*scene, draw);
+    g_last_scene = scene->name;
     if (!g_last.ok) return error("render failed: ", g_last.error);
     printf("render %s method %s triangles %lu sent %lu frame_cycles %lu raster_cycles %lu fragments %lu crc32 %08lx\r\n",
            name, g_settings.method_text, static_cast<unsigned long>(g_last.stats.triangles),
@@ -165,6 +199,8 @@ CommandResult run_command(char* line) {
     cmd_set(rest);
   } else if (strcmp(cmd, "render") == 0) {
     cmd_render(rest);
+  } else if (strcmp(cmd, "upload") == 0) {
+    cmd_upload(rest);
   } else if (next_word(&rest)) {
     error("this command takes no arguments: ", cmd);
   } else if (strcmp(cmd, "help") == 0) {

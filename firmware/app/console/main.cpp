@@ -4,15 +4,17 @@
 
 #include "commands.hpp"
 #include "line_reader.hpp"
+#include "scene_store.hpp"
 #include "soc_texture.hpp"
 
 namespace {
 constexpr uint32_t kMaxPolls = 20'000'000;
 constexpr const char* kPrompt = "htx> ";
+static_assert(2 * console_app::kStoreBytes >= 4 * render_app::kTextureTexels, "the store is the texture's scratch at boot");
 }  // namespace
 
 int main() {
-  const htx::render::UploadStatus up = render_app::upload_scene_texture(kMaxPolls);
+  const htx::render::UploadStatus up = render_app::upload_scene_texture(kMaxPolls, console_app::boot_scratch_words());
   if (up != htx::render::kUploadOk) {
     printf("console: texture upload failed with status %d\r\n", up);
     return 1;

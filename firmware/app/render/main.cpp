@@ -19,6 +19,7 @@
 namespace {
 
 constexpr uint32_t kMaxPolls = 20'000'000;
+uint32_t g_texture_image[render_app::kTextureTexels];
 
 bool render_scene(const render_app::SceneData& sc) {
   const render_app::DrawResult r = render_app::draw_scene(sc, {});
@@ -40,7 +41,7 @@ bool render_scene(const render_app::SceneData& sc) {
 }  // namespace
 
 int main() {
-  const htx::render::UploadStatus up = render_app::upload_scene_texture(kMaxPolls);
+  const htx::render::UploadStatus up = render_app::upload_scene_texture(kMaxPolls, g_texture_image);
   if (up != htx::render::kUploadOk) {
     printf("render: texture upload failed with status %d\n", up);
     return 1;

@@ -12,7 +12,7 @@ namespace render_app {
 
 namespace {
 
-constexpr uint32_t kMaxVertices = 128;
+constexpr uint32_t kMaxVertices = kMaxMeshVertices;
 constexpr uint32_t kMaxPolls = 20'000'000;  // far beyond any frame of these scenes
 
 htx::render::ClipVert g_clip[kMaxVertices];

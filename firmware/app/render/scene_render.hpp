@@ -18,6 +18,9 @@ struct DrawSettings {
 };
 
 inline constexpr uint32_t kGeometryRuns = 4;
+// The vertex cache's size: the most vertices a mesh may have (floor has 81; the 64 KiB RAM leaves
+// the console no room for more beside its scene store).
+inline constexpr uint32_t kMaxMeshVertices = 96;
 
 struct DrawResult {
   bool ok = false;

@@ -20,8 +20,9 @@ inline constexpr uint32_t kTextureTexels = 1u << (2 * kTextureLog2);
 // The level-0 image, RGBA8 (r in bits 7:0), row-major.
 void checker_texels(uint32_t* rgba8);
 
-// Generates the image, uploads it with its mip chain at block 0 into kTextureSlot (RGB565) and
-// returns upload_texture's status.
-htx::render::UploadStatus upload_scene_texture(uint32_t max_polls);
+// Generates the image in `image` (kTextureTexels words of scratch, free again afterwards: the
+// console lends its scene store), uploads it with its mip chain at block 0 into kTextureSlot
+// (RGB565) and returns upload_texture's status.
+htx::render::UploadStatus upload_scene_texture(uint32_t max_polls, uint32_t* image);
 
 }  // namespace render_app

@@ -1,5 +1,7 @@
 #include "htx/console/console_client.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 #include "htx/fw/console_packet.h"
@@ -151,6 +153,59 @@ GrabbedFrame ConsoleClient::grab(const std::function<void(size_t)>& progress) {
   f.crc32 = frame_crc;
   f.coded_bytes = coded.size();
   return f;
+}
+
+bool ConsoleClient::next_packet(uint8_t* type, uint8_t* payload0) {
+  fw::PacketDecoder decoder;
+  for (;;) {
+    fw::Packet p;
+    const fw::PacketStatus st = fw::packet_feed(&decoder, next_byte(), &p);
+    if (st == fw::kPacketNone) continue;
+    if (st != fw::kPacketReady || p.len < 1) return false;
+    *type = p.type;
+    *payload0 = p.payload[0];
+    return true;
+  }
+}
+
+std::string ConsoleClient::upload(const std::vector<uint8_t>& scene, const std::function<void(size_t)>& progress) {
+  char crc[16];
+  std::snprintf(crc, sizeof crc, "%08x", fw::crc32(scene.data(), scene.size()));
+  port_.write("upload " + std::to_string(scene.size()) + " " + crc + "\r");
+  // The console answers `ready`, or refuses with a message and a prompt.
+  std::string text;
+  while (!ends_with(text, "ready\r\n")) {
+    text += static_cast<char>(next_byte());
+    if (ends_with(text, kPrompt))
+      throw std::runtime_error("upload: the console refused: " + unix_lines(without_echo(text.substr(0, text.size() - std::string(kPrompt).size()))));
+  }
+  size_t sent = 0;
+  for (uint32_t seq = 0; sent < scene.size(); ++seq) {
+    const size_t len = std::min(fw::kPacketMaxPayload, scene.size() - sent);
+    std::vector<uint8_t> line(fw::kPacketMaxLine);
+    line.resize(fw::packet_encode(fw::kPacketSceneData, static_cast<uint8_t>(seq), scene.data() + sent, len, line.data()));
+    bool taken = false;
+    for (int attempt = 0; attempt < kUploadTries && !taken; ++attempt) {
+      port_.write(std::string(line.begin(), line.end()));
+      uint8_t type = 0, value = 0;
+      if (!next_packet(&type, &value)) continue;  // a damaged answer: send again
+      taken = type == fw::kPacketAck && value == static_cast<uint8_t>(seq);
+    }
+    if (!taken) {
+      const uint8_t nothing = 0;
+      std::vector<uint8_t> abort(fw::kPacketMaxLine);
+      abort.resize(fw::packet_encode(fw::kPacketAbort, 0, &nothing, 1, abort.data()));
+      port_.write(std::string(abort.begin(), abort.end()));
+      read_until_prompt();
+      throw std::runtime_error("upload: packet " + std::to_string(seq) + " was not taken after " +
+                               std::to_string(kUploadTries) + " tries; the console's scene is unchanged");
+    }
+    sent += len;
+    if (progress) progress(sent);
+  }
+  const std::string verdict = unix_lines(read_until_prompt());
+  if (verdict.find("error:") != std::string::npos) throw std::runtime_error("upload: " + verdict);
+  return verdict;
 }
 
 }  // namespace htx::console

@@ -24,6 +24,13 @@ enum PacketType : uint8_t {
                            // u32 CRC-32 of the raw pixels (two bytes each, low first, row by row)
   kPacketFrameData = 'D',  // the next bytes of the coded pixels
   kPacketFrameEnd = 'E',   // u32 number of FrameData packets, u32 coded bytes in all
+  // A scene upload (`upload SIZE CRC32`): the host sends SceneData packets with sequence numbers
+  // 0, 1, ... (mod 256) and waits for each to be answered: Ack (u8: the sequence number taken) or
+  // Nak (u8: the sequence number wanted). Abort ends the upload with the scene unchanged.
+  kPacketSceneData = 'S',  // the next bytes of the packed scene (htx/render/scene_pack.h)
+  kPacketAck = 'A',
+  kPacketNak = 'N',
+  kPacketAbort = 'X',
 };
 
 // Writes the framed packet to `out` (at least kPacketMaxLine bytes); returns the bytes written,

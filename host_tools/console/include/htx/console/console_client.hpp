@@ -35,9 +35,16 @@ class ConsoleClient {
   // Sends `grab` and receives the frame. Throws std::runtime_error with the reason on any protocol
   // error (a bad packet, a gap in the sequence, a checksum or size that does not match).
   GrabbedFrame grab(const std::function<void(size_t coded_bytes)>& progress = {});
+  // Sends a packed scene (`upload SIZE CRC32`, then packets, each resent until acknowledged, at most
+  // kUploadTries times) and returns the console's verdict line. Throws std::runtime_error when the
+  // console refuses the scene or the transfer fails; the console's scene is then unchanged.
+  std::string upload(const std::vector<uint8_t>& scene, const std::function<void(size_t sent)>& progress = {});
+  static constexpr int kUploadTries = 8;
 
  private:
   uint8_t next_byte();
+  // The next packet the console sends, skipping anything that is not one; throws on a timeout.
+  bool next_packet(uint8_t* type, uint8_t* payload0);
   std::string read_until_prompt(std::string text = {});
 
   SerialPort& port_;

@@ -1,0 +1,31 @@
+// The uploaded scene (docs/console.md, "Scene upload"): two buffers, the committed scene and the
+// one being received. A received scene replaces the committed one only once it is complete and
+// unpack_scene (htx/render/scene_pack.h) has found it valid; until then the committed one stays
+// as it was.
+#pragma once
+
+#include <stdint.h>
+
+#include "scenes.hpp"
+
+namespace console_app {
+
+inline constexpr uint32_t kStoreBytes = 3072;  // per buffer: floor's 2,880 bytes fit
+inline constexpr uint32_t kStoreMeshes = 8;
+
+// Where a scene is received (kStoreBytes, 4-byte aligned).
+uint8_t* staging_bytes();
+
+// Both buffers, contiguous (2 * kStoreBytes): at boot, before any scene arrives, the scratch image
+// of the texture upload (soc_texture.hpp). The 64 KiB RAM has no room for a third buffer.
+uint32_t* boot_scratch_words();
+
+// Checks the `size` received bytes and, if they are a valid scene, makes them the committed scene.
+// Returns nullptr, or what is wrong (the committed scene is then unchanged).
+const char* commit_staged(uint32_t size);
+
+// The committed scene, named "upload"; nullptr before the first successful upload.
+const render_app::SceneData* uploaded_scene();
+uint32_t uploaded_size();
+
+}  // namespace console_app

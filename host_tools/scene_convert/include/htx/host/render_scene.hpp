@@ -1,0 +1,37 @@
+// A host Scene (hw/model) as the firmware render pipeline takes it: Q16.16 meshes and fixed-point
+// matrices. Used by `htx upload` (packed with htx/render/scene_pack.h), by the firmware's
+// compiled-in scene data generator and by the tests that compare the firmware with the model.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "htx/model/scene.hpp"
+#include "htx/render/pipeline.h"
+
+namespace htx::host {
+
+int32_t to_q16(double x);  // round(x * 2^16), checked against the Q16.16 range (throws)
+// Linear part with the most fraction bits (16..30) its largest entry allows, translation Q16.16.
+render::Mat4 to_mat4_fx(const Mat4& m);
+
+// The firmware form of a scene's meshes; owns the arrays the render::Mesh views point at.
+struct RenderScene {
+  struct MeshData {
+    std::vector<render::MeshVertex> vertices;
+    std::vector<uint16_t> indices;
+    render::Mesh mesh{};
+  };
+  std::vector<MeshData> meshes;
+  render::Mat4 view_proj{};
+  int width = 0, height = 0;
+  bool cull_backfaces = true;
+};
+
+// Converts with the host's camera (projection * view for the screen's aspect). Throws when a
+// value leaves Q16.16 or a mesh has more than 65536 vertices.
+RenderScene to_render_scene(const Scene& scene, int width, int height);
+
+render::TriState to_render_state(const TriState& s);
+
+}  // namespace htx::host

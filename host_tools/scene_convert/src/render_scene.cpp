@@ -1,0 +1,103 @@
+#include "htx/host/render_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace htx::host {
+
+int32_t to_q16(double x) {
+  const double r = std::floor(x * 65536.0 + 0.5);
+  if (!(r >= -2147483648.0 && r <= 2147483647.0))
+    throw std::out_of_range("value " + std::to_string(x) + " does not fit Q16.16");
+  return static_cast<int32_t>(r);
+}
+
+render::Mat4 to_mat4_fx(const Mat4& m) {
+  double largest = 0;
+  for (const auto& row : m.m)
+    for (size_t j = 0; j < 3; ++j) largest = std::max(largest, std::fabs(row[j]));
+  render::Mat4 r{};
+  r.frac = render::kMatMaxFrac;
+  while (r.frac > render::kMatMinFrac && std::ldexp(largest, r.frac) >= std::ldexp(1.0, 29)) --r.frac;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const double e = m.m[static_cast<size_t>(i)][static_cast<size_t>(j)];
+      if (j == 3) {
+        r.m[i][j] = to_q16(e);
+      } else {
+        const double q = std::floor(std::ldexp(e, r.frac) + 0.5);
+        if (!(q >= -2147483648.0 && q <= 2147483647.0)) throw std::out_of_range("matrix entry out of range");
+        r.m[i][j] = static_cast<int32_t>(q);
+      }
+    }
+  return r;
+}
+
+render::TriState to_render_state(const TriState& s) {
+  render::TriState r;
+  r.method = s.method == Method::Auto ? static_cast<uint8_t>(render::kMethodAuto) : static_cast<uint8_t>(s.method);
+  r.subdiv_n = static_cast<uint8_t>(s.subdiv_n);
+  r.filter = static_cast<uint8_t>(s.filter);
+  r.wrap_u = static_cast<uint8_t>(s.wrap_u);
+  r.wrap_v = static_cast<uint8_t>(s.wrap_v);
+  r.depth_func = static_cast<uint8_t>(s.depth_func);
+  r.depth_write = s.depth_write;
+  r.textured = s.textured;
+  r.gouraud = s.gouraud;
+  r.combine = static_cast<uint8_t>(s.combine);
+  r.texture = static_cast<uint8_t>(s.texture);
+  return r;
+}
+
+namespace {
+
+uint32_t channel8(double c) {
+  const double k = std::floor(std::clamp(c, 0.0, 1.0) * 255.0 + 0.5);
+  return static_cast<uint32_t>(k);
+}
+
+}  // namespace
+
+RenderScene to_render_scene(const Scene& scene, int width, int height) {
+  RenderScene out;
+  out.width = width;
+  out.height = height;
+  out.cull_backfaces = scene.cull_backfaces;
+  const double aspect = scene.camera.aspect > 0 ? scene.camera.aspect : static_cast<double>(width) / height;
+  out.view_proj = to_mat4_fx(scene.camera.projection(aspect) * scene.camera.view());
+  out.meshes.resize(scene.meshes.size());
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& src = scene.meshes[m];
+    RenderScene::MeshData& d = out.meshes[m];
+    if (src.vertices.size() > 65536) throw std::out_of_range("mesh '" + src.name + "' has more than 65536 vertices");
+    for (const Vertex& v : src.vertices) {
+      render::MeshVertex mv{};
+      mv.x = to_q16(v.pos.x);
+      mv.y = to_q16(v.pos.y);
+      mv.z = to_q16(v.pos.z);
+      mv.s = to_q16(v.s);
+      mv.t = to_q16(v.t);
+      mv.rgba = channel8(v.r) | (channel8(v.g) << 8) | (channel8(v.b) << 16) | (channel8(v.a) << 24);
+      d.vertices.push_back(mv);
+    }
+    for (const auto& tri : src.triangles)
+      for (uint32_t i : tri) d.indices.push_back(static_cast<uint16_t>(i));
+    d.mesh.vertices = d.vertices.data();
+    d.mesh.vertex_count = static_cast<uint32_t>(d.vertices.size());
+    d.mesh.indices = d.indices.data();
+    d.mesh.triangle_count = static_cast<uint32_t>(src.triangles.size());
+    d.mesh.model = to_mat4_fx(src.model);
+    d.mesh.position_bits = static_cast<int8_t>(render::mesh_position_bits(d.vertices.data(), d.mesh.vertex_count));
+    d.mesh.state = to_render_state(src.state);
+    if (src.state.textured && src.state.texture >= 0 && static_cast<size_t>(src.state.texture) < scene.textures.size()) {
+      const Texture& t = scene.textures[static_cast<size_t>(src.state.texture)];
+      d.mesh.tex.log2_width = static_cast<uint8_t>(t.log2_width);
+      d.mesh.tex.log2_height = static_cast<uint8_t>(t.log2_height);
+    }
+  }
+  return out;
+}
+
+}  // namespace htx::host

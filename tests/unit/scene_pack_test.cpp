@@ -1,0 +1,129 @@
+// The packed scene of a console upload (firmware/render scene_pack.h): the model's scenes survive
+// pack and unpack field for field, and unpack_scene refuses every malformed or out-of-range input
+// with a message, at every truncation, without reading past the bytes it is given.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "htx/host/render_scene.hpp"
+#include "htx/model/scenes.hpp"
+#include "htx/render/scene_pack.h"
+
+namespace {
+
+using htx::render::Mesh;
+
+struct Packed {
+  htx::host::RenderScene scene;
+  std::vector<uint8_t> bytes;
+};
+
+Packed pack(const std::string& name) {
+  Packed p{htx::host::to_render_scene(htx::load_scene(name), 160, 120), {}};
+  std::vector<Mesh> meshes;
+  for (const auto& d : p.scene.meshes) meshes.push_back(d.mesh);
+  p.bytes.resize(htx::render::packed_scene_size(meshes.data(), static_cast<uint32_t>(meshes.size())));
+  EXPECT_EQ(htx::render::pack_scene(p.scene.view_proj, p.scene.cull_backfaces, meshes.data(),
+                                    static_cast<uint32_t>(meshes.size()), p.bytes.data(), p.bytes.size()),
+            p.bytes.size());
+  return p;
+}
+
+// Unpacks from a word-aligned copy, as the console's store holds it.
+const char* unpack(const std::vector<uint8_t>& bytes, std::vector<Mesh>* meshes, htx::render::UnpackedScene* out,
+                   uint32_t max_meshes = 8, uint32_t max_vertices = 96) {
+  static std::vector<uint32_t> words;
+  words.assign((bytes.size() + 3) / 4 + 1, 0);
+  std::memcpy(words.data(), bytes.data(), bytes.size());
+  meshes->assign(max_meshes, Mesh{});
+  return htx::render::unpack_scene(reinterpret_cast<const uint8_t*>(words.data()), bytes.size(), meshes->data(),
+                                   max_meshes, max_vertices, out);
+}
+
+TEST(ScenePack, ModelScenesRoundTripFieldForField) {
+  for (const char* name : {"cube", "floor"}) {
+    const Packed p = pack(name);
+    std::vector<Mesh> meshes;
+    htx::render::UnpackedScene u;
+    ASSERT_EQ(unpack(p.bytes, &meshes, &u), nullptr) << name;
+    ASSERT_EQ(u.mesh_count, p.scene.meshes.size());
+    EXPECT_EQ(u.cull_backfaces, p.scene.cull_backfaces);
+    EXPECT_EQ(0, std::memcmp(&u.view_proj, &p.scene.view_proj, sizeof u.view_proj));
+    for (size_t m = 0; m < u.mesh_count; ++m) {
+      const Mesh& a = meshes[m];
+      const Mesh& b = p.scene.meshes[m].mesh;
+      ASSERT_EQ(a.vertex_count, b.vertex_count);
+      ASSERT_EQ(a.triangle_count, b.triangle_count);
+      EXPECT_EQ(0, std::memcmp(a.vertices, b.vertices, sizeof(htx::render::MeshVertex) * a.vertex_count));
+      EXPECT_EQ(0, std::memcmp(a.indices, b.indices, 6 * a.triangle_count));
+      EXPECT_EQ(0, std::memcmp(&a.model, &b.model, sizeof a.model));
+      EXPECT_EQ(0, std::memcmp(&a.state, &b.state, sizeof a.state));
+      EXPECT_EQ(a.tex.log2_width, b.tex.log2_width);
+      EXPECT_EQ(a.position_bits, b.position_bits);
+    }
+  }
+  EXPECT_EQ(pack("cube").bytes.size(), 816u);
+  EXPECT_EQ(pack("floor").bytes.size(), 2880u);
+}
+
+TEST(ScenePack, EveryTruncationAndExtensionIsRefused) {
+  const Packed p = pack("cube");
+  std::vector<Mesh> meshes;
+  htx::render::UnpackedScene u;
+  for (size_t n = 0; n < p.bytes.size(); ++n) {
+    const std::vector<uint8_t> cut(p.bytes.begin(), p.bytes.begin() + static_cast<long>(n));
+    EXPECT_NE(unpack(cut, &meshes, &u), nullptr) << n;
+  }
+  std::vector<uint8_t> longer = p.bytes;
+  longer.insert(longer.end(), {0, 0, 0, 0});
+  EXPECT_STREQ(unpack(longer, &meshes, &u), "bytes left over after the last mesh");
+}
+
+TEST(ScenePack, OutOfRangeFieldsAreRefusedWithTheirReason) {
+  const Packed p = pack("cube");
+  const size_t mesh = htx::render::kScenePackHeader, state = mesh + 72, verts = mesh + htx::render::kScenePackMeshHeader;
+  const size_t indices = verts + 24 * 24;
+  struct Case {
+    size_t at;
+    uint8_t value;
+    const char* why;
+  };
+  const Case cases[] = {
+      {0, 'X', "not a packed scene (no HTXS)"},
+      {4, 2, "unknown version"},
+      {6, 0, "no meshes"},
+      {6, 9, "more meshes than the console holds"},
+      {8, 2, "bad cull flag"},
+      {12 + 64, 40, "camera matrix fraction out of range"},
+      {mesh, 0, "empty mesh"},
+      {mesh, 97, "a mesh has more vertices than the console's vertex cache"},
+      {mesh + 4 + 64, 3, "model matrix fraction out of range"},
+      {state, 5, "state field out of range"},       // method 5 (QUADRATIC) is not built
+      {state + 1, 1, "state field out of range"},   // SUBDIV 1
+      {state + 2, 3, "state field out of range"},   // filter
+      {state + 5, 6, "state field out of range"},   // depth function
+      {state + 6, 2, "bad state flag"},
+      {state + 11, 9, "texture size out of range"},
+      {verts + 3, 0x40, "a position is 2^14 or more"},  // x = 2^30: 2^14 in Q16.16
+      {indices, 24, "an index is past its mesh's vertices"},
+  };
+  for (const Case& c : cases) {
+    std::vector<uint8_t> bad = p.bytes;
+    bad[c.at] = c.value;
+    std::vector<Mesh> meshes;
+    htx::render::UnpackedScene u;
+    const char* why = unpack(bad, &meshes, &u, 8, 96);
+    ASSERT_NE(why, nullptr) << c.why;
+    EXPECT_STREQ(why, c.why) << "byte " << c.at;
+  }
+  // The limits are the caller's: the cube (24 vertices) does not fit a cache of 16.
+  std::vector<Mesh> meshes;
+  htx::render::UnpackedScene u;
+  EXPECT_STREQ(unpack(p.bytes, &meshes, &u, 8, 16), "a mesh has more vertices than the console's vertex cache");
+  uint8_t small[100];
+  EXPECT_EQ(htx::render::pack_scene(p.scene.view_proj, true, &p.scene.meshes[0].mesh, 1, small, sizeof small), 0u);
+}
+
+}  // namespace
