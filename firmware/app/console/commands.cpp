@@ -20,7 +20,6 @@ constexpr const char* kVersion = "0.1";
 
 struct Settings {
   render_app::DrawSettings draw;
-  const char* method_name = "auto";
   uint32_t tolerance_denominator = 16;  // AUTO's tolerance: 1 / this texel (1..65536)
   char method_text[12] = "auto";
 };

@@ -13,6 +13,7 @@ namespace htx::console {
 namespace {
 
 constexpr auto kSettle = std::chrono::milliseconds(300);
+constexpr size_t kMaxText = 1 << 20;  // no answer of the console is near this
 
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
@@ -62,7 +63,10 @@ uint8_t ConsoleClient::next_byte() {
 }
 
 std::string ConsoleClient::read_until_prompt(std::string text) {
-  while (!ends_with(text, kPrompt)) text += static_cast<char>(next_byte());
+  while (!ends_with(text, kPrompt)) {
+    if (text.size() > kMaxText) throw std::runtime_error("the console sent more than 1 MiB without a prompt");
+    text += static_cast<char>(next_byte());
+  }
   return text.substr(0, text.size() - std::string(kPrompt).size());
 }
 
@@ -94,6 +98,7 @@ GrabbedFrame ConsoleClient::grab(const std::function<void(size_t)>& progress) {
     const uint8_t b = next_byte();
     if (b == 0) break;
     text += static_cast<char>(b);
+    if (text.size() > kMaxText) throw std::runtime_error("grab: the console sent more than 1 MiB of text");
     if (ends_with(text, kPrompt))
       throw std::runtime_error("grab: the console sent no frame: " + unix_lines(without_echo(text)));
   }
@@ -125,6 +130,9 @@ GrabbedFrame ConsoleClient::grab(const std::function<void(size_t)>& progress) {
       have_info = true;
     } else if (p.type == fw::kPacketFrameData) {
       coded.insert(coded.end(), p.payload, p.payload + p.len);
+      if (coded.size() > fw::rle16_max_size(static_cast<size_t>(f.width) * static_cast<size_t>(f.height)))
+        throw std::runtime_error("grab: more coded bytes than a " + std::to_string(f.width) + "x" +
+                                 std::to_string(f.height) + " frame can take");
       ++f.data_packets;
       if (progress) progress(coded.size());
     } else if (p.type == fw::kPacketFrameEnd && p.len >= 8) {
