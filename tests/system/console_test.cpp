@@ -113,6 +113,23 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
     EXPECT_NE(verdict.find("error: the host abandoned the upload; the scene is unchanged"), std::string::npos) << verdict;
     close(fd);
   }
+  {
+    // Text sent faster than the console reads it overruns the UART's 16-byte FIFO: the console says
+    // so instead of running a line with characters missing, and keeps working.
+    const int fd = open(pty.c_str(), O_RDWR | O_NOCTTY);
+    ASSERT_GE(fd, 0);
+    termios tio{};
+    ASSERT_EQ(tcgetattr(fd, &tio), 0);
+    cfmakeraw(&tio);
+    ASSERT_EQ(tcsetattr(fd, TCSANOW, &tio), 0);
+    std::string burst;
+    for (int i = 0; i < 20; ++i) burst += "info\r";
+    ASSERT_EQ(write(fd, burst.data(), burst.size()), static_cast<ssize_t>(burst.size()));
+    std::string got;
+    EXPECT_TRUE(htx::test::read_fd_until(fd, got, "error: input arrived faster than the console reads it", 60s))
+        << got;
+    close(fd);
+  }
   const auto again = console({"scenes", "render upload"});
   ASSERT_EQ(again.status, 0) << again.err;
   EXPECT_NE(again.out.find("upload (816 bytes)"), std::string::npos) << again.out;

@@ -2,6 +2,8 @@
 
 #include <stdio.h>
 
+#include "htx/hal/uart.h"
+
 namespace console_app {
 
 namespace {
@@ -23,6 +25,7 @@ LineStatus read_line(char* buf) {
     if (c == '\r' || c == '\n') {
       fputs("\r\n", stdout);
       buf[n] = '\0';
+      if (htx::hal::uart_take_overrun()) return LineStatus::kOverrun;
       return too_long ? LineStatus::kTooLong : LineStatus::kLine;
     }
     if (c == kCtrlC) {

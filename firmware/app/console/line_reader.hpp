@@ -8,10 +8,12 @@ namespace console_app {
 
 inline constexpr size_t kMaxLine = 96;
 
-enum class LineStatus { kLine, kTooLong, kEndOfInput };
+enum class LineStatus { kLine, kTooLong, kOverrun, kEndOfInput };
 
 // Reads one line into buf (kMaxLine + 1 bytes, NUL-terminated). A line longer than kMaxLine is
-// read to its end and reported as kTooLong (its text is dropped).
+// read to its end and reported as kTooLong (its text is dropped); a line during which the UART
+// dropped received bytes (its 16-byte FIFO overran: text sent faster than the console reads it)
+// is reported as kOverrun, since it may have lost characters.
 LineStatus read_line(char* buf);
 
 }  // namespace console_app

@@ -25,6 +25,12 @@ int main() {
     fputs(kPrompt, stdout);
     const console_app::LineStatus st = console_app::read_line(line);
     if (st == console_app::LineStatus::kEndOfInput) break;
+    if (st == console_app::LineStatus::kOverrun) {
+      fputs("error: input arrived faster than the console reads it and was lost; the line was dropped "
+            "(send a line at a time)\r\n",
+            stdout);
+      continue;
+    }
     if (st == console_app::LineStatus::kTooLong) {
       printf("error: line longer than %u characters\r\n", static_cast<unsigned>(console_app::kMaxLine));
       continue;

@@ -28,6 +28,7 @@ void receive_scene(uint32_t size, uint32_t crc32) {
            static_cast<unsigned long>(kStoreBytes));
     return;
   }
+  htx::hal::uart_take_overrun();  // from before the upload: packets have their own checks
   printf("ready\r\n");
   uint8_t* staging = staging_bytes();
   htx::fw::PacketDecoder decoder;

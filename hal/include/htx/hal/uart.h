@@ -31,6 +31,14 @@ inline int uart_get(uint32_t max_polls) {
   return -1;
 }
 
+// Whether a byte arrived to a full RX FIFO and was dropped since the last call (RX_OVERRUN,
+// cleared here).
+inline bool uart_take_overrun() {
+  if (!(HTX_UART->STATUS & UART_STATUS_RX_OVERRUN_Msk)) return false;
+  HTX_UART->STATUS = UART_STATUS_RX_OVERRUN_Msk;
+  return true;
+}
+
 // Waits until every queued byte has left the shift register (TX_IDLE), polling at most max_polls
 // times; returns false on a timeout.
 inline bool uart_flush(uint32_t max_polls) {
