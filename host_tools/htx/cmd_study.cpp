@@ -118,7 +118,7 @@ void run_study(const StudyArgs& a) {
 void register_study(CLI::App& app) {
   auto args = std::make_shared<StudyArgs>();
   auto* cmd = app.add_subcommand("study", "The speed/accuracy study: sweeps of methods and scenes, tables and charts");
-  cmd->add_option("sweep", args->sweeps, "sweeps to run: ratio, range, subdiv, tradeoff (default: all)")
+  cmd->add_option("sweep", args->sweeps, "sweeps to run: ratio, range, offset, subdiv, tradeoff (default: all)")
       ->check(CLI::IsMember(study::sweep_names()));
   cmd->add_option("--config", args->config, "configuration: full | icebreaker")->capture_default_str();
   cmd->add_option("--size", args->size, "frame size WxH")->capture_default_str();

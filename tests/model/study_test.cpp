@@ -61,12 +61,12 @@ TEST(Study, AffineErrorFollowsTheExactFormulaOnWsweep) {
   }
 }
 
-// Each method's measured error on the quick ratio and range sweeps is within the bound AUTO
+// Each method's measured error on the quick ratio, range and offset sweeps is within the bound AUTO
 // predicts for it (QUADRATIC has none), and every figure is finite at the sweeps' extremes.
 TEST(Study, MeasuredErrorsStayWithinThePredictedBounds) {
   const auto options = icebreaker_options();
   size_t bounded = 0;
-  for (const char* sweep : {"ratio", "range"}) {
+  for (const char* sweep : {"ratio", "range", "offset"}) {
     for (const Point& p : htx::study::sweep_points(sweep, true)) {
       const Result r = htx::study::run_point(p, options);
       EXPECT_TRUE(r.finite) << p.scene << " " << p.method;
@@ -77,7 +77,7 @@ TEST(Study, MeasuredErrorsStayWithinThePredictedBounds) {
       EXPECT_LE(r.max_error, r.bound) << p.scene << " " << p.method;
     }
   }
-  EXPECT_EQ(bounded, 30u);  // 2 sweeps x 3 values x 5 methods, all with a bound
+  EXPECT_EQ(bounded, 40u);  // (3 + 3 + 2) values x 5 methods, all with a bound
 }
 
 TEST(Study, AutoStaysWithinItsToleranceOnTheCube) {

@@ -129,6 +129,12 @@ std::vector<std::string> write_chart_scripts(const std::string& dir, const std::
                 "texels spanned du", "", o);
     scripts.push_back("study_range.gp");
   }
+  const auto offset = series_of(results, "offset", "", false);
+  if (!offset.empty()) {
+    sweep_chart(dir, "study_offset", offset, "Error against the distance from the texture origin (wrap)",
+                "largest |u|, |v| (texels)", "", o);
+    scripts.push_back("study_offset.gp");
+  }
   const auto subdiv = series_of(results, "subdiv", "", true);
   if (!subdiv.empty()) {
     subdiv_chart(dir, subdiv, o);

@@ -49,6 +49,17 @@ std::vector<Point> range_points(bool quick) {
   return points;
 }
 
+// wrap's coordinates far from the origin (every wrap mode, tilted panels): the error should not
+// grow with |u|, since the raster unit interpolates coordinates relative to a per-triangle offset.
+std::vector<Point> offset_points(bool quick) {
+  const std::vector<double> offsets = quick ? std::vector<double>{1, 16384}
+                                            : std::vector<double>{1, 16, 256, 1024, 4096, 16384};
+  std::vector<Point> points;
+  for (double o : offsets)
+    add_methods(points, {"offset", "wrap:offset=" + format_value(o), "offset", o, "", 0}, quick);
+  return points;
+}
+
 // SUBDIV's span length on the grazing floor: accuracy against the exact points' cost.
 std::vector<Point> subdiv_points(bool quick) {
   const std::vector<int> spans = quick ? std::vector<int>{2, 16, 64} : std::vector<int>{2, 4, 8, 16, 32, 64};
@@ -74,16 +85,17 @@ std::vector<Point> tradeoff_points(bool quick) {
 }  // namespace
 
 const std::vector<std::string>& sweep_names() {
-  static const std::vector<std::string> names = {"ratio", "range", "subdiv", "tradeoff"};
+  static const std::vector<std::string> names = {"ratio", "range", "offset", "subdiv", "tradeoff"};
   return names;
 }
 
 std::vector<Point> sweep_points(const std::string& sweep, bool quick) {
   if (sweep == "ratio") return ratio_points(quick);
   if (sweep == "range") return range_points(quick);
+  if (sweep == "offset") return offset_points(quick);
   if (sweep == "subdiv") return subdiv_points(quick);
   if (sweep == "tradeoff") return tradeoff_points(quick);
-  throw std::invalid_argument("unknown sweep '" + sweep + "': want ratio, range, subdiv or tradeoff");
+  throw std::invalid_argument("unknown sweep '" + sweep + "': want ratio, range, offset, subdiv or tradeoff");
 }
 
 }  // namespace htx::study
