@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -38,9 +39,70 @@ std::chrono::milliseconds timeout_of(const PortArgs& a) {
   return std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000));
 }
 
+// The packed form of a scene as the console takes it (htx/render/scene_pack.h).
+std::vector<uint8_t> packed_scene(const std::string& spec, const std::string& size) {
+  int width = 0, height = 0;
+  parse_size(size, width, height);
+  // The firmware's form of the scene (as the render firmware's compiled-in scenes are made), packed.
+  const host::RenderScene rs = host::to_render_scene(load_scene(spec), width, height);
+  std::vector<render::Mesh> meshes;
+  for (const host::RenderScene::MeshData& d : rs.meshes) meshes.push_back(d.mesh);
+  const uint32_t count = static_cast<uint32_t>(meshes.size());
+  std::vector<uint8_t> packed(render::packed_scene_size(meshes.data(), count));
+  if (render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(), count, packed.data(), packed.size()) == 0)
+    throw std::runtime_error("'" + spec + "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
+  return packed;
+}
+
+// Downloads the frame into a PNG, showing progress on stderr.
+void grab_to_png(console::ConsoleClient& client, const std::string& out) {
+  size_t shown = 0;
+  const console::GrabbedFrame f = client.grab([&shown](size_t bytes) {
+    if (bytes >= shown + 4096) {
+      shown = bytes;
+      std::cerr << "\rgrab: " << bytes << " bytes" << std::flush;
+    }
+  });
+  if (shown) std::cerr << "\n";
+  write_png(out, image_from_rgb565(f.width, f.height, f.pixels));
+  char crc[16];
+  std::snprintf(crc, sizeof crc, "%08x", f.crc32);
+  std::cout << "grab: " << f.width << "x" << f.height << " frame, " << f.coded_bytes << " bytes in "
+            << f.data_packets << " packets, crc32 " << crc << " -> " << out << "\n";
+}
+
+void upload_scene(console::ConsoleClient& client, const std::vector<uint8_t>& packed) {
+  const std::string verdict = client.upload(packed, [&packed](size_t sent) {
+    std::cerr << "\rupload: " << sent << " of " << packed.size() << " bytes" << std::flush;
+  });
+  std::cerr << "\n";
+  std::cout << verdict;
+}
+
 struct ConsoleArgs : PortArgs {
   std::vector<std::string> commands;
 };
+
+// One line typed or given with -c. `grab FILE.png` and `upload SCENE` are carried out by htx (their
+// exchanges are binary); everything else goes to the console as it is. Returns false after quit.
+bool run_line(console::SerialPort& port, console::ConsoleClient& client, const std::string& line) {
+  if (line == "quit") {
+    port.write("quit\r");
+    return false;
+  }
+  std::istringstream words(line);
+  std::string verb, arg, extra;
+  words >> verb >> arg >> extra;
+  if (verb == "grab" || verb == "upload") {
+    if (arg.empty() || !extra.empty())
+      throw std::invalid_argument(verb == "grab" ? "usage: grab FRAME.png" : "usage: upload SCENE (built-in or FILE.obj)");
+    if (verb == "grab") grab_to_png(client, arg);
+    else upload_scene(client, packed_scene(arg, "160x120"));
+    return true;
+  }
+  std::cout << client.command(line) << std::flush;
+  return true;
+}
 
 void run_console(const ConsoleArgs& a) {
   console::SerialPort port(a.port, a.baud);
@@ -49,33 +111,22 @@ void run_console(const ConsoleArgs& a) {
   if (!a.commands.empty()) {
     for (const std::string& c : a.commands) {
       std::cout << console::kPrompt << c << "\n" << std::flush;
-      if (c == "quit") {
-        port.write("quit\r");
-        return;
-      }
-      if (c == "grab") throw std::invalid_argument("use `htx grab --port " + a.port + " --out FRAME.png` for grab");
-      if (c.rfind("upload", 0) == 0)
-        throw std::invalid_argument("use `htx upload SCENE --port " + a.port + "` to send a scene");
-      std::cout << client.command(c) << std::flush;
+      if (!run_line(port, client, c)) return;
     }
     return;
   }
   // Interactive: a line from stdin at a time, each answered before the next is sent (the console's
-  // receive FIFO is 16 bytes: typing ahead of it would lose characters).
+  // receive FIFO is 16 bytes: typing ahead of it would lose characters). A mistyped grab or upload
+  // is reported and the session goes on.
   std::string line;
   for (;;) {
     std::cout << console::kPrompt << std::flush;
     if (!std::getline(std::cin, line)) break;
-    if (line == "quit") {
-      port.write("quit\r");
-      break;
+    try {
+      if (!run_line(port, client, line)) break;
+    } catch (const std::invalid_argument& e) {
+      std::cout << "error: " << e.what() << "\n";
     }
-    if (line == "grab" || line.rfind("upload", 0) == 0) {
-      std::cout << "use `htx grab --port " << a.port << " --out FRAME.png` to download the frame, `htx upload SCENE --port "
-                << a.port << "` to send a scene\n";
-      continue;
-    }
-    std::cout << client.command(line) << std::flush;
   }
 }
 
@@ -87,19 +138,7 @@ void run_grab(const GrabArgs& a) {
   console::SerialPort port(a.port, a.baud);
   console::ConsoleClient client(port, timeout_of(a));
   client.sync();
-  size_t shown = 0;
-  const console::GrabbedFrame f = client.grab([&shown](size_t bytes) {
-    if (bytes >= shown + 4096) {
-      shown = bytes;
-      std::cerr << "\rgrab: " << bytes << " bytes" << std::flush;
-    }
-  });
-  if (shown) std::cerr << "\n";
-  write_png(a.out, image_from_rgb565(f.width, f.height, f.pixels));
-  char crc[16];
-  std::snprintf(crc, sizeof crc, "%08x", f.crc32);
-  std::cout << "grab: " << f.width << "x" << f.height << " frame, " << f.coded_bytes << " bytes in "
-            << f.data_packets << " packets, crc32 " << crc << " -> " << a.out << "\n";
+  grab_to_png(client, a.out);
 }
 
 struct UploadArgs : PortArgs {
@@ -108,24 +147,11 @@ struct UploadArgs : PortArgs {
 };
 
 void run_upload(const UploadArgs& a) {
-  int width = 0, height = 0;
-  parse_size(a.size, width, height);
-  // The firmware's form of the scene (as the render firmware's compiled-in scenes are made), packed.
-  const host::RenderScene rs = host::to_render_scene(load_scene(a.scene), width, height);
-  std::vector<render::Mesh> meshes;
-  for (const host::RenderScene::MeshData& d : rs.meshes) meshes.push_back(d.mesh);
-  const uint32_t count = static_cast<uint32_t>(meshes.size());
-  std::vector<uint8_t> packed(render::packed_scene_size(meshes.data(), count));
-  if (render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(), count, packed.data(), packed.size()) == 0)
-    throw std::runtime_error("'" + a.scene + "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
+  const std::vector<uint8_t> packed = packed_scene(a.scene, a.size);  // bad scenes fail before the port opens
   console::SerialPort port(a.port, a.baud);
   console::ConsoleClient client(port, timeout_of(a));
   client.sync();
-  const std::string verdict = client.upload(packed, [&packed](size_t sent) {
-    std::cerr << "\rupload: " << sent << " of " << packed.size() << " bytes" << std::flush;
-  });
-  std::cerr << "\n";
-  std::cout << verdict;
+  upload_scene(client, packed);
 }
 
 }  // namespace
@@ -134,8 +160,9 @@ void register_console(CLI::App& app) {
   auto args = std::make_shared<ConsoleArgs>();
   auto* cmd = app.add_subcommand("console", "Talk to the console firmware: run commands, or type them");
   add_port_options(cmd, args.get());
-  cmd->add_option("-c,--command", args->commands, "run this command and print its output (repeatable); "
-                                                  "without any, read commands from stdin");
+  cmd->add_option("-c,--command", args->commands,
+                  "run this command and print its output (repeatable; `grab FILE.png` and `upload SCENE` are "
+                  "carried out by htx); without any, read commands from stdin");
   cmd->callback([args] { run_console(*args); });
 
   auto gargs = std::make_shared<GrabArgs>();

@@ -130,8 +130,11 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
         << got;
     close(fd);
   }
-  const auto again = console({"scenes", "render upload"});
-  ASSERT_EQ(again.status, 0) << again.err;
+  const std::string png2 = ::testing::TempDir() + "htx_console_grab_upload.png";
+  const auto again = console({"scenes", "render upload", "grab " + png2, "grab"});
+  EXPECT_NE(again.status, 0);  // the last line: grab without a file
+  EXPECT_NE(again.err.find("usage: grab FRAME.png"), std::string::npos) << again.err;
+  EXPECT_EQ(field_after(again.out, "packets, crc32 "), crc) << again.out;
   EXPECT_NE(again.out.find("upload (816 bytes)"), std::string::npos) << again.out;
   EXPECT_EQ(field_after(again.out.substr(again.out.find("render upload method")), "crc32 "), crc) << again.out;
 
