@@ -29,8 +29,8 @@ TEST_P(AccuracyRecipNr, FullConfigWithinOne256thTexel) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, AccuracyRecipNr, ::testing::ValuesIn(test::accuracy_scene_specs()),
-                         [](const auto& info) {
-                           std::string n = info.param;
+                         [](const auto& param_info) {
+                           std::string n = param_info.param;
                            for (char& c : n)
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return n;

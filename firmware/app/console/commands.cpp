@@ -45,8 +45,9 @@ bool parse_uint(const char* s, uint32_t lo, uint32_t hi, uint32_t* out) {
   uint32_t v = 0;
   for (; *s; ++s) {
     if (*s < '0' || *s > '9') return false;
-    v = v * 10 + static_cast<uint32_t>(*s - '0');
-    if (v > hi) return false;
+    const uint32_t d = static_cast<uint32_t>(*s - '0');
+    if (v > (hi - d) / 10) return false;  // v * 10 + d > hi, checked before it could wrap
+    v = v * 10 + d;
   }
   if (v < lo) return false;
   *out = v;
