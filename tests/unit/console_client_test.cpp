@@ -231,6 +231,26 @@ TEST(ConsoleClient, UploadResendsWhatWasNotTakenAndReportsTheVerdict) {
             "upload: packet 0 was not taken after 8 tries; the console's scene is unchanged");
 }
 
+// The simulation ends (its side of the pseudo-terminal closes) while htx waits: an error at once,
+// not a wait for the timeout.
+TEST(ConsoleClient, AClosedOtherEndIsAnErrorNotAHang) {
+  int master = -1, slave = -1;
+  ASSERT_EQ(::openpty(&master, &slave, nullptr, nullptr, nullptr), 0);
+  const std::string path = ::ptsname(master);
+  SerialPort port(path, 115200);
+  ::close(slave);
+  ::close(master);
+  uint8_t buf[16];
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    port.read_some(buf, sizeof buf, 10s);
+    ADD_FAILURE() << "read_some returned";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("closed at the other end"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 2s);
+}
+
 TEST(ConsoleClient, RefusesAPathThatIsNotATerminal) {
   EXPECT_THROW(SerialPort("/nonexistent/tty", 115200), std::runtime_error);
   EXPECT_THROW(SerialPort("/dev/null", 115200), std::runtime_error);
