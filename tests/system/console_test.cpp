@@ -3,9 +3,7 @@
 // errors, a render, a frame download equal to the frame the render firmware leaves on the SoC, a
 // scene upload drawing that frame too, refused uploads leaving the scene as it was, and `quit`
 // ending the simulation with status 0.
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <termios.h>
 #include <unistd.h>
 
 #include <string>
@@ -84,12 +82,8 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   EXPECT_NE(big.status, 0);
   EXPECT_NE(big.err.find("does not fit the store (1..3072)"), std::string::npos) << big.err;
   {
-    const int fd = open(pty.c_str(), O_RDWR | O_NOCTTY);
-    ASSERT_GE(fd, 0);
-    termios tio{};
-    ASSERT_EQ(tcgetattr(fd, &tio), 0);
-    cfmakeraw(&tio);
-    ASSERT_EQ(tcsetattr(fd, TCSANOW, &tio), 0);
+    const int fd = htx::test::open_raw_terminal(pty);
+    ASSERT_GE(fd, 0) << "cannot open " << pty << " raw";
     const std::string cmd = "upload 816 0badf00d\r";
     ASSERT_EQ(write(fd, cmd.data(), cmd.size()), static_cast<ssize_t>(cmd.size()));
     std::string got;
@@ -116,12 +110,8 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   {
     // Text sent faster than the console reads it overruns the UART's 16-byte FIFO: the console says
     // so instead of running a line with characters missing, and keeps working.
-    const int fd = open(pty.c_str(), O_RDWR | O_NOCTTY);
-    ASSERT_GE(fd, 0);
-    termios tio{};
-    ASSERT_EQ(tcgetattr(fd, &tio), 0);
-    cfmakeraw(&tio);
-    ASSERT_EQ(tcsetattr(fd, TCSANOW, &tio), 0);
+    const int fd = htx::test::open_raw_terminal(pty);
+    ASSERT_GE(fd, 0) << "cannot open " << pty << " raw";
     std::string burst;
     for (int i = 0; i < 20; ++i) burst += "info\r";
     ASSERT_EQ(write(fd, burst.data(), burst.size()), static_cast<ssize_t>(burst.size()));

@@ -1,9 +1,7 @@
 // The echo firmware on the simulated SoC, reached the way a person would: `htx sim --uart pty`
 // prints a pseudo-terminal path, a serial program opens it in raw mode, reads the greeting, types
 // and gets its characters echoed.
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <termios.h>
 #include <unistd.h>
 
 #include <string>
@@ -25,12 +23,8 @@ TEST(SystemEcho, GreetsAndEchoesThroughPseudoTerminal) {
                                                sim.output().find('\n', at) - at - marker.size());
   ASSERT_EQ(path.rfind("/dev/", 0), 0u) << path;
 
-  const int fd = open(path.c_str(), O_RDWR | O_NOCTTY);
-  ASSERT_GE(fd, 0) << "cannot open " << path;
-  termios tio{};
-  ASSERT_EQ(tcgetattr(fd, &tio), 0);
-  cfmakeraw(&tio);
-  ASSERT_EQ(tcsetattr(fd, TCSANOW, &tio), 0);
+  const int fd = htx::test::open_raw_terminal(path);
+  ASSERT_GE(fd, 0) << "cannot open " << path << " raw";
 
   std::string got;
   ASSERT_TRUE(htx::test::read_fd_until(fd, got, "Ctrl-D ends.\r\n", 30s)) << "greeting: " << got;

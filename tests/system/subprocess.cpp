@@ -4,6 +4,7 @@
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
+#include <termios.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -133,6 +134,22 @@ int Child::wait(std::chrono::milliseconds limit) {
   const int st = wait_with_limit(pid_, Clock::now() + limit, timed_out);
   pid_ = -1;
   return st;
+}
+
+int open_raw_terminal(const std::string& path) {
+  const int fd = open(path.c_str(), O_RDWR | O_NOCTTY);
+  if (fd < 0) return -1;
+  termios tio{};
+  if (tcgetattr(fd, &tio) != 0) {
+    close(fd);
+    return -1;
+  }
+  cfmakeraw(&tio);
+  if (tcsetattr(fd, TCSANOW, &tio) != 0) {
+    close(fd);
+    return -1;
+  }
+  return fd;
 }
 
 }  // namespace htx::test

@@ -42,4 +42,8 @@ class Child {
 // Reads from `fd` (non-blocking or not) until `needle` appears in `acc`, or the limit passes.
 bool read_fd_until(int fd, std::string& acc, const std::string& needle, std::chrono::milliseconds limit);
 
+// Opens a terminal (a pty `htx sim --uart pty` printed) in raw mode, as a serial program does;
+// -1 when it cannot be opened or set raw.
+int open_raw_terminal(const std::string& path);
+
 }  // namespace htx::test

@@ -2,8 +2,6 @@
 
 #include "htx/hal/regs.h"
 
-#include <algorithm>
-#include <cmath>
 #include <stdexcept>
 #include <string>
 

@@ -4,7 +4,7 @@
 #include "htx/fw/console_packet.h"
 #include "htx/fw/rle16.h"
 #include "htx/hal/framebuffer.h"
-#include "htx/hal/uart.h"
+#include "packet_out.hpp"
 
 namespace console_app {
 
@@ -18,11 +18,7 @@ struct PacketSender {
   uint32_t fill = 0;
   uint32_t data_packets = 0, coded_bytes = 0;
 
-  void send(uint8_t type, const uint8_t* data, uint32_t len) {
-    uint8_t line[htx::fw::kPacketMaxLine];
-    const size_t n = htx::fw::packet_encode(type, seq++, data, len, line);
-    for (size_t i = 0; i < n; ++i) htx::hal::uart_put(line[i]);
-  }
+  void send(uint8_t type, const uint8_t* data, uint32_t len) { send_packet(type, seq++, data, len); }
   void append(const uint8_t* data, uint32_t len) {
     coded_bytes += len;
     for (uint32_t i = 0; i < len; ++i) {

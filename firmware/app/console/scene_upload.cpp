@@ -5,6 +5,7 @@
 #include "htx/fw/console_packet.h"
 #include "htx/fw/crc32.h"
 #include "htx/hal/uart.h"
+#include "packet_out.hpp"
 #include "scene_store.hpp"
 
 namespace console_app {
@@ -14,11 +15,7 @@ namespace {
 // About 10 s of silence at 12 MHz: the host sends the next packet as soon as it has our answer.
 constexpr uint32_t kSilencePolls = 10'000'000;
 
-void answer(uint8_t type, uint8_t seq) {
-  uint8_t line[htx::fw::kPacketMaxLine];
-  const size_t n = htx::fw::packet_encode(type, 0, &seq, 1, line);
-  for (size_t i = 0; i < n; ++i) htx::hal::uart_put(line[i]);
-}
+void answer(uint8_t type, uint8_t seq) { send_packet(type, 0, &seq, 1); }
 
 }  // namespace
 

@@ -62,7 +62,8 @@ uint8_t ConsoleClient::next_byte() {
   return buf_[pos_++];
 }
 
-std::string ConsoleClient::read_until_prompt(std::string text) {
+std::string ConsoleClient::read_until_prompt() {
+  std::string text;
   while (!ends_with(text, kPrompt)) {
     if (text.size() > kMaxText) throw std::runtime_error("the console sent more than 1 MiB without a prompt");
     text += static_cast<char>(next_byte());
@@ -73,15 +74,38 @@ std::string ConsoleClient::read_until_prompt(std::string text) {
 void ConsoleClient::sync() {
   port_.write("\r");
   read_until_prompt();
-  // A prompt printed before ours (the greeting's) may be followed by ours: wait for silence.
-  for (;;) {
-    uint8_t b[256];
-    if (pos_ < buf_.size()) {
-      pos_ = buf_.size();
-      continue;
-    }
-    if (port_.read_some(b, sizeof b, kSettle) == 0) return;
+  // A prompt printed before ours (the greeting's) may be followed by ours: drop everything up to a
+  // moment of silence.
+  pos_ = buf_.size();
+  uint8_t drop[256];
+  while (port_.read_some(drop, sizeof drop, kSettle) != 0) {
   }
+}
+
+bool ConsoleClient::read_text_until(const std::string& needle, std::string* text) {
+  text->clear();
+  for (;;) {
+    if (text->size() > kMaxText) throw std::runtime_error("the console sent more than 1 MiB without a prompt");
+    *text += static_cast<char>(next_byte());
+    if (ends_with(*text, needle)) return true;
+    if (ends_with(*text, kPrompt)) {
+      text->resize(text->size() - std::string(kPrompt).size());
+      return false;
+    }
+  }
+}
+
+fw::PacketStatus ConsoleClient::next_packet(fw::Packet* p) {
+  for (;;) {
+    const fw::PacketStatus st = fw::packet_feed(&decoder_, next_byte(), p);
+    if (st != fw::kPacketNone) return st;
+  }
+}
+
+void ConsoleClient::send_packet(uint8_t type, uint8_t seq, const uint8_t* data, size_t len) {
+  std::string line(fw::kPacketMaxLine, '\0');
+  line.resize(fw::packet_encode(type, seq, data, len, reinterpret_cast<uint8_t*>(line.data())));
+  port_.write(line);
 }
 
 std::string ConsoleClient::command(const std::string& line) {
@@ -94,15 +118,9 @@ GrabbedFrame ConsoleClient::grab(const std::function<void(size_t)>& progress) {
   port_.write("grab\r");
   // The echo and any message come as text; the packets start at the first zero byte.
   std::string text;
-  for (;;) {
-    const uint8_t b = next_byte();
-    if (b == 0) break;
-    text += static_cast<char>(b);
-    if (text.size() > kMaxText) throw std::runtime_error("grab: the console sent more than 1 MiB of text");
-    if (ends_with(text, kPrompt))
-      throw std::runtime_error("grab: the console sent no frame: " + unix_lines(without_echo(text)));
-  }
-  fw::PacketDecoder decoder;
+  if (!read_text_until(std::string(1, '\0'), &text))
+    throw std::runtime_error("grab: the console sent no frame: " + unix_lines(without_echo(text)));
+  decoder_ = {};
   GrabbedFrame f;
   std::vector<uint8_t> coded;
   uint32_t frame_crc = 0;
@@ -110,8 +128,7 @@ GrabbedFrame ConsoleClient::grab(const std::function<void(size_t)>& progress) {
   bool have_info = false;
   for (;;) {
     fw::Packet p;
-    const fw::PacketStatus st = fw::packet_feed(&decoder, next_byte(), &p);
-    if (st == fw::kPacketNone) continue;
+    const fw::PacketStatus st = next_packet(&p);
     if (st != fw::kPacketReady) throw std::runtime_error(std::string("grab: a packet arrived damaged: ") + status_name(st));
     if (expect_seq >= 0 && p.seq != expect_seq)
       throw std::runtime_error("grab: packet " + std::to_string(expect_seq) + " is missing (got " +
@@ -163,47 +180,28 @@ GrabbedFrame ConsoleClient::grab(const std::function<void(size_t)>& progress) {
   return f;
 }
 
-bool ConsoleClient::next_packet(uint8_t* type, uint8_t* payload0) {
-  fw::PacketDecoder decoder;
-  for (;;) {
-    fw::Packet p;
-    const fw::PacketStatus st = fw::packet_feed(&decoder, next_byte(), &p);
-    if (st == fw::kPacketNone) continue;
-    if (st != fw::kPacketReady || p.len < 1) return false;
-    *type = p.type;
-    *payload0 = p.payload[0];
-    return true;
-  }
-}
-
 std::string ConsoleClient::upload(const std::vector<uint8_t>& scene, const std::function<void(size_t)>& progress) {
   char crc[16];
   std::snprintf(crc, sizeof crc, "%08x", fw::crc32(scene.data(), scene.size()));
   port_.write("upload " + std::to_string(scene.size()) + " " + crc + "\r");
   // The console answers `ready`, or refuses with a message and a prompt.
   std::string text;
-  while (!ends_with(text, "ready\r\n")) {
-    text += static_cast<char>(next_byte());
-    if (ends_with(text, kPrompt))
-      throw std::runtime_error("upload: the console refused: " + unix_lines(without_echo(text.substr(0, text.size() - std::string(kPrompt).size()))));
-  }
+  if (!read_text_until("ready\r\n", &text))
+    throw std::runtime_error("upload: the console refused: " + unix_lines(without_echo(text)));
+  decoder_ = {};
   size_t sent = 0;
   for (uint32_t seq = 0; sent < scene.size(); ++seq) {
     const size_t len = std::min(fw::kPacketMaxPayload, scene.size() - sent);
-    std::vector<uint8_t> line(fw::kPacketMaxLine);
-    line.resize(fw::packet_encode(fw::kPacketSceneData, static_cast<uint8_t>(seq), scene.data() + sent, len, line.data()));
     bool taken = false;
     for (int attempt = 0; attempt < kUploadTries && !taken; ++attempt) {
-      port_.write(std::string(line.begin(), line.end()));
-      uint8_t type = 0, value = 0;
-      if (!next_packet(&type, &value)) continue;  // a damaged answer: send again
-      taken = type == fw::kPacketAck && value == static_cast<uint8_t>(seq);
+      send_packet(fw::kPacketSceneData, static_cast<uint8_t>(seq), scene.data() + sent, len);
+      fw::Packet answer;
+      if (next_packet(&answer) != fw::kPacketReady || answer.len < 1) continue;  // a damaged answer: send again
+      taken = answer.type == fw::kPacketAck && answer.payload[0] == static_cast<uint8_t>(seq);
     }
     if (!taken) {
       const uint8_t nothing = 0;
-      std::vector<uint8_t> abort(fw::kPacketMaxLine);
-      abort.resize(fw::packet_encode(fw::kPacketAbort, 0, &nothing, 1, abort.data()));
-      port_.write(std::string(abort.begin(), abort.end()));
+      send_packet(fw::kPacketAbort, 0, &nothing, 1);
       read_until_prompt();
       throw std::runtime_error("upload: packet " + std::to_string(seq) + " was not taken after " +
                                std::to_string(kUploadTries) + " tries; the console's scene is unchanged");

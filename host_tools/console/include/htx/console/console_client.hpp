@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "htx/console/serial_port.hpp"
+#include "htx/fw/console_packet.h"
 
 namespace htx::console {
 
@@ -43,14 +44,18 @@ class ConsoleClient {
 
  private:
   uint8_t next_byte();
-  // The next packet the console sends, skipping anything that is not one; throws on a timeout.
-  bool next_packet(uint8_t* type, uint8_t* payload0);
-  std::string read_until_prompt(std::string text = {});
+  std::string read_until_prompt();
+  // Reads text until it ends with `needle` (true) or with a prompt (false: the text without it).
+  bool read_text_until(const std::string& needle, std::string* text);
+  // Feeds bytes to the packet decoder until a frame ends: a packet, or the reason it is not one.
+  fw::PacketStatus next_packet(fw::Packet* p);
+  void send_packet(uint8_t type, uint8_t seq, const uint8_t* data, size_t len);
 
   SerialPort& port_;
   std::chrono::milliseconds timeout_;
   std::vector<uint8_t> buf_;
   size_t pos_ = 0;
+  fw::PacketDecoder decoder_;
 };
 
 }  // namespace htx::console
