@@ -21,6 +21,15 @@ namespace {
 // holds dots).
 std::string base_name(const std::string& name) { return name.substr(0, name.find('$')); }
 
+// The signal a net is named after: Yosys's iCE40 mapping names the nets between cells after a
+// signal they lead to, with the cells' ports appended ("x_q_SB_LUT4_I0_O").
+std::string signal_of(const std::string& name) {
+  const std::string s = base_name(name);
+  const size_t dot = s.rfind('.');
+  const size_t mapped = s.find("_SB_", dot == std::string::npos ? 0 : dot);
+  return mapped == std::string::npos ? s : s.substr(0, mapped);
+}
+
 bool is_ff(const std::string& type) { return type.rfind("SB_DFF", 0) == 0; }
 
 // The scope of a net name: its base name without its last dotted part.
@@ -135,7 +144,7 @@ class Netlist {
 
 }  // namespace
 
-std::string attribute(const Json& module, const std::string& top, int depth) {
+std::string attribute(const Json& module, const std::string& top, int depth, bool by_signal) {
   Netlist net(module);
 
   // (scope, type); the top module's own signals have the scope "(top)", cells that reach no
@@ -146,7 +155,8 @@ std::string attribute(const Json& module, const std::string& top, int depth) {
     const std::string type = body["type"];
     if (type == "SB_LUT4" || type == "SB_CARRY" || is_ff(type)) {
       const std::string name = net.owner(cell);
-      std::string scope = name.empty() ? "(unnamed)" : scope_of(name);
+      // By signal, the signal's own name is its row (a top signal's name has no scope).
+      std::string scope = name.empty() ? "(unnamed)" : by_signal ? signal_of(name) : scope_of(name);
       if (scope.empty()) {
         scope = "(top)";
         any_top = true;
@@ -174,7 +184,9 @@ std::string attribute(const Json& module, const std::string& top, int depth) {
   std::map<std::string, Counts> by_scope;
   Counts total;
   for (const auto& [scope, type] : cells) {
-    Counts& row = by_scope[scope.front() == '(' ? scope : cut(scope, prefix.size(), depth)];
+    Counts& row = by_scope[scope.front() == '(' ? scope
+                           : by_signal         ? scope.substr(std::min(prefix.size(), scope.size()))
+                                               : cut(scope, prefix.size(), depth)];
     for (Counts* c : {&row, &total}) {
       ++(type == "SB_LUT4" ? c->lut4 : type == "SB_CARRY" ? c->carry : c->ff);
     }
@@ -183,7 +195,8 @@ std::string attribute(const Json& module, const std::string& top, int depth) {
   std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) {
     return a.second.lut4 != b.second.lut4 ? a.second.lut4 > b.second.lut4 : a.first < b.first;
   });
-  std::string table = "scope (below " + (prefix.empty() ? top : prefix.substr(0, prefix.size() - 1)) +
+  std::string table = std::string(by_signal ? "signal" : "scope") + " (below " +
+                      (prefix.empty() ? top : prefix.substr(0, prefix.size() - 1)) +
                       ") | SB_LUT4 | SB_CARRY | flip-flops\n";
   for (const auto& [scope, c] : rows) {
     table += scope + " | " + std::to_string(c.lut4) + " | " + std::to_string(c.carry) + " | " +

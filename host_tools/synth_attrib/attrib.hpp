@@ -16,7 +16,8 @@ struct Counts {
 };
 
 // The table of SB_LUT4, SB_CARRY and flip-flops by scope (depth parts below the scopes' common
-// prefix), largest first, with a total line: "scope | lut4 | carry | ff" lines.
-std::string attribute(const Json& module, const std::string& top, int depth);
+// prefix), largest first, with a total line: "scope | lut4 | carry | ff" lines. With by_signal,
+// one row per signal (its full name below the prefix) instead of per scope.
+std::string attribute(const Json& module, const std::string& top, int depth, bool by_signal = false);
 
 }  // namespace htx::synth

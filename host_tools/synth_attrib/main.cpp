@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   app.add_option("--netlist", netlist_path, "Yosys JSON netlist (write_json)")->required();
   app.add_option("--top", top, "top module")->required();
   app.add_option("--depth", depth, "scope parts kept below the common prefix")->check(CLI::Range(1, 16));
+  bool by_signal = false;
+  app.add_flag("--by-signal", by_signal, "one row per signal instead of per scope");
   app.add_option("--out", out_path, "also write the table here");
   CLI11_PARSE(app, argc, argv);
 
@@ -28,7 +30,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   const htx::synth::Json& module = doc["modules"][top];
-  const std::string table = htx::synth::attribute(module, top, depth);
+  const std::string table = htx::synth::attribute(module, top, depth, by_signal);
   std::cout << table;
   if (!out_path.empty()) {
     std::ofstream out(out_path);

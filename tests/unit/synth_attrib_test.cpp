@@ -27,7 +27,7 @@ Json netlist() {
   // out_o at u_b's depth; a carry computes u_a's next value (bit 5); the top's own signal z (6).
   m["netnames"] = {{"u_a.x_q", net({2})},         {"$abc$3", net({3}, true)}, {"u_b.y", net({4})},
                    {"u_top_c.u_c.in_i", net({4})}, {"u_d.out_o", net({4})},  {"u_a.x_d", net({5})},
-                   {"z", net({6})}};
+                   {"z_SB_LUT4_I0_O", net({6})}};
   m["cells"] = {
       {"u_a.x_q_SB_DFF_Q", cell("SB_DFF", {{"C", {1}}, {"D", {5}}, {"Q", {2}}})},
       {"$abc$lut1", cell("SB_LUT4", {{"I0", {2}}, {"I1", {2}}, {"I2", {2}}, {"I3", {2}}, {"O", {3}}})},
@@ -67,6 +67,16 @@ TEST(SynthAttrib, DepthCutsScopesBelowTheirCommonPrefix) {
   const std::string shallow = attribute(m, "t", 1);
   EXPECT_NE(shallow.find("u_x | 2 | 0 | 0\n"), std::string::npos) << shallow;
   EXPECT_NE(shallow.find("u_w | 1 | 0 | 0\n"), std::string::npos) << shallow;
+}
+
+TEST(SynthAttrib, BySignalGivesEachSignalItsOwnRow) {
+  const std::string table = attribute(netlist(), "t", 1, true);
+  EXPECT_NE(table.find("signal (below t) |"), std::string::npos) << table;
+  EXPECT_NE(table.find("u_a.x_d | 1 | 1 | 0\n"), std::string::npos) << table;
+  EXPECT_NE(table.find("u_a.x_q | 0 | 0 | 1\n"), std::string::npos) << table;
+  EXPECT_NE(table.find("u_b.y | 2 | 0 | 0\n"), std::string::npos) << table;
+  EXPECT_NE(table.find("z | 1 | 0 | 0\n"), std::string::npos) << table;
+  EXPECT_NE(table.find("total | 5 | 1 | 1\n"), std::string::npos) << table;
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 namespace render_app {
 
 // Vertex-record field widths of the icebreaker raster unit (ModelConfig::record_format()).
-inline constexpr htx::fw::RecordFormat kRecordFormat{14, 16, 24, 13};
+inline constexpr htx::fw::RecordFormat kRecordFormat{12, 16, 24, 13};
 // Methods the raster unit builds (bit i = method i): AFFINE, SUBDIV, RECIP_LUT, RECIP_NR, DIVFREE.
 inline constexpr uint32_t kMethodsBuilt = 0x1F;
 // AUTO: the icebreaker raster unit's reciprocal bounds and costs, and issue 7's tolerance of 1/16

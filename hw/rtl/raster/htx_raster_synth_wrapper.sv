@@ -38,7 +38,7 @@ module htx_raster_synth_wrapper #(
   logic              to_valid_q;
 
   htx_raster #(
-    .XyIntBits(Full ? 16 : 14), .ZBits(ZBits), .GF(Full ? 24 : 16), .RecipW(Full ? 32 : 24),
+    .XyIntBits(Full ? 16 : 12), .ZBits(ZBits), .GF(Full ? 24 : 16), .RecipW(Full ? 32 : 24),
     .RecipK(Full ? 10 : 8), .RecipG(2), .SetupSteps(2), .Iterative(!Full), .FifoDepth(64),
     .FbPixels(Full ? 76800 : 19200), .AddrW(AddrW),
     .QBits(Full ? 32 : 24), .UvIntBits(Full ? 16 : 13), .TF(Full ? 16 : 10),

@@ -19,7 +19,7 @@ ModelConfig make_full() {
 ModelConfig make_icebreaker() {
   ModelConfig c;
   c.name = "icebreaker";
-  c.xy_int_bits = 14;  // +-8192 pixels: screens up to 4096 wide
+  c.xy_int_bits = 12;  // +-2048 pixels: screens up to 1024 wide (docs/model.md)
   c.z_bits = 16;
   c.q_bits = 24;  // 20 bits leave 0.017 texel on wsweep:r=1000; 24 keep every scene within 1/256
   c.uv_int_bits = 13;  // a triangle may span up to 4096 texels
