@@ -553,11 +553,14 @@ module htx_raster #(
   localparam int unsigned CWide = 32 + TF + 2;
   function automatic logic [CoordW-1:0] level0(input logic [LocW-1:0] loc, input logic [31:0] off,
                                                input logic clamp);
-    logic signed [CWide-1:0] c;
+    logic signed [CWide-1:0] c, hi;
     c = CWide'($signed(loc)) + ($signed(CWide'($signed(off))) <<< TF);
+    hi = c >>> (CoordW-1);  // (shifted on its own: in a comparison with '1 it would be unsigned)
     if (CWide <= CoordW) level0 = CoordW'(c);
-    else if (clamp && (c > $signed(CWide'({1'b0, {(CoordW-1){1'b1}}})))) level0 = {1'b0, {(CoordW-1){1'b1}}};
-    else if (clamp && (c < -$signed(CWide'({1'b0, {(CoordW-1){1'b1}}})) - 1)) level0 = {1'b1, {(CoordW-1){1'b0}}};
+    // c beyond +-2^(CoordW-1): its bits from CoordW - 1 up are not all copies of its sign
+    // (reductions, not comparisons with constants: Yosys 0.23 builds those as carry chains).
+    else if (clamp && !c[CWide-1] && (hi != '0)) level0 = {1'b0, {(CoordW-1){1'b1}}};
+    else if (clamp && c[CWide-1] && (hi != '1)) level0 = {1'b1, {(CoordW-1){1'b0}}};
     else level0 = CoordW'(c);
   endfunction
 
@@ -771,7 +774,7 @@ module htx_raster #(
         rdata_d[htx_raster_reg_pkg::RASTER_STATUS_FIFO_EMPTY_LSB] = fifo_empty;
         rdata_d[htx_raster_reg_pkg::RASTER_STATUS_FIFO_FULL_LSB]  = fifo_full;
         rdata_d[htx_raster_reg_pkg::RASTER_STATUS_FIFO_LEVEL_LSB +: 8] =
-          (32'(fifo_level) > 255) ? 8'hFF : 8'(fifo_level);
+          ((32'(fifo_level) >> 8) != 0) ? 8'hFF : 8'(fifo_level);
         rdata_d[htx_raster_reg_pkg::RASTER_STATUS_ERR_STATE_LSB]  = err_state_q;
       end
       htx_raster_reg_pkg::RASTER_CLEAR_COLOR_OFFSET: rdata_d = 32'(clear_color_q);

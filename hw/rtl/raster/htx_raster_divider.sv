@@ -99,7 +99,8 @@ module htx_raster_divider #(
   endfunction
 
   logic [AccQ-1:0] q_eff;
-  assign q_eff = ($signed(in_q_i) < $signed(AccQ'(1))) ? AccQ'(1) : in_q_i;
+  // Q < 1 (signed) as its sign or zero, not a comparison (a carry chain in Yosys 0.23).
+  assign q_eff = (in_q_i[AccQ-1] || (in_q_i == '0)) ? AccQ'(1) : in_q_i;
 
   logic [NIN-1:0] nin [NN];
   assign nin[0] = NIN'($signed(in_u_i));

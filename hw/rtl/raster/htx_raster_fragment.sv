@@ -158,7 +158,7 @@ module htx_raster_fragment #(
   end
 
   logic [ZBits-1:0] clear_z;
-  assign clear_z = ({1'b0, clear_z_i} > 25'(ZMax)) ? ZMax : ZBits'(clear_z_i);
+  assign clear_z = ((clear_z_i >> ZBits) != '0) ? ZMax : ZBits'(clear_z_i);
 
   assign wc_en_o   = clr_q ? clr_color_q : (f2_valid_q && pass);
   assign wz_en_o   = clr_q ? clr_depth_q : (f2_valid_q && pass && f2_zwrite_q);

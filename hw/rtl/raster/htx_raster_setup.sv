@@ -204,8 +204,8 @@ module htx_raster_setup #(
     xh = BoxW'((XW'(maxx) - XW'(128)) >>> 8);
     yl = BoxW'((XW'(miny) + XW'(127)) >>> 8);
     yh = BoxW'((XW'(maxy) - XW'(128)) >>> 8);
-    x_lo = (xl < 0) ? '0 : xl;
-    y_lo = (yl < 0) ? '0 : yl;
+    x_lo = xl[BoxW-1] ? '0 : xl;  // (the sign bit, not "< 0": see ethr)
+    y_lo = yl[BoxW-1] ? '0 : yl;
     x_hi = (xh > $signed(BoxW'({1'b0, width_i}) - BoxW'(1)))  ? $signed(BoxW'({1'b0, width_i}) - BoxW'(1))  : xh;
     y_hi = (yh > $signed(BoxW'({1'b0, height_i}) - BoxW'(1))) ? $signed(BoxW'({1'b0, height_i}) - BoxW'(1)) : yh;
     box_empty = (x_lo > x_hi) || (y_lo > y_hi);
@@ -236,7 +236,9 @@ module htx_raster_setup #(
     assign eb[k] = edx;
     // y points down and inside is E > 0: an edge going up is a left edge, a horizontal edge going
     // right a top edge; pixel centres exactly on them belong to this triangle (threshold 0).
-    assign ethr[k] = !((ea[k] > 0) || ((ea[k] == 0) && (edx > 0)));
+    // (Signs and zero tests rather than "> 0": Yosys 0.23 builds a comparison as a carry chain,
+    // a LUT and a carry a bit; docs/area.md.)
+    assign ethr[k] = !((!ea[k][DW-1] && (ea[k] != 0)) || ((ea[k] == 0) && !edx[DW-1] && (edx != 0)));
   end
 
   // The box's bounds without comparators of their own: the edges' coefficients are the vertices'

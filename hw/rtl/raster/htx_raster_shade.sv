@@ -74,7 +74,7 @@ module htx_raster_shade #(
   assign z_round_full = ($signed(zacc) + $signed(AccZ'(1) << (GF - 1))) >>> GF;
   assign z_round      = ZR'(z_round_full);
   assign z_clamped    = z_round[ZR-1] ? '0 :
-                        (z_round > $signed(ZR'({ZBits{1'b1}})) ? {ZBits{1'b1}} : ZBits'(z_round));
+                        (((ZR'(z_round) >> ZBits) != '0) ? {ZBits{1'b1}} : ZBits'(z_round));
 
   for (genvar c = 0; c < 3; c++) begin : g_ch
     logic signed [AccC-1:0] full;
@@ -84,7 +84,7 @@ module htx_raster_shade #(
     assign r    = CR'(full);
     assign unused = ^full[AccC-1:CR];
     assign rgb[8*c +: 8] = (gouraud && !PerspColor)
-                           ? (r[CR-1] ? 8'd0 : (r > $signed(CR'(255)) ? 8'd255 : 8'(r)))
+                           ? (r[CR-1] ? 8'd0 : (((CR'(r) >> 8) != '0) ? 8'd255 : 8'(r)))
                            : flat[8*c +: 8];
   end
 

@@ -125,8 +125,12 @@ module htx_raster_traverse #(
       assign in_prev_e[k] = 1'b0;
     end
     // Coverage grows to the right where a > 0 (a < 0 for a reversed edge).
-    assign fail_pos[k]  = !in_cur[k] && (dneg_q ? (a_q[k] < 0) : (a_q[k] > 0));
-    assign fail_neg[k]  = !in_cur[k] && (dneg_q ? (a_q[k] > 0) : (a_q[k] < 0));
+    // (Sign and zero tests, not comparisons: Yosys 0.23 builds those as carry chains.)
+    logic a_neg, a_pos;
+    assign a_neg = a_q[k][DW-1];
+    assign a_pos = !a_q[k][DW-1] && (a_q[k] != 0);
+    assign fail_pos[k]  = !in_cur[k] && (dneg_q ? a_neg : a_pos);
+    assign fail_neg[k]  = !in_cur[k] && (dneg_q ? a_pos : a_neg);
     assign fail_zero[k] = !in_cur[k] && (a_q[k] == 0);
   end
 
