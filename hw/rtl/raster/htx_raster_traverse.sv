@@ -134,14 +134,22 @@ module htx_raster_traverse #(
     assign fail_zero[k] = !in_cur[k] && (a_q[k] == 0);
   end
 
+  // Two magnitude comparisons and two equalities give every relation of x to the box's columns
+  // (x - 1 >= lo is x > lo, x + 1 <= hi is x < hi): a comparison is a carry chain, an equality a
+  // few LUTs.
   logic cov, in_prev, in_next, left_of, right_of, empty_row, at_lo;
-  assign cov    = (&in_cur) && (x_q >= x_lo_q) && (x_q <= x_hi_q);
-  assign in_prev   = (&in_prev_e) && (x_q - 1 >= x_lo_q);
-  assign in_next   = (&in_next_e) && (x_q + 1 <= x_hi_q);
-  assign left_of   = (x_q < x_lo_q) || (|fail_pos);
-  assign right_of  = (x_q > x_hi_q) || (|fail_neg);
+  logic below_lo, above_hi, on_lo, on_hi;
+  assign below_lo  = (x_q < x_lo_q);
+  assign above_hi  = (x_q > x_hi_q);
+  assign on_lo     = (x_q == x_lo_q);
+  assign on_hi     = (x_q == x_hi_q);
+  assign cov       = (&in_cur) && !below_lo && !above_hi;
+  assign in_prev   = (&in_prev_e) && !below_lo && !on_lo;
+  assign in_next   = (&in_next_e) && !above_hi && !on_hi;
+  assign left_of   = below_lo || (|fail_pos);
+  assign right_of  = above_hi || (|fail_neg);
   assign empty_row = (|fail_zero) || (left_of && right_of);
-  assign at_lo     = (x_q <= x_lo_q);  // the pixel to the left is outside the box
+  assign at_lo     = below_lo || on_lo;  // the pixel to the left is outside the box
 
   // ---- Decision ---------------------------------------------------------------------------------
   typedef enum logic [2:0] {ActNone, ActLeft, ActRight, ActRowCur, ActRowSaved} act_e;
