@@ -40,7 +40,8 @@ module htx_fb #(
   assign is_color = (req_addr_i[31:20] == 12'h300);
   assign is_depth = (req_addr_i[31:20] == 12'h301);
   assign bus_word = req_addr_i[19:2];
-  assign in_range = is_color ? (32'(bus_word) < CWords) : (is_depth && (32'(bus_word) < FbPixels));
+  assign in_range = is_color ? htx_raster_pkg::below_const(32'(bus_word), CWords)
+                             : (is_depth && htx_raster_pkg::below_const(32'(bus_word), FbPixels));
   // The raster's ports come first: a bus read of depth needs the depth read port, a bus write the
   // write port of its memory.
   assign conflict = in_range && (req_we_i ? (is_color ? wc_en_i : wz_en_i) : (is_depth && zr_en_i));

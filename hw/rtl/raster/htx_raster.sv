@@ -554,7 +554,10 @@ module htx_raster #(
   function automatic logic [CoordW-1:0] level0(input logic [LocW-1:0] loc, input logic [31:0] off,
                                                input logic clamp);
     logic signed [CWide-1:0] c, hi;
-    c = CWide'($signed(loc)) + ($signed(CWide'($signed(off))) <<< TF);
+    logic signed [CWide-TF-1:0] c_hi;
+    // The offset's shifted low bits are zero: only the bits from TF up are added.
+    c_hi = ((CWide-TF)'($signed(loc)) >>> TF) + (CWide-TF)'($signed(off));
+    c = {c_hi, loc[TF-1:0]};
     hi = c >>> (CoordW-1);  // (shifted on its own: in a comparison with '1 it would be unsigned)
     if (CWide <= CoordW) level0 = CoordW'(c);
     // c beyond +-2^(CoordW-1): its bits from CoordW - 1 up are not all copies of its sign

@@ -67,7 +67,7 @@ module htx_raster_fragment #(
   assign q_g = quantise(in_rgb_i[15:8], 6);
   assign q_b = quantise(in_rgb_i[23:16], 5);
 
-  assign in_range   = (in_addr_i < AddrW'(FbPixels));
+  assign in_range   = htx_raster_pkg::below_const(32'(in_addr_i), 32'(AddrW'(FbPixels)));
   assign in_ready_o = !clearing_o;
   assign zr_en_o    = in_valid_i && in_ready_o && in_range;
   assign zr_addr_o  = in_addr_i;
@@ -99,7 +99,7 @@ module htx_raster_fragment #(
   logic [12:0]      clr_col_q, clr_row_q, clr_col_max_q, clr_row_max_q;
   assign clr_row_end = (clr_col_q == clr_col_max_q);
   assign clr_last    = (clr_row_end && (clr_row_q == clr_row_max_q)) ||
-                       (clr_addr_q + 1'b1 >= AddrW'(FbPixels));
+                       (clr_addr_q == AddrW'(FbPixels - 1));  // (it counts up from 0 by one)
   assign clearing_o = clr_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin

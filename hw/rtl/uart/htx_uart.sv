@@ -53,7 +53,8 @@ module htx_uart #(
   assign rx_pop     = accept && data_read && !rx_empty;
 
   // Divisors below 4 leave no room for mid-bit sampling.
-  assign divisor = (divisor_q < 16'd4) ? 16'd4 : divisor_q;
+  // (A zero test of the upper bits: Yosys 0.23 builds "< 4" as a 16-bit carry chain.)
+  assign divisor = (divisor_q[15:2] == '0) ? 16'd4 : divisor_q;
 
   htx_fifo_sync #(.Width(8), .Depth(FifoDepth)) u_tx_fifo (
     .clk_i, .rst_ni,
