@@ -232,7 +232,7 @@ module htx_raster_traverse #(
   assign step_saved = (act == ActRowSaved);
   logic signed [EW-1:0] e_next [3];
   for (genvar k = 0; k < 3; k++) begin : g_estep
-    htx_raster_addsub #(.W(EW)) u_step (
+    htx_raster_addsub #(.W(EW), .ZeroLsbs(8)) u_step (
       .a_i  (step_saved ? es_q[k] : e_q[k]),
       .b_i  (step_row ? step_b[k] : step_a[k]),
       .sub_i(step_neg ^ thr_q[k]),  // a negated edge steps the other way
@@ -366,7 +366,7 @@ module htx_raster_traverse #(
     logic [AW-1:0] accs_q [NP];
     logic [AW-1:0] acc_next [NP];
     for (genvar p = 0; p < NP; p++) begin : g_step
-      htx_raster_addsub #(.W(AW)) u_step (
+      htx_raster_addsub #(.W(AW), .ZeroLsbs(8)) u_step (
         .a_i  (step_saved ? accs_q[p] : acc_q[p]),
         .b_i  (step_row ? (gy_q[p] << 8) : (gx_q[p] << 8)),
         .sub_i(step_neg),
@@ -466,7 +466,7 @@ module htx_raster_traverse #(
     assign grad    = c_row ? gy_q[0] : gx_q[0];
     assign gx_turn = active || (loading && got_q && (got_reg_q == RegGx));
     assign gy_turn = active || (loading && got_q && (got_reg_q == RegGy));
-    htx_raster_addsub #(.W(AW)) u_step (
+    htx_raster_addsub #(.W(AW), .ZeroLsbs(8)) u_step (
       .a_i  (base_q),
       .b_i  (grad << 8),
       .sub_i(c_neg),
