@@ -243,19 +243,27 @@ module htx_tex_sampler #(
     end
   end
 
-  logic [31:0] texel [4];  // c00, c10, c01, c11
-  logic [3:0]  bad;
-  for (genvar k = 0; k < 4; k++) begin : g_decode
+  // The footprint's texels as read (c00, c10, c01, c11); stage C decodes them, Lanes = 1 only the
+  // channels it blends in each clock (2026-12-03: stage C held all four decoded, 64 flip-flops
+  // and two decoders more).
+  logic [TexW-1:0] raw [4];
+  logic [31:0]     unused_rgba;
+  logic            bad;
+  for (genvar k = 0; k < 4; k++) begin : g_pick
     logic [1:0] bk;
     assign bk = {k[1] ? b_par_q[3] : b_par_q[2], k[0] ? b_par_q[1] : b_par_q[0]};
-    htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_decode (
-      .texel_i(s_rdata_i[32'(bk)*TexW +: TexW]), .format_i(b_fmt_q), .rgba_o(texel[k]), .bad_o(bad[k]));
+    assign raw[k] = s_rdata_i[32'(bk)*TexW +: TexW];
   end
-  assign err_format_o = b_valid_q && c_ready && bad[0];
+  // (bad_o depends on the format alone.)
+  htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_check (
+    .texel_i('0), .format_i(b_fmt_q), .rgba_o(unused_rgba), .bad_o(bad));
+  assign err_format_o = b_valid_q && c_ready && bad;
 
   // ---- Stage C ---------------------------------------------------------------------------------
   logic            c_valid_q, c_first_q, c_second_q, c_nearest_q;
-  logic [31:0]     c_tex_q [4];
+  logic [TexW-1:0] c_raw_q [4];
+  logic [1:0]      c_fmt_q;
+  logic [31:0]     c_tex0;  // c00 decoded (nearest's result)
   logic [7:0]      c_wu_q, c_wv_q, c_wtri_q;
   logic [3:0]      c_l0_q;
   logic [15:0]     c_lod_q;
@@ -283,7 +291,8 @@ module htx_tex_sampler #(
       c_first_q   <= b_first_q;
       c_second_q  <= b_second_q;
       c_nearest_q <= b_nearest_q;
-      for (int k = 0; k < 4; k++) c_tex_q[k] <= texel[k];
+      for (int k = 0; k < 4; k++) c_raw_q[k] <= raw[k];
+      c_fmt_q     <= b_fmt_q;
       c_wu_q      <= b_wu_q;
       c_wv_q      <= b_wv_q;
       c_wtri_q    <= b_wtri_q;
@@ -293,7 +302,18 @@ module htx_tex_sampler #(
     end
   end
 
+  logic unused_bad0;
+  htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_decode0 (
+    .texel_i(c_raw_q[0]), .format_i(c_fmt_q), .rgba_o(c_tex0), .bad_o(unused_bad0));
+
   if (Lanes >= 4) begin : g_lanes4
+    logic [31:0] c_tex_q [4];
+    logic [3:1]  unused_bad;
+    assign c_tex_q[0] = c_tex0;
+    for (genvar k = 1; k < 4; k++) begin : g_decode
+      htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_decode (
+        .texel_i(c_raw_q[k]), .format_i(c_fmt_q), .rgba_o(c_tex_q[k]), .bad_o(unused_bad[k]));
+    end
     for (genvar ch = 0; ch < 4; ch++) begin : g_ch
       htx_tex_bilerp #(.ShiftAdd(ShiftAdd)) u_bilerp (
         .c00_i(c_tex_q[0][8*ch +: 8]), .c10_i(c_tex_q[1][8*ch +: 8]),
@@ -309,7 +329,7 @@ module htx_tex_sampler #(
     assign f_tag     = c_tag_q;
     assign c_ready_l = !c_valid_q || f_take;
     logic unused_l4;
-    assign unused_l4 = c_nearest_q;
+    assign unused_l4 = ^{c_nearest_q, unused_bad};
   end else begin : g_lane1
     // One channel at a time, one product per clock on one multiplier (one iCE40 DSP):
     //   step 0: h0 = 256 c00 + wu (c10 - c00);  step 1: h1 = 256 c01 + wu (c11 - c01);
@@ -317,7 +337,7 @@ module htx_tex_sampler #(
     //   integers), in 3 clocks a channel; nearest takes 1 clock. (Until 2026-12-02 this was a
     //   two-step pipeline with three multipliers, 4 clocks a bilinear texel: 3 DSPs.)
     logic [1:0]         ch_q, st_q;
-    logic [7:0]         e00, e10, e01, e11;
+    logic [7:0]         e_lo, e_hi;  // this clock's channel of c00 and c10 (step 0) or c01 and c11
     logic [15:0]        h0_q, h1_q;
     logic [23:0]        part_q;
     logic signed [16:0] m_a;
@@ -326,16 +346,22 @@ module htx_tex_sampler #(
     logic [23:0]        tot;
     logic [24:0]        rnd;
     logic               fin;
-    assign e00 = c_tex_q[0][8*ch_q +: 8];
-    assign e10 = c_tex_q[1][8*ch_q +: 8];
-    assign e01 = c_tex_q[2][8*ch_q +: 8];
-    assign e11 = c_tex_q[3][8*ch_q +: 8];
+    logic [31:0] t_lo, t_hi;
+    logic [1:0]  unused_bad;
+    htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_decode_lo (
+      .texel_i(st_q[0] ? c_raw_q[2] : c_raw_q[0]), .format_i(c_fmt_q), .rgba_o(t_lo), .bad_o(unused_bad[0]));
+    htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_decode_hi (
+      .texel_i(st_q[0] ? c_raw_q[3] : c_raw_q[1]), .format_i(c_fmt_q), .rgba_o(t_hi), .bad_o(unused_bad[1]));
+    assign e_lo = t_lo[8*ch_q +: 8];
+    assign e_hi = t_hi[8*ch_q +: 8];
     always_comb begin
-      unique case (st_q)
-        2'd0:    begin m_a = $signed(17'(e10)) - $signed(17'(e00)); m_w = c_wu_q; end
-        2'd1:    begin m_a = $signed(17'(e11)) - $signed(17'(e01)); m_w = c_wu_q; end
-        default: begin m_a = $signed({1'b0, h1_q}) - $signed({1'b0, h0_q});    m_w = c_wv_q; end
-      endcase
+      if (st_q == 2'd2) begin
+        m_a = $signed({1'b0, h1_q}) - $signed({1'b0, h0_q});
+        m_w = c_wv_q;
+      end else begin
+        m_a = $signed(17'(e_hi)) - $signed(17'(e_lo));  // c10 - c00, then c11 - c01
+        m_w = c_wu_q;
+      end
     end
     htx_tex_mul #(.AW(17), .ShiftAdd(ShiftAdd)) u_m (.a_i(m_a), .w_i(m_w), .p_o(m_p));
     assign tot = 24'({h0_q, 8'd0} + 24'(m_p));
@@ -357,13 +383,13 @@ module htx_tex_sampler #(
     end
     always_ff @(posedge clk_i) begin
       if (c_valid_q && !fin) begin
-        if (st_q == 2'd0) h0_q <= 16'({e00, 8'd0} + 16'(m_p));
-        if (st_q == 2'd1) h1_q <= 16'({e01, 8'd0} + 16'(m_p));
+        if (st_q == 2'd0) h0_q <= 16'({e_lo, 8'd0} + 16'(m_p));
+        if (st_q == 2'd1) h1_q <= 16'({e_lo, 8'd0} + 16'(m_p));
         if (st_q == 2'd2) part_q[8*ch_q +: 8] <= rnd[23:16];
       end
     end
     assign f_valid  = c_valid_q && fin;
-    assign f_res    = c_nearest_q ? c_tex_q[0] : {rnd[23:16], part_q};
+    assign f_res    = c_nearest_q ? c_tex0 : {rnd[23:16], part_q};
     assign f_first  = c_first_q;
     assign f_second = c_second_q;
     assign f_wtri   = c_wtri_q;
@@ -371,7 +397,7 @@ module htx_tex_sampler #(
     assign f_lod    = c_lod_q;
     assign f_tag    = c_tag_q;
     logic unused_ls;
-    assign unused_ls = ^{m_p[25:24], rnd[24], rnd[15:0]};
+    assign unused_ls = ^{m_p[25:24], rnd[24], rnd[15:0], unused_bad};
   end
 
   // ---- Stage D ---------------------------------------------------------------------------------
@@ -413,5 +439,5 @@ module htx_tex_sampler #(
   assign busy_o = r_valid_q || a_valid_q || b_valid_q || c_valid_q || out_valid_o;
 
   logic unused;
-  assign unused = ^{lwv, bad[3:1], f_wtri, first_q, a_y0_q[7:1], a_y1_q[7:1], a_x0_q[0], a_x1_q[0], a_y0_q[0], a_y1_q[0]};
+  assign unused = ^{lwv, unused_rgba, unused_bad0, f_wtri, first_q, a_y0_q[7:1], a_y1_q[7:1], a_x0_q[0], a_x1_q[0], a_y0_q[0], a_y1_q[0]};
 endmodule
