@@ -7,7 +7,10 @@ module htx_soc #(
   parameter logic [31:0] ResetVector = 32'h0000_0000,
   parameter bit          Sim         = 1'b0,
   parameter bit          StallInject = 1'b0,
-  parameter int unsigned FbPixels    = 19200   // the GPU's framebuffer, 160 x 120
+  parameter int unsigned FbPixels    = 19200,  // the GPU's framebuffer, 160 x 120
+  // The GPU's perspective methods (bit m: htx::Method m): all in simulation, where the firmware's
+  // AUTO may choose any; the board's build takes AFFINE and RECIP_LUT (icebreaker-board).
+  parameter logic [4:0]  GpuMethods  = 5'b11111
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -47,7 +50,7 @@ module htx_soc #(
 
   htx_soc_fabric #(
     .RamBytes(RamBytes), .RamInitFile(RamInitFile), .ClockHz(ClockHz), .Sim(Sim),
-    .StallInject(StallInject), .FbPixels(FbPixels)
+    .StallInject(StallInject), .FbPixels(FbPixels), .GpuMethods(GpuMethods)
   ) u_fabric (
     .clk_i, .rst_ni,
     .ibus_req_valid_i(ibus_req_valid), .ibus_req_ready_o(ibus_req_ready),
