@@ -14,6 +14,7 @@ package htx_raster_pkg;
   // builds every comparison as a carry chain, a LUT and a carry a bit (32 LUT4 and 23 carries
   // for 24 bits), where this takes about 5 LUT4. For comparisons of two variables the carry
   // chain is the cheaper form; comparisons with zero are sign bits and zero tests (docs/area.md).
+  // x and c are unsigned and at most 32 bits (callers widen them with 32'()).
   function automatic logic below_const(input logic [31:0] x, input logic [31:0] c);
     logic lt, eq;
     lt = 1'b0;
