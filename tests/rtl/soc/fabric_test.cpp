@@ -79,6 +79,10 @@ TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
   EXPECT_EQ(soc.read(kFbColor + 2 * kFbPixels - 4).rdata, 0xBEEF'CAFEu);
   ASSERT_FALSE(soc.write(kFbDepth + 4 * 17, 0x0001'2345).err);
   EXPECT_EQ(soc.read(kFbDepth + 4 * 17).rdata & 0xFFFFu, 0x2345u);
+  ASSERT_FALSE(soc.write(kFbDepth + 4 * (kFbPixels - 1), 0x0000'6789).err);  // the last pixel
+  const auto last_depth = soc.read(kFbDepth + 4 * (kFbPixels - 1));
+  ASSERT_FALSE(last_depth.err);
+  EXPECT_EQ(last_depth.rdata & 0xFFFFu, 0x6789u);
   // TEXTURE registers and the texture memory (4 words per 2x2 block, TEXEL_BITS stored per word).
   const auto caps = soc.read(kTexture + TEXTURE_CAPS_Offset);
   ASSERT_FALSE(caps.err);
