@@ -32,4 +32,10 @@ package htx_raster_pkg;
   localparam logic [2:0] MethodRecipLut = 3'd2;
   localparam logic [2:0] MethodRecipNr = 3'd3;
   localparam logic [2:0] MethodDivFree = 3'd4;
+  // The methods the board's GPU builds (htx::icebreaker_board_methods(): AFFINE and RECIP_LUT), in
+  // the synthesis report's gpu_icebreaker_up5k and soc_up5k. (A function: a package localparam
+  // would be an unused parameter to Verilator in every other top.)
+  function automatic logic [4:0] board_methods();
+    board_methods = (5'd1 << MethodAffine) | (5'd1 << MethodRecipLut);
+  endfunction
 endpackage

@@ -244,8 +244,8 @@ module htx_tex_sampler #(
   end
 
   // The footprint's texels as read (c00, c10, c01, c11); stage C decodes them, Lanes = 1 only the
-  // channels it blends in each clock (2026-12-03: stage C held all four decoded, 64 flip-flops
-  // and two decoders more).
+  // two it blends in each clock (2026-12-03: stage C held all four decoded, 64 flip-flops and two
+  // decoders more).
   logic [TexW-1:0] raw [4];
   logic [31:0]     unused_rgba;
   logic            bad;
@@ -263,7 +263,6 @@ module htx_tex_sampler #(
   logic            c_valid_q, c_first_q, c_second_q, c_nearest_q;
   logic [TexW-1:0] c_raw_q [4];
   logic [1:0]      c_fmt_q;
-  logic [31:0]     c_tex0;  // c00 decoded (nearest's result)
   logic [7:0]      c_wu_q, c_wv_q, c_wtri_q;
   logic [3:0]      c_l0_q;
   logic [15:0]     c_lod_q;
@@ -302,15 +301,10 @@ module htx_tex_sampler #(
     end
   end
 
-  logic unused_bad0;
-  htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_decode0 (
-    .texel_i(c_raw_q[0]), .format_i(c_fmt_q), .rgba_o(c_tex0), .bad_o(unused_bad0));
-
   if (Lanes >= 4) begin : g_lanes4
     logic [31:0] c_tex_q [4];
-    logic [3:1]  unused_bad;
-    assign c_tex_q[0] = c_tex0;
-    for (genvar k = 1; k < 4; k++) begin : g_decode
+    logic [3:0]  unused_bad;
+    for (genvar k = 0; k < 4; k++) begin : g_decode
       htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_decode (
         .texel_i(c_raw_q[k]), .format_i(c_fmt_q), .rgba_o(c_tex_q[k]), .bad_o(unused_bad[k]));
     end
@@ -346,6 +340,7 @@ module htx_tex_sampler #(
     logic [23:0]        tot;
     logic [24:0]        rnd;
     logic               fin;
+    // A nearest item finishes in the clock it enters (st_q 0), so t_lo is then c00 decoded.
     logic [31:0] t_lo, t_hi;
     logic [1:0]  unused_bad;
     htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_decode_lo (
@@ -389,7 +384,7 @@ module htx_tex_sampler #(
       end
     end
     assign f_valid  = c_valid_q && fin;
-    assign f_res    = c_nearest_q ? c_tex0 : {rnd[23:16], part_q};
+    assign f_res    = c_nearest_q ? t_lo : {rnd[23:16], part_q};
     assign f_first  = c_first_q;
     assign f_second = c_second_q;
     assign f_wtri   = c_wtri_q;
@@ -439,5 +434,5 @@ module htx_tex_sampler #(
   assign busy_o = r_valid_q || a_valid_q || b_valid_q || c_valid_q || out_valid_o;
 
   logic unused;
-  assign unused = ^{lwv, unused_rgba, unused_bad0, f_wtri, first_q, a_y0_q[7:1], a_y1_q[7:1], a_x0_q[0], a_x1_q[0], a_y0_q[0], a_y1_q[0]};
+  assign unused = ^{lwv, unused_rgba, f_wtri, first_q, a_y0_q[7:1], a_y1_q[7:1], a_x0_q[0], a_x1_q[0], a_y0_q[0], a_y1_q[0]};
 endmodule
