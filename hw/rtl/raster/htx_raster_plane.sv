@@ -34,7 +34,8 @@ module htx_raster_plane #(
   output logic [GW-1:0]          gxw_o, gyw_o
 );
   localparam int unsigned NW = VB + DW + 2;
-  localparam int unsigned MA = (NW > AccW) ? NW : AccW;  // also the accumulator: n, then start
+  // Also the accumulator (n, then start), and the gradients' rounding: at least AccW + 1 bits.
+  localparam int unsigned MA = (NW > AccW) ? NW : AccW + 1;
   localparam int unsigned MB = (DW > W + 2) ? DW : W + 2;
   localparam int unsigned PW = MA + MB;
 
@@ -104,15 +105,19 @@ module htx_raster_plane #(
     .p_o    (mul_p)
   );
   // Round to nearest, ties up: (p + 2^(shift-1)) >>> shift = ((p >>> (shift - 1)) + 1) >>> 1.
+  // The gradients kept modulo 2^AccW take the + 1 from the accumulator's adder (idle while they
+  // are formed); only the full-precision ones for the LOD unit (gxw_o, gyw_o) need an adder of
+  // their own, which synthesis removes where nothing takes them.
   assign rounded = (mul_p + $signed(PW'(1))) >>> 1;
 
   // One adder for both sums of two products: n_x = da1 dy2 + (-(da2 dy1)) (n_y likewise), then
-  // start = a0 2^GF + g_x dxs + g_y dys (kept modulo 2^AccW).
+  // start = a0 2^GF + g_x dxs + g_y dys (kept modulo 2^AccW), and the gradients' rounding p + 1.
   logic [MA-1:0] acc_base, acc_sum;
   always_comb begin
-    if (state_q == StSx)                             acc_base = MA'(a0e) << GF;
+    if (state_q == StSx)                               acc_base = MA'(a0e) << GF;
     else if ((state_q == StNx0) || (state_q == StNy0)) acc_base = '0;
-    else                                              acc_base = acc_q;
+    else if ((state_q == StGx) || (state_q == StGy))   acc_base = MA'(1);
+    else                                               acc_base = acc_q;
   end
   assign acc_sum = acc_base + MA'(mul_p);
 
@@ -136,10 +141,10 @@ module htx_raster_plane #(
         StNy1: if (mul_done) begin acc_q <= acc_sum; state_q <= StWait; end
         StWait: if (recip_valid_i) state_q <= StGx;
         StGx: if (mul_done) begin
-          gx_q <= AccW'(rounded); gxw_q <= GW'(rounded); state_q <= StGy;
+          gx_q <= acc_sum[AccW:1]; gxw_q <= GW'(rounded); state_q <= StGy;
         end
         StGy: if (mul_done) begin
-          gy_q <= AccW'(rounded); gyw_q <= GW'(rounded); state_q <= StSx;
+          gy_q <= acc_sum[AccW:1]; gyw_q <= GW'(rounded); state_q <= StSx;
         end
         StSx: if (mul_done) begin acc_q <= acc_sum; state_q <= StSy; end
         StSy: if (mul_done) begin acc_q <= acc_sum; state_q <= StDone; end
