@@ -4,7 +4,8 @@
 // register to register. Full selects the `full` parameters, else `icebreaker`. Not part of any SoC.
 module htx_raster_synth_wrapper #(
   parameter bit         Full    = 1'b0,
-  parameter logic [4:0] Methods = 5'b01111  // the synth-report designs leave DIVFREE out
+  parameter logic [4:0] Methods = 5'b01111, // the synth-report designs leave DIVFREE out
+  parameter bit         TexLod  = 1'b1      // the LOD gradients for a trilinear texture unit
 ) (
   input  logic clk_i,
   input  logic rst_ni,
@@ -42,7 +43,7 @@ module htx_raster_synth_wrapper #(
     .RecipK(Full ? 10 : 8), .RecipG(2), .SetupSteps(2), .Iterative(!Full), .FifoDepth(64),
     .FbPixels(Full ? 76800 : 19200), .AddrW(AddrW),
     .QBits(Full ? 32 : 24), .UvIntBits(Full ? 16 : 13), .TF(Full ? 16 : 10),
-    .PixelSteps(Full ? 2 : 1), .Methods(Methods), .PerspColor(Full), .PixelPipelined(Full),
+    .PixelSteps(Full ? 2 : 1), .Methods(Methods), .TexLod(TexLod), .PerspColor(Full), .PixelPipelined(Full),
     .PixelMulIterative(1'b0), .SubdivDepth(Full ? 128 : 64), .DfFracBits(Full ? 4 : 2), .DfCap(64),
     .LF(Full ? 8 : 6), .LogIdx(Full ? 10 : 6), .CoordW(CoordW), .GradW(GradW)
   ) u_raster (
