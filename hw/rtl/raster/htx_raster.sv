@@ -138,16 +138,25 @@ module htx_raster #(
   // ---- FIFO and input --------------------------------------------------------------------------
   logic        fifo_pop;
   logic [31:0] fifo_rdata;
-  htx_raster_fifo #(.Depth(FifoDepth)) u_fifo (
+  // RecInFifo (`icebreaker`): the record setup works on stays in the FIFO's block RAM, and setup
+  // reads its values from there (htx_raster_setup ValuesInFifo).
+  localparam bit RecInFifo = Iterative && !PerspColor;
+  logic        fifo_none, rec_release, vr_req;
+  logic [4:0]  vr_off;
+  htx_raster_fifo #(.Depth(FifoDepth), .Hold(RecInFifo)) u_fifo (
     .clk_i, .rst_ni,
-    .flush_i(abort),
-    .push_i (accept && is_fifo && req_we_i),
-    .wdata_i(req_wdata_i),
-    .pop_i  (fifo_pop),
-    .rdata_o(fifo_rdata),
-    .full_o (fifo_full),
-    .empty_o(fifo_empty),
-    .level_o(fifo_level)
+    .flush_i   (abort),
+    .push_i    (accept && is_fifo && req_we_i),
+    .wdata_i   (req_wdata_i),
+    .pop_i     (fifo_pop),
+    .rdata_o   (fifo_rdata),
+    .peek_i    (vr_req),
+    .peek_off_i($clog2(FifoDepth)'(vr_off)),
+    .release_i (rec_release),
+    .full_o    (fifo_full),
+    .empty_o   (fifo_empty),
+    .none_o    (fifo_none),
+    .level_o   (fifo_level)
   );
 
   logic               rec_valid, rec_ready, in_partial, in_busy;
@@ -161,7 +170,7 @@ module htx_raster #(
     .clk_i, .rst_ni,
     .abort_i     (abort),
     .enable_i    (enable_q),
-    .fifo_empty_i(fifo_empty),
+    .fifo_empty_i(fifo_none),
     .fifo_pop_o  (fifo_pop),
     .fifo_rdata_i(fifo_rdata),
     .rec_valid_o (rec_valid),
@@ -211,7 +220,8 @@ module htx_raster #(
     .XyIntBits(XyIntBits), .ZBits(ZBits), .GF(GF), .RecipW(RecipW), .RecipK(RecipK),
     .RecipG(RecipG), .NrSteps(SetupSteps), .Iterative(Iterative), .QBits(QBits),
     .UvIntBits(UvIntBits), .TF(TF), .GradW(GradW), .Methods(Methods), .PerspColor(PerspColor),
-    .Lod(TexLod || HasDf), .ExtRecip(SharedRecip), .HoldRecord(Iterative), .AW(AW), .NP(NP)
+    .Lod(TexLod || HasDf), .ExtRecip(SharedRecip), .HoldRecord(Iterative),
+    .ValuesInFifo(RecInFifo), .AW(AW), .NP(NP)
   ) u_setup (
     .clk_i, .rst_ni,
     .abort_i        (abort),
@@ -261,8 +271,13 @@ module htx_raster #(
     .rq_x_o         (rq_x),
     .rq_done_i      (rq_done),
     .rq_r_i         (rq_r),
-    .rq_msb_i       (rq_msb)
+    .rq_msb_i       (rq_msb),
+    .vr_req_o       (vr_req),
+    .vr_off_o       (vr_off),
+    .vr_data_i      (fifo_rdata)
   );
+  // The FIFO frees the record's words when setup releases the record (RecInFifo).
+  assign rec_release = RecInFifo && rec_valid && rec_ready;
 
   // ---- Traversal -------------------------------------------------------------------------------
   logic              tv_valid, tv_ready, trav_busy, trav_stall, tv_first, tv_last, tv_tfirst;

@@ -7,6 +7,10 @@
 // start_i starts planes 0 .. NFirst-1; late_start_i (any time after start_i) the rest, whose vertex
 // values come later (AFFINE's u_i, v_i). A plane's results show (res_show_o, res_idx_o and the
 // result outputs steady) until the caller takes them with res_ready_i; res_valid_o pulses then.
+//
+// Load = 1: values_i holds only the three values of the plane being worked on (its low 3 VB bits),
+// which the caller loads (from block RAM) while want_o is high, for plane res_idx_o, and confirms
+// with have_i; they must then stay until want_o rises again. No multiplexer over the planes.
 module htx_raster_plane_seq #(
   parameter int unsigned NP     = 9,
   parameter int unsigned NFirst = 7,
@@ -17,14 +21,17 @@ module htx_raster_plane_seq #(
   parameter int unsigned ShiftW = 8,
   parameter int unsigned AccW   = VB + GF + 2,
   parameter int unsigned GW     = VB + DW + 2 + GF + 1,
-  parameter int unsigned IdxW   = $clog2(NP)
+  parameter int unsigned IdxW   = $clog2(NP),
+  parameter bit          Load   = 1'b0
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
   input  logic                  abort_i,
   input  logic                  start_i,
   input  logic                  late_start_i,
-  input  logic [NP*3*VB-1:0]    values_i,      // plane p, vertex i at VB (3 p + i)
+  input  logic [NP*3*VB-1:0]    values_i,      // plane p, vertex i at VB (3 p + i); Load: see above
+  output logic                  want_o,
+  input  logic                  have_i,
   input  logic signed [DW-1:0]  dx1_i, dy1_i, dx2_i, dy2_i,
   input  logic signed [DW-1:0]  dxs_i, dys_i,
   input  logic                  recip_valid_i,
@@ -41,17 +48,26 @@ module htx_raster_plane_seq #(
   output logic                  late_done_o    // planes NFirst .. NP-1 delivered
 );
   logic [IdxW-1:0] idx_q;
-  logic            run_q, kick_q, late_pend_q, first_done_q, late_done_q;
+  logic            run_q, kick_q, want_q, late_pend_q, first_done_q, late_done_q;
   logic            unit_done, finish, late_go;
   logic [VB-1:0]   a0, a1, a2;
-  logic [3*VB-1:0] plane_values [NP];
 
   // An array indexed by the plane: a multiplexer per bit (a part-select at VB * 3 * idx_q would be
   // a shifter across all NP * 3 * VB bits).
-  for (genvar p = 0; p < NP; p++) begin : g_values
-    assign plane_values[p] = values_i[3*VB*p +: 3*VB];
+  if (Load) begin : g_loaded
+    assign {a2, a1, a0} = values_i[3*VB-1:0];
+    logic unused_values;
+    assign unused_values = ^values_i[NP*3*VB-1:3*VB];
+  end else begin : g_indexed
+    logic [3*VB-1:0] plane_values [NP];
+    for (genvar p = 0; p < NP; p++) begin : g_values
+      assign plane_values[p] = values_i[3*VB*p +: 3*VB];
+    end
+    assign {a2, a1, a0} = plane_values[idx_q];
   end
-  assign {a2, a1, a0} = plane_values[idx_q];
+  // A plane starts (kick) at once, or with Load once its values are in (want_o, have_i).
+  logic go_plane;
+  assign go_plane = Load ? (want_q && have_i) : 1'b0;
 
   htx_raster_plane #(.VB(VB), .Signed(1'b1), .DW(DW), .W(W), .GF(GF), .Iterative(1'b1),
                      .ShiftW(ShiftW), .AccW(AccW), .GW(GW)) u_plane (
@@ -72,7 +88,7 @@ module htx_raster_plane_seq #(
 
   // The unit's done_o is a level that stays up until it is started again; kick_q guards the one
   // clock in which a new start is issued while the previous plane's done is still showing.
-  assign finish  = run_q && !kick_q && unit_done && res_ready_i;
+  assign finish  = run_q && !kick_q && !want_q && unit_done && res_ready_i;
   assign late_go = late_pend_q || late_start_i;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -80,22 +96,26 @@ module htx_raster_plane_seq #(
       idx_q        <= '0;
       run_q        <= 1'b0;
       kick_q       <= 1'b0;
+      want_q       <= 1'b0;
       late_pend_q  <= 1'b0;
       first_done_q <= 1'b0;
       late_done_q  <= 1'b0;
     end else if (abort_i) begin
       run_q        <= 1'b0;
       kick_q       <= 1'b0;
+      want_q       <= 1'b0;
       late_pend_q  <= 1'b0;
       first_done_q <= 1'b0;
       late_done_q  <= 1'b0;
     end else begin
-      kick_q <= 1'b0;
+      kick_q <= go_plane;
+      if (go_plane) want_q <= 1'b0;
       if (late_start_i) late_pend_q <= 1'b1;
       if (start_i) begin
         idx_q        <= '0;
         run_q        <= 1'b1;
-        kick_q       <= 1'b1;
+        kick_q       <= !Load;
+        want_q       <= Load;
         late_pend_q  <= 1'b0;
         first_done_q <= 1'b0;
         late_done_q  <= 1'b0;
@@ -109,18 +129,21 @@ module htx_raster_plane_seq #(
         end else begin
           if (idx_q == IdxW'(NFirst - 1)) late_pend_q <= 1'b0;
           idx_q  <= idx_q + 1'b1;
-          kick_q <= 1'b1;
+          kick_q <= !Load;
+          want_q <= Load;
         end
       end else if (!run_q && first_done_q && !late_done_q && late_go) begin
         idx_q       <= IdxW'(NFirst);
         run_q       <= 1'b1;
-        kick_q      <= 1'b1;
+        kick_q      <= !Load;
+        want_q      <= Load;
         late_pend_q <= 1'b0;
       end
     end
   end
 
-  assign res_show_o   = run_q && !kick_q && unit_done;
+  assign res_show_o   = run_q && !kick_q && !want_q && unit_done;
+  assign want_o       = want_q;
   assign res_valid_o  = finish;
   assign res_idx_o    = idx_q;
   assign first_done_o = first_done_q;

@@ -32,6 +32,12 @@ module htx_raster_setup #(
   // assembles the next record only after the release (31 clocks a triangle, hidden whenever
   // traversal or setup itself takes longer), and setup has no vertex registers.
   parameter bit          HoldRecord = 1'b0,
+  // With HoldRecord, Iterative and not PerspColor: the record's words stay in the FIFO's block RAM
+  // until setup releases the record, and the plane values and AFFINE's q_i, uq_i, vq_i are read
+  // from there (vr_*) instead of from the input stage's registers through multiplexers, which
+  // synthesis then removes with the registers (the input stage keeps x, y, the state word, the
+  // offsets and the colours, which setup takes without a multiplexer).
+  parameter bit          ValuesInFifo = 1'b0,
   // Derived widths (docs/raster.md).
   parameter int unsigned UQ   = QBits + UvIntBits,            // uq, vq vertex values (signed)
   parameter int unsigned LocW = UvIntBits + TF,               // local texel coordinates (signed)
@@ -99,7 +105,13 @@ module htx_raster_setup #(
   output logic [DetW-1:0]      rq_x_o,
   input  logic                 rq_done_i,
   input  logic [RecipW:0]      rq_r_i,
-  input  logic [MsbW-1:0]      rq_msb_i
+  input  logic [MsbW-1:0]      rq_msb_i,
+
+  // ValuesInFifo: read word vr_off_o of the record (0 the state word, then vertex_record.h's
+  // order); it is on vr_data_i in the next clock.
+  output logic                 vr_req_o,
+  output logic [4:0]           vr_off_o,
+  input  logic [31:0]          vr_data_i
 );
   localparam int unsigned BoxW   = XW - 7;      // signed pixel index of a box bound
   localparam int unsigned ShiftW = 8;
@@ -342,7 +354,9 @@ module htx_raster_setup #(
   assign tri_skip  = (state_q == StDet1) && emul_done && ((det_next == 0) || box_empty);
   assign det_start = (state_q == StDet1) && emul_done && (det_next != 0) && !box_empty && !det_again;
   assign recip_start = det_start || av_start;
-  assign recip_x = det_start ? det_abs : DetW'(q_v[av_i]);
+  // AFFINE's q_i: read from the FIFO in the clock before (ValuesInFifo), or the record's register.
+  assign recip_x = det_start ? det_abs
+                 : ValuesInFifo ? DetW'(vr_data_i[QBits-1:0]) : DetW'(q_v[av_i]);
   assign planes_abort = abort_i || tri_skip;
   assign grad_shift = ShiftW'(RecipW) + ShiftW'(msbdet_q) - ShiftW'(GF);
 
@@ -385,6 +399,18 @@ module htx_raster_setup #(
     assign unused_recip_mul = ^{recip_mul_start, recip_mul_a, recip_mul_b, recip_busy, recip_r0,
                                 recip_norm_shift, rq_done_i, rq_r_i, rq_msb_i};
   end
+
+  // ---- Reads of the record in the FIFO (ValuesInFifo) -----------------------------------------
+  // Two readers: AFFINE (q_i, uq_i, vq_i; it goes first) and the plane values' loader, which waits
+  // a clock when AFFINE reads. Word offsets of vertex i's fields: 4 + 9 i + (x 0, y 1, z 2, q 3,
+  // uq 4 and 5, vq 6 and 7, rgba 8).
+  logic       av_req, ld_req;
+  logic [4:0] av_off, ld_off;
+  function automatic logic [4:0] vert_word(input logic [1:0] i, input logic [3:0] field);
+    vert_word = 5'd4 + ((i == 2'd1) ? 5'd9 : (i == 2'd2) ? 5'd18 : 5'd0) + 5'(field);
+  endfunction
+  assign vr_req_o = ValuesInFifo && (av_req || ld_req);
+  assign vr_off_o = av_req ? av_off : ld_off;
 
   // ---- Planes: z, r, g, b, q, uq, vq, and for AFFINE ua, va -------------------------------------
   // Nine plane units working in parallel, or (Iterative, the `icebreaker` configuration) one unit
@@ -495,6 +521,8 @@ module htx_raster_setup #(
       assign plane_done[NP-1:NS] = '0;
     end
     assign apl_done = plane_done[8:7];
+    assign ld_req    = 1'b0;
+    assign ld_off    = '0;
     assign pl_we_o   = 1'b0;
     assign pl_sel_o  = '0;
     assign pl_idx_o  = '0;
@@ -504,17 +532,20 @@ module htx_raster_setup #(
     // to the traversal's plane RAM (pl_*_o), none is kept here.
     localparam int unsigned AS  = VSW + GF + 2;
     localparam int unsigned GS  = VSW + DW + 2 + GF + 1;
-    logic                s_valid, s_first, s_late, s_show, s_ready;
+    logic                s_valid, s_first, s_late, s_show, s_ready, s_want, s_have;
     logic [3:0]          s_idx;
+    logic [NS*3*VSW-1:0] s_values;
     logic [AS-1:0]       s_gx, s_gy, s_st;
     logic [GS-1:0]       s_gxw, s_gyw;
     htx_raster_plane_seq #(.NP(NS), .NFirst(7), .VB(VSW), .DW(DW), .W(RecipW), .GF(GF), .ShiftW(ShiftW),
-                           .AccW(AS), .GW(GS), .IdxW(4)) u_seq (
+                           .AccW(AS), .GW(GS), .IdxW(4), .Load(ValuesInFifo)) u_seq (
       .clk_i, .rst_ni,
       .abort_i      (planes_abort),
       .start_i      (plane_start_q),
       .late_start_i (apl_start),
-      .values_i     (sv[NS*3*VSW-1:0]),
+      .values_i     (s_values),
+      .want_o       (s_want),
+      .have_i       (s_have),
       .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
       .dxs_i(dxs), .dys_i(dys),
       .recip_valid_i(recip_valid_q),
@@ -530,6 +561,85 @@ module htx_raster_setup #(
       .first_done_o (s_first),
       .late_done_o  (s_late)
     );
+    if (ValuesInFifo) begin : g_load
+      // The plane's three vertex values, loaded one word a clock into a shift chain (vertex 0
+      // ends in a_q[0]): the FIFO's read port is the multiplexer over planes and vertices. AFFINE's
+      // u_i, v_i (planes 7, 8) come from their registers.
+      typedef enum logic [1:0] {LdIdle, LdReq, LdData, LdDone} ld_e;
+      ld_e             ld_q;
+      logic [1:0]      lv_q;      // the vertex being loaded
+      logic            lhi_q;     // the high word of uq or vq
+      logic [VSW-1:0]  a_q [3];
+      logic            late, two_words, last_word;
+      logic [3:0]      field;
+      logic [VSW-1:0]  lo_value, late_value;
+      assign late      = (s_idx >= 4'd7);
+      assign two_words = (s_idx == 4'd5) || (s_idx == 4'd6);
+      assign last_word = !two_words || lhi_q;
+      always_comb begin
+        if (s_idx == 4'd0)      field = 4'd2;                 // z
+        else if (s_idx <= 4'd3) field = 4'd8;                 // r, g, b: a byte of rgba
+        else if (s_idx == 4'd4) field = 4'd3;                 // q
+        else if (s_idx == 4'd5) field = 4'd4 + {3'd0, lhi_q}; // uq
+        else                    field = 4'd6 + {3'd0, lhi_q}; // vq
+      end
+      assign ld_req = (ld_q == LdReq) && !late;
+      assign ld_off = vert_word(lv_q, field);
+      always_comb begin
+        if (s_idx == 4'd0)      lo_value = VSW'(vr_data_i[ZBits-1:0]);
+        else if (s_idx == 4'd1) lo_value = VSW'(vr_data_i[7:0]);
+        else if (s_idx == 4'd2) lo_value = VSW'(vr_data_i[15:8]);
+        else if (s_idx == 4'd3) lo_value = VSW'(vr_data_i[23:16]);
+        else if (s_idx == 4'd4) lo_value = VSW'(vr_data_i[QBits-1:0]);
+        else                    lo_value = VSW'(vr_data_i);  // uq, vq: the high word follows
+      end
+      assign late_value = (s_idx == 4'd7) ? VSW'($signed(ua_v[lv_q])) : VSW'($signed(va_v[lv_q]));
+
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          ld_q  <= LdIdle;
+          lv_q  <= '0;
+          lhi_q <= 1'b0;
+          for (int i = 0; i < 3; i++) a_q[i] <= '0;
+        end else if (planes_abort) begin
+          ld_q  <= LdIdle;
+        end else begin
+          unique case (ld_q)
+            LdIdle: if (s_want) begin ld_q <= LdReq; lv_q <= '0; lhi_q <= 1'b0; end
+            LdReq: begin
+              if (late) begin
+                a_q[0] <= a_q[1]; a_q[1] <= a_q[2]; a_q[2] <= late_value;
+                lv_q <= lv_q + 2'd1;
+                if (lv_q == 2'd2) ld_q <= LdDone;
+              end else if (!av_req) begin
+                ld_q <= LdData;  // the word is on vr_data_i next clock
+              end
+            end
+            LdData: begin
+              if (!lhi_q) begin
+                a_q[0] <= a_q[1]; a_q[1] <= a_q[2]; a_q[2] <= lo_value;
+              end else begin
+                a_q[2][VSW-1:32] <= (VSW-32)'($signed(vr_data_i[UQ-33:0]));
+              end
+              lhi_q <= !last_word;
+              if (last_word) lv_q <= lv_q + 2'd1;
+              ld_q <= (last_word && (lv_q == 2'd2)) ? LdDone : LdReq;
+            end
+            LdDone: ld_q <= LdIdle;
+            default: ld_q <= LdIdle;
+          endcase
+        end
+      end
+      assign s_have   = (ld_q == LdDone);
+      assign s_values = (NS*3*VSW)'({a_q[2], a_q[1], a_q[0]});
+    end else begin : g_no_load
+      assign ld_req   = 1'b0;
+      assign ld_off   = '0;
+      assign s_have   = 1'b0;
+      assign s_values = sv[NS*3*VSW-1:0];
+      logic unused_want;
+      assign unused_want = s_want;
+    end
     assign plane_done = {{2{s_late}}, {7{s_first}}};
     assign apl_done   = {2{s_late}};
     // Each plane's three words go to the traversal's plane RAM as the unit shows them (it holds
@@ -678,9 +788,15 @@ module htx_raster_setup #(
   logic av_done;
   if (HasAffine) begin : g_affine
     localparam int unsigned RS = 2 * RecipW - 1 - TF;
-    typedef enum logic [2:0] {AvIdle, AvStart, AvRecip, AvMulU, AvMulV, AvPlanes, AvWait, AvDone} av_e;
+    // ValuesInFifo adds the reads: q_i before its reciprocal (AvRdQ), and uq_i, vq_i in two words
+    // each into au_q before their products (AvRdLo, AvRdHi, AvHi).
+    typedef enum logic [3:0] {
+      AvIdle, AvRdQ, AvStart, AvRecip, AvRdLo, AvRdHi, AvHi, AvMulU, AvMulV, AvPlanes, AvWait, AvDone
+    } av_e;
     av_e av_q;
     logic [1:0]           ai_q;
+    logic                 uv_q;      // ValuesInFifo: reading vq_i (else uq_i)
+    logic [UQ-1:0]        au_q;      // ValuesInFifo: uq_i or vq_i
     logic [RecipW:0]      r_q;
     logic [MsbW-1:0]      m_q;
     logic [LocW-1:0]      ua_q [3];
@@ -695,7 +811,19 @@ module htx_raster_setup #(
     logic signed [UQ-1:0]        amul_a;
     logic signed [UQ+RecipW+1:0] amul_p, arnd;
     logic [AE-1:0]               amul_extra;
-    assign amul_a     = (av_q == AvMulU) ? $signed(uq_v[ai_q]) : $signed(vq_v[ai_q]);
+    if (ValuesInFifo) begin : g_au
+      assign amul_a = $signed(au_q);
+    end else begin : g_au_rec
+      assign amul_a = (av_q == AvMulU) ? $signed(uq_v[ai_q]) : $signed(vq_v[ai_q]);
+      logic unused_au;
+      assign unused_au = ^au_q;
+    end
+    assign av_req = ValuesInFifo && ((av_q == AvRdQ) || (av_q == AvRdLo) || (av_q == AvRdHi));
+    always_comb begin
+      if (av_q == AvRdQ)       av_off = vert_word(ai_q, 4'd3);
+      else if (av_q == AvRdLo) av_off = vert_word(ai_q, uv_q ? 4'd6 : 4'd4);
+      else                     av_off = vert_word(ai_q, uv_q ? 4'd7 : 4'd5);
+    end
     assign amul_extra = AE'(RS - RecipW) + AE'(m_q);
     htx_raster_mul #(.AWidth(UQ), .BWidth(RecipW + 2), .Iterative(Iterative), .ExtraW(AE)) u_amul (
       .clk_i, .rst_ni, .abort_i(planes_abort),
@@ -717,20 +845,38 @@ module htx_raster_setup #(
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         av_q <= AvIdle; ai_q <= '0; r_q <= '0; m_q <= '0; apl_start_q <= 1'b0;
+        uv_q <= 1'b0; au_q <= '0;
         for (int i = 0; i < 3; i++) begin ua_q[i] <= '0; va_q[i] <= '0; end
       end else if (planes_abort) begin
         av_q <= AvIdle; apl_start_q <= 1'b0;
       end else begin
         apl_start_q <= 1'b0;
         unique case (av_q)
-          AvIdle: if (recip_done && det_pend_q && affine_q) begin ai_q <= '0; av_q <= AvStart; end
+          AvIdle: if (recip_done && det_pend_q && affine_q) begin
+            ai_q <= '0;
+            av_q <= ValuesInFifo ? AvRdQ : AvStart;
+          end
+          AvRdQ: av_q <= AvStart;  // (AFFINE's reads always go first)
           AvStart: av_q <= AvRecip;
-          AvRecip: if (recip_done) begin r_q <= recip_r; m_q <= recip_msb; av_q <= AvMulU; end
-          AvMulU: if (amul_done) begin ua_q[ai_q] <= av_coord; av_q <= AvMulV; end
+          AvRecip: if (recip_done) begin
+            r_q <= recip_r; m_q <= recip_msb; uv_q <= 1'b0;
+            av_q <= ValuesInFifo ? AvRdLo : AvMulU;
+          end
+          AvRdLo: av_q <= AvRdHi;
+          AvRdHi: begin au_q[31:0] <= vr_data_i; av_q <= AvHi; end
+          AvHi: begin
+            au_q[UQ-1:32] <= vr_data_i[UQ-33:0];
+            av_q <= uv_q ? AvMulV : AvMulU;
+          end
+          AvMulU: if (amul_done) begin
+            ua_q[ai_q] <= av_coord;
+            uv_q <= 1'b1;
+            av_q <= ValuesInFifo ? AvRdLo : AvMulV;
+          end
           AvMulV: if (amul_done) begin
             va_q[ai_q] <= av_coord;
             ai_q <= ai_q + 1'b1;
-            av_q <= (ai_q == 2'd2) ? AvPlanes : AvStart;
+            av_q <= (ai_q == 2'd2) ? AvPlanes : ValuesInFifo ? AvRdQ : AvStart;
           end
           AvPlanes: begin apl_start_q <= 1'b1; av_q <= AvWait; end
           AvWait: if (!apl_start_q && (&apl_done)) av_q <= AvDone;
@@ -747,6 +893,8 @@ module htx_raster_setup #(
       assign va_v[i] = va_q[i];
     end
   end else begin : g_no_affine
+    assign av_req   = 1'b0;
+    assign av_off   = '0;
     assign av_start = 1'b0;
     assign av_i     = 2'd0;
     assign av_done  = 1'b0;
