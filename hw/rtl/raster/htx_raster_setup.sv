@@ -421,6 +421,9 @@ module htx_raster_setup #(
   logic [1:0]           apl_done;          // the ua, va planes are done
   logic [LocW-1:0]      ua_v [3];
   logic [LocW-1:0]      va_v [3];
+  // ValuesInFifo: AFFINE's u_i and v_i wait in two shift chains (vertex 0 at the head), which the
+  // loader takes one a clock from the head (ua_take, va_take): no multiplexer over the vertices.
+  logic                 ua_take, va_take;
   logic                 plane_start_q;
   logic [NP-1:0]        plane_done;
   logic [AW-1:0]        pgx [NP];
@@ -521,6 +524,8 @@ module htx_raster_setup #(
       assign plane_done[NP-1:NS] = '0;
     end
     assign apl_done = plane_done[8:7];
+    assign ua_take   = 1'b0;
+    assign va_take   = 1'b0;
     assign ld_req    = 1'b0;
     assign ld_off    = '0;
     assign pl_we_o   = 1'b0;
@@ -585,15 +590,27 @@ module htx_raster_setup #(
       end
       assign ld_req = (ld_q == LdReq) && !late;
       assign ld_off = vert_word(lv_q, field);
-      always_comb begin
-        if (s_idx == 4'd0)      lo_value = VSW'(vr_data_i[ZBits-1:0]);
-        else if (s_idx == 4'd1) lo_value = VSW'(vr_data_i[7:0]);
-        else if (s_idx == 4'd2) lo_value = VSW'(vr_data_i[15:8]);
-        else if (s_idx == 4'd3) lo_value = VSW'(vr_data_i[23:16]);
-        else if (s_idx == 4'd4) lo_value = VSW'(vr_data_i[QBits-1:0]);
-        else                    lo_value = VSW'(vr_data_i);  // uq, vq: the high word follows
+      // The low word as an AND-OR of one-hot selects decoded once: the word under the plane's
+      // mask (z, q, the low word of uq or vq), or one byte of rgba (r, g, b).
+      logic        is_z, is_q, is_uv;
+      logic [2:0]  is_c;
+      logic [31:0] wmask;
+      logic [7:0]  cbyte;
+      assign is_z  = (s_idx == 4'd0);
+      assign is_c  = {s_idx == 4'd3, s_idx == 4'd2, s_idx == 4'd1};
+      assign is_q  = (s_idx == 4'd4);
+      assign is_uv = (s_idx == 4'd5) || (s_idx == 4'd6);  // the high word follows
+      for (genvar b = 0; b < 32; b++) begin : g_wmask
+        assign wmask[b] = (is_z && (b < ZBits)) || (is_q && (b < QBits)) || is_uv;
       end
-      assign late_value = (s_idx == 4'd7) ? VSW'($signed(ua_v[lv_q])) : VSW'($signed(va_v[lv_q]));
+      assign cbyte    = ({8{is_c[0]}} & vr_data_i[7:0]) | ({8{is_c[1]}} & vr_data_i[15:8]) |
+                        ({8{is_c[2]}} & vr_data_i[23:16]);
+      logic [31:0] wsel;
+      assign wsel     = vr_data_i & wmask;
+      assign lo_value = VSW'(wsel) | VSW'(cbyte);
+      assign late_value = (s_idx == 4'd7) ? VSW'($signed(ua_v[0])) : VSW'($signed(va_v[0]));
+      assign ua_take    = (ld_q == LdReq) && (s_idx == 4'd7);
+      assign va_take    = (ld_q == LdReq) && (s_idx == 4'd8);
 
       always_ff @(posedge clk_i or negedge rst_ni) begin
         if (!rst_ni) begin
@@ -633,6 +650,8 @@ module htx_raster_setup #(
       assign s_have   = (ld_q == LdDone);
       assign s_values = (NS*3*VSW)'({a_q[2], a_q[1], a_q[0]});
     end else begin : g_no_load
+      assign ua_take  = 1'b0;
+      assign va_take  = 1'b0;
       assign ld_req   = 1'b0;
       assign ld_off   = '0;
       assign s_have   = 1'b0;
@@ -851,6 +870,16 @@ module htx_raster_setup #(
         av_q <= AvIdle; apl_start_q <= 1'b0;
       end else begin
         apl_start_q <= 1'b0;
+        if (ValuesInFifo) begin
+          // A coordinate enters at the tail; the loader takes from the head (what enters then is
+          // not read).
+          if (((av_q == AvMulU) && amul_done) || ua_take) begin
+            ua_q[0] <= ua_q[1]; ua_q[1] <= ua_q[2]; ua_q[2] <= av_coord;
+          end
+          if (((av_q == AvMulV) && amul_done) || va_take) begin
+            va_q[0] <= va_q[1]; va_q[1] <= va_q[2]; va_q[2] <= av_coord;
+          end
+        end
         unique case (av_q)
           AvIdle: if (recip_done && det_pend_q && affine_q) begin
             ai_q <= '0;
@@ -869,12 +898,12 @@ module htx_raster_setup #(
             av_q <= uv_q ? AvMulV : AvMulU;
           end
           AvMulU: if (amul_done) begin
-            ua_q[ai_q] <= av_coord;
+            if (!ValuesInFifo) ua_q[ai_q] <= av_coord;
             uv_q <= 1'b1;
             av_q <= ValuesInFifo ? AvRdLo : AvMulV;
           end
           AvMulV: if (amul_done) begin
-            va_q[ai_q] <= av_coord;
+            if (!ValuesInFifo) va_q[ai_q] <= av_coord;
             ai_q <= ai_q + 1'b1;
             av_q <= (ai_q == 2'd2) ? AvPlanes : ValuesInFifo ? AvRdQ : AvStart;
           end
