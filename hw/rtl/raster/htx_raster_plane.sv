@@ -31,7 +31,12 @@ module htx_raster_plane #(
   input  logic                   det_neg_i,
   output logic                   done_o,
   output logic [AccW-1:0]        gx_o, gy_o, start_o,
-  output logic [GW-1:0]          gxw_o, gyw_o
+  output logic [GW-1:0]          gxw_o, gyw_o,
+  // Each result word as it is formed (a pulse; sel 0 g_x, 1 g_y, 2 start), for a caller that
+  // stores them one at a time without a multiplexer over gx_o, gy_o, start_o.
+  output logic                   word_we_o,
+  output logic [1:0]             word_sel_o,
+  output logic [AccW-1:0]        word_o
 );
   localparam int unsigned NW = VB + DW + 2;
   // Also the accumulator (n, then start), and the gradients' rounding: at least AccW + 1 bits.
@@ -152,6 +157,10 @@ module htx_raster_plane #(
       endcase
     end
   end
+
+  assign word_we_o  = mul_done && ((state_q == StGx) || (state_q == StGy) || (state_q == StSy));
+  assign word_sel_o = (state_q == StGx) ? 2'd0 : (state_q == StGy) ? 2'd1 : 2'd2;
+  assign word_o     = (state_q == StSy) ? acc_sum[AccW-1:0] : acc_sum[AccW:1];
 
   assign done_o  = (state_q == StDone);
   assign gx_o    = gx_q;

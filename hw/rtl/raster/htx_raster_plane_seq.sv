@@ -11,6 +11,9 @@
 // Load = 1: values_i holds only the three values of the plane being worked on (its low 3 VB bits),
 // which the caller loads (from block RAM) while want_o is high, for plane res_idx_o, and confirms
 // with have_i; they must then stay until want_o rises again. No multiplexer over the planes.
+//
+// Stream = 1: each result word goes out as it is formed (word_*_o, with res_idx_o), and a plane's
+// results need no res_ready_i (it is ignored); res_valid_o still pulses as each plane finishes.
 module htx_raster_plane_seq #(
   parameter int unsigned NP     = 9,
   parameter int unsigned NFirst = 7,
@@ -22,7 +25,8 @@ module htx_raster_plane_seq #(
   parameter int unsigned AccW   = VB + GF + 2,
   parameter int unsigned GW     = VB + DW + 2 + GF + 1,
   parameter int unsigned IdxW   = $clog2(NP),
-  parameter bit          Load   = 1'b0
+  parameter bit          Load   = 1'b0,
+  parameter bit          Stream = 1'b0
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
@@ -44,6 +48,9 @@ module htx_raster_plane_seq #(
   output logic [IdxW-1:0]       res_idx_o,
   output logic [AccW-1:0]       gx_o, gy_o, start_o,
   output logic [GW-1:0]         gxw_o, gyw_o,
+  output logic                  word_we_o,
+  output logic [1:0]            word_sel_o,
+  output logic [AccW-1:0]       word_o,
   output logic                  first_done_o,  // planes 0 .. NFirst-1 delivered (until start_i)
   output logic                  late_done_o    // planes NFirst .. NP-1 delivered
 );
@@ -83,12 +90,13 @@ module htx_raster_plane_seq #(
     .det_neg_i,
     .done_o       (unit_done),
     .gx_o, .gy_o, .start_o,
-    .gxw_o, .gyw_o
+    .gxw_o, .gyw_o,
+    .word_we_o, .word_sel_o, .word_o
   );
 
   // The unit's done_o is a level that stays up until it is started again; kick_q guards the one
   // clock in which a new start is issued while the previous plane's done is still showing.
-  assign finish  = run_q && !kick_q && !want_q && unit_done && res_ready_i;
+  assign finish  = run_q && !kick_q && !want_q && unit_done && (Stream || res_ready_i);
   assign late_go = late_pend_q || late_start_i;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin

@@ -492,6 +492,10 @@ module htx_raster_setup #(
       localparam int unsigned GP  = VBP + DW + 2 + GF + 1;
       logic [AP-1:0] gx, gy, st;
       logic [GP-1:0] gxw, gyw;
+      logic          w_we;
+      logic [1:0]    w_sel;
+      logic [AP-1:0] w_word;
+      logic          unused_w_word;
       htx_raster_plane #(.VB(VBP), .Signed(p >= 5), .DW(DW), .W(RecipW), .GF(GF),
                          .Iterative(Iterative), .ShiftW(ShiftW)) u_plane (
         .clk_i, .rst_ni,
@@ -506,8 +510,10 @@ module htx_raster_setup #(
         .det_neg_i    (det_neg_q),
         .done_o       (plane_done[p]),
         .gx_o(gx), .gy_o(gy), .start_o(st),
-        .gxw_o(gxw), .gyw_o(gyw)
+        .gxw_o(gxw), .gyw_o(gyw),
+        .word_we_o(w_we), .word_sel_o(w_sel), .word_o(w_word)
       );
+      assign unused_w_word = ^{w_we, w_sel, w_word};  // (the parallel units hand over on tri_p_o)
       assign pgx[p] = AW'(gx);
       assign pgy[p] = AW'(gy);
       assign pst[p] = AW'(st);
@@ -537,13 +543,15 @@ module htx_raster_setup #(
     // to the traversal's plane RAM (pl_*_o), none is kept here.
     localparam int unsigned AS  = VSW + GF + 2;
     localparam int unsigned GS  = VSW + DW + 2 + GF + 1;
-    logic                s_valid, s_first, s_late, s_show, s_ready, s_want, s_have;
+    logic                s_valid, s_first, s_late, s_show, s_ready, s_want, s_have, s_wwe;
+    logic [1:0]          s_wsel;
+    logic [AS-1:0]       s_word;
     logic [3:0]          s_idx;
     logic [NS*3*VSW-1:0] s_values;
     logic [AS-1:0]       s_gx, s_gy, s_st;
     logic [GS-1:0]       s_gxw, s_gyw;
     htx_raster_plane_seq #(.NP(NS), .NFirst(7), .VB(VSW), .DW(DW), .W(RecipW), .GF(GF), .ShiftW(ShiftW),
-                           .AccW(AS), .GW(GS), .IdxW(4), .Load(ValuesInFifo)) u_seq (
+                           .AccW(AS), .GW(GS), .IdxW(4), .Load(ValuesInFifo), .Stream(1'b1)) u_seq (
       .clk_i, .rst_ni,
       .abort_i      (planes_abort),
       .start_i      (plane_start_q),
@@ -563,6 +571,9 @@ module htx_raster_setup #(
       .res_idx_o    (s_idx),
       .gx_o(s_gx), .gy_o(s_gy), .start_o(s_st),
       .gxw_o(s_gxw), .gyw_o(s_gyw),
+      .word_we_o    (s_wwe),
+      .word_sel_o   (s_wsel),
+      .word_o       (s_word),
       .first_done_o (s_first),
       .late_done_o  (s_late)
     );
@@ -661,24 +672,14 @@ module htx_raster_setup #(
     end
     assign plane_done = {{2{s_late}}, {7{s_first}}};
     assign apl_done   = {2{s_late}};
-    // Each plane's three words go to the traversal's plane RAM as the unit shows them (it holds
-    // them until s_ready): gx, gy, start in three clocks. (Planes not built are not written; the
+    // Each plane's three words go to the traversal's plane RAM as the unit forms them (Stream): gx,
+    // gy, start, each in the clock its product is done. (Planes not built are not written; the
     // traversal steps whatever its RAM holds there, which nothing reads.)
-    logic [1:0] pw_q;
-    assign s_ready = s_show && (pw_q == 2'd2);
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        pw_q <= '0;
-      end else if (planes_abort) begin
-        pw_q <= '0;
-      end else if (s_show) begin
-        pw_q <= s_ready ? 2'd0 : pw_q + 2'd1;
-      end
-    end
-    assign pl_we_o   = s_show;
-    assign pl_sel_o  = pw_q;
+    assign s_ready   = 1'b1;
+    assign pl_we_o   = s_wwe;
+    assign pl_sel_o  = s_wsel;
     assign pl_idx_o  = s_idx;
-    assign pl_data_o = (pw_q == 2'd0) ? AW'(s_gx) : (pw_q == 2'd1) ? AW'(s_gy) : AW'(s_st);
+    assign pl_data_o = AW'(s_word);
     // Full-precision gradients of uq, vq (GWU bits) and q (GWQ bits, sign-extended) for the LOD unit.
     logic [GWU-1:0] lgx_q [3];
     logic [GWU-1:0] lgy_q [3];
@@ -702,7 +703,7 @@ module htx_raster_setup #(
     assign lg[4] = lgx_q[2];
     assign lg[5] = lgy_q[2];
     logic unused_s;
-    assign unused_s = ^{s_gx, s_gy, s_st, s_gxw, s_gyw};  // (AW'() may drop a top bit)
+    assign unused_s = ^{s_gx, s_gy, s_st, s_gxw, s_gyw, s_show, s_word};  // (AW'() may drop a top bit)
   end
 
   // ---- LOD gradients: one block shift s_g = max(0, msb(max |g|) + 2 - GradW) for all six -------
