@@ -141,6 +141,11 @@ module htx_raster #(
   // RecInFifo (`icebreaker`): the record setup works on stays in the FIFO's block RAM, and setup
   // reads its values from there (htx_raster_setup ValuesInFifo).
   localparam bit RecInFifo = Iterative && !PerspColor;
+  // `icebreaker` (Iterative): an AFFINE triangle's u, v planes take the places of its uq, vq
+  // planes, which it does not use (setup writes them over those, FoldUv), so the traversal steps
+  // seven planes a pass instead of nine; planes 7 and 8 of the fragment are its planes 5 and 6.
+  localparam bit          FoldUv = Iterative;
+  localparam int unsigned NPT    = FoldUv ? 7 : NP;
   logic        fifo_none, rec_release, vr_req;
   logic [4:0]  vr_off;
   htx_raster_fifo #(.Depth(FifoDepth), .Hold(RecInFifo)) u_fifo (
@@ -221,7 +226,7 @@ module htx_raster #(
     .RecipG(RecipG), .NrSteps(SetupSteps), .Iterative(Iterative), .QBits(QBits),
     .UvIntBits(UvIntBits), .TF(TF), .GradW(GradW), .Methods(Methods), .PerspColor(PerspColor),
     .Lod(TexLod || HasDf), .ExtRecip(SharedRecip), .HoldRecord(Iterative),
-    .ValuesInFifo(RecInFifo), .AW(AW), .NP(NP)
+    .ValuesInFifo(RecInFifo), .FoldUv(FoldUv), .AW(AW), .NP(NP)
   ) u_setup (
     .clk_i, .rst_ni,
     .abort_i        (abort),
@@ -285,6 +290,14 @@ module htx_raster #(
   logic [AddrW-1:0]  tv_addr;
   logic [NP*AW-1:0]  tv_p;
   logic [SideT-1:0]  tv_side;
+  logic [NPT*AW-1:0] tv_pt;
+  if (FoldUv) begin : g_fold_uv
+    assign tv_p = {tv_pt[AW*6 +: AW], tv_pt[AW*5 +: AW], tv_pt};
+    logic unused_tri_p;
+    assign unused_tri_p = ^tri_p[3*NP*AW-1:3*NPT*AW];  // (zero: the planes go through the RAM)
+  end else begin : g_all_planes
+    assign tv_p = tv_pt;
+  end
   if (HasDf) begin : g_dfg
     assign tri_dfg_side = tri_dfg;
   end else begin : g_no_dfg
@@ -296,7 +309,7 @@ module htx_raster #(
   // clocks per triangle for the row-offset multiplier, and NP clocks per step for the planes'
   // accumulators (in block RAM, on one adder; setup writes each triangle's planes straight into
   // that RAM, so neither keeps them in registers).
-  htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NP), .AW(AW), .SideW(SideT), .AddrW(AddrW),
+  htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NPT), .AW(AW), .SideW(SideT), .AddrW(AddrW),
                         .LookBehind(!Iterative), .SerialRowBase(Iterative),
                         .SerialPlanes(Iterative)) u_traverse (
     .clk_i, .rst_ni,
@@ -314,7 +327,7 @@ module htx_raster #(
     .tri_thr_i       (tri_thr),
     .tri_dneg_i      (tri_dneg),
     .tri_e_i         (tri_e),
-    .tri_p_i         (tri_p),
+    .tri_p_i         (tri_p[3*NPT*AW-1:0]),
     .pl_we_i         (pl_we),
     .pl_sel_i        (pl_sel),
     .pl_idx_i        (pl_idx),
@@ -327,7 +340,7 @@ module htx_raster #(
     .frag_first_o    (tv_first),
     .frag_last_o     (tv_last),
     .frag_tfirst_o   (tv_tfirst),
-    .frag_p_o        (tv_p),
+    .frag_p_o        (tv_pt),
     .frag_side_o     (tv_side),
     .busy_o          (trav_busy),
     .stall_o         (trav_stall)

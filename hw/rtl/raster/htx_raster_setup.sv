@@ -38,6 +38,9 @@ module htx_raster_setup #(
   // synthesis then removes with the registers (the input stage keeps x, y, the state word, the
   // offsets and the colours, which setup takes without a multiplexer).
   parameter bit          ValuesInFifo = 1'b0,
+  // With Iterative: AFFINE's u, v planes (7, 8) go to the traversal's RAM in the places of the uq,
+  // vq planes (5, 6), which an AFFINE triangle does not use; the traversal keeps seven planes.
+  parameter bit          FoldUv = 1'b0,
   // Derived widths (docs/raster.md).
   parameter int unsigned UQ   = QBits + UvIntBits,            // uq, vq vertex values (signed)
   parameter int unsigned LocW = UvIntBits + TF,               // local texel coordinates (signed)
@@ -678,7 +681,7 @@ module htx_raster_setup #(
     assign s_ready   = 1'b1;
     assign pl_we_o   = s_wwe;
     assign pl_sel_o  = s_wsel;
-    assign pl_idx_o  = s_idx;
+    assign pl_idx_o  = (FoldUv && (s_idx >= 4'd7)) ? s_idx - 4'd2 : s_idx;
     assign pl_data_o = AW'(s_word);
     // Full-precision gradients of uq, vq (GWU bits) and q (GWQ bits, sign-extended) for the LOD unit.
     logic [GWU-1:0] lgx_q [3];

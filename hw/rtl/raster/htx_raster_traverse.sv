@@ -418,6 +418,10 @@ module htx_raster_traverse #(
     // pixel from the current bank, then step the saved bank's values into the current one.
     // A clock in which setup writes (hold) changes nothing here. (NP >= 2.)
     localparam int unsigned IW = $clog2(NP);
+    if (IW < 4) begin : g_idx_unused  // (seven planes: setup's index never reaches 8)
+      logic unused_idx;
+      assign unused_idx = ^pl_idx_i[3:IW];
+    end
     localparam logic [2:0]  RegGx = 3'd2, RegGy = 3'd3, RegSt = 3'd4;  // RegSt and RegSt + 1
     // Setup writes a triangle's start values into one of two regions (RegSt + parity), and that
     // region is the triangle's bank 0, so StLoad copies only the gradients. par_q is the parity of
