@@ -59,13 +59,13 @@ module htx_raster_plane_seq #(
   logic            unit_done, finish, late_go;
   logic [VB-1:0]   a0, a1, a2;
 
-  // An array indexed by the plane: a multiplexer per bit (a part-select at VB * 3 * idx_q would be
-  // a shifter across all NP * 3 * VB bits).
   if (Load) begin : g_loaded
     assign {a2, a1, a0} = values_i[3*VB-1:0];
     logic unused_values;
     assign unused_values = ^values_i[NP*3*VB-1:3*VB];
   end else begin : g_indexed
+    // An array indexed by the plane: a multiplexer per bit (a part-select at VB * 3 * idx_q would
+    // be a shifter across all NP * 3 * VB bits).
     logic [3*VB-1:0] plane_values [NP];
     for (genvar p = 0; p < NP; p++) begin : g_values
       assign plane_values[p] = values_i[3*VB*p +: 3*VB];
