@@ -708,7 +708,8 @@ module htx_raster_setup #(
     assign lg[4] = lgx_q[2];
     assign lg[5] = lgy_q[2];
     logic unused_s;
-    assign unused_s = ^{s_gx, s_gy, s_st, s_gxw, s_gyw, s_show, s_word};  // (AW'() may drop a top bit)
+    // (AW'() may drop a top bit of s_word)
+    assign unused_s = ^{s_gx, s_gy, s_st, s_gxw, s_gyw, s_show, s_word};
   end
 
   // ---- LOD gradients: one block shift s_g = max(0, msb(max |g|) + 2 - GradW) for all six -------
@@ -816,7 +817,8 @@ module htx_raster_setup #(
     // ValuesInFifo adds the reads: q_i before its reciprocal (AvRdQ), and uq_i, vq_i in two words
     // each into au_q before their products (AvRdLo, AvRdHi, AvHi).
     typedef enum logic [3:0] {
-      AvIdle, AvRdQ, AvStart, AvRecip, AvRdLo, AvRdHi, AvHi, AvMulU, AvMulV, AvPlanes, AvWait, AvDone
+      AvIdle, AvRdQ, AvStart, AvRecip, AvRdLo, AvRdHi, AvHi, AvMulU, AvMulV, AvPlanes, AvWait,
+      AvDone
     } av_e;
     av_e av_q;
     logic [1:0]           ai_q;
