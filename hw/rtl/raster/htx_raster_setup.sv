@@ -209,22 +209,20 @@ module htx_raster_setup #(
   assign dx2 = DW'(x_v[2]) - DW'(x_v[0]);
   assign dy2 = DW'(y_v[2]) - DW'(y_v[0]);
 
-  logic signed [XW-1:0]   minx, maxx, miny, maxy;
-  logic signed [BoxW-1:0] xl, xh, yl, yh;
+  // Word offsets of vertex i's fields in the record (ValuesInFifo): 4 + 9 i + (x 0, y 1, z 2, q 3,
+  // uq 4 and 5, vq 6 and 7, rgba 8).
+  function automatic logic [4:0] vert_word(input logic [1:0] i, input logic [3:0] field);
+    vert_word = 5'd4 + ((i == 2'd1) ? 5'd9 : (i == 2'd2) ? 5'd18 : 5'd0) + 5'(field);
+  endfunction
+
+  // Pixel centres 256 i + 128 inside [min, max]: ceil((min - 128) / 256) .. floor((max - 128) / 256),
+  // clipped to the screen. The bounds come from the vertices the edges' signs pick (below): at once
+  // through multiplexers, or (ValuesInFifo) one at a time from the record's words in the FIFO.
   logic signed [BoxW-1:0] x_lo, x_hi, y_lo, y_hi;
   logic                   box_empty;
-  always_comb begin
-    // Pixel centres 256 i + 128 inside [min, max]: ceil((min - 128) / 256) .. floor((max - 128) / 256).
-    xl = BoxW'((XW'(minx) + XW'(127)) >>> 8);
-    xh = BoxW'((XW'(maxx) - XW'(128)) >>> 8);
-    yl = BoxW'((XW'(miny) + XW'(127)) >>> 8);
-    yh = BoxW'((XW'(maxy) - XW'(128)) >>> 8);
-    x_lo = xl[BoxW-1] ? '0 : xl;  // (the sign bit, not "< 0": see ethr)
-    y_lo = yl[BoxW-1] ? '0 : yl;
-    x_hi = (xh > $signed(BoxW'({1'b0, width_i}) - BoxW'(1)))  ? $signed(BoxW'({1'b0, width_i}) - BoxW'(1))  : xh;
-    y_hi = (yh > $signed(BoxW'({1'b0, height_i}) - BoxW'(1))) ? $signed(BoxW'({1'b0, height_i}) - BoxW'(1)) : yh;
-    box_empty = (x_lo > x_hi) || (y_lo > y_hi);
-  end
+  logic                   bx_req;     // ValuesInFifo: the box reads a word (it goes first)
+  logic [4:0]             bx_off;
+  assign box_empty = (x_lo > x_hi) || (y_lo > y_hi);
 
   // First pixel centre of the box, relative to each vertex.
   logic signed [DW-1:0] pxs, pys;
@@ -276,10 +274,78 @@ module htx_raster_setup #(
   assign maxx_sel = least(~xs_lt);
   assign miny_sel = least(~ys_gt);
   assign maxy_sel = least(ys_gt);
-  assign minx = (minx_sel == 2'd1) ? x_v[1] : (minx_sel == 2'd2) ? x_v[2] : x_v[0];
-  assign maxx = (maxx_sel == 2'd1) ? x_v[1] : (maxx_sel == 2'd2) ? x_v[2] : x_v[0];
-  assign miny = (miny_sel == 2'd1) ? y_v[1] : (miny_sel == 2'd2) ? y_v[2] : y_v[0];
-  assign maxy = (maxy_sel == 2'd1) ? y_v[1] : (maxy_sel == 2'd2) ? y_v[2] : y_v[0];
+  if (!ValuesInFifo) begin : g_box_mux
+    logic signed [XW-1:0]   minx, maxx, miny, maxy;
+    logic signed [BoxW-1:0] xl, xh, yl, yh;
+    assign minx = (minx_sel == 2'd1) ? x_v[1] : (minx_sel == 2'd2) ? x_v[2] : x_v[0];
+    assign maxx = (maxx_sel == 2'd1) ? x_v[1] : (maxx_sel == 2'd2) ? x_v[2] : x_v[0];
+    assign miny = (miny_sel == 2'd1) ? y_v[1] : (miny_sel == 2'd2) ? y_v[2] : y_v[0];
+    assign maxy = (maxy_sel == 2'd1) ? y_v[1] : (maxy_sel == 2'd2) ? y_v[2] : y_v[0];
+    always_comb begin
+      xl = BoxW'((XW'(minx) + XW'(127)) >>> 8);
+      xh = BoxW'((XW'(maxx) - XW'(128)) >>> 8);
+      yl = BoxW'((XW'(miny) + XW'(127)) >>> 8);
+      yh = BoxW'((XW'(maxy) - XW'(128)) >>> 8);
+      x_lo = xl[BoxW-1] ? '0 : xl;  // (the sign bit, not "< 0": see ethr)
+      y_lo = yl[BoxW-1] ? '0 : yl;
+      x_hi = (xh > $signed(BoxW'({1'b0, width_i}) - BoxW'(1)))  ? $signed(BoxW'({1'b0, width_i}) - BoxW'(1))  : xh;
+      y_hi = (yh > $signed(BoxW'({1'b0, height_i}) - BoxW'(1))) ? $signed(BoxW'({1'b0, height_i}) - BoxW'(1)) : yh;
+    end
+    assign bx_req = 1'b0;
+    assign bx_off = '0;
+  end else begin : g_box_read
+    // minx, maxx, miny, maxy in turn from the clock after setup takes the triangle, two clocks
+    // each (ask, take), on one adder and one comparison; setup needs them only when the
+    // determinant is done (tens of clocks later). They hold until the next triangle is taken.
+    logic [2:0]             bx_q;      // the bound being read (0 .. 3); 4: done
+    logic                   bx_got_q;  // its word is on vr_data_i
+    logic                   bx_min, bx_y;
+    logic [1:0]             bx_sel;
+    logic signed [XW-1:0]   bv;
+    logic signed [BoxW-1:0] bb, blim, bres;
+    logic signed [BoxW-1:0] x_lo_q, x_hi_q, y_lo_q, y_hi_q;
+    assign bx_min = !bx_q[0];  // 0 minx, 1 maxx, 2 miny, 3 maxy
+    assign bx_y   = bx_q[1];
+    assign bx_sel = (bx_q == 3'd0) ? minx_sel : (bx_q == 3'd1) ? maxx_sel
+                  : (bx_q == 3'd2) ? miny_sel : maxy_sel;
+    assign bx_req = !bx_q[2] && !bx_got_q;
+    assign bx_off = vert_word(bx_sel, bx_y ? 4'd1 : 4'd0);  // x, y: words 0, 1 of a vertex
+    assign bv     = $signed(vr_data_i[XW-1:0]);
+    assign bb     = BoxW'((bv + (bx_min ? XW'(127) : -XW'(128))) >>> 8);
+    assign blim   = $signed(BoxW'({1'b0, bx_y ? height_i : width_i}) - BoxW'(1));
+    assign bres   = bx_min ? (bb[BoxW-1] ? '0 : bb) : ((bb > blim) ? blim : bb);
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        bx_q     <= 3'd4;
+        bx_got_q <= 1'b0;
+        x_lo_q   <= '0;
+        x_hi_q   <= '0;
+        y_lo_q   <= '0;
+        y_hi_q   <= '0;
+      end else if (abort_i) begin
+        bx_q     <= 3'd4;
+        bx_got_q <= 1'b0;
+      end else if (take && !state_bad) begin
+        bx_q     <= 3'd0;
+        bx_got_q <= 1'b0;
+      end else if (!bx_q[2]) begin
+        bx_got_q <= !bx_got_q;
+        if (bx_got_q) begin
+          unique case (bx_q[1:0])
+            2'd0:    x_lo_q <= bres;
+            2'd1:    x_hi_q <= bres;
+            2'd2:    y_lo_q <= bres;
+            default: y_hi_q <= bres;
+          endcase
+          bx_q <= bx_q + 3'd1;
+        end
+      end
+    end
+    assign x_lo = x_lo_q;
+    assign x_hi = x_hi_q;
+    assign y_lo = y_lo_q;
+    assign y_hi = y_hi_q;
+  end
 
   // ---- Determinant and edge values: one multiplier, eight products ------------------------------
   logic                     emul_start, emul_done;
@@ -404,16 +470,13 @@ module htx_raster_setup #(
   end
 
   // ---- Reads of the record in the FIFO (ValuesInFifo) -----------------------------------------
-  // Two readers: AFFINE (q_i, uq_i, vq_i; it goes first) and the plane values' loader, which waits
-  // a clock when AFFINE reads. Word offsets of vertex i's fields: 4 + 9 i + (x 0, y 1, z 2, q 3,
-  // uq 4 and 5, vq 6 and 7, rgba 8).
+  // Three readers: the box (first, in the clocks after setup takes a triangle), AFFINE (q_i, uq_i,
+  // vq_i, after the determinant's reciprocal: never beside the box, so it is never held) and the
+  // plane values' loader, which waits while either of the others reads.
   logic       av_req, ld_req;
   logic [4:0] av_off, ld_off;
-  function automatic logic [4:0] vert_word(input logic [1:0] i, input logic [3:0] field);
-    vert_word = 5'd4 + ((i == 2'd1) ? 5'd9 : (i == 2'd2) ? 5'd18 : 5'd0) + 5'(field);
-  endfunction
-  assign vr_req_o = ValuesInFifo && (av_req || ld_req);
-  assign vr_off_o = av_req ? av_off : ld_off;
+  assign vr_req_o = ValuesInFifo && (bx_req || av_req || ld_req);
+  assign vr_off_o = bx_req ? bx_off : av_req ? av_off : ld_off;
 
   // ---- Planes: z, r, g, b, q, uq, vq, and for AFFINE ua, va -------------------------------------
   // Nine plane units working in parallel, or (Iterative, the `icebreaker` configuration) one unit
@@ -644,7 +707,7 @@ module htx_raster_setup #(
                 a_q[0] <= a_q[1]; a_q[1] <= a_q[2]; a_q[2] <= late_value;
                 lv_q <= lv_q + 2'd1;
                 if (lv_q == 2'd2) ld_q <= LdDone;
-              end else if (!av_req) begin
+              end else if (!av_req && !bx_req) begin
                 ld_q <= LdData;  // the word is on vr_data_i next clock
               end
             end
