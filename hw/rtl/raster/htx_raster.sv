@@ -281,8 +281,8 @@ module htx_raster #(
     .vr_off_o       (vr_off),
     .vr_data_i      (fifo_rdata)
   );
-  // The FIFO frees the record's words when setup releases the record (RecInFifo).
-  assign rec_release = RecInFifo && rec_valid && rec_ready;
+  // The FIFO frees the record's words when setup releases it (a FIFO without Hold ignores that).
+  assign rec_release = rec_valid && rec_ready;
 
   // ---- Traversal -------------------------------------------------------------------------------
   logic              tv_valid, tv_ready, trav_busy, trav_stall, tv_first, tv_last, tv_tfirst;

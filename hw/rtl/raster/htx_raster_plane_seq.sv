@@ -5,15 +5,14 @@
 // modulo 2^AccW of that plane, as a plane unit of that width computes it).
 //
 // start_i starts planes 0 .. NFirst-1; late_start_i (any time after start_i) the rest, whose vertex
-// values come later (AFFINE's u_i, v_i). A plane's results show (res_show_o, res_idx_o and the
-// result outputs steady) until the caller takes them with res_ready_i; res_valid_o pulses then.
+// values come later (AFFINE's u_i, v_i). Each result word goes out as the unit forms it (word_*_o,
+// with res_idx_o); res_valid_o pulses as each plane finishes, with its full-precision gradients on
+// gxw_o, gyw_o.
 //
 // Load = 1: values_i holds only the three values of the plane being worked on (its low 3 VB bits),
 // which the caller loads (from block RAM) while want_o is high, for plane res_idx_o, and confirms
 // with have_i; they must then stay until want_o rises again. No multiplexer over the planes.
-//
-// Stream = 1: each result word goes out as it is formed (word_*_o, with res_idx_o), and a plane's
-// results need no res_ready_i (it is ignored); res_valid_o still pulses as each plane finishes.
+
 module htx_raster_plane_seq #(
   parameter int unsigned NP     = 9,
   parameter int unsigned NFirst = 7,
@@ -25,8 +24,7 @@ module htx_raster_plane_seq #(
   parameter int unsigned AccW   = VB + GF + 2,
   parameter int unsigned GW     = VB + DW + 2 + GF + 1,
   parameter int unsigned IdxW   = $clog2(NP),
-  parameter bit          Load   = 1'b0,
-  parameter bit          Stream = 1'b0
+  parameter bit          Load   = 1'b0
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
@@ -42,11 +40,8 @@ module htx_raster_plane_seq #(
   input  logic [W:0]            r_i,
   input  logic [ShiftW-1:0]     shift_i,
   input  logic                  det_neg_i,
-  output logic                  res_show_o,
-  input  logic                  res_ready_i,
   output logic                  res_valid_o,
   output logic [IdxW-1:0]       res_idx_o,
-  output logic [AccW-1:0]       gx_o, gy_o, start_o,
   output logic [GW-1:0]         gxw_o, gyw_o,
   output logic                  word_we_o,
   output logic [1:0]            word_sel_o,
@@ -58,6 +53,7 @@ module htx_raster_plane_seq #(
   logic            run_q, kick_q, want_q, late_pend_q, first_done_q, late_done_q;
   logic            unit_done, finish, late_go;
   logic [VB-1:0]   a0, a1, a2;
+  logic [AccW-1:0] unit_gx, unit_gy, unit_start;  // (the caller takes the words as they form)
 
   if (Load) begin : g_loaded
     assign {a2, a1, a0} = values_i[3*VB-1:0];
@@ -89,14 +85,14 @@ module htx_raster_plane_seq #(
     .shift_i,
     .det_neg_i,
     .done_o       (unit_done),
-    .gx_o, .gy_o, .start_o,
+    .gx_o(unit_gx), .gy_o(unit_gy), .start_o(unit_start),
     .gxw_o, .gyw_o,
     .word_we_o, .word_sel_o, .word_o
   );
 
   // The unit's done_o is a level that stays up until it is started again; kick_q guards the one
   // clock in which a new start is issued while the previous plane's done is still showing.
-  assign finish  = run_q && !kick_q && !want_q && unit_done && (Stream || res_ready_i);
+  assign finish  = run_q && !kick_q && !want_q && unit_done;
   assign late_go = late_pend_q || late_start_i;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -150,7 +146,8 @@ module htx_raster_plane_seq #(
     end
   end
 
-  assign res_show_o   = run_q && !kick_q && !want_q && unit_done;
+  logic unused_unit;
+  assign unused_unit = ^{unit_gx, unit_gy, unit_start};
   assign want_o       = want_q;
   assign res_valid_o  = finish;
   assign res_idx_o    = idx_q;

@@ -609,15 +609,14 @@ module htx_raster_setup #(
     // to the traversal's plane RAM (pl_*_o), none is kept here.
     localparam int unsigned AS  = VSW + GF + 2;
     localparam int unsigned GS  = VSW + DW + 2 + GF + 1;
-    logic                s_valid, s_first, s_late, s_show, s_ready, s_want, s_have, s_wwe;
+    logic                s_valid, s_first, s_late, s_want, s_have, s_wwe;
     logic [1:0]          s_wsel;
     logic [AS-1:0]       s_word;
     logic [3:0]          s_idx;
     logic [NS*3*VSW-1:0] s_values;
-    logic [AS-1:0]       s_gx, s_gy, s_st;
     logic [GS-1:0]       s_gxw, s_gyw;
     htx_raster_plane_seq #(.NP(NS), .NFirst(7), .VB(VSW), .DW(DW), .W(RecipW), .GF(GF), .ShiftW(ShiftW),
-                           .AccW(AS), .GW(GS), .IdxW(4), .Load(ValuesInFifo), .Stream(1'b1)) u_seq (
+                           .AccW(AS), .GW(GS), .IdxW(4), .Load(ValuesInFifo)) u_seq (
       .clk_i, .rst_ni,
       .abort_i      (planes_abort),
       .start_i      (plane_start_q),
@@ -631,11 +630,8 @@ module htx_raster_setup #(
       .r_i          (rdet_q),
       .shift_i      (grad_shift),
       .det_neg_i    (det_neg_q),
-      .res_show_o   (s_show),
-      .res_ready_i  (s_ready),
       .res_valid_o  (s_valid),
       .res_idx_o    (s_idx),
-      .gx_o(s_gx), .gy_o(s_gy), .start_o(s_st),
       .gxw_o(s_gxw), .gyw_o(s_gyw),
       .word_we_o    (s_wwe),
       .word_sel_o   (s_wsel),
@@ -740,10 +736,9 @@ module htx_raster_setup #(
     end
     assign plane_done = {{2{s_late}}, {7{s_first}}};
     assign apl_done   = {2{s_late}};
-    // Each plane's three words go to the traversal's plane RAM as the unit forms them (Stream): gx,
+    // Each plane's three words go to the traversal's plane RAM as the unit forms them: gx,
     // gy, start, each in the clock its product is done. (Planes not built are not written; the
     // traversal steps whatever its RAM holds there, which nothing reads.)
-    assign s_ready   = 1'b1;
     assign pl_we_o   = s_wwe;
     assign pl_sel_o  = s_wsel;
     assign pl_idx_o  = (FoldUv && (s_idx >= 4'd7)) ? s_idx - 4'd2 : s_idx;
@@ -772,7 +767,7 @@ module htx_raster_setup #(
     assign lg[5] = lgy_q[2];
     logic unused_s;
     // (AW'() may drop a top bit of s_word)
-    assign unused_s = ^{s_gx, s_gy, s_st, s_gxw, s_gyw, s_show, s_word};
+    assign unused_s = ^{s_gxw, s_gyw, s_word};
   end
 
   // ---- LOD gradients: one block shift s_g = max(0, msb(max |g|) + 2 - GradW) for all six -------
