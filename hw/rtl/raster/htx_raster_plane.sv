@@ -1,6 +1,8 @@
 // Setup of one attribute plane (docs/model.md §2): from vertex values a0..a2 (unsigned, or signed
 // with Signed) and the vertex deltas,
 //   n_x = da1 dy2 - da2 dy1,  n_y = da2 dx1 - da1 dx2   (before any vertex swap),
+// taking dy1 and dx2 negated (ndy1 = y0 - y1, ndx2 = x0 - x2: setup's edge coefficients a_0 and
+// b_2, so it forms no subtractors for them), which makes both numerators sums of two products,
 //   g = round(n R 2^-(W + msb - GF))                     (negated when setup swapped vertices 1, 2),
 //   start = a0 2^GF + g_x dxs + g_y dys                  (value at the first pixel centre visited).
 // n_x, n_y do not depend on the determinant, so they are formed while the reciprocal unit works.
@@ -23,7 +25,7 @@ module htx_raster_plane #(
   input  logic                   abort_i,
   input  logic                   start_i,      // vertex values and deltas are valid from now on
   input  logic [VB-1:0]          a0_i, a1_i, a2_i,
-  input  logic signed [DW-1:0]   dx1_i, dy1_i, dx2_i, dy2_i,
+  input  logic signed [DW-1:0]   dx1_i, ndy1_i, ndx2_i, dy2_i,
   input  logic signed [DW-1:0]   dxs_i, dys_i, // first pixel centre minus vertex 0 (after the box)
   input  logic                   recip_valid_i,
   input  logic [W:0]             r_i,
@@ -70,22 +72,20 @@ module htx_raster_plane #(
   assign da2 = a2e - a0e;
   // The numerator of this gradient. When setup swapped vertices 1 and 2 the multiplier negates
   // the product n R itself (neg_i: the model's -n times R, before the rounding), so n is never
-  // negated here. The second product of each numerator is negated the same way, so
-  // n = t + (-p) goes through the accumulator's adder (no subtractor of its own).
+  // negated here. n = da1 dy2 + da2 ndy1 (n_y likewise) goes through the accumulator's adder.
   logic signed [NW-1:0] nxy;
   logic                 mul_neg;
   assign nxy     = (state_q == StGx) ? nx_q : NW'(acc_q);  // n_y stays in the accumulator
-  assign mul_neg = (state_q == StNx1) || (state_q == StNy1) ||
-                   (det_neg_i && ((state_q == StGx) || (state_q == StGy)));
+  assign mul_neg = det_neg_i && ((state_q == StGx) || (state_q == StGy));
 
   always_comb begin
     mul_a = '0;
     mul_b = '0;
     unique case (state_q)
       StNx0: begin mul_a = MA'(da1); mul_b = MB'(dy2_i); end
-      StNx1: begin mul_a = MA'(da2); mul_b = MB'(dy1_i); end
+      StNx1: begin mul_a = MA'(da2); mul_b = MB'(ndy1_i); end
       StNy0: begin mul_a = MA'(da2); mul_b = MB'(dx1_i); end
-      StNy1: begin mul_a = MA'(da1); mul_b = MB'(dx2_i); end
+      StNy1: begin mul_a = MA'(da1); mul_b = MB'(ndx2_i); end
       StGx, StGy: begin mul_a = MA'(nxy); mul_b = MB'($signed({1'b0, r_i})); end
       StSx: begin mul_a = MA'($signed(gx_q)); mul_b = MB'(dxs_i); end
       StSy: begin mul_a = MA'($signed(gy_q)); mul_b = MB'(dys_i); end
@@ -115,7 +115,7 @@ module htx_raster_plane #(
   // their own, which synthesis removes where nothing takes them.
   assign rounded = (mul_p + $signed(PW'(1))) >>> 1;
 
-  // One adder for both sums of two products: n_x = da1 dy2 + (-(da2 dy1)) (n_y likewise), then
+  // One adder for both sums of two products: n_x = da1 dy2 + da2 ndy1 (n_y likewise), then
   // start = a0 2^GF + g_x dxs + g_y dys (kept modulo 2^AccW), and the gradients' rounding p + 1.
   logic [MA-1:0] acc_base, acc_sum;
   always_comb begin

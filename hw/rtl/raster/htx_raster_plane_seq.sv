@@ -34,7 +34,7 @@ module htx_raster_plane_seq #(
   input  logic [NP*3*VB-1:0]    values_i,      // plane p, vertex i at VB (3 p + i); Load: see above
   output logic                  want_o,
   input  logic                  have_i,
-  input  logic signed [DW-1:0]  dx1_i, dy1_i, dx2_i, dy2_i,
+  input  logic signed [DW-1:0]  dx1_i, ndy1_i, ndx2_i, dy2_i,  // as htx_raster_plane's
   input  logic signed [DW-1:0]  dxs_i, dys_i,
   input  logic                  recip_valid_i,
   input  logic [W:0]            r_i,
@@ -78,7 +78,7 @@ module htx_raster_plane_seq #(
     .abort_i,
     .start_i      (kick_q),
     .a0_i(a0), .a1_i(a1), .a2_i(a2),
-    .dx1_i, .dy1_i, .dx2_i, .dy2_i,
+    .dx1_i, .ndy1_i, .ndx2_i, .dy2_i,
     .dxs_i, .dys_i,
     .recip_valid_i,
     .r_i,

@@ -203,11 +203,6 @@ module htx_raster_setup #(
   end
 
   // ---- Deltas, box -----------------------------------------------------------------------------
-  logic signed [DW-1:0] dx1, dy1, dx2, dy2;
-  assign dx1 = DW'(x_v[1]) - DW'(x_v[0]);
-  assign dy1 = DW'(y_v[1]) - DW'(y_v[0]);
-  assign dx2 = DW'(x_v[2]) - DW'(x_v[0]);
-  assign dy2 = DW'(y_v[2]) - DW'(y_v[0]);
 
   // Word offsets of vertex i's fields in the record (ValuesInFifo): 4 + 9 i + (x 0, y 1, z 2, q 3,
   // uq 4 and 5, vq 6 and 7, rgba 8).
@@ -253,6 +248,13 @@ module htx_raster_setup #(
     // a LUT and a carry a bit; docs/area.md.)
     assign ethr[k] = !((!ea[k][DW-1] && (ea[k] != 0)) || ((ea[k] == 0) && !edx[DW-1] && (edx != 0)));
   end
+
+  // The vertex deltas are edge coefficients: dx1 = x1 - x0 = b_0 and dy2 = y2 - y0 = a_2, and dy1,
+  // dx2 only negated, as a_0 = y0 - y1 and b_2 = x0 - x2: the plane units take those, and
+  // det = dx1 dy2 - dx2 dy1 = b_0 a_2 - b_2 a_0. No subtractors of their own.
+  logic signed [DW-1:0] dx1, dy2;
+  assign dx1 = eb[0];
+  assign dy2 = ea[2];
 
   // The box's bounds without comparators of their own: the edges' coefficients are the vertices'
   // differences around the triangle, so their signs order the vertices (b_k = x_k1 - x_k and
@@ -358,7 +360,7 @@ module htx_raster_setup #(
     emul_b = '0;
     unique case (state_q)
       StDet0: begin emul_a = dx1; emul_b = dy2; end
-      StDet1: begin emul_a = dx2; emul_b = dy1; end
+      StDet1: begin emul_a = eb[2]; emul_b = ea[0]; end  // (-dx2)(-dy1)
       // E_k = a_k (px - x_k) + b_k (py - y_k) = a_k dxs + b_k dys + E_k(v0), exactly, and E_k(v0)
       // is 0 for the two edges through vertex 0 and det for edge 1 (the first product is added
       // to it): every edge multiplies the deltas that the planes use, no per-edge subtraction.
@@ -568,7 +570,7 @@ module htx_raster_setup #(
         .abort_i      (planes_abort),
         .start_i      ((p < 7) ? plane_start_q : apl_start),
         .a0_i(sv[VSW*(3*p) +: VBP]), .a1_i(sv[VSW*(3*p+1) +: VBP]), .a2_i(sv[VSW*(3*p+2) +: VBP]),
-        .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+        .dx1_i(dx1), .ndy1_i(ea[0]), .ndx2_i(eb[2]), .dy2_i(dy2),
         .dxs_i(dxs), .dys_i(dys),
         .recip_valid_i(recip_valid_q),
         .r_i          (rdet_q),
@@ -624,7 +626,7 @@ module htx_raster_setup #(
       .values_i     (s_values),
       .want_o       (s_want),
       .have_i       (s_have),
-      .dx1_i(dx1), .dy1_i(dy1), .dx2_i(dx2), .dy2_i(dy2),
+      .dx1_i(dx1), .ndy1_i(ea[0]), .ndx2_i(eb[2]), .dy2_i(dy2),
       .dxs_i(dxs), .dys_i(dys),
       .recip_valid_i(recip_valid_q),
       .r_i          (rdet_q),
