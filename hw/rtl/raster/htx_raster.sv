@@ -206,7 +206,7 @@ module htx_raster #(
   logic               pl_we;
   logic [1:0]         pl_sel;
   logic [3:0]         pl_idx;
-  logic [AW-1:0]      pl_data;
+  logic [AW:0]        pl_data;
   logic [6*GradW-1:0] tri_lod_g;
   logic [7:0]         tri_lod_shift;
   logic [6*GWU-1:0]   tri_dfg;

@@ -35,10 +35,12 @@ module htx_raster_plane #(
   output logic [AccW-1:0]        gx_o, gy_o, start_o,
   output logic [GW-1:0]          gxw_o, gyw_o,
   // Each result word as it is formed (a pulse; sel 0 g_x, 1 g_y, 2 start), for a caller that
-  // stores them one at a time without a multiplexer over gx_o, gy_o, start_o.
+  // stores them one at a time without a multiplexer over gx_o, gy_o, start_o. A gradient's word
+  // is 2 g or 2 g + 1 (g with the bit below it: g is word_o[AccW:1]); the start value's is
+  // word_o[AccW-1:0]. The caller takes each part by its wiring: no multiplexer here.
   output logic                   word_we_o,
   output logic [1:0]             word_sel_o,
-  output logic [AccW-1:0]        word_o
+  output logic [AccW:0]          word_o
 );
   localparam int unsigned NW = VB + DW + 2;
   // Also the accumulator (n, then start), and the gradients' rounding: at least AccW + 1 bits.
@@ -160,7 +162,7 @@ module htx_raster_plane #(
 
   assign word_we_o  = mul_done && ((state_q == StGx) || (state_q == StGy) || (state_q == StSy));
   assign word_sel_o = (state_q == StGx) ? 2'd0 : (state_q == StGy) ? 2'd1 : 2'd2;
-  assign word_o     = (state_q == StSy) ? acc_sum[AccW-1:0] : acc_sum[AccW:1];
+  assign word_o     = acc_sum[AccW:0];
 
   assign done_o  = (state_q == StDone);
   assign gx_o    = gx_q;

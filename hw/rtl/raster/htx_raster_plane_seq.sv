@@ -45,7 +45,7 @@ module htx_raster_plane_seq #(
   output logic [GW-1:0]         gxw_o, gyw_o,
   output logic                  word_we_o,
   output logic [1:0]            word_sel_o,
-  output logic [AccW-1:0]       word_o,
+  output logic [AccW:0]         word_o,       // as htx_raster_plane's
   output logic                  first_done_o,  // planes 0 .. NFirst-1 delivered (until start_i)
   output logic                  late_done_o    // planes NFirst .. NP-1 delivered
 );

@@ -91,7 +91,7 @@ module htx_raster_setup #(
   output logic                 pl_we_o,
   output logic [1:0]           pl_sel_o,
   output logic [3:0]           pl_idx_o,
-  output logic [AW-1:0]        pl_data_o,
+  output logic [AW:0]          pl_data_o,     // a gradient at [AW:1], a start value at [AW-1:0]
   output logic [31:0]          tri_u_off_o, tri_v_off_o,
   output logic [6*GradW-1:0]   tri_lod_g_o,   // g_ux, g_uy, g_vx, g_vy, g_qx, g_qy (block-shifted)
   output logic [7:0]           tri_lod_shift_o,
@@ -562,7 +562,7 @@ module htx_raster_setup #(
       logic [GP-1:0] gxw, gyw;
       logic          w_we;
       logic [1:0]    w_sel;
-      logic [AP-1:0] w_word;
+      logic [AP:0]   w_word;
       logic          unused_w_word;
       htx_raster_plane #(.VB(VBP), .Signed(p >= 5), .DW(DW), .W(RecipW), .GF(GF),
                          .Iterative(Iterative), .ShiftW(ShiftW)) u_plane (
@@ -613,7 +613,7 @@ module htx_raster_setup #(
     localparam int unsigned GS  = VSW + DW + 2 + GF + 1;
     logic                s_valid, s_first, s_late, s_want, s_have, s_wwe;
     logic [1:0]          s_wsel;
-    logic [AS-1:0]       s_word;
+    logic [AS:0]         s_word;
     logic [3:0]          s_idx;
     logic [NS*3*VSW-1:0] s_values;
     logic [GS-1:0]       s_gxw, s_gyw;
@@ -744,7 +744,7 @@ module htx_raster_setup #(
     assign pl_we_o   = s_wwe;
     assign pl_sel_o  = s_wsel;
     assign pl_idx_o  = (FoldUv && (s_idx >= 4'd7)) ? s_idx - 4'd2 : s_idx;
-    assign pl_data_o = AW'(s_word);
+    assign pl_data_o = (AW+1)'(s_word);
     // Full-precision gradients of uq, vq (GWU bits) and q (GWQ bits, sign-extended) for the LOD unit.
     logic [GWU-1:0] lgx_q [3];
     logic [GWU-1:0] lgy_q [3];
@@ -768,7 +768,7 @@ module htx_raster_setup #(
     assign lg[4] = lgx_q[2];
     assign lg[5] = lgy_q[2];
     logic unused_s;
-    // (AW'() may drop a top bit of s_word)
+    // ((AW+1)'() may drop a top bit of s_word)
     assign unused_s = ^{s_gxw, s_gyw, s_word};
   end
 

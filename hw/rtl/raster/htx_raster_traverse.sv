@@ -46,7 +46,7 @@ module htx_raster_traverse #(
   input  logic              pl_we_i,
   input  logic [1:0]        pl_sel_i,
   input  logic [3:0]        pl_idx_i,
-  input  logic [AW-1:0]     pl_data_i,
+  input  logic [AW:0]       pl_data_i,   // a gradient at [AW:1], a start value at [AW-1:0]
 
   // Fragment: pixel, framebuffer address, raw plane values and the triangle's state.
   output logic              frag_valid_o,
@@ -436,8 +436,11 @@ module htx_raster_traverse #(
     // over the planes. StLoad shifts them in at the back in plane order.
     logic [AW-1:0] gx_q [NP];
     logic [AW-1:0] gy_q [NP];
-    (* ram_style = "block" *) logic [AW-1:0] mem_q [2**(IW+3)];
-    logic [AW-1:0] base_q, sum, grad;
+    // A word is AW + 1 bits: an accumulator at [AW-1:0], a gradient from setup at [AW:1] (the
+    // plane unit's word with the bit below g, taken here by wiring).
+    (* ram_style = "block" *) logic [AW:0] mem_q [2**(IW+3)];
+    logic [AW:0]   base_q;
+    logic [AW-1:0] sum, grad;
     logic [IW-1:0] idx_q;
     logic [IW+2:0] raddr, waddr;
     logic          cur_q;                      // bank of the current pixel's values
@@ -471,7 +474,7 @@ module htx_raster_traverse #(
     assign gx_turn = active || (loading && got_q && (got_reg_q == RegGx));
     assign gy_turn = active || (loading && got_q && (got_reg_q == RegGy));
     htx_raster_addsub #(.W(AW), .ZeroLsbs(8)) u_step (
-      .a_i  (base_q),
+      .a_i  (base_q[AW-1:0]),
       .b_i  (grad << 8),
       .sub_i(c_neg),
       .sum_o(sum)
@@ -489,7 +492,7 @@ module htx_raster_traverse #(
     end
     // Write: setup's words (start values into the next triangle's region); the steps.
     logic          we;
-    logic [AW-1:0] wdata;
+    logic [AW:0]   wdata;
     always_comb begin
       if (hold) begin
         we    = 1'b1;
@@ -499,7 +502,7 @@ module htx_raster_traverse #(
       end else begin
         we    = active && c_wr;
         waddr = {bank_reg(c_wr_bank, par_q), c_idx};
-        wdata = sum;
+        wdata = {1'b0, sum};
       end
     end
     always_ff @(posedge clk_i) begin
@@ -559,14 +562,14 @@ module htx_raster_traverse #(
         // at the back of its ring.
         if (gx_turn) begin
           for (int p = 0; p < NP - 1; p++) gx_q[p] <= gx_q[p+1];
-          gx_q[NP-1] <= active ? gx_q[0] : base_q;
+          gx_q[NP-1] <= active ? gx_q[0] : base_q[AW:1];
         end
         if (gy_turn) begin
           for (int p = 0; p < NP - 1; p++) gy_q[p] <= gy_q[p+1];
-          gy_q[NP-1] <= active ? gy_q[0] : base_q;
+          gy_q[NP-1] <= active ? gy_q[0] : base_q[AW:1];
         end
         for (int p = 0; p < NP; p++) begin
-          if (active && c_cap && (c_idx == IW'(p))) out_p_q[AW*p +: AW] <= base_q;
+          if (active && c_cap && (c_idx == IW'(p))) out_p_q[AW*p +: AW] <= base_q[AW-1:0];
         end
         if (start_pass) begin
           // The pass goes on as its deciding clock began it (c_*).
