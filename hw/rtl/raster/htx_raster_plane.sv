@@ -9,6 +9,9 @@
 // Gradients and the start value are kept modulo 2^AccW (AccW = VB + GF + 2): traversal only
 // evaluates the plane inside the triangle, where the true value fits (docs/model.md §3). gxw_o and
 // gyw_o are the gradients at full precision (GW bits, signed) for the LOD unit's block shift.
+// Jobs = 1: between planes the unit also runs setup's other products on its multiplier and
+// accumulator (job_*: the determinant and the edge values, one product a job), so setup has no
+// multiplier of its own for them.
 module htx_raster_plane #(
   parameter int unsigned VB        = 8,    // value bits
   parameter bit          Signed    = 1'b0, // vertex values are signed
@@ -16,6 +19,7 @@ module htx_raster_plane #(
   parameter int unsigned W         = 32,   // reciprocal width
   parameter int unsigned GF        = 24,   // gradient fraction bits
   parameter bit          Iterative = 1'b0,
+  parameter bit          Jobs      = 1'b0,
   parameter int unsigned ShiftW    = 7,
   parameter int unsigned AccW      = VB + GF + 2,
   parameter int unsigned GW        = VB + DW + 2 + GF + 1  // bounds |n R 2^-shift| (msb(det) >= 0)
@@ -40,7 +44,19 @@ module htx_raster_plane #(
   // word_o[AccW-1:0]. The caller takes each part by its wiring: no multiplexer here.
   output logic                   word_we_o,
   output logic [1:0]             word_sel_o,
-  output logic [AccW:0]          word_o
+  output logic [AccW:0]          word_o,
+  // Jobs: while the unit is idle (StIdle or StDone, not being started), job_i runs one product
+  // job_a_i times the operand job_bsel_i picks (0 dy2_i, 1 ndy1_i, 2 dxs_i, 3 dys_i), negated
+  // with job_neg_i, added to the previous job's sum with job_acc_i (else to 0). job_done_o pulses
+  // with the sum on job_sum_o (valid in that clock). The inputs hold until then; a job_i still
+  // high after job_done_o asks for the next job. (MA >= 2 DW + 2 where Jobs is used.)
+  input  logic                   job_i,
+  input  logic signed [DW-1:0]   job_a_i,
+  input  logic [1:0]             job_bsel_i,
+  input  logic                   job_neg_i,
+  input  logic                   job_acc_i,
+  output logic                   job_done_o,
+  output logic [2*DW+1:0]        job_sum_o
 );
   localparam int unsigned NW = VB + DW + 2;
   // Also the accumulator (n, then start), and the gradients' rounding: at least AccW + 1 bits.
@@ -49,7 +65,7 @@ module htx_raster_plane #(
   localparam int unsigned PW = MA + MB;
 
   typedef enum logic [3:0] {
-    StIdle, StNx0, StNx1, StNy0, StNy1, StWait, StGx, StGy, StSx, StSy, StDone
+    StIdle, StNx0, StNx1, StNy0, StNy1, StWait, StGx, StGy, StSx, StSy, StDone, StJob
   } state_e;
 
   state_e state_q;
@@ -78,7 +94,8 @@ module htx_raster_plane #(
   logic signed [NW-1:0] nxy;
   logic                 mul_neg;
   assign nxy     = (state_q == StGx) ? nx_q : NW'(acc_q);  // n_y stays in the accumulator
-  assign mul_neg = det_neg_i && ((state_q == StGx) || (state_q == StGy));
+  assign mul_neg = (state_q == StJob) ? job_neg_i
+                 : (det_neg_i && ((state_q == StGx) || (state_q == StGy)));
 
   always_comb begin
     mul_a = '0;
@@ -91,6 +108,15 @@ module htx_raster_plane #(
       StGx, StGy: begin mul_a = MA'(nxy); mul_b = MB'($signed({1'b0, r_i})); end
       StSx: begin mul_a = MA'($signed(gx_q)); mul_b = MB'(dxs_i); end
       StSy: begin mul_a = MA'($signed(gy_q)); mul_b = MB'(dys_i); end
+      StJob: begin
+        mul_a = MA'(job_a_i);
+        unique case (job_bsel_i)
+          2'd0:    mul_b = MB'(dy2_i);
+          2'd1:    mul_b = MB'(ndy1_i);
+          2'd2:    mul_b = MB'(dxs_i);
+          default: mul_b = MB'(dys_i);
+        endcase
+      end
       default: ;
     endcase
   end
@@ -122,7 +148,8 @@ module htx_raster_plane #(
   logic [MA-1:0] acc_base, acc_sum;
   always_comb begin
     if (state_q == StSx)                               acc_base = MA'(a0e) << GF;
-    else if ((state_q == StNx0) || (state_q == StNy0)) acc_base = '0;
+    else if ((state_q == StNx0) || (state_q == StNy0) || ((state_q == StJob) && !job_acc_i))
+      acc_base = '0;
     else if ((state_q == StGx) || (state_q == StGy))   acc_base = MA'(1);
     else                                               acc_base = acc_q;
   end
@@ -142,6 +169,8 @@ module htx_raster_plane #(
     end else begin
       unique case (state_q)
         StIdle, StDone: if (start_i) state_q <= StNx0;
+                        else if (Jobs && job_i) state_q <= StJob;
+        StJob: if (mul_done) begin acc_q <= acc_sum; state_q <= StIdle; end
         StNx0: if (mul_done) begin acc_q <= acc_sum; state_q <= StNx1; end
         StNx1: if (mul_done) begin nx_q <= NW'(acc_sum); state_q <= StNy0; end
         StNy0: if (mul_done) begin acc_q <= acc_sum; state_q <= StNy1; end
@@ -163,6 +192,9 @@ module htx_raster_plane #(
   assign word_we_o  = mul_done && ((state_q == StGx) || (state_q == StGy) || (state_q == StSy));
   assign word_sel_o = (state_q == StGx) ? 2'd0 : (state_q == StGy) ? 2'd1 : 2'd2;
   assign word_o     = acc_sum[AccW:0];
+
+  assign job_done_o = (state_q == StJob) && mul_done;
+  assign job_sum_o  = (2*DW+2)'(acc_sum);
 
   assign done_o  = (state_q == StDone);
   assign gx_o    = gx_q;

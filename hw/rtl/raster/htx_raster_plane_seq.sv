@@ -24,7 +24,8 @@ module htx_raster_plane_seq #(
   parameter int unsigned AccW   = VB + GF + 2,
   parameter int unsigned GW     = VB + DW + 2 + GF + 1,
   parameter int unsigned IdxW   = $clog2(NP),
-  parameter bit          Load   = 1'b0
+  parameter bit          Load   = 1'b0,
+  parameter bit          Jobs   = 1'b0    // the unit's job_* port (htx_raster_plane)
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
@@ -47,7 +48,15 @@ module htx_raster_plane_seq #(
   output logic [1:0]            word_sel_o,
   output logic [AccW:0]         word_o,       // as htx_raster_plane's
   output logic                  first_done_o,  // planes 0 .. NFirst-1 delivered (until start_i)
-  output logic                  late_done_o    // planes NFirst .. NP-1 delivered
+  output logic                  late_done_o,   // planes NFirst .. NP-1 delivered
+  // Jobs: the unit's job port, for the caller while no plane is being worked on.
+  input  logic                  job_i,
+  input  logic signed [DW-1:0]  job_a_i,
+  input  logic [1:0]            job_bsel_i,
+  input  logic                  job_neg_i,
+  input  logic                  job_acc_i,
+  output logic                  job_done_o,
+  output logic [2*DW+1:0]       job_sum_o
 );
   logic [IdxW-1:0] idx_q;
   logic            run_q, kick_q, want_q, late_pend_q, first_done_q, late_done_q;
@@ -73,7 +82,7 @@ module htx_raster_plane_seq #(
   assign go_plane = Load ? (want_q && have_i) : 1'b0;
 
   htx_raster_plane #(.VB(VB), .Signed(1'b1), .DW(DW), .W(W), .GF(GF), .Iterative(1'b1),
-                     .ShiftW(ShiftW), .AccW(AccW), .GW(GW)) u_plane (
+                     .Jobs(Jobs), .ShiftW(ShiftW), .AccW(AccW), .GW(GW)) u_plane (
     .clk_i, .rst_ni,
     .abort_i,
     .start_i      (kick_q),
@@ -87,7 +96,8 @@ module htx_raster_plane_seq #(
     .done_o       (unit_done),
     .gx_o(unit_gx), .gy_o(unit_gy), .start_o(unit_start),
     .gxw_o, .gyw_o,
-    .word_we_o, .word_sel_o, .word_o
+    .word_we_o, .word_sel_o, .word_o,
+    .job_i, .job_a_i, .job_bsel_i, .job_neg_i, .job_acc_i, .job_done_o, .job_sum_o
   );
 
   // The unit's done_o is a level that stays up until it is started again; kick_q guards the one

@@ -349,61 +349,116 @@ module htx_raster_setup #(
     assign y_hi = y_hi_q;
   end
 
-  // ---- Determinant and edge values: one multiplier, eight products ------------------------------
-  logic                     emul_start, emul_done;
-  logic signed [DW-1:0]     emul_a, emul_b;
-  logic signed [2*DW-1:0]   emul_p;
+  // ---- Determinant and edge values -------------------------------------------------------------
+  // Nine plane units in parallel (`full`): a multiplier of setup's own, eight products. One plane
+  // unit for all planes (Iterative, `icebreaker`): the products run on that unit's multiplier and
+  // accumulator as jobs before the planes start (its job_* port), ten of them, and setup has no
+  // multiplier or adder for them.
+  localparam bit SharedPlanes = Iterative;
+  logic                     emul_done;
+  logic signed [EW-1:0]     part_sum;
   logic [1:0]               ek;
+  logic                     job_req, job_neg, job_acc, job_done;
+  logic signed [DW-1:0]     job_a;
+  logic [1:0]               job_bsel;
+  logic [EW-1:0]            job_sum;
   assign ek = edge_k_q[1:0];
-  always_comb begin
-    emul_a = '0;
-    emul_b = '0;
-    unique case (state_q)
-      StDet0: begin emul_a = dx1; emul_b = dy2; end
-      StDet1: begin emul_a = eb[2]; emul_b = ea[0]; end  // (-dx2)(-dy1)
-      // E_k = a_k (px - x_k) + b_k (py - y_k) = a_k dxs + b_k dys + E_k(v0), exactly, and E_k(v0)
-      // is 0 for the two edges through vertex 0 and det for edge 1 (the first product is added
-      // to it): every edge multiplies the deltas that the planes use, no per-edge subtraction.
-      StEdges: begin
-        if (!edge_half_q) begin emul_a = ea[ek]; emul_b = dxs; end
-        else              begin emul_a = eb[ek]; emul_b = dys; end
-      end
-      default: ;
-    endcase
-  end
-  assign emul_start = (state_q == StDet0) || (state_q == StDet1) || (state_q == StEdges);
-
-  htx_raster_mul #(.AWidth(DW), .BWidth(DW), .Iterative(Iterative), .ExtraW(1)) u_edge_mul (
-    .clk_i, .rst_ni, .abort_i,
-    .start_i(emul_start),
-    .a_i    (emul_a),
-    .b_i    (emul_b),
-    .neg_i  ((state_q == StEdges) ? ethr[ek] : redo_q ? (state_q == StDet0) : (state_q == StDet1)),
-    .extra_i(1'b0),
-    .done_o (emul_done),
-    .p_o    (emul_p)
-  );
-
-  // det = dx1 dy2 + (-(dx2 dy1)) and E_k = a_k (px - x_k) + b_k (py - y_k): the multiplier negates
-  // det's second product itself (neg_i), so one adder serves both.
-  logic signed [EW-1:0]   part_base, part_sum;
-  logic signed [DetW-1:0] det_next;
-  always_comb begin
-    if ((state_q == StDet0) || ((state_q == StEdges) && !edge_half_q)) begin
-      part_base = ((state_q == StEdges) && (ek == 2'd1)) ? EW'(det_q) : '0;  // det_q: |det|
-    end else begin
-      part_base = part_q;
+  if (!SharedPlanes) begin : g_edge_mul
+    logic                     emul_start;
+    logic signed [DW-1:0]     emul_a, emul_b;
+    logic signed [2*DW-1:0]   emul_p;
+    always_comb begin
+      emul_a = '0;
+      emul_b = '0;
+      unique case (state_q)
+        StDet0: begin emul_a = dx1; emul_b = dy2; end
+        StDet1: begin emul_a = eb[2]; emul_b = ea[0]; end  // (-dx2)(-dy1)
+        // E_k = a_k (px - x_k) + b_k (py - y_k) = a_k dxs + b_k dys + E_k(v0), exactly, and E_k(v0)
+        // is 0 for the two edges through vertex 0 and det for edge 1 (the first product is added
+        // to it): every edge multiplies the deltas that the planes use, no per-edge subtraction.
+        StEdges: begin
+          if (!edge_half_q) begin emul_a = ea[ek]; emul_b = dxs; end
+          else              begin emul_a = eb[ek]; emul_b = dys; end
+        end
+        default: ;
+      endcase
     end
+    assign emul_start = (state_q == StDet0) || (state_q == StDet1) || (state_q == StEdges);
+
+    htx_raster_mul #(.AWidth(DW), .BWidth(DW), .Iterative(Iterative), .ExtraW(1)) u_edge_mul (
+      .clk_i, .rst_ni, .abort_i,
+      .start_i(emul_start),
+      .a_i    (emul_a),
+      .b_i    (emul_b),
+      .neg_i  ((state_q == StEdges) ? ethr[ek] : redo_q ? (state_q == StDet0) : (state_q == StDet1)),
+      .extra_i(1'b0),
+      .done_o (emul_done),
+      .p_o    (emul_p)
+    );
+
+    // det = dx1 dy2 + (-(dx2 dy1)) and E_k = a_k (px - x_k) + b_k (py - y_k): the multiplier
+    // negates det's second product itself (neg_i), so one adder serves both.
+    logic signed [EW-1:0]   part_base;
+    always_comb begin
+      if ((state_q == StDet0) || ((state_q == StEdges) && !edge_half_q)) begin
+        part_base = ((state_q == StEdges) && (ek == 2'd1)) ? EW'(det_q) : '0;  // det_q: |det|
+      end else begin
+        part_base = part_q;
+      end
+    end
+    // An edge whose threshold is 1 goes to traversal negated (-E: its coverage test is then a
+    // sign, docs/raster.md): both products negated (neg_i). Edge 1's value at v0 is det itself,
+    // |det| or -|det|: added or subtracted by the sign of det and the negation.
+    htx_raster_addsub #(.W(EW)) u_part (
+      .a_i  (EW'(emul_p)),
+      .b_i  (part_base),
+      .sub_i((state_q == StEdges) && !edge_half_q && (ethr[ek] ^ det_neg_q)),
+      .sum_o(part_sum)
+    );
+    assign job_req  = 1'b0;
+    assign job_neg  = 1'b0;
+    assign job_acc  = 1'b0;
+    assign job_a    = '0;
+    assign job_bsel = '0;
+    logic unused_job;
+    assign unused_job = ^{job_done, job_sum};
+  end else begin : g_edge_jobs
+    // The jobs (job_bsel: 0 dy2, 1 -dy1 = a_0, 2 dxs, 3 dys). det = b_0 a_2 - b_2 a_0 (StDet0,
+    // StDet1; both negated for DetRedo). Then, by edge_k_q = j: E_0 = a_0 dxs + b_0 dys (j 0, 1);
+    // E_1 = a_1 dxs + b_1 dys + det, det's two products again instead of a register and an
+    // adder for +-det (j 2 .. 5); E_2 = a_2 dxs + b_2 dys (j 6, 7). An edge whose threshold is 1
+    // has all its products negated (traversal takes it negated, -E).
+    logic [2:0] j;
+    assign j = edge_k_q;
+    always_comb begin
+      job_acc  = 1'b1;
+      job_neg  = ethr[1];
+      job_a    = eb[2];
+      job_bsel = 2'd1;
+      unique case (state_q)
+        StDet0: begin job_a = eb[0]; job_bsel = 2'd0; job_neg = redo_q; job_acc = 1'b0; end
+        StDet1: begin job_neg = !redo_q; end
+        default: begin
+          unique case (j)
+            3'd0: begin job_a = ea[0]; job_bsel = 2'd2; job_neg = ethr[0]; job_acc = 1'b0; end
+            3'd1: begin job_a = eb[0]; job_bsel = 2'd3; job_neg = ethr[0]; end
+            3'd2: begin job_a = ea[1]; job_bsel = 2'd2; job_acc = 1'b0; end
+            3'd3: begin job_a = eb[1]; job_bsel = 2'd3; end
+            3'd4: begin job_a = eb[0]; job_bsel = 2'd0; end
+            3'd5: begin job_neg = !ethr[1]; end
+            3'd6: begin job_a = ea[2]; job_bsel = 2'd2; job_neg = ethr[2]; job_acc = 1'b0; end
+            default: begin job_bsel = 2'd3; job_neg = ethr[2]; end
+          endcase
+        end
+      endcase
+    end
+    assign job_req   = (state_q == StDet0) || (state_q == StDet1) || (state_q == StEdges);
+    assign emul_done = job_done;
+    assign part_sum  = $signed(job_sum);
+    logic unused_det;
+    assign unused_det = ^{det_q, part_q, edge_half_q};
   end
-  // An edge whose threshold is 1 goes to traversal negated (-E: its coverage test is then a sign,
-  // docs/raster.md): both products negated (neg_i). Edge 1's value at v0 is det itself, |det| or
-  // -|det|: added or subtracted by the sign of det and the negation.
-  htx_raster_addsub #(.W(EW)) u_part (
-    .a_i  (EW'(emul_p)),
-    .b_i  (part_base),
-    .sub_i((state_q == StEdges) && !edge_half_q && (ethr[ek] ^ det_neg_q)),
-    .sum_o(part_sum)
-  );
+  logic signed [DetW-1:0] det_next;
   assign det_next = DetW'(part_sum);
 
   // ---- Reciprocals: 1/|det|, then (AFFINE) 1/q_i of each vertex -------------------------------
@@ -483,7 +538,6 @@ module htx_raster_setup #(
   // ---- Planes: z, r, g, b, q, uq, vq, and for AFFINE ua, va -------------------------------------
   // Nine plane units working in parallel, or (Iterative, the `icebreaker` configuration) one unit
   // taking the planes in turn (htx_raster_plane_seq).
-  localparam bit SharedPlanes = Iterative;
   localparam int unsigned NS  = HasAffine ? NP : 7;  // planes built: ua, va only for AFFINE
   logic                 apl_start;         // AFFINE's vertex coordinates are ready (pulse)
   logic [1:0]           apl_done;          // the ua, va planes are done
@@ -563,6 +617,8 @@ module htx_raster_setup #(
       logic          w_we;
       logic [1:0]    w_sel;
       logic [AP:0]   w_word;
+      logic          w_job_done;   // (no jobs: setup has its own multiplier for them)
+      logic [2*DW+1:0] w_job_sum;
       logic          unused_w_word;
       htx_raster_plane #(.VB(VBP), .Signed(p >= 5), .DW(DW), .W(RecipW), .GF(GF),
                          .Iterative(Iterative), .ShiftW(ShiftW)) u_plane (
@@ -579,9 +635,11 @@ module htx_raster_setup #(
         .done_o       (plane_done[p]),
         .gx_o(gx), .gy_o(gy), .start_o(st),
         .gxw_o(gxw), .gyw_o(gyw),
-        .word_we_o(w_we), .word_sel_o(w_sel), .word_o(w_word)
+        .word_we_o(w_we), .word_sel_o(w_sel), .word_o(w_word),
+        .job_i(1'b0), .job_a_i('0), .job_bsel_i('0), .job_neg_i(1'b0), .job_acc_i(1'b0),
+        .job_done_o(w_job_done), .job_sum_o(w_job_sum)
       );
-      assign unused_w_word = ^{w_we, w_sel, w_word};  // (the parallel units hand over on tri_p_o)
+      assign unused_w_word = ^{w_we, w_sel, w_word, w_job_done, w_job_sum};  // (the parallel units hand over on tri_p_o)
       assign pgx[p] = AW'(gx);
       assign pgy[p] = AW'(gy);
       assign pst[p] = AW'(st);
@@ -598,6 +656,10 @@ module htx_raster_setup #(
       assign plane_done[NP-1:NS] = '0;
     end
     assign apl_done = plane_done[8:7];
+    assign job_done  = 1'b0;  // (setup's own multiplier: g_edge_mul)
+    assign job_sum   = '0;
+    logic unused_jobs;
+    assign unused_jobs = ^{job_req, job_neg, job_acc, job_a, job_bsel};
     assign ua_take   = 1'b0;
     assign va_take   = 1'b0;
     assign ld_req    = 1'b0;
@@ -618,7 +680,7 @@ module htx_raster_setup #(
     logic [NS*3*VSW-1:0] s_values;
     logic [GS-1:0]       s_gxw, s_gyw;
     htx_raster_plane_seq #(.NP(NS), .NFirst(7), .VB(VSW), .DW(DW), .W(RecipW), .GF(GF), .ShiftW(ShiftW),
-                           .AccW(AS), .GW(GS), .IdxW(4), .Load(ValuesInFifo)) u_seq (
+                           .AccW(AS), .GW(GS), .IdxW(4), .Load(ValuesInFifo), .Jobs(1'b1)) u_seq (
       .clk_i, .rst_ni,
       .abort_i      (planes_abort),
       .start_i      (plane_start_q),
@@ -639,7 +701,14 @@ module htx_raster_setup #(
       .word_sel_o   (s_wsel),
       .word_o       (s_word),
       .first_done_o (s_first),
-      .late_done_o  (s_late)
+      .late_done_o  (s_late),
+      .job_i        (job_req),
+      .job_a_i      (job_a),
+      .job_bsel_i   (job_bsel),
+      .job_neg_i    (job_neg),
+      .job_acc_i    (job_acc),
+      .job_done_o   (job_done),
+      .job_sum_o    (job_sum)
     );
     if (ValuesInFifo) begin : g_load
       // The plane's three vertex values, loaded a word every two clocks (ask, take) into a shift
@@ -975,7 +1044,12 @@ module htx_raster_setup #(
             ai_q <= ai_q + 1'b1;
             av_q <= (ai_q == 2'd2) ? AvPlanes : ValuesInFifo ? AvRdQ : AvStart;
           end
-          AvPlanes: begin apl_start_q <= 1'b1; av_q <= AvWait; end
+          // (The late planes start only after the first ones: SharedPlanes starts those after the
+          // edges, and the plane sequencer takes a late start only after its start.)
+          AvPlanes: if ((state_q == StWait) && !plane_start_q) begin
+            apl_start_q <= 1'b1;
+            av_q <= AvWait;
+          end
           AvWait: if (!apl_start_q && (&apl_done)) av_q <= AvDone;
           AvDone: if (state_q == StOut && tri_ready_i) av_q <= AvIdle;
           default: av_q <= AvIdle;
@@ -1040,7 +1114,8 @@ module htx_raster_setup #(
       unique case (state_q)
         StIdle: if (take && !state_bad) begin
           affine_q <= HasAffine && (rec_method == htx_raster_pkg::MethodAffine);
-          plane_start_q <= 1'b1;
+          // With SharedPlanes the planes start after the edges, whose products run on their unit.
+          plane_start_q <= !SharedPlanes;
           recip_valid_q <= 1'b0;
           redo_q        <= 1'b0;
           state_q       <= StDet0;
@@ -1055,7 +1130,17 @@ module htx_raster_setup #(
           else if (det_again) begin redo_q <= 1'b1; state_q <= StDet0; end
           else state_q <= StEdges;
         end
-        StEdges: if (emul_done) begin
+        StEdges: if (emul_done && SharedPlanes) begin
+          // Jobs 1, 5, 7 end an edge (g_edge_jobs).
+          if (edge_k_q == 3'd1) e_q[0] <= part_sum;
+          if (edge_k_q == 3'd5) e_q[1] <= part_sum;
+          if (edge_k_q == 3'd7) begin
+            e_q[2]        <= part_sum;
+            plane_start_q <= 1'b1;
+            state_q       <= StWait;
+          end
+          edge_k_q <= edge_k_q + 1'b1;
+        end else if (emul_done) begin
           if (!edge_half_q) begin
             part_q      <= part_sum;
             edge_half_q <= 1'b1;
@@ -1066,7 +1151,10 @@ module htx_raster_setup #(
             if (ek == 2'd2) state_q <= StWait;
           end
         end
-        StWait: if ((&plane_done[6:0]) && lod_done && (!affine_q || av_done)) state_q <= StOut;
+        // (Not in the clock the planes start: their done flags still show the last triangle's.)
+        StWait: if (!plane_start_q && (&plane_done[6:0]) && lod_done && (!affine_q || av_done)) begin
+          state_q <= StOut;
+        end
         StOut: if (tri_ready_i) state_q <= StIdle;
         default: state_q <= StIdle;
       endcase
