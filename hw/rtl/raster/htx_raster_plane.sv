@@ -5,7 +5,8 @@
 // b_2, so it forms no subtractors for them), which makes both numerators sums of two products,
 //   g = round(n R 2^-(W + msb - GF))                     (negated when setup swapped vertices 1, 2),
 //   start = a0 2^GF + g_x dxs + g_y dys                  (value at the first pixel centre visited).
-// n_x, n_y do not depend on the determinant, so they are formed while the reciprocal unit works.
+// n_x, n_y do not depend on the determinant, so they are formed while the reciprocal unit works
+// (Iterative: n_x, then g_x, then n_y and g_y, so that only the accumulator holds an n).
 // Gradients and the start value are kept modulo 2^AccW (AccW = VB + GF + 2): traversal only
 // evaluates the plane inside the triangle, where the true value fits (docs/model.md §3). gxw_o and
 // gyw_o are the gradients at full precision (GW bits, signed) for the LOD unit's block shift.
@@ -93,7 +94,11 @@ module htx_raster_plane #(
   // negated here. n = da1 dy2 + da2 ndy1 (n_y likewise) goes through the accumulator's adder.
   logic signed [NW-1:0] nxy;
   logic                 mul_neg;
-  assign nxy     = (state_q == StGx) ? nx_q : NW'(acc_q);  // n_y stays in the accumulator
+  // In parallel (`full`) n_x waits in nx_q and n_y in the accumulator for the reciprocal. Iterative
+  // units take g_x straight after n_x and only then form n_y: each n is in the accumulator when
+  // its gradient is taken, and nx_q and its multiplexer are left out.
+  localparam bit NyAfterGx = Iterative;
+  assign nxy     = ((state_q == StGx) && !NyAfterGx) ? nx_q : NW'(acc_q);
   assign mul_neg = (state_q == StJob) ? job_neg_i
                  : (det_neg_i && ((state_q == StGx) || (state_q == StGy)));
 
@@ -172,12 +177,15 @@ module htx_raster_plane #(
                         else if (Jobs && job_i) state_q <= StJob;
         StJob: if (mul_done) begin acc_q <= acc_sum; state_q <= StIdle; end
         StNx0: if (mul_done) begin acc_q <= acc_sum; state_q <= StNx1; end
-        StNx1: if (mul_done) begin nx_q <= NW'(acc_sum); state_q <= StNy0; end
+        StNx1: if (mul_done) begin
+          if (NyAfterGx) begin acc_q <= acc_sum; state_q <= StWait; end
+          else begin nx_q <= NW'(acc_sum); state_q <= StNy0; end
+        end
         StNy0: if (mul_done) begin acc_q <= acc_sum; state_q <= StNy1; end
-        StNy1: if (mul_done) begin acc_q <= acc_sum; state_q <= StWait; end
+        StNy1: if (mul_done) begin acc_q <= acc_sum; state_q <= NyAfterGx ? StGy : StWait; end
         StWait: if (recip_valid_i) state_q <= StGx;
         StGx: if (mul_done) begin
-          gx_q <= acc_sum[AccW:1]; gxw_q <= GW'(rounded); state_q <= StGy;
+          gx_q <= acc_sum[AccW:1]; gxw_q <= GW'(rounded); state_q <= NyAfterGx ? StNy0 : StGy;
         end
         StGy: if (mul_done) begin
           gy_q <= acc_sum[AccW:1]; gyw_q <= GW'(rounded); state_q <= StSx;
