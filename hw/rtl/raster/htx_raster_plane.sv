@@ -1,10 +1,10 @@
 // Setup of one attribute plane (docs/model.md §2): from vertex values a0..a2 (unsigned, or signed
 // with Signed) and the vertex deltas,
 //   n_x = da1 dy2 - da2 dy1,  n_y = da2 dx1 - da1 dx2   (before any vertex swap),
-// taking dy1 and dx2 negated (ndy1 = y0 - y1, ndx2 = x0 - x2: setup's edge coefficients a_0 and
-// b_2, so it forms no subtractors for them), which makes both numerators sums of two products,
 //   g = round(n R 2^-(W + msb - GF))                     (negated when setup swapped vertices 1, 2),
 //   start = a0 2^GF + g_x dxs + g_y dys                  (value at the first pixel centre visited).
+// dy1 and dx2 come negated (ndy1 = y0 - y1, ndx2 = x0 - x2: setup's edge coefficients a_0 and b_2,
+// so setup forms no subtractors for them), which makes each n a sum of two products.
 // n_x, n_y do not depend on the determinant, so they are formed while the reciprocal unit works
 // (Iterative: n_x, then g_x, then n_y and g_y, so that only the accumulator holds an n).
 // Gradients and the start value are kept modulo 2^AccW (AccW = VB + GF + 2): traversal only

@@ -385,12 +385,13 @@ module htx_raster_setup #(
     end
     assign emul_start = (state_q == StDet0) || (state_q == StDet1) || (state_q == StEdges);
 
-    htx_raster_mul #(.AWidth(DW), .BWidth(DW), .Iterative(Iterative), .ExtraW(1)) u_edge_mul (
+    htx_raster_mul #(.AWidth(DW), .BWidth(DW), .Iterative(1'b0), .ExtraW(1)) u_edge_mul (
       .clk_i, .rst_ni, .abort_i,
       .start_i(emul_start),
       .a_i    (emul_a),
       .b_i    (emul_b),
-      .neg_i  ((state_q == StEdges) ? ethr[ek] : redo_q ? (state_q == StDet0) : (state_q == StDet1)),
+      .neg_i  ((state_q == StEdges) ? ethr[ek]
+               : redo_q ? (state_q == StDet0) : (state_q == StDet1)),
       .extra_i(1'b0),
       .done_o (emul_done),
       .p_o    (emul_p)
@@ -639,7 +640,8 @@ module htx_raster_setup #(
         .job_i(1'b0), .job_a_i('0), .job_bsel_i('0), .job_neg_i(1'b0), .job_acc_i(1'b0),
         .job_done_o(w_job_done), .job_sum_o(w_job_sum)
       );
-      assign unused_w_word = ^{w_we, w_sel, w_word, w_job_done, w_job_sum};  // (the parallel units hand over on tri_p_o)
+      // (The parallel units hand over on tri_p_o.)
+      assign unused_w_word = ^{w_we, w_sel, w_word, w_job_done, w_job_sum};
       assign pgx[p] = AW'(gx);
       assign pgy[p] = AW'(gy);
       assign pst[p] = AW'(st);
@@ -1152,8 +1154,10 @@ module htx_raster_setup #(
           end
         end
         // (Not in the clock the planes start: their done flags still show the last triangle's.)
-        StWait: if (!plane_start_q && (&plane_done[6:0]) && lod_done && (!affine_q || av_done)) begin
-          state_q <= StOut;
+        StWait: begin
+          if (!plane_start_q && (&plane_done[6:0]) && lod_done && (!affine_q || av_done)) begin
+            state_q <= StOut;
+          end
         end
         StOut: if (tri_ready_i) state_q <= StIdle;
         default: state_q <= StIdle;
