@@ -32,7 +32,7 @@ module htx_gpu_icebreaker #(
     .XyIntBits(12), .ZBits(16), .GF(16), .RecipW(24), .RecipK(8), .RecipG(2), .SetupSteps(2),
     .Iterative(1'b1), .QBits(24), .UvIntBits(13), .PixelSteps(1), .PerspColor(1'b0),
     .PixelPipelined(1'b0), .PixelMulIterative(1'b0), .SubdivDepth(64), .DfFracBits(2), .DfCap(64), .FifoDepth(64),
-    .CoordW(24), .TF(10), .GradW(16), .LF(6), .TexFormats(3'b011), .TexFilters(3'b011),
+    .CoordW(20), .TF(10), .GradW(16), .LF(6), .TexFormats(3'b011), .TexFilters(3'b011),
     .TexSlots(4), .TexLanes(1), .TexShiftAdd(1'b0), .TexCounters(1'b0), .LogIdx(6),
     .FbPixels(FbPixels), .TexBAW(TexBAW), .Methods(Methods)
   ) u_subsys (.*);

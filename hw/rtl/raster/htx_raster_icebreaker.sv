@@ -29,7 +29,7 @@ module htx_raster_icebreaker #(
     .XyIntBits(12), .ZBits(16), .GF(16), .RecipW(24), .RecipK(8), .RecipG(2), .SetupSteps(2),
     .Iterative(1'b1), .QBits(24), .UvIntBits(13), .TF(10), .PixelSteps(1), .Methods(5'b11111),
     .PerspColor(1'b0), .PixelPipelined(1'b0), .PixelMulIterative(1'b0), .SubdivDepth(64), .DfFracBits(2), .DfCap(64), .LF(6), .LogIdx(6),
-    .CoordW(24), .GradW(16),
+    .CoordW(20), .GradW(16),
     .FifoDepth(64), .FbPixels(FbPixels)
   ) u_subsys (
     .clk_i,

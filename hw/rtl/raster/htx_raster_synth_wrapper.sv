@@ -16,7 +16,7 @@ module htx_raster_synth_wrapper #(
   localparam int unsigned AddrW  = 24;
   localparam int unsigned InBits = 1 + 32 + 1 + 4 + 32 + ZBits + 1;
   localparam int unsigned OutBits = 1 + 1 + 32 + 1 + 1 + AddrW + 1 + 1 + AddrW + 16 + ZBits;
-  localparam int unsigned CoordW  = Full ? 48 : 24;
+  localparam int unsigned CoordW  = Full ? 48 : 20;
   localparam int unsigned QW      = Full ? 58 : 42;
   localparam int unsigned GradW   = Full ? 24 : 16;
   localparam int unsigned LocW    = Full ? 32 : 23;

@@ -1,9 +1,9 @@
 // The texture unit in the `icebreaker` configuration (docs/texture.md): RGB565 and RGBA4444, nearest and
 // bilinear (no LOD unit: both sample level 0), one channel blended at a time (three products, one per
-// clock on one iCE40 DSP; ShiftAdd = 1 puts it in logic instead), 24-bit coordinates with 10 fraction bits (the producer wraps or saturates them,
+// clock on one iCE40 DSP; ShiftAdd = 1 puts it in logic instead), 20-bit coordinates with 10 fraction bits (the producer wraps or saturates them,
 // docs/texture.md), 4 slots, 4 x 1K x 16-bit banks (4K texels, 16 EBR), no performance counters.
 module htx_texture_icebreaker #(
-  parameter int unsigned CoordW   = 24,
+  parameter int unsigned CoordW   = 20,
   parameter int unsigned TF       = 10,
   parameter int unsigned LF       = 6,
   parameter logic [2:0]  Formats  = 3'b011,

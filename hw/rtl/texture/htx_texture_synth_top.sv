@@ -7,7 +7,7 @@ module htx_texture_synth_top (
   input  logic sdi_i,
   output logic sdo_o
 );
-  localparam int unsigned CoordW = 24;
+  localparam int unsigned CoordW = 20;
   localparam int unsigned InBits = 2 * 32 + 2 + 4 + 2 * 32 + 2 + 4 + 2 + 2 * CoordW + 6 + 8 + 1 + 1;
   logic [InBits-1:0] sr_q;
   always_ff @(posedge clk_i) sr_q <= {sr_q[InBits-2:0], sdi_i};

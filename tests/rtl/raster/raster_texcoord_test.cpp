@@ -41,7 +41,7 @@ raster_test::RtlResult run_rtl(const std::string& name, const std::vector<Tri>& 
 struct Port {  // the port widths of the named configurations (docs/raster.md)
   unsigned coord_w, loc_w, grad_w;
 };
-Port port_of(const std::string& cfg) { return cfg == "full" ? Port{48, 32, 24} : Port{24, 23, 16}; }
+Port port_of(const std::string& cfg) { return cfg == "full" ? Port{48, 32, 24} : Port{20, 23, 16}; }
 
 int64_t sext(i128 v, unsigned bits) {
   const i128 m = i128{1} << bits;

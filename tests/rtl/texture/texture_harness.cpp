@@ -124,7 +124,7 @@ TextureHarness::TextureHarness(const std::string& config) {
   if (config == "full")
     port_ = std::make_unique<Port<Vhtx_texture_full>>(48, 58, 24, 32);
   else if (config == "icebreaker")
-    port_ = std::make_unique<Port<Vhtx_texture_icebreaker>>(24, 42, 16, 23);
+    port_ = std::make_unique<Port<Vhtx_texture_icebreaker>>(20, 42, 16, 23);
   else
     throw std::invalid_argument("TextureHarness: unknown configuration " + config);
 }

@@ -198,11 +198,12 @@ TEST_P(TextureUnit, CheckerboardCentresEdgesCorners) {
 
 // Coordinates around every seam of a 32x16 texture (non-square, so the axes differ) in each wrap
 // mode, from two periods below to two above, and far away.
-TEST_P(TextureUnit, WrapSeams) {
-  const ModelConfig& c = cfg();
+// Coordinates around every seam of a 2^log2_w x 2^log2_h texture, from two periods below to three
+// above and 1000 and 7777 periods away, in every wrap mode on each axis and every built filter.
+Check wrap_seams(const std::string& config, const ModelConfig& c, unsigned log2_w, unsigned log2_h) {
   const unsigned tf = c.texcoord_frac_bits;
-  TextureHarness h(GetParam());
-  const Texture tex = make_texture(TexFormat::RGBA4444, 5, 4, gradient_pixels(5, 4));
+  TextureHarness h(config);
+  const Texture tex = make_texture(TexFormat::RGBA4444, log2_w, log2_h, gradient_pixels(log2_w, log2_h));
   h.upload(tex, 1, 0);
   const int64_t one = int64_t{1} << tf;
   auto seam_coords = [&](int64_t size) {
@@ -214,7 +215,7 @@ TEST_P(TextureUnit, WrapSeams) {
       v.push_back(far * size * one + one / 4);
     return v;
   };
-  const std::vector<int64_t> us = seam_coords(32), vs = seam_coords(16);
+  const std::vector<int64_t> us = seam_coords(int64_t{1} << log2_w), vs = seam_coords(int64_t{1} << log2_h);
   std::mt19937 rng(11);
   std::vector<TexRequest> reqs;
   for (Filter f : built_filters(c))
@@ -232,7 +233,18 @@ TEST_P(TextureUnit, WrapSeams) {
             r.lod = static_cast<int32_t>(rng() % (6u << c.lod_frac_bits));
             reqs.push_back(r);
           }
-  const Check k = run_and_compare(h, c, {&tex, &tex}, reqs);
+  return run_and_compare(h, c, {&tex, &tex}, reqs);
+}
+
+TEST_P(TextureUnit, WrapSeams) {
+  const Check k = wrap_seams(GetParam(), cfg(), 5, 4);
+  EXPECT_EQ(k.bad, 0u) << k.first;
+}
+
+// The largest texture side (256): mirror's period is then 512 texels, the most integer bits of
+// the coordinate that wrapping uses (icebreaker's CoordW keeps exactly those, docs/texture.md).
+TEST_P(TextureUnit, WrapSeamsOfTheLargestSize) {
+  const Check k = wrap_seams(GetParam(), cfg(), 8, 3);
   EXPECT_EQ(k.bad, 0u) << k.first;
 }
 

@@ -72,7 +72,7 @@ bool read_request(Vhtx_raster_full& top, TexRequest* t) {
   HTX_READ_REQUEST(htx_raster_full__DOT__u_subsys, top.rootp, 48, 32, 24);
 }
 bool read_request(Vhtx_raster_icebreaker& top, TexRequest* t) {
-  HTX_READ_REQUEST(htx_raster_icebreaker__DOT__u_subsys, top.rootp, 24, 23, 16);
+  HTX_READ_REQUEST(htx_raster_icebreaker__DOT__u_subsys, top.rootp, 20, 23, 16);
 }
 bool read_request(Vhtx_raster_full_pc& top, TexRequest* t) {
   HTX_READ_REQUEST(htx_raster_full_pc__DOT__u_full__DOT__u_subsys, top.rootp, 48, 32, 24);
