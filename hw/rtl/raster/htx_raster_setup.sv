@@ -390,8 +390,8 @@ module htx_raster_setup #(
       .start_i(emul_start),
       .a_i    (emul_a),
       .b_i    (emul_b),
-      .neg_i  ((state_q == StEdges) ? ethr[ek]
-               : redo_q ? (state_q == StDet0) : (state_q == StDet1)),
+      // (This branch is `full`'s, which negates |det| instead of redoing det: no redo_q term.)
+      .neg_i  ((state_q == StEdges) ? ethr[ek] : (state_q == StDet1)),
       .extra_i(1'b0),
       .done_o (emul_done),
       .p_o    (emul_p)
