@@ -306,9 +306,9 @@ module htx_raster #(
     assign unused_dfg = ^tri_dfg;
   end
   // `icebreaker` (Iterative) trades two clocks on some rows for the traversal's left look, 13
-  // clocks per triangle for the row-offset multiplier, and NP clocks per step for the planes'
-  // accumulators (in block RAM, on one adder; setup writes each triangle's planes straight into
-  // that RAM, so neither keeps them in registers).
+  // clocks per triangle for the row-offset multiplier, and NP + 3 clocks per step for the edges'
+  // and planes' values (in block RAM, on one adder; setup writes each triangle's edges and planes
+  // straight into that RAM, so neither keeps them in registers).
   htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NPT), .AW(AW), .SideW(SideT), .AddrW(AddrW),
                         .LookBehind(!Iterative), .SerialRowBase(Iterative),
                         .SerialPlanes(Iterative)) u_traverse (

@@ -47,13 +47,14 @@ module htx_raster_plane #(
   output logic [1:0]             word_sel_o,
   output logic [AccW:0]          word_o,
   // Jobs: while the unit is idle (StIdle or StDone, not being started), job_i runs one product
-  // job_a_i times the operand job_bsel_i picks (0 dy2_i, 1 ndy1_i, 2 dxs_i, 3 dys_i), negated
+  // job_a_i times the operand job_bsel_i picks (0 dy2_i, 1 ndy1_i, 2 dxs_i, 3 dys_i, 4 the
+  // constant 2, which gives job_a_i as a gradient word: 2 g with g = job_a_i), negated
   // with job_neg_i, added to the previous job's sum with job_acc_i (else to 0). job_done_o pulses
   // with the sum on job_sum_o (valid in that clock). The inputs hold until then; a job_i still
   // high after job_done_o asks for the next job. (MA >= 2 DW + 2 where Jobs is used.)
   input  logic                   job_i,
   input  logic signed [DW-1:0]   job_a_i,
-  input  logic [1:0]             job_bsel_i,
+  input  logic [2:0]             job_bsel_i,
   input  logic                   job_neg_i,
   input  logic                   job_acc_i,
   output logic                   job_done_o,
@@ -116,10 +117,11 @@ module htx_raster_plane #(
       StJob: begin
         mul_a = MA'(job_a_i);
         unique case (job_bsel_i)
-          2'd0:    mul_b = MB'(dy2_i);
-          2'd1:    mul_b = MB'(ndy1_i);
-          2'd2:    mul_b = MB'(dxs_i);
-          default: mul_b = MB'(dys_i);
+          3'd0:    mul_b = MB'(dy2_i);
+          3'd1:    mul_b = MB'(ndy1_i);
+          3'd2:    mul_b = MB'(dxs_i);
+          3'd3:    mul_b = MB'(dys_i);
+          default: mul_b = MB'(2);
         endcase
       end
       default: ;

@@ -52,7 +52,7 @@ module htx_raster_plane_seq #(
   // Jobs: the unit's job port, for the caller while no plane is being worked on.
   input  logic                  job_i,
   input  logic signed [DW-1:0]  job_a_i,
-  input  logic [1:0]            job_bsel_i,
+  input  logic [2:0]            job_bsel_i,
   input  logic                  job_neg_i,
   input  logic                  job_acc_i,
   output logic                  job_done_o,

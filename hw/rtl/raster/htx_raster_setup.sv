@@ -87,7 +87,9 @@ module htx_raster_setup #(
   output logic [3*NP*AW-1:0]   tri_p_o,       // plane p at 3 AW p: {start, gy, gx}, mod 2^AW
   // Iterative: the planes go instead (tri_p_o is zero) to the traversal's plane RAM, one word a
   // clock as each is done: pl_sel_o 0 gx, 1 gy, 2 start of plane pl_idx_o (mod 2^AW). They are all
-  // written before tri_valid_o rises; the traversal copies them before it takes the triangle.
+  // written before tri_valid_o rises; the traversal copies them before it takes the triangle. The
+  // edges go there too, as planes 0..2 (a_k, b_k and E_k, the threshold-1 ones negated; tri_e_o
+  // then matters only for its signs), and the attribute planes follow at 3 on.
   output logic                 pl_we_o,
   output logic [1:0]           pl_sel_o,
   output logic [3:0]           pl_idx_o,
@@ -133,7 +135,7 @@ module htx_raster_setup #(
   logic [31:0]            u_off_v, v_off_v;
   logic signed [DetW-1:0] det_q;     // |det|, from StDet1 on (edge 1 starts from it)
   logic                   det_neg_q;
-  logic [2:0]             edge_k_q;
+  logic [3:0]             edge_k_q;
   logic                   edge_half_q;
   logic signed [EW-1:0]   e_q [3];
   logic signed [EW-1:0]   part_q;    // the first product of det or of an edge value
@@ -360,7 +362,10 @@ module htx_raster_setup #(
   logic [1:0]               ek;
   logic                     job_req, job_neg, job_acc, job_done;
   logic signed [DW-1:0]     job_a;
-  logic [1:0]               job_bsel;
+  logic [2:0]               job_bsel;
+  logic                     job_we;    // SharedPlanes: the job's sum is a word for the plane RAM
+  logic [1:0]               job_wsel;
+  logic [1:0]               job_widx;
   logic [EW-1:0]            job_sum;
   assign ek = edge_k_q[1:0];
   if (!SharedPlanes) begin : g_edge_mul
@@ -421,40 +426,57 @@ module htx_raster_setup #(
     assign job_acc  = 1'b0;
     assign job_a    = '0;
     assign job_bsel = '0;
+    assign job_we   = 1'b0;
+    assign job_wsel = '0;
+    assign job_widx = '0;
     logic unused_job;
-    assign unused_job = ^{job_done, job_sum};
+    assign unused_job = ^{job_done, job_sum, edge_k_q[3:2]};
   end else begin : g_edge_jobs
-    // The jobs (job_bsel: 0 dy2, 1 -dy1 = a_0, 2 dxs, 3 dys). det = b_0 a_2 - b_2 a_0 (StDet0,
-    // StDet1; both negated for DetRedo). Then, by edge_k_q = j: E_0 = a_0 dxs + b_0 dys (j 0, 1);
-    // E_1 = a_1 dxs + b_1 dys + det, det's two products again instead of a register and an
-    // adder for +-det (j 2 .. 5); E_2 = a_2 dxs + b_2 dys (j 6, 7). An edge whose threshold is 1
-    // has all its products negated (traversal takes it negated, -E).
-    logic [2:0] j;
+    // The jobs (job_bsel: 0 dy2, 1 -dy1 = a_0, 2 dxs, 3 dys, 4 the constant 2). det = b_0 a_2 -
+    // b_2 a_0 (StDet0, StDet1; both negated for DetRedo). Then, by edge_k_q = j: E_0 = a_0 dxs +
+    // b_0 dys (j 0, 1); E_1 = a_1 dxs + b_1 dys + det, det's two products again instead of a
+    // register and an adder for +-det (j 2 .. 5); E_2 = a_2 dxs + b_2 dys (j 6, 7); then the
+    // edges' gradients a_k, b_k as words for the plane RAM (j 8 .. 13: 2 a_0, 2 b_0, 2 a_1, ...).
+    // An edge whose threshold is 1 has all its products negated (traversal takes it negated, -E,
+    // and steps it by -a, -b).
+    logic [3:0] j;
     assign j = edge_k_q;
     always_comb begin
       job_acc  = 1'b1;
       job_neg  = ethr[1];
       job_a    = eb[2];
-      job_bsel = 2'd1;
+      job_bsel = 3'd1;
       unique case (state_q)
-        StDet0: begin job_a = eb[0]; job_bsel = 2'd0; job_neg = redo_q; job_acc = 1'b0; end
+        StDet0: begin job_a = eb[0]; job_bsel = 3'd0; job_neg = redo_q; job_acc = 1'b0; end
         StDet1: begin job_neg = !redo_q; end
         default: begin
           unique case (j)
-            3'd0: begin job_a = ea[0]; job_bsel = 2'd2; job_neg = ethr[0]; job_acc = 1'b0; end
-            3'd1: begin job_a = eb[0]; job_bsel = 2'd3; job_neg = ethr[0]; end
-            3'd2: begin job_a = ea[1]; job_bsel = 2'd2; job_acc = 1'b0; end
-            3'd3: begin job_a = eb[1]; job_bsel = 2'd3; end
-            3'd4: begin job_a = eb[0]; job_bsel = 2'd0; end
-            3'd5: begin job_neg = !ethr[1]; end
-            3'd6: begin job_a = ea[2]; job_bsel = 2'd2; job_neg = ethr[2]; job_acc = 1'b0; end
-            default: begin job_bsel = 2'd3; job_neg = ethr[2]; end
+            4'd0: begin job_a = ea[0]; job_bsel = 3'd2; job_neg = ethr[0]; job_acc = 1'b0; end
+            4'd1: begin job_a = eb[0]; job_bsel = 3'd3; job_neg = ethr[0]; end
+            4'd2: begin job_a = ea[1]; job_bsel = 3'd2; job_acc = 1'b0; end
+            4'd3: begin job_a = eb[1]; job_bsel = 3'd3; end
+            4'd4: begin job_a = eb[0]; job_bsel = 3'd0; end
+            4'd5: begin job_neg = !ethr[1]; end
+            4'd6: begin job_a = ea[2]; job_bsel = 3'd2; job_neg = ethr[2]; job_acc = 1'b0; end
+            4'd7: begin job_bsel = 3'd3; job_neg = ethr[2]; end
+            default: begin
+              job_a    = j[0] ? eb[j[2:1]] : ea[j[2:1]];
+              job_bsel = 3'd4;
+              job_neg  = ethr[j[2:1]];
+              job_acc  = 1'b0;
+            end
           endcase
         end
       endcase
     end
     assign job_req   = (state_q == StDet0) || (state_q == StDet1) || (state_q == StEdges);
     assign emul_done = job_done;
+    // Words for the plane RAM: E_k where its last product is done (j 1, 5, 7: start, plane k),
+    // and the gradients (j 8 .. 13: g_x for a, g_y for b, plane j[2:1]).
+    assign job_we   = job_done && (state_q == StEdges) &&
+                      ((j == 4'd1) || (j == 4'd5) || (j == 4'd7) || j[3]);
+    assign job_wsel = j[3] ? {1'b0, j[0]} : 2'd2;
+    assign job_widx = j[3] ? j[2:1] : (j == 4'd1) ? 2'd0 : (j == 4'd5) ? 2'd1 : 2'd2;
     assign part_sum  = $signed(job_sum);
     logic unused_det;
     assign unused_det = ^{det_q, part_q, edge_half_q};
@@ -661,7 +683,8 @@ module htx_raster_setup #(
     assign job_done  = 1'b0;  // (setup's own multiplier: g_edge_mul)
     assign job_sum   = '0;
     logic unused_jobs;
-    assign unused_jobs = ^{job_req, job_neg, job_acc, job_a, job_bsel};
+    assign unused_jobs = ^{job_req, job_neg, job_acc, job_a, job_bsel,
+                          job_we, job_wsel, job_widx};
     assign ua_take   = 1'b0;
     assign va_take   = 1'b0;
     assign ld_req    = 1'b0;
@@ -812,9 +835,11 @@ module htx_raster_setup #(
     // Each plane's three words go to the traversal's plane RAM as the unit forms them: gx,
     // gy, start, each in the clock its product is done. (Planes not built are not written; the
     // traversal steps whatever its RAM holds there, which nothing reads.)
-    assign pl_we_o   = s_wwe;
-    assign pl_sel_o  = s_wsel;
-    assign pl_idx_o  = (FoldUv && (s_idx >= 4'd7)) ? s_idx - 4'd2 : s_idx;
+    // The edges' words (jobs) at 0..2, the planes' from 3 on.
+    assign pl_we_o   = s_wwe || job_we;
+    assign pl_sel_o  = job_we ? job_wsel : s_wsel;
+    assign pl_idx_o  = job_we ? {2'b00, job_widx}
+                     : (FoldUv && (s_idx >= 4'd7)) ? s_idx + 4'd1 : s_idx + 4'd3;
     assign pl_data_o = (AW+1)'(s_word);
     // Full-precision gradients of uq, vq (GWU bits) and q (GWQ bits, sign-extended) for the LOD unit.
     logic [GWU-1:0] lgx_q [3];
@@ -1133,11 +1158,12 @@ module htx_raster_setup #(
           else state_q <= StEdges;
         end
         StEdges: if (emul_done && SharedPlanes) begin
-          // Jobs 1, 5, 7 end an edge (g_edge_jobs).
-          if (edge_k_q == 3'd1) e_q[0] <= part_sum;
-          if (edge_k_q == 3'd5) e_q[1] <= part_sum;
-          if (edge_k_q == 3'd7) begin
-            e_q[2]        <= part_sum;
+          // Jobs 1, 5, 7 end an edge, 13 the gradients (g_edge_jobs). (Only the signs of e_q are
+          // taken: the values go to the plane RAM.)
+          if (edge_k_q == 4'd1) e_q[0] <= part_sum;
+          if (edge_k_q == 4'd5) e_q[1] <= part_sum;
+          if (edge_k_q == 4'd7) e_q[2] <= part_sum;
+          if (edge_k_q == 4'd13) begin
             plane_start_q <= 1'b1;
             state_q       <= StWait;
           end

@@ -9,10 +9,15 @@
 // SerialRowBase = 1 (`icebreaker`) forms the first row's framebuffer offset y_lo * stride by shift
 // and add, one bit of y_lo per clock (13 clocks per triangle), instead of with a multiplier (a DSP).
 // SerialPlanes = 1 (`icebreaker`) keeps the plane accumulators in one block RAM and steps them one
-// plane a clock on one adder: a step costs NP clocks (a row end after a span 2 NP), not one.
+// plane a clock on one adder: a step costs NP + 3 clocks (the edges are planes there too), not one.
 // The row's saved copy needs no copy: the RAM holds two banks, and the step that leaves a span's
 // first pixel writes the other bank, so the bank it leaves keeps that pixel's values. Setup then
-// writes the planes into that RAM (pl_*_i) instead of handing them over on tri_p_i.
+// writes the planes into that RAM (pl_*_i) instead of handing them over on tri_p_i. The three edge
+// functions are planes of that RAM too (indices 0..2, before the NP attribute planes: a the
+// gradient in x, b in y, the value at the first pixel the start), stepped by the same adder in the
+// same pass, so a step costs NP + 3 clocks and the traversal keeps only their signs. Without a look
+// at x + 1, a span is left by stepping right once past it: the pass that captures a pixel steps to
+// the next one and learns from the signs whether the pixel was its span's last.
 // The covered set is exactly the model's: E_k >= threshold_k for all k, cov the clipped box.
 // Each fragment carries its plane values (NP planes, modulo 2^AW), the triangle's sideband (state,
 // flat colour, texel offsets, LOD gradients) and whether it is its span's first or last pixel.
@@ -36,13 +41,14 @@ module htx_raster_traverse #(
   output logic              tri_ready_o,
   input  logic [SideW-1:0]  tri_side_i,
   input  logic [12:0]       tri_x_lo_i, tri_x_hi_i, tri_y_lo_i, tri_y_hi_i,
-  input  logic [3*DW-1:0]   tri_a_i, tri_b_i,
+  input  logic [3*DW-1:0]   tri_a_i, tri_b_i,  // (SerialPlanes: only a's sign and zero)
   input  logic [2:0]        tri_thr_i,
   input  logic              tri_dneg_i,  // det < 0: the edges are to be taken reversed
-  input  logic [3*EW-1:0]   tri_e_i,
+  input  logic [3*EW-1:0]   tri_e_i,     // (SerialPlanes: only the signs)
   input  logic [3*NP*AW-1:0] tri_p_i,
   // SerialPlanes: the planes come instead through this write port into the plane RAM (setup's
-  // pl_*_o: 0 gx, 1 gy, 2 start of plane idx); a write holds the traversal for that clock.
+  // pl_*_o: 0 gx, 1 gy, 2 start of plane idx; the edges k at idx k, the attribute planes p at
+  // p + 3); a write holds the traversal for that clock.
   input  logic              pl_we_i,
   input  logic [1:0]        pl_sel_i,
   input  logic [3:0]        pl_idx_i,
@@ -79,59 +85,31 @@ module htx_raster_traverse #(
   logic [3:0]              base_n_q;   // SerialRowBase: bits left
   logic [2:0]              thr_q;
   logic                    dneg_q;
-  logic signed [DW-1:0]    a_q [3];
-  logic signed [DW-1:0]    b_q [3];
-  logic signed [EW-1:0]    e_q [3];
-  logic signed [EW-1:0]    es_q [3];
   logic                    sweep_q;   // SerialPlanes: the planes are being stepped (0 otherwise)
   logic                    hold;      // SerialPlanes: setup writes the plane RAM; nothing moves
-  logic [2:0]              la_q;      // SerialPlanes: coverage of x + 1 by each edge
-  logic                    la_valid_q;  // SerialPlanes: la_q is for the current e_q
   logic                    load_last; // SerialPlanes: StLoad copies the last gradient
   logic                    accept;    // the triangle is taken this clock
+  logic [2:0]              esgn_we;   // SerialPlanes: the pass writes edge k's new value ...
+  logic                    esgn_d;    // ... whose sign bit is this
 
   // ---- Coverage at x - 1, x, x + 1 ---------------------------------------------------------------
-  logic signed [EW-1:0] step_a [3];
-  logic signed [EW-1:0] step_b [3];
-  logic [2:0] in_cur, in_prev_e, in_next_e, fail_pos, fail_neg, fail_zero;
+  logic [2:0] in_cur, in_prev_e, in_next_e, fail_pos, fail_neg, fail_zero, a_neg, a_zero;
   // An edge value covers its pixel: E >= 0, and E > 0 where the edge's threshold is 1. Setup
   // delivers an edge whose threshold is 1 negated (-E; its steps subtract), so both tests are a
   // sign: E >= 0 is a clear sign bit of E, E >= 1 a set sign bit of -E. No comparison with zero.
   // A triangle with det < 0 comes with its edges as given, where the model reverses them
   // (E' = -E, threshold' = 1 - threshold): the stored value is then the same and only the sign
   // tested flips (pol).
-  function automatic logic covers(input logic signed [EW-1:0] e, input logic pol);
-    covers = (e[EW-1] == pol);
-  endfunction
   logic [2:0] pol;
   assign pol = thr_q ^ {3{dneg_q}};
   for (genvar k = 0; k < 3; k++) begin : g_cov
-    assign step_a[k] = EW'(a_q[k]) <<< 8;
-    assign step_b[k] = EW'(b_q[k]) <<< 8;
-    assign in_cur[k]    = covers(e_q[k], pol[k]);
-    if (SerialPlanes) begin : g_next_la
-      // Registered: the edge's step adder computes e + 256 a in a clock without a step (below).
-      assign in_next_e[k] = la_q[k];
-    end else begin : g_next_add
-      logic signed [EW-1:0] en;
-      assign en = thr_q[k] ? e_q[k] - step_a[k] : e_q[k] + step_a[k];
-      assign in_next_e[k] = covers(en, pol[k]);
-    end
-    if (LookBehind) begin : g_prev
-      logic signed [EW-1:0] ep;
-      assign ep = thr_q[k] ? e_q[k] + step_a[k] : e_q[k] - step_a[k];
-      assign in_prev_e[k] = covers(ep, pol[k]);
-    end else begin : g_no_prev
-      assign in_prev_e[k] = 1'b0;
-    end
     // Coverage grows to the right where a > 0 (a < 0 for a reversed edge).
     // (Sign and zero tests, not comparisons: Yosys 0.23 builds those as carry chains.)
-    logic a_neg, a_pos;
-    assign a_neg = a_q[k][DW-1];
-    assign a_pos = !a_q[k][DW-1] && (a_q[k] != 0);
-    assign fail_pos[k]  = !in_cur[k] && (dneg_q ? a_neg : a_pos);
-    assign fail_neg[k]  = !in_cur[k] && (dneg_q ? a_pos : a_neg);
-    assign fail_zero[k] = !in_cur[k] && (a_q[k] == 0);
+    logic a_pos;
+    assign a_pos = !a_neg[k] && !a_zero[k];
+    assign fail_pos[k]  = !in_cur[k] && (dneg_q ? a_neg[k] : a_pos);
+    assign fail_neg[k]  = !in_cur[k] && (dneg_q ? a_pos : a_neg[k]);
+    assign fail_zero[k] = !in_cur[k] && a_zero[k];
   end
 
   // Two magnitude comparisons and two equalities give every relation of x to the box's columns
@@ -190,23 +168,27 @@ module htx_raster_traverse #(
         end
       end
       StEmit: begin
-        emit = 1'b1;
-        act  = in_next ? ActRight : ActRowSaved;
+        if (SerialPlanes && !cov) begin
+          act = ActRowSaved;  // stepped past the span's end: the next row from its first pixel
+        end else begin
+          emit = 1'b1;
+          act  = (SerialPlanes || in_next) ? ActRight : ActRowSaved;
+        end
       end
       default: ;
     endcase
     if (start_span) begin
       emit  = 1'b1;
       first = 1'b1;
-      if (in_next) begin
+      if (SerialPlanes || in_next) begin  // (SerialPlanes: always; its pass finds the span end)
         save = 1'b1; act = ActRight; mode_next = StEmit;
       end else begin
         act = ActRowCur;
       end
     end
-    if (SerialPlanes && (sweep_q || hold || !la_valid_q)) begin
-      // The planes of the last step are still being stepped, setup writes the plane RAM, or the
-      // look at x + 1 is not there yet: no decision this clock.
+    if (SerialPlanes && (sweep_q || hold)) begin
+      // The planes of the last step are still being stepped, or setup writes the plane RAM: no
+      // decision this clock.
       act = ActNone; emit = 1'b0; save = 1'b0; first = 1'b0; mode_next = state_q;
     end
     want_emit = emit;
@@ -230,45 +212,96 @@ module htx_raster_traverse #(
   assign step_row   = (act == ActRowCur) || (act == ActRowSaved);
   assign step_neg   = (act == ActLeft);
   assign step_saved = (act == ActRowSaved);
-  logic signed [EW-1:0] e_next [3];
-  for (genvar k = 0; k < 3; k++) begin : g_estep
-    htx_raster_addsub #(.W(EW), .ZeroLsbs(8)) u_step (
-      .a_i  (step_saved ? es_q[k] : e_q[k]),
-      .b_i  (step_row ? step_b[k] : step_a[k]),
-      .sub_i(step_neg ^ thr_q[k]),  // a negated edge steps the other way
-      .sum_o(e_next[k])
-    );
-  end
   // decide: the state machine acts on act, emit and save this clock; plane_step: it moves (the edges
   // and planes step).
   logic decide, plane_step;
   assign decide     = !abort_i && (state_q != StIdle) && (state_q != StLoad) && (state_q != StBase);
   assign plane_step = decide && ((act == ActLeft) || (act == ActRight) || (step_row && !last_row));
 
-  // SerialPlanes: the look at x + 1 (e + 256 a) comes from the edges' step adders in a clock in
-  // which they step nothing (act is ActNone: they compute exactly that), registered, instead of
-  // from three adders of its own. After a step it is there a clock later, inside the planes' pass.
-  if (SerialPlanes) begin : g_lookahead
-    logic [2:0] la_d;
-    for (genvar k = 0; k < 3; k++) begin : g_la
-      assign la_d[k] = covers(e_next[k], pol[k]);
+  if (!SerialPlanes) begin : g_edges_reg
+    // The edge values in registers, each stepped by an adder of its own in the deciding clock, with
+    // the row's saved copy (es_q) and combinational looks at x - 1 and x + 1.
+    logic signed [DW-1:0] a_q [3];
+    logic signed [DW-1:0] b_q [3];
+    logic signed [EW-1:0] e_q [3];
+    logic signed [EW-1:0] es_q [3];
+    logic signed [EW-1:0] e_next [3];
+    for (genvar k = 0; k < 3; k++) begin : g_edge
+      logic signed [EW-1:0] step_a, step_b, en;
+      assign step_a = EW'(a_q[k]) <<< 8;
+      assign step_b = EW'(b_q[k]) <<< 8;
+      assign in_cur[k] = (e_q[k][EW-1] == pol[k]);
+      assign en = thr_q[k] ? e_q[k] - step_a : e_q[k] + step_a;
+      assign in_next_e[k] = (en[EW-1] == pol[k]);
+      if (LookBehind) begin : g_prev
+        logic signed [EW-1:0] ep;
+        assign ep = thr_q[k] ? e_q[k] + step_a : e_q[k] - step_a;
+        assign in_prev_e[k] = (ep[EW-1] == pol[k]);
+      end else begin : g_no_prev
+        assign in_prev_e[k] = 1'b0;
+      end
+      assign a_neg[k]  = a_q[k][DW-1];
+      assign a_zero[k] = (a_q[k] == 0);
+      htx_raster_addsub #(.W(EW), .ZeroLsbs(8)) u_step (
+        .a_i  (step_saved ? es_q[k] : e_q[k]),
+        .b_i  (step_row ? step_b : step_a),
+        .sub_i(step_neg ^ thr_q[k]),  // a negated edge steps the other way
+        .sum_o(e_next[k])
+      );
     end
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
-        la_q       <= '0;
-        la_valid_q <= 1'b0;
-      end else if (accept || plane_step) begin
-        la_valid_q <= 1'b0;  // e_q changes
-      end else if (act == ActNone) begin
-        la_q       <= la_d;
-        la_valid_q <= 1'b1;
+        for (int k = 0; k < 3; k++) begin
+          a_q[k] <= '0; b_q[k] <= '0; e_q[k] <= '0; es_q[k] <= '0;
+        end
+      end else if (abort_i) begin
+        // (nothing: a new triangle loads them all)
+      end else if (accept) begin
+        for (int k = 0; k < 3; k++) begin
+          a_q[k] <= tri_a_i[DW*k +: DW];
+          b_q[k] <= tri_b_i[DW*k +: DW];
+          e_q[k] <= tri_e_i[EW*k +: EW];
+        end
+      end else if (decide) begin
+        if (save) for (int k = 0; k < 3; k++) es_q[k] <= e_q[k];
+        if (plane_step) for (int k = 0; k < 3; k++) e_q[k] <= e_next[k];
       end
     end
-  end else begin : g_no_lookahead
-    assign la_q       = '0;
-    assign la_valid_q = 1'b1;
-    logic unused_la;
-    assign unused_la = ^la_q;
+    logic unused_esgn;
+    assign unused_esgn = ^{esgn_we, esgn_d};
+  end else begin : g_edges_ram
+    // The edges are planes 0..2 of the plane RAM (g_planes_ser steps them); only their signs are
+    // kept, as the pass writes each new value (esgn_*), and a's sign and zero for the seek's
+    // direction. No look at x + 1: the decisions step right past a span's end instead.
+    logic [2:0] sgn_q, aneg_q, azero_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        sgn_q   <= '0;
+        aneg_q  <= '0;
+        azero_q <= '0;
+      end else if (accept) begin
+        for (int k = 0; k < 3; k++) begin
+          sgn_q[k]   <= tri_e_i[EW*k + EW - 1];
+          aneg_q[k]  <= tri_a_i[DW*k + DW - 1];
+          azero_q[k] <= (tri_a_i[DW*k +: DW] == '0);
+        end
+      end else begin
+        for (int k = 0; k < 3; k++) if (esgn_we[k]) sgn_q[k] <= esgn_d;
+      end
+    end
+    assign in_cur    = ~(sgn_q ^ pol);
+    assign in_next_e = '0;
+    assign in_prev_e = '0;
+    assign a_neg     = aneg_q;
+    assign a_zero    = azero_q;
+    logic [3*EW-1:0] e_rest;
+    logic [3*DW-1:0] a_rest;
+    for (genvar k = 0; k < 3; k++) begin : g_rest
+      assign e_rest[EW*k +: EW] = {1'b0, tri_e_i[EW*k +: EW-1]};
+      assign a_rest[DW*k +: DW] = {1'b0, tri_a_i[DW*k +: DW-1]};
+    end
+    logic unused_tri;
+    assign unused_tri = ^{tri_b_i, e_rest, a_rest};
   end
 
   // ---- State -----------------------------------------------------------------------------------
@@ -288,9 +321,6 @@ module htx_raster_traverse #(
       base_n_q   <= '0;
       thr_q      <= '0;
       dneg_q     <= 1'b0;
-      for (int k = 0; k < 3; k++) begin
-        a_q[k] <= '0; b_q[k] <= '0; e_q[k] <= '0; es_q[k] <= '0;
-      end
     end else if (abort_i) begin
       state_q <= StIdle;
     end else if ((state_q == StIdle) || (state_q == StLoad)) begin
@@ -313,11 +343,6 @@ module htx_raster_traverse #(
         end
         thr_q      <= tri_thr_i;
         dneg_q     <= tri_dneg_i;
-        for (int k = 0; k < 3; k++) begin
-          a_q[k] <= tri_a_i[DW*k +: DW];
-          b_q[k] <= tri_b_i[DW*k +: DW];
-          e_q[k] <= tri_e_i[EW*k +: EW];
-        end
         state_q <= SerialRowBase ? StBase : StSeek;
       end
     end else if (SerialRowBase && (state_q == StBase)) begin
@@ -328,14 +353,10 @@ module htx_raster_traverse #(
       if (base_n_q == 4'd1) state_q <= StSeek;
     end else begin
       if (emit) tnew_q <= 1'b0;
-      if (save) begin
-        xs_q <= x_q;
-        for (int k = 0; k < 3; k++) es_q[k] <= e_q[k];
-      end
+      if (save) xs_q <= x_q;
       unique case (act)
         ActLeft, ActRight: begin
           x_q <= (act == ActRight) ? x_q + 1'b1 : x_q - 1'b1;
-          for (int k = 0; k < 3; k++) e_q[k] <= e_next[k];
           state_q <= mode_next;
         end
         ActRowCur, ActRowSaved: begin
@@ -345,7 +366,6 @@ module htx_raster_traverse #(
             y_q        <= y_q + 1'b1;
             row_base_q <= row_base_q + AddrW'(stride_i);
             if (act == ActRowSaved) x_q <= xs_q;
-            for (int k = 0; k < 3; k++) e_q[k] <= e_next[k];
             state_q <= StSeek;
           end
         end
@@ -355,7 +375,7 @@ module htx_raster_traverse #(
   end
 
   // ---- Planes ----------------------------------------------------------------------------------
-  logic out_load;
+  logic out_load, out_last;  // the fragment is complete; it is its span's last
   logic [NP*AW-1:0] out_p_q;
 
   if (!SerialPlanes) begin : g_planes_par
@@ -402,23 +422,28 @@ module htx_raster_traverse #(
     assign hold      = 1'b0;
     assign load_last = 1'b1;
     assign out_load  = decide && emit;
+    assign out_last  = !in_next;
+    assign esgn_we   = '0;
+    assign esgn_d    = 1'b0;
     logic unused_pl;
     assign unused_pl = ^{pl_we_i, pl_sel_i, pl_idx_i, pl_data_i};
   end else begin : g_planes_ser
-    // The planes in one block RAM, stepped one a clock on one adder. Its regions (the top address
-    // bits): 1 the second bank of accumulators, 2 and 3 the gradients g_x and g_y that setup
-    // writes there for the next triangle, 4 and 5 the start values, which setup writes into the
-    // one the current triangle does not use and which are then that triangle's first bank of
-    // accumulators. StLoad copies the gradients into registers (2 NP + 1 clocks), then takes the
-    // triangle.
-    // The register after the RAM always holds plane 0 of the current bank when a pixel is decided,
-    // so the deciding clock captures or steps plane 0 itself, and planes 1 .. NP-1 follow one a
-    // clock (a pass): NP clocks a step. A pass may capture the values into the fragment (the decided
-    // pixel's), step them (write), or both. A row end after a span takes two passes: capture the
-    // pixel from the current bank, then step the saved bank's values into the current one.
-    // A clock in which setup writes (hold) changes nothing here. (NP >= 2.)
-    localparam int unsigned IW = $clog2(NP);
-    if (IW < 4) begin : g_idx_unused  // (seven planes: setup's index never reaches 8)
+    // The edges and planes in one block RAM, stepped one a clock on one adder: the three edges at
+    // indices 0..2, then the NP attribute planes. Its regions (the top address bits): 1 the
+    // second bank of values, 2 and 3 the gradients (a, b of the edges; g_x, g_y of the planes)
+    // that setup writes there for the next triangle, 4 and 5 the start values, which setup writes
+    // into the one the current triangle does not use and which are then that triangle's first bank.
+    // StLoad copies the gradients into registers (2 NR + 1 clocks), then takes the triangle.
+    // The register after the RAM holds word 0 of the bank the next decision steps from, so the
+    // deciding clock steps edge 0 itself and the other NR - 1 words follow one a clock (a pass):
+    // NR clocks a step. Every pass steps (writes); a pass that leaves an emitted pixel also
+    // captures its plane values into the fragment, and by its end the edges' signs tell whether the
+    // next pixel is covered, that is whether the emitted one was its span's last. A row end after
+    // a span steps the saved bank's values into the current one.
+    // A clock in which setup writes (hold) changes nothing here.
+    localparam int unsigned NR = NP + 3;
+    localparam int unsigned IW = $clog2(NR);
+    if (IW < 4) begin : g_idx_unused
       logic unused_idx;
       assign unused_idx = ^pl_idx_i[3:IW];
     end
@@ -426,49 +451,49 @@ module htx_raster_traverse #(
     // Setup writes a triangle's start values into one of two regions (RegSt + parity), and that
     // region is the triangle's bank 0, so StLoad copies only the gradients. par_q is the parity of
     // the triangle taken last; setup's words go to the other region (the next triangle's). Setup
-    // writes a triangle's planes only after the traversal took the one before.
+    // writes a triangle's words only after the traversal took the one before.
     logic          par_q;
     function automatic logic [2:0] bank_reg(input logic b, input logic par);
       bank_reg = b ? 3'd1 : (RegSt | {2'b00, par});
     endfunction
-    // The gradients in two rings of registers that turn by one plane each clock of a pass (a pass
-    // turns them all the way round), so plane c_idx's are always at the front: no multiplexer
-    // over the planes. StLoad shifts them in at the back in plane order.
-    logic [AW-1:0] gx_q [NP];
-    logic [AW-1:0] gy_q [NP];
-    // A word is AW + 1 bits: an accumulator at [AW-1:0], a gradient from setup at [AW:1] (the
-    // plane unit's word with the bit below g, taken here by wiring).
+    // The gradients in two rings of registers that turn by one word each clock of a pass (a pass
+    // turns them all the way round), so word c_idx's are always at the front: no multiplexer
+    // over them. StLoad shifts them in at the back in order.
+    logic [AW-1:0] gx_q [NR];
+    logic [AW-1:0] gy_q [NR];
+    // A word is AW + 1 bits: a value at [AW-1:0], a gradient from setup at [AW:1] (the plane
+    // unit's word with the bit below g, taken here by wiring).
     (* ram_style = "block" *) logic [AW:0] mem_q [2**(IW+3)];
     logic [AW:0]   base_q;
     logic [AW-1:0] sum, grad;
     logic [IW-1:0] idx_q;
     logic [IW+2:0] raddr, waddr;
-    logic          cur_q;                      // bank of the current pixel's values
-    logic          rd_bank_q, wr_bank_q;       // the pass's banks
-    logic          cap_q, wr_q, row_q, neg_q;  // the pass captures, writes, steps a row, subtracts
-    logic          more_q;                     // a stepping pass from the saved bank follows
-    logic          start_pass, active, pass_end;
-    // StLoad: the word read (region, plane) and the word arriving in base_q.
+    logic          cur_q;                 // bank of the current pixel's values
+    logic          rd_bank_q, wr_bank_q;  // the pass's banks
+    logic          cap_q, row_q, neg_q;   // the pass captures, steps a row, subtracts
+    logic          start_pass, active, pass_end, rd_saved;
+    // StLoad: the word read (region, index) and the word arriving in base_q.
     logic [2:0]    ld_reg_q, got_reg_q;
     logic [IW-1:0] ld_p_q, got_p_q;
     logic          got_q, loading;
     logic          gx_turn, gy_turn;
-    // This clock's plane and what is done with it: the pass's registers, or in the deciding clock
+    // This clock's word and what is done with it: the pass's registers, or in the deciding clock
     // the decision itself.
     logic [IW-1:0] c_idx;
-    logic          c_cap, c_wr, c_wr_bank, c_row, c_neg;
+    logic          c_cap, c_wr_bank, c_row, c_neg;
 
     assign hold       = pl_we_i;
     assign loading    = (state_q == StLoad) && !hold;
-    assign start_pass = !hold && !sweep_q && ((decide && emit) || plane_step);
+    assign start_pass = !hold && !sweep_q && plane_step;
     assign active     = !hold && (sweep_q || start_pass);
-    assign pass_end   = !hold && sweep_q && (idx_q == IW'(NP - 1));
+    assign pass_end   = !hold && sweep_q && (idx_q == IW'(NR - 1));
     assign c_idx      = sweep_q ? idx_q : '0;
     assign c_cap      = sweep_q ? cap_q : emit;
-    assign c_wr       = sweep_q ? wr_q : !step_saved;
     assign c_wr_bank  = sweep_q ? wr_bank_q : (save ? !cur_q : cur_q);
     assign c_row      = sweep_q ? row_q : step_row;
     assign c_neg      = sweep_q ? neg_q : step_neg;
+    // The next decision steps the row from the saved bank: the walk stepped past a span's end.
+    assign rd_saved   = (state_q == StEmit) && !cov;
 
     assign grad    = c_row ? gy_q[0] : gx_q[0];
     assign gx_turn = active || (loading && got_q && (got_reg_q == RegGx));
@@ -479,16 +504,19 @@ module htx_raster_traverse #(
       .sub_i(c_neg),
       .sum_o(sum)
     );
+    // The edges' new signs, as their words are written.
+    for (genvar k = 0; k < 3; k++) begin : g_esgn
+      assign esgn_we[k] = active && (c_idx == IW'(k));
+    end
+    assign esgn_d = sum[AW-1];
 
-    // Read: StLoad's next word; the pass's next plane; at a pass's end plane 0 of the bank read
-    // next (the saved one when a stepping pass follows, else the current one, ready for the next
-    // decision).
+    // Read: StLoad's next word; the pass's next word; otherwise (between passes, and at a pass's
+    // end) word 0 of the bank the next decision steps from.
     always_comb begin
-      if (state_q == StLoad) raddr = {ld_reg_q, ld_p_q};
-      else if (start_pass)   raddr = {bank_reg(cur_q, par_q), IW'(1)};
-      else if (pass_end)     raddr = {bank_reg(more_q ? !cur_q : cur_q, par_q), IW'(0)};
-      else if (sweep_q)      raddr = {bank_reg(rd_bank_q, par_q), idx_q + 1'b1};
-      else                   raddr = {bank_reg(cur_q, par_q), IW'(0)};
+      if (state_q == StLoad)         raddr = {ld_reg_q, ld_p_q};
+      else if (start_pass)           raddr = {bank_reg(step_saved ? !cur_q : cur_q, par_q), IW'(1)};
+      else if (sweep_q && !pass_end) raddr = {bank_reg(rd_bank_q, par_q), idx_q + 1'b1};
+      else                           raddr = {bank_reg(rd_saved ? !cur_q : cur_q, par_q), IW'(0)};
     end
     // Write: setup's words (start values into the next triangle's region); the steps.
     logic          we;
@@ -500,7 +528,7 @@ module htx_raster_traverse #(
                  IW'(pl_idx_i)};  // pl_sel_i: 0 g_x, 1 g_y, 2 start
         wdata = pl_data_i;
       end else begin
-        we    = active && c_wr;
+        we    = active;
         waddr = {bank_reg(c_wr_bank, par_q), c_idx};
         wdata = {1'b0, sum};
       end
@@ -518,10 +546,8 @@ module htx_raster_traverse #(
         rd_bank_q <= 1'b0;
         wr_bank_q <= 1'b0;
         cap_q     <= 1'b0;
-        wr_q      <= 1'b0;
         row_q     <= 1'b0;
         neg_q     <= 1'b0;
-        more_q    <= 1'b0;
         ld_reg_q  <= RegGx;
         ld_p_q    <= '0;
         got_reg_q <= RegGx;
@@ -529,7 +555,7 @@ module htx_raster_traverse #(
         got_q     <= 1'b0;
         par_q     <= 1'b1;  // the first triangle's start values go to region RegSt
         out_p_q   <= '0;
-        for (int p = 0; p < NP; p++) begin
+        for (int p = 0; p < NR; p++) begin
           gx_q[p] <= '0; gy_q[p] <= '0;
         end
       end else if (abort_i) begin
@@ -542,14 +568,14 @@ module htx_raster_traverse #(
         if (state_q == StIdle) cur_q <= 1'b0;  // bank 0 holds the start values
         if (load_last) par_q <= !par_q;
         if (loading) begin
-          // Read g_x of every plane, then g_y; each arrives a clock later.
+          // Read g_x of every word, then g_y; each arrives a clock later.
           got_q     <= !load_last;
           got_reg_q <= ld_reg_q;
           got_p_q   <= ld_p_q;
           if (load_last) begin
             ld_reg_q <= RegGx;
             ld_p_q   <= '0;
-          end else if (ld_p_q == IW'(NP - 1)) begin
+          end else if (ld_p_q == IW'(NR - 1)) begin
             ld_p_q   <= '0;
             // (load_last resets it anyway; wrapping here keeps the read address inside the two
             // gradient regions, which synthesis uses: 10,437 LUT4 without it, 10,381 with it.)
@@ -561,54 +587,41 @@ module htx_raster_traverse #(
         // The rings turn: in a pass each front goes to the back; in StLoad the word read enters
         // at the back of its ring.
         if (gx_turn) begin
-          for (int p = 0; p < NP - 1; p++) gx_q[p] <= gx_q[p+1];
-          gx_q[NP-1] <= active ? gx_q[0] : base_q[AW:1];
+          for (int p = 0; p < NR - 1; p++) gx_q[p] <= gx_q[p+1];
+          gx_q[NR-1] <= active ? gx_q[0] : base_q[AW:1];
         end
         if (gy_turn) begin
-          for (int p = 0; p < NP - 1; p++) gy_q[p] <= gy_q[p+1];
-          gy_q[NP-1] <= active ? gy_q[0] : base_q[AW:1];
+          for (int p = 0; p < NR - 1; p++) gy_q[p] <= gy_q[p+1];
+          gy_q[NR-1] <= active ? gy_q[0] : base_q[AW:1];
         end
         for (int p = 0; p < NP; p++) begin
-          if (active && c_cap && (c_idx == IW'(p))) out_p_q[AW*p +: AW] <= base_q[AW-1:0];
+          if (active && c_cap && (c_idx == IW'(p + 3))) out_p_q[AW*p +: AW] <= base_q[AW-1:0];
         end
         if (start_pass) begin
           // The pass goes on as its deciding clock began it (c_*).
           sweep_q   <= 1'b1;
           idx_q     <= IW'(1);
-          rd_bank_q <= cur_q;
+          rd_bank_q <= step_saved ? !cur_q : cur_q;
           cap_q     <= c_cap;
           row_q     <= c_row;
           neg_q     <= c_neg;
-          wr_q      <= c_wr;
           wr_bank_q <= c_wr_bank;
-          // A row end after a span captures first; its step from the saved bank follows.
-          more_q    <= step_saved && !last_row;
           // Leaving a span's first pixel: the step goes to the other bank, which becomes the
           // current one; the bank left behind keeps the first pixel's values for the next row.
           if (save) cur_q <= !cur_q;
         end else if (pass_end) begin
-          idx_q <= '0;
-          if (more_q) begin
-            // The row end's stepping pass: the saved bank's values plus 256 g_y, into the current.
-            more_q    <= 1'b0;
-            rd_bank_q <= !cur_q;
-            wr_bank_q <= cur_q;
-            cap_q     <= 1'b0;
-            wr_q      <= 1'b1;
-            row_q     <= 1'b1;
-            neg_q     <= 1'b0;
-          end else begin
-            sweep_q <= 1'b0;
-          end
+          idx_q   <= '0;
+          sweep_q <= 1'b0;
         end else if (active) begin
           idx_q <= idx_q + 1'b1;
         end
       end
     end
-    // The last word (plane NP-1's g_y) arrives and enters its ring: the triangle is taken.
-    assign load_last = loading && got_q && (got_reg_q == RegGy) && (got_p_q == IW'(NP - 1));
-    // The fragment is complete when its capture pass ends.
+    // The last word (word NR-1's g_y) arrives and enters its ring: the triangle is taken.
+    assign load_last = loading && got_q && (got_reg_q == RegGy) && (got_p_q == IW'(NR - 1));
+    // The fragment is complete when its capture pass ends; the edges' signs are the next pixel's.
     assign out_load  = pass_end && cap_q;
+    assign out_last  = !cov;
     logic unused_tri_p;
     assign unused_tri_p = ^tri_p_i;
   end
@@ -633,14 +646,16 @@ module htx_raster_traverse #(
       out_valid_q <= 1'b0;
     end else begin
       if (frag_ready_i) out_valid_q <= 1'b0;
-      if (out_load) out_valid_q <= 1'b1;
+      if (out_load) begin
+        out_valid_q <= 1'b1;
+        out_last_q  <= out_last;
+      end
       if (emit) begin
         out_x_q     <= 13'(x_q);
         out_y_q     <= y_q;
         out_addr_q  <= row_base_q + AddrW'(x_q);
         out_side_q  <= side_q;
         out_first_q <= first;
-        out_last_q  <= !in_next;
         out_tfirst_q <= tnew_q;
       end
     end
