@@ -199,7 +199,7 @@ module htx_raster #(
   logic [31:0]        tri_state, tri_flat, tri_u_off, tri_v_off;
   logic [12:0]        tri_x_lo, tri_x_hi, tri_y_lo, tri_y_hi;
   logic [3*DW-1:0]    tri_a, tri_b;
-  logic [2:0]         tri_thr;
+  logic [2:0]         tri_thr, tri_a_zero;
   logic               tri_dneg;
   logic [3*EW-1:0]    tri_e;
   logic [3*NP*AW-1:0] tri_p;
@@ -255,6 +255,7 @@ module htx_raster #(
     .tri_y_hi_o     (tri_y_hi),
     .tri_a_o        (tri_a),
     .tri_b_o        (tri_b),
+    .tri_a_zero_o   (tri_a_zero),
     .tri_thr_o      (tri_thr),
     .tri_dneg_o     (tri_dneg),
     .tri_e_o        (tri_e),
@@ -324,6 +325,7 @@ module htx_raster #(
     .tri_y_hi_i      (tri_y_hi),
     .tri_a_i         (tri_a),
     .tri_b_i         (tri_b),
+    .tri_a_zero_i    (tri_a_zero),
     .tri_thr_i       (tri_thr),
     .tri_dneg_i      (tri_dneg),
     .tri_e_i         (tri_e),

@@ -81,6 +81,7 @@ module htx_raster_setup #(
   output logic [31:0]          tri_flat_rgba_o,
   output logic [12:0]          tri_x_lo_o, tri_x_hi_o, tri_y_lo_o, tri_y_hi_o,
   output logic [3*DW-1:0]      tri_a_o, tri_b_o,
+  output logic [2:0]           tri_a_zero_o,  // a_k = 0
   output logic [2:0]           tri_thr_o,     // of the edges as given (see tri_dneg_o)
   output logic                 tri_dneg_o,    // det < 0: the model's edges are these reversed
   output logic [3*EW-1:0]      tri_e_o,
@@ -236,7 +237,7 @@ module htx_raster_setup #(
   // setup swaps nothing: no vertex multiplexers.
   logic signed [DW-1:0] ea [3];
   logic signed [DW-1:0] eb [3];
-  logic [2:0]           ethr;
+  logic [2:0]           ethr, ea_zero;
   for (genvar k = 0; k < 3; k++) begin : g_edge
     localparam int unsigned K1 = (k + 1) % 3;
     logic signed [DW-1:0] edx;
@@ -248,7 +249,8 @@ module htx_raster_setup #(
     // right a top edge; pixel centres exactly on them belong to this triangle (threshold 0).
     // (Signs and zero tests rather than "> 0": Yosys 0.23 builds a comparison as a carry chain,
     // a LUT and a carry a bit; docs/area.md.)
-    assign ethr[k] = !((!ea[k][DW-1] && (ea[k] != 0)) || ((ea[k] == 0) && !edx[DW-1] && (edx != 0)));
+    assign ea_zero[k] = (ea[k] == 0);
+    assign ethr[k] = !((!ea[k][DW-1] && !ea_zero[k]) || (ea_zero[k] && !edx[DW-1] && (edx != 0)));
   end
 
   // The vertex deltas are edge coefficients: dx1 = x1 - x0 = b_0 and dy2 = y2 - y0 = a_2, and dy1,
@@ -1213,6 +1215,7 @@ module htx_raster_setup #(
   assign tri_u_off_o = u_off_v;
   assign tri_v_off_o = v_off_v;
   assign tri_thr_o = ethr;
+  assign tri_a_zero_o = ea_zero;
   assign tri_dneg_o = det_neg_q;
   assign busy_o    = (state_q != StIdle) && (state_q != StOut);
   assign stall_o   = (state_q == StOut) && !tri_ready_i;

@@ -41,7 +41,8 @@ module htx_raster_traverse #(
   output logic              tri_ready_o,
   input  logic [SideW-1:0]  tri_side_i,
   input  logic [12:0]       tri_x_lo_i, tri_x_hi_i, tri_y_lo_i, tri_y_hi_i,
-  input  logic [3*DW-1:0]   tri_a_i, tri_b_i,  // (SerialPlanes: only a's sign and zero)
+  input  logic [3*DW-1:0]   tri_a_i, tri_b_i,  // (SerialPlanes: only a's sign)
+  input  logic [2:0]        tri_a_zero_i,  // a_k = 0 (setup has the test for the threshold)
   input  logic [2:0]        tri_thr_i,
   input  logic              tri_dneg_i,  // det < 0: the edges are to be taken reversed
   input  logic [3*EW-1:0]   tri_e_i,     // (SerialPlanes: only the signs)
@@ -226,6 +227,8 @@ module htx_raster_traverse #(
     logic signed [EW-1:0] e_q [3];
     logic signed [EW-1:0] es_q [3];
     logic signed [EW-1:0] e_next [3];
+    logic [2:0]           azero_q;
+    assign a_zero = azero_q;
     for (genvar k = 0; k < 3; k++) begin : g_edge
       logic signed [EW-1:0] step_a, step_b, en;
       assign step_a = EW'(a_q[k]) <<< 8;
@@ -241,7 +244,6 @@ module htx_raster_traverse #(
         assign in_prev_e[k] = 1'b0;
       end
       assign a_neg[k]  = a_q[k][DW-1];
-      assign a_zero[k] = (a_q[k] == 0);
       htx_raster_addsub #(.W(EW), .ZeroLsbs(8)) u_step (
         .a_i  (step_saved ? es_q[k] : e_q[k]),
         .b_i  (step_row ? step_b : step_a),
@@ -254,9 +256,11 @@ module htx_raster_traverse #(
         for (int k = 0; k < 3; k++) begin
           a_q[k] <= '0; b_q[k] <= '0; e_q[k] <= '0; es_q[k] <= '0;
         end
+        azero_q <= '0;
       end else if (abort_i) begin
         // (nothing: a new triangle loads them all)
       end else if (accept) begin
+        azero_q <= tri_a_zero_i;
         for (int k = 0; k < 3; k++) begin
           a_q[k] <= tri_a_i[DW*k +: DW];
           b_q[k] <= tri_b_i[DW*k +: DW];
@@ -283,8 +287,8 @@ module htx_raster_traverse #(
         for (int k = 0; k < 3; k++) begin
           sgn_q[k]   <= tri_e_i[EW*k + EW - 1];
           aneg_q[k]  <= tri_a_i[DW*k + DW - 1];
-          azero_q[k] <= (tri_a_i[DW*k +: DW] == '0);
         end
+        azero_q <= tri_a_zero_i;
       end else begin
         for (int k = 0; k < 3; k++) if (esgn_we[k]) sgn_q[k] <= esgn_d;
       end
