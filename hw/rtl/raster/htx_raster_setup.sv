@@ -122,7 +122,8 @@ module htx_raster_setup #(
   localparam int unsigned BoxW   = XW - 7;      // signed pixel index of a box bound
   localparam int unsigned ShiftW = 8;
 
-  typedef enum logic [2:0] {StIdle, StDet0, StDet1, StEdges, StWait, StOut} state_e;
+  // StCoef (ValuesInFifo): the edge coefficients are read from the record in the FIFO.
+  typedef enum logic [2:0] {StIdle, StCoef, StDet0, StDet1, StEdges, StWait, StOut} state_e;
 
   state_e state_q;
   logic [31:0]            st_v;      // the record's values (HoldRecord: the input stage's)
@@ -227,8 +228,9 @@ module htx_raster_setup #(
   assign pxs = (DW'(x_lo) <<< 8) + DW'(128);
   assign pys = (DW'(y_lo) <<< 8) + DW'(128);
   logic signed [DW-1:0] dxs, dys;  // the first pixel centre relative to vertex 0
-  assign dxs = pxs - DW'(x_v[0]);
-  assign dys = pys - DW'(y_v[0]);
+  logic signed [XW-1:0] x0_v, y0_v; // vertex 0
+  assign dxs = pxs - DW'(x0_v);
+  assign dys = pys - DW'(y0_v);
 
   // The edges of the triangle as given, in the order v0 v1, v1 v2, v2 v0. The model swaps v1 and v2
   // when det < 0, which reverses every edge: E' = -E and, the top-left rule being antisymmetric,
@@ -238,13 +240,92 @@ module htx_raster_setup #(
   logic signed [DW-1:0] ea [3];
   logic signed [DW-1:0] eb [3];
   logic [2:0]           ethr, ea_zero;
+  logic                 cf_req;   // ValuesInFifo: the coefficients' reader reads a word
+  logic [4:0]           cf_off;
+  logic                 cf_done;  // the coefficients are ready (a pulse; at take without a reader)
+  if (!ValuesInFifo) begin : g_coef_comb
+    // Six subtractors on the vertex registers.
+    for (genvar k = 0; k < 3; k++) begin : g_k
+      localparam int unsigned K1 = (k + 1) % 3;
+      // a = -(y_k1 - y_k), formed as y_k - y_k1: one subtractor, not a subtractor and a negation.
+      assign ea[k] = DW'(y_v[k]) - DW'(y_v[K1]);
+      assign eb[k] = DW'(x_v[K1]) - DW'(x_v[k]);
+    end
+    assign x0_v    = x_v[0];
+    assign y0_v    = y_v[0];
+    assign cf_req  = 1'b0;
+    assign cf_off  = '0;
+    assign cf_done = take && !state_bad;
+  end else begin : g_coef_read
+    // One subtractor, on the record's words in the FIFO: x0 x1 x2 x0, then y0 y2 y1 y0, a word
+    // every two clocks (ask, take). From the second word of each four on, the word minus the one
+    // before is b_0, b_1, b_2 (x_k1 - x_k), then a_2, a_1, a_0 (y_k - y_k1, read backwards), each
+    // into its register. Vertex 0 is kept for dxs, dys. 16 clocks a triangle, before the box and
+    // the determinant, which need the coefficients' signs and values.
+    logic [3:0]           cf_q;     // the word being read (0 .. 7); 8: done
+    logic                 cf_got_q; // its word is on vr_data_i
+    logic signed [XW-1:0] cf_prev_q, cf_x0_q, cf_y0_q, cf_word;
+    logic signed [DW-1:0] cf_diff;
+    logic signed [DW-1:0] ea_q [3];
+    logic signed [DW-1:0] eb_q [3];
+    logic [1:0]           cf_v;     // the vertex read
+    always_comb begin
+      unique case (cf_q[2:0])
+        3'd1, 3'd6: cf_v = 2'd1;
+        3'd2, 3'd5: cf_v = 2'd2;
+        default:    cf_v = 2'd0;
+      endcase
+    end
+    assign cf_req  = !cf_q[3] && !cf_got_q;
+    assign cf_off  = vert_word(cf_v, {3'd0, cf_q[2]});  // x: word 0 of a vertex, y: word 1
+    assign cf_word = $signed(vr_data_i[XW-1:0]);
+    assign cf_diff = DW'(cf_word) - DW'(cf_prev_q);
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        cf_q      <= 4'd8;
+        cf_got_q  <= 1'b0;
+        cf_prev_q <= '0;
+        cf_x0_q   <= '0;
+        cf_y0_q   <= '0;
+        for (int k = 0; k < 3; k++) begin ea_q[k] <= '0; eb_q[k] <= '0; end
+      end else if (abort_i) begin
+        cf_q     <= 4'd8;
+        cf_got_q <= 1'b0;
+      end else if (take && !state_bad) begin
+        cf_q     <= '0;
+        cf_got_q <= 1'b0;
+      end else if (!cf_q[3]) begin
+        cf_got_q <= !cf_got_q;
+        if (cf_got_q) begin
+          cf_prev_q <= cf_word;
+          if (cf_q == 4'd0) cf_x0_q <= cf_word;
+          if (cf_q == 4'd4) cf_y0_q <= cf_word;
+          unique case (cf_q)
+            4'd1: eb_q[0] <= cf_diff;
+            4'd2: eb_q[1] <= cf_diff;
+            4'd3: eb_q[2] <= cf_diff;
+            4'd5: ea_q[2] <= cf_diff;
+            4'd6: ea_q[1] <= cf_diff;
+            4'd7: ea_q[0] <= cf_diff;
+            default: ;
+          endcase
+          cf_q <= cf_q + 4'd1;
+        end
+      end
+    end
+    assign cf_done = (cf_q == 4'd7) && cf_got_q && !abort_i;
+    for (genvar k = 0; k < 3; k++) begin : g_k
+      assign ea[k] = ea_q[k];
+      assign eb[k] = eb_q[k];
+    end
+    assign x0_v = cf_x0_q;
+    assign y0_v = cf_y0_q;
+    logic unused_xy;
+    assign unused_xy = ^{x_v[0], x_v[1], x_v[2], y_v[0], y_v[1], y_v[2]};
+  end
   for (genvar k = 0; k < 3; k++) begin : g_edge
-    localparam int unsigned K1 = (k + 1) % 3;
     logic signed [DW-1:0] edx;
-    assign edx = DW'(x_v[K1]) - DW'(x_v[k]);
-    // a = -(y_k1 - y_k), formed as y_k - y_k1: one subtractor, not a subtractor and a negation.
-    assign ea[k] = DW'(y_v[k]) - DW'(y_v[K1]);
-    assign eb[k] = edx;
+    assign edx = eb[k];
     // y points down and inside is E > 0: an edge going up is a left edge, a horizontal edge going
     // right a top edge; pixel centres exactly on them belong to this triangle (threshold 0).
     // (Signs and zero tests rather than "> 0": Yosys 0.23 builds a comparison as a carry chain,
@@ -300,7 +381,7 @@ module htx_raster_setup #(
     assign bx_req = 1'b0;
     assign bx_off = '0;
   end else begin : g_box_read
-    // minx, maxx, miny, maxy in turn from the clock after setup takes the triangle, two clocks
+    // minx, maxx, miny, maxy in turn once the edge coefficients are read (cf_done), two clocks
     // each (ask, take), on one adder and one comparison; setup needs them only when the
     // determinant is done (tens of clocks later). They hold until the next triangle is taken.
     logic [2:0]             bx_q;      // the bound being read (0 .. 3); 4: done
@@ -331,7 +412,7 @@ module htx_raster_setup #(
       end else if (abort_i) begin
         bx_q     <= 3'd4;
         bx_got_q <= 1'b0;
-      end else if (take && !state_bad) begin
+      end else if (cf_done) begin
         bx_q     <= 3'd0;
         bx_got_q <= 1'b0;
       end else if (!bx_q[2]) begin
@@ -552,13 +633,14 @@ module htx_raster_setup #(
   end
 
   // ---- Reads of the record in the FIFO (ValuesInFifo) -----------------------------------------
-  // Three readers: the box (first, in the clocks after setup takes a triangle), AFFINE (q_i, uq_i,
-  // vq_i, after the determinant's reciprocal: never beside the box, so it is never held) and the
-  // plane values' loader, which waits while either of the others reads.
+  // Four readers: the edge coefficients (first, in the clocks after setup takes a triangle), the
+  // box (after them: it needs their signs), AFFINE (q_i, uq_i, vq_i, after the determinant's
+  // reciprocal: never beside the box, so it is never held) and the plane values' loader, which
+  // waits while either of the others reads.
   logic       av_req, ld_req;
   logic [4:0] av_off, ld_off;
-  assign vr_req_o = ValuesInFifo && (bx_req || av_req || ld_req);
-  assign vr_off_o = bx_req ? bx_off : av_req ? av_off : ld_off;
+  assign vr_req_o = ValuesInFifo && (cf_req || bx_req || av_req || ld_req);
+  assign vr_off_o = cf_req ? cf_off : bx_req ? bx_off : av_req ? av_off : ld_off;
 
   // ---- Planes: z, r, g, b, q, uq, vq, and for AFFINE ua, va -------------------------------------
   // Nine plane units working in parallel, or (Iterative, the `icebreaker` configuration) one unit
@@ -1147,8 +1229,9 @@ module htx_raster_setup #(
           plane_start_q <= !SharedPlanes;
           recip_valid_q <= 1'b0;
           redo_q        <= 1'b0;
-          state_q       <= StDet0;
+          state_q       <= ValuesInFifo ? StCoef : StDet0;
         end
+        StCoef: if (cf_done) state_q <= StDet0;
         StDet0: if (emul_done) begin part_q <= part_sum; state_q <= StDet1; end
         StDet1: if (emul_done) begin
           det_q     <= det_abs;
