@@ -741,7 +741,8 @@ module htx_raster #(
   end
 
   logic frag_busy, clearing, pixel, clear_start;
-  htx_raster_fragment #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels)) u_fragment (
+  htx_raster_fragment #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels), .Forward(!Iterative))
+  u_fragment (
     .clk_i, .rst_ni,
     .abort_i       (abort),
     .in_valid_i    (c_valid),

@@ -4,12 +4,16 @@
 // whose address equals the one written by the fragment just before it takes that written depth
 // (the RAM returned the value from before the write). The stage never stalls; x, y come in clipped
 // to the screen, and an address beyond the memory (stride x height too large) writes nothing.
+// Forward = 0 (`icebreaker`, whose fragments come several clocks apart anyway): no such bypass;
+// the stage takes no fragment in the clock after one it reads for, so every read comes after the
+// last write (a stall of one clock, instead of an address comparison and a depth multiplexer).
 // The clear fills pixels 0 .. height * stride - 1 one per clock and only starts while no fragment
 // is in flight (the top holds setup meanwhile).
 module htx_raster_fragment #(
   parameter int unsigned ZBits    = 24,
   parameter int unsigned AddrW    = 24,
-  parameter int unsigned FbPixels = 76800
+  parameter int unsigned FbPixels = 76800,
+  parameter bit          Forward  = 1'b1
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -68,7 +72,7 @@ module htx_raster_fragment #(
   assign q_b = quantise(in_rgb_i[23:16], 5);
 
   assign in_range   = htx_raster_pkg::below_const(32'(in_addr_i), 32'(AddrW'(FbPixels)));
-  assign in_ready_o = !clearing_o;
+  assign in_ready_o = !clearing_o && (Forward || !f2_valid_q);
   assign zr_en_o    = in_valid_i && in_ready_o && in_range;
   assign zr_addr_o  = in_addr_i;
 
@@ -78,7 +82,8 @@ module htx_raster_fragment #(
   logic [ZBits-1:0] last_wz_q;
   logic [ZBits-1:0] stored;
   logic             pass;
-  assign stored = (last_wz_valid_q && (last_wz_addr_q == f2_addr_q)) ? last_wz_q : zr_data_i;
+  assign stored = (Forward && last_wz_valid_q && (last_wz_addr_q == f2_addr_q)) ? last_wz_q
+                                                                               : zr_data_i;
   always_comb begin
     unique case (f2_func_q)
       3'd0: pass = 1'b0;
