@@ -87,20 +87,29 @@ uint32_t count_outside_writes(rtl::RasterSim& sim, const FbLayout& f) {
 // products: nine planes of eight products of about 27 clocks, the rounding shifts (up to 53 clocks
 // per gradient), 1/det and AFFINE's three vertex reciprocals (each normalised one bit per clock, up
 // to 46), AFFINE's six coordinate products with up to 36 shift clocks each and the LOD block shift
-// (up to 16 clocks per gradient): below 4,400 (measured 2,030 on tiny triangles, 2,562 with AFFINE).
-uint64_t setup_allowance(const std::string& config) { return config == "icebreaker" ? 5000 : 400; }
+// (up to 16 clocks per gradient): below 4,400; then the determinant and the edges as twelve jobs
+// and the edges' gradients as six more, about 29 clocks each, and 16 clocks of coefficient reads:
+// below 5,000 (measured 2,494 on tiny triangles, 3,036 with AFFINE).
+uint64_t setup_allowance(const std::string& config) { return config == "icebreaker" ? 6000 : 400; }
+
+// Clocks a traversal step may take at most. `full` steps a pixel a clock, its pipelined divider
+// keeps up and DIVFREE's walk holds it a few clocks (4). `icebreaker` steps its three edges and
+// seven planes one a clock (10), and a divided pixel may hold it longer: the serial normaliser (up
+// to 41 clocks), the Newton steps and the numerators' products (3 or 4 clocks each) (96).
+uint64_t step_clocks(const std::string& config) { return config == "icebreaker" ? 96 : 4; }
 
 // Clocks allowed for `groups` 31-word groups: each may cover the whole frame (a row costs its span
-// plus the distance its start moved, at most 2·width + 2), plus setup and the words themselves.
-uint64_t cycle_bound(uint64_t groups, const FbLayout& f, uint64_t setup_clocks) {
-  return groups * (2ull * f.width * f.height + 4ull * f.height + setup_clocks) + 5000;
+// plus the distance its start moved, at most 2·width + 2 steps), plus setup and the words themselves.
+uint64_t cycle_bound(uint64_t groups, const FbLayout& f, uint64_t setup_clocks, uint64_t step) {
+  return groups * ((2ull * f.width * f.height + 4ull * f.height) * step + setup_clocks) + 5000;
 }
 
 // Pushes words, then waits for idle within the bound; returns false (with a failure) on a hang.
 bool run_bounded(rtl::RasterSim& sim, const std::vector<uint32_t>& words, const FbLayout& f, const std::string& config,
                  const std::string& what) {
   const uint64_t start = sim.cycles();
-  const uint64_t bound = cycle_bound(words.size() / kGroupWords + 1, f, setup_allowance(config)) + words.size();
+  const uint64_t bound =
+      cycle_bound(words.size() / kGroupWords + 1, f, setup_allowance(config), step_clocks(config)) + words.size();
   sim.push_words(words);
   const uint64_t used = sim.cycles() - start;
   if (used > bound) {
