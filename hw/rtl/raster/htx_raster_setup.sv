@@ -324,14 +324,13 @@ module htx_raster_setup #(
     assign unused_xy = ^{x_v[0], x_v[1], x_v[2], y_v[0], y_v[1], y_v[2]};
   end
   for (genvar k = 0; k < 3; k++) begin : g_edge
-    logic signed [DW-1:0] edx;
-    assign edx = eb[k];
     // y points down and inside is E > 0: an edge going up is a left edge, a horizontal edge going
     // right a top edge; pixel centres exactly on them belong to this triangle (threshold 0).
     // (Signs and zero tests rather than "> 0": Yosys 0.23 builds a comparison as a carry chain,
     // a LUT and a carry a bit; docs/area.md.)
     assign ea_zero[k] = (ea[k] == 0);
-    assign ethr[k] = !((!ea[k][DW-1] && !ea_zero[k]) || (ea_zero[k] && !edx[DW-1] && (edx != 0)));
+    assign ethr[k] = !((!ea[k][DW-1] && !ea_zero[k]) ||
+                       (ea_zero[k] && !eb[k][DW-1] && (eb[k] != 0)));
   end
 
   // The vertex deltas are edge coefficients: dx1 = x1 - x0 = b_0 and dy2 = y2 - y0 = a_2, and dy1,
