@@ -219,8 +219,7 @@ module htx_raster_setup #(
   // through multiplexers, or (ValuesInFifo) one at a time from the record's words in the FIFO.
   logic signed [BoxW-1:0] x_lo, x_hi, y_lo, y_hi;
   logic                   box_empty;
-  logic                   bx_req;     // ValuesInFifo: the box reads a word (it goes first)
-  logic [4:0]             bx_off;
+  logic [4:0]             bx_off;     // ValuesInFifo: the word of the bound rd_idx[1:0]
   assign box_empty = (x_lo > x_hi) || (y_lo > y_hi);
 
   // First pixel centre of the box, relative to each vertex.
@@ -240,8 +239,11 @@ module htx_raster_setup #(
   logic signed [DW-1:0] ea [3];
   logic signed [DW-1:0] eb [3];
   logic [2:0]           ethr, ea_zero;
-  logic                 cf_req;   // ValuesInFifo: the coefficients' reader reads a word
-  logic [4:0]           cf_off;
+  // ValuesInFifo: the record reader asks for word rd_off (rd_req) and takes it from vr_data_i a
+  // clock later (rd_take); rd_idx counts the words: 0..7 the edge coefficients', 8..11 the box's.
+  logic                 rd_req, rd_take;
+  logic [4:0]           rd_off;
+  logic [3:0]           rd_idx;
   logic                 cf_done;  // the coefficients are ready (a pulse; at take without a reader)
   if (!ValuesInFifo) begin : g_coef_comb
     // Six subtractors on the vertex registers.
@@ -253,16 +255,19 @@ module htx_raster_setup #(
     end
     assign x0_v    = x_v[0];
     assign y0_v    = y_v[0];
-    assign cf_req  = 1'b0;
-    assign cf_off  = '0;
+    assign rd_req  = 1'b0;
+    assign rd_take = 1'b0;
+    assign rd_off  = '0;
+    assign rd_idx  = 4'd12;
     assign cf_done = take && !state_bad;
   end else begin : g_coef_read
     // One subtractor, on the record's words in the FIFO: x0 x1 x2 x0, then y0 y2 y1 y0, a word
     // every two clocks (ask, take). From the second word of each four on, the word minus the one
     // before is b_0, b_1, b_2 (x_k1 - x_k), then a_2, a_1, a_0 (y_k - y_k1, read backwards), each
-    // into its register. Vertex 0 is kept for dxs, dys. 16 clocks a triangle, before the box and
-    // the determinant, which need the coefficients' signs and values.
-    logic [3:0]           cf_q;     // the word being read (0 .. 7); 8: done
+    // into its register. Vertex 0 is kept for dxs, dys. 16 clocks a triangle, before the
+    // determinant, which needs the coefficients. The same reader then reads the box's four bounds
+    // (words 8..11, g_box_read), whose vertices the coefficients' signs pick.
+    logic [3:0]           cf_q;     // the word being read (0 .. 11); 12: done
     logic                 cf_got_q; // its word is on vr_data_i
     logic signed [XW-1:0] cf_prev_q, cf_x0_q, cf_y0_q, cf_word;
     logic signed [DW-1:0] cf_diff;
@@ -276,28 +281,31 @@ module htx_raster_setup #(
         default:    cf_v = 2'd0;
       endcase
     end
-    assign cf_req  = !cf_q[3] && !cf_got_q;
-    assign cf_off  = vert_word(cf_v, {3'd0, cf_q[2]});  // x: word 0 of a vertex, y: word 1
+    assign rd_req  = (cf_q != 4'd12) && !cf_got_q;
+    assign rd_take = cf_got_q;
+    assign rd_idx  = cf_q;
+    // x: word 0 of a vertex, y: word 1
+    assign rd_off  = cf_q[3] ? bx_off : vert_word(cf_v, {3'd0, cf_q[2]});
     assign cf_word = $signed(vr_data_i[XW-1:0]);
     assign cf_diff = DW'(cf_word) - DW'(cf_prev_q);
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
-        cf_q      <= 4'd8;
+        cf_q      <= 4'd12;
         cf_got_q  <= 1'b0;
         cf_prev_q <= '0;
         cf_x0_q   <= '0;
         cf_y0_q   <= '0;
         for (int k = 0; k < 3; k++) begin ea_q[k] <= '0; eb_q[k] <= '0; end
       end else if (abort_i) begin
-        cf_q     <= 4'd8;
+        cf_q     <= 4'd12;
         cf_got_q <= 1'b0;
       end else if (take && !state_bad) begin
         cf_q     <= '0;
         cf_got_q <= 1'b0;
-      end else if (!cf_q[3]) begin
+      end else if (cf_q != 4'd12) begin
         cf_got_q <= !cf_got_q;
         if (cf_got_q) begin
-          cf_prev_q <= cf_word;
+          if (!cf_q[3]) cf_prev_q <= cf_word;
           if (cf_q == 4'd0) cf_x0_q <= cf_word;
           if (cf_q == 4'd4) cf_y0_q <= cf_word;
           unique case (cf_q)
@@ -377,24 +385,26 @@ module htx_raster_setup #(
       x_hi = (xh > $signed(BoxW'({1'b0, width_i}) - BoxW'(1)))  ? $signed(BoxW'({1'b0, width_i}) - BoxW'(1))  : xh;
       y_hi = (yh > $signed(BoxW'({1'b0, height_i}) - BoxW'(1))) ? $signed(BoxW'({1'b0, height_i}) - BoxW'(1)) : yh;
     end
-    assign bx_req = 1'b0;
     assign bx_off = '0;
+    logic unused_rd;
+    assign unused_rd = ^{bx_off, rd_idx, rd_take};
   end else begin : g_box_read
-    // minx, maxx, miny, maxy in turn once the edge coefficients are read (cf_done), two clocks
-    // each (ask, take), on one adder and one comparison; setup needs them only when the
+    // minx, maxx, miny, maxy in turn, as the record reader's words 8..11 (after the edge
+    // coefficients, g_coef_read), on one adder and one comparison; setup needs them only when the
     // determinant is done (tens of clocks later). They hold until the next triangle is taken.
-    logic [2:0]             bx_q;      // the bound being read (0 .. 3); 4: done
-    logic                   bx_got_q;  // its word is on vr_data_i
+    logic [1:0]             bx_q;      // the bound being read
     logic                   bx_min, bx_y;
     logic [1:0]             bx_sel;
     logic signed [XW-1:0]   bv;
     logic signed [BoxW-1:0] bb, blim, bres;
     logic signed [BoxW-1:0] x_lo_q, x_hi_q, y_lo_q, y_hi_q;
+    assign bx_q   = rd_idx[1:0];  // (words 8..11: rd_idx[3] set, rd_idx[2] clear)
+    logic unused_idx;
+    assign unused_idx = rd_idx[2];
     assign bx_min = !bx_q[0];  // 0 minx, 1 maxx, 2 miny, 3 maxy
     assign bx_y   = bx_q[1];
-    assign bx_sel = (bx_q == 3'd0) ? minx_sel : (bx_q == 3'd1) ? maxx_sel
-                  : (bx_q == 3'd2) ? miny_sel : maxy_sel;
-    assign bx_req = !bx_q[2] && !bx_got_q;
+    assign bx_sel = (bx_q == 2'd0) ? minx_sel : (bx_q == 2'd1) ? maxx_sel
+                  : (bx_q == 2'd2) ? miny_sel : maxy_sel;
     assign bx_off = vert_word(bx_sel, bx_y ? 4'd1 : 4'd0);  // x, y: words 0, 1 of a vertex
     assign bv     = $signed(vr_data_i[XW-1:0]);
     assign bb     = BoxW'((bv + (bx_min ? XW'(127) : -XW'(128))) >>> 8);
@@ -402,29 +412,17 @@ module htx_raster_setup #(
     assign bres   = bx_min ? (bb[BoxW-1] ? '0 : bb) : ((bb > blim) ? blim : bb);
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
-        bx_q     <= 3'd4;
-        bx_got_q <= 1'b0;
-        x_lo_q   <= '0;
-        x_hi_q   <= '0;
-        y_lo_q   <= '0;
-        y_hi_q   <= '0;
-      end else if (abort_i) begin
-        bx_q     <= 3'd4;
-        bx_got_q <= 1'b0;
-      end else if (cf_done) begin
-        bx_q     <= 3'd0;
-        bx_got_q <= 1'b0;
-      end else if (!bx_q[2]) begin
-        bx_got_q <= !bx_got_q;
-        if (bx_got_q) begin
-          unique case (bx_q[1:0])
-            2'd0:    x_lo_q <= bres;
-            2'd1:    x_hi_q <= bres;
-            2'd2:    y_lo_q <= bres;
-            default: y_hi_q <= bres;
-          endcase
-          bx_q <= bx_q + 3'd1;
-        end
+        x_lo_q <= '0;
+        x_hi_q <= '0;
+        y_lo_q <= '0;
+        y_hi_q <= '0;
+      end else if (!abort_i && rd_take && rd_idx[3]) begin
+        unique case (bx_q)
+          2'd0:    x_lo_q <= bres;
+          2'd1:    x_hi_q <= bres;
+          2'd2:    y_lo_q <= bres;
+          default: y_hi_q <= bres;
+        endcase
       end
     end
     assign x_lo = x_lo_q;
@@ -632,14 +630,14 @@ module htx_raster_setup #(
   end
 
   // ---- Reads of the record in the FIFO (ValuesInFifo) -----------------------------------------
-  // Four readers: the edge coefficients (first, in the clocks after setup takes a triangle), the
-  // box (after them: it needs their signs), AFFINE (q_i, uq_i, vq_i, after the determinant's
-  // reciprocal: never beside the box, so it is never held) and the plane values' loader, which
-  // waits while either of the others reads.
+  // Three readers: the record reader (the edge coefficients, then the box, in the clocks after
+  // setup takes a triangle), AFFINE (q_i, uq_i, vq_i, after the determinant's reciprocal: never
+  // beside the record reader, so it is never held) and the plane values' loader, which waits while
+  // either of the others reads.
   logic       av_req, ld_req;
   logic [4:0] av_off, ld_off;
-  assign vr_req_o = ValuesInFifo && (cf_req || bx_req || av_req || ld_req);
-  assign vr_off_o = cf_req ? cf_off : bx_req ? bx_off : av_req ? av_off : ld_off;
+  assign vr_req_o = ValuesInFifo && (rd_req || av_req || ld_req);
+  assign vr_off_o = rd_req ? rd_off : av_req ? av_off : ld_off;
 
   // ---- Planes: z, r, g, b, q, uq, vq, and for AFFINE ua, va -------------------------------------
   // Nine plane units working in parallel, or (Iterative, the `icebreaker` configuration) one unit
@@ -882,7 +880,7 @@ module htx_raster_setup #(
                 a_q[0] <= a_q[1]; a_q[1] <= a_q[2]; a_q[2] <= late_value;
                 lv_q <= lv_q + 2'd1;
                 if (lv_q == 2'd2) ld_q <= LdDone;
-              end else if (!av_req && !bx_req) begin
+              end else if (!av_req && !rd_req) begin
                 ld_q <= LdData;  // the word is on vr_data_i next clock
               end
             end

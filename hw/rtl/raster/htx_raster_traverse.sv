@@ -138,6 +138,10 @@ module htx_raster_traverse #(
   assign can_emit = !out_valid_q || frag_ready_i;
 
   logic start_span;  // the pixel is covered and its span's first: emit it
+  // SerialPlanes: the walk stepped right past its span's end; the next row steps from the bank
+  // saved at the span's first pixel (the decision's act, and the RAM's read-ahead before it).
+  logic past_end;
+  assign past_end = SerialPlanes && (state_q == StEmit) && !cov;
   always_comb begin
     act        = ActNone;
     want_emit  = 1'b0;
@@ -169,7 +173,7 @@ module htx_raster_traverse #(
         end
       end
       StEmit: begin
-        if (SerialPlanes && !cov) begin
+        if (past_end) begin
           act = ActRowSaved;  // stepped past the span's end: the next row from its first pixel
         end else begin
           emit = 1'b1;
@@ -473,9 +477,9 @@ module htx_raster_traverse #(
     logic [IW-1:0] idx_q;
     logic [IW+2:0] raddr, waddr;
     logic          cur_q;                 // bank of the current pixel's values
-    logic          rd_bank_q, wr_bank_q;  // the pass's banks
+    logic          rd_bank_q;             // the bank the pass reads
     logic          cap_q, row_q, neg_q;   // the pass captures, steps a row, subtracts
-    logic          start_pass, active, pass_end, rd_saved;
+    logic          start_pass, active, pass_end;
     // StLoad: the word read (region, index) and the word arriving in base_q.
     logic [2:0]    ld_reg_q, got_reg_q;
     logic [IW-1:0] ld_p_q, got_p_q;
@@ -493,11 +497,11 @@ module htx_raster_traverse #(
     assign pass_end   = !hold && sweep_q && (idx_q == IW'(NR - 1));
     assign c_idx      = sweep_q ? idx_q : '0;
     assign c_cap      = sweep_q ? cap_q : emit;
-    assign c_wr_bank  = sweep_q ? wr_bank_q : (save ? !cur_q : cur_q);
+    // A pass writes the current bank: the one the decision leaves for (save: the other one), which
+    // cur_q holds from then on.
+    assign c_wr_bank  = save ? !cur_q : cur_q;  // (save is 0 while sweep_q)
     assign c_row      = sweep_q ? row_q : step_row;
     assign c_neg      = sweep_q ? neg_q : step_neg;
-    // The next decision steps the row from the saved bank: the walk stepped past a span's end.
-    assign rd_saved   = (state_q == StEmit) && !cov;
 
     assign grad    = c_row ? gy_q[0] : gx_q[0];
     assign gx_turn = active || (loading && got_q && (got_reg_q == RegGx));
@@ -520,7 +524,7 @@ module htx_raster_traverse #(
       if (state_q == StLoad)         raddr = {ld_reg_q, ld_p_q};
       else if (start_pass)           raddr = {bank_reg(step_saved ? !cur_q : cur_q, par_q), IW'(1)};
       else if (sweep_q && !pass_end) raddr = {bank_reg(rd_bank_q, par_q), idx_q + 1'b1};
-      else                           raddr = {bank_reg(rd_saved ? !cur_q : cur_q, par_q), IW'(0)};
+      else                           raddr = {bank_reg(past_end ? !cur_q : cur_q, par_q), IW'(0)};
     end
     // Write: setup's words (start values into the next triangle's region); the steps.
     logic          we;
@@ -548,7 +552,6 @@ module htx_raster_traverse #(
         idx_q     <= '0;
         cur_q     <= 1'b0;
         rd_bank_q <= 1'b0;
-        wr_bank_q <= 1'b0;
         cap_q     <= 1'b0;
         row_q     <= 1'b0;
         neg_q     <= 1'b0;
@@ -609,7 +612,6 @@ module htx_raster_traverse #(
           cap_q     <= c_cap;
           row_q     <= c_row;
           neg_q     <= c_neg;
-          wr_bank_q <= c_wr_bank;
           // Leaving a span's first pixel: the step goes to the other bank, which becomes the
           // current one; the bank left behind keeps the first pixel's values for the next row.
           if (save) cur_q <= !cur_q;
