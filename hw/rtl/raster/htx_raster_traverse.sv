@@ -438,10 +438,13 @@ module htx_raster_traverse #(
   end else begin : g_planes_ser
     // The edges and planes in one block RAM, stepped one a clock on one adder: the three edges at
     // indices 0..2, then the NP attribute planes. Its regions (the top address bits): 1 the
-    // second bank of values, 2 and 3 the gradients (a, b of the edges; g_x, g_y of the planes)
-    // that setup writes there for the next triangle, 4 and 5 the start values, which setup writes
-    // into the one the current triangle does not use and which are then that triangle's first bank.
-    // StLoad copies the gradients into registers (2 NR + 1 clocks), then takes the triangle.
+    // second bank of values; 4 and 5 the start values, which setup writes into the one the current
+    // triangle does not use and which are then that triangle's first bank; 2 and 3, or 6 and 7,
+    // the gradients g_x and g_y (a and b of the edges), likewise a pair of regions a triangle.
+    // A second read port (synthesis duplicates the block RAMs for it) reads each word's gradient
+    // in the clock its value is read, so no gradient is held in registers but word 0's, which the
+    // deciding clock steps before the RAM could know the direction: StLoad copies those two
+    // (3 clocks), then takes the triangle.
     // The register after the RAM holds word 0 of the bank the next decision steps from, so the
     // deciding clock steps edge 0 itself and the other NR - 1 words follow one a clock (a pass):
     // NR clocks a step. Every pass steps (writes); a pass that leaves an emitted pixel also
@@ -455,36 +458,32 @@ module htx_raster_traverse #(
       logic unused_idx;
       assign unused_idx = ^pl_idx_i[3:IW];
     end
-    localparam logic [2:0]  RegGx = 3'd2, RegGy = 3'd3, RegSt = 3'd4;  // RegSt and RegSt + 1
-    // Setup writes a triangle's start values into one of two regions (RegSt + parity), and that
-    // region is the triangle's bank 0, so StLoad copies only the gradients. par_q is the parity of
-    // the triangle taken last; setup's words go to the other region (the next triangle's). Setup
-    // writes a triangle's words only after the traversal took the one before.
+    localparam logic [2:0]  RegSt = 3'd4;  // RegSt and RegSt + 1
+    // Setup writes a triangle's start values and gradients into the regions of its parity, and
+    // the start region is the triangle's bank 0. par_q is the parity of the triangle taken last;
+    // setup's words go to the other regions (the next triangle's). Setup writes a triangle's words
+    // only after the traversal took the one before.
     logic          par_q;
     function automatic logic [2:0] bank_reg(input logic b, input logic par);
       bank_reg = b ? 3'd1 : (RegSt | {2'b00, par});
     endfunction
-    // The gradients in two rings of registers that turn by one word each clock of a pass (a pass
-    // turns them all the way round), so word c_idx's are always at the front: no multiplexer
-    // over them. StLoad shifts them in at the back in order.
-    logic [AW-1:0] gx_q [NR];
-    logic [AW-1:0] gy_q [NR];
+    function automatic logic [2:0] grad_reg(input logic row, input logic par);
+      grad_reg = {par, 1'b1, row};  // row 0: g_x, 1: g_y
+    endfunction
+    logic [AW-1:0] g0x_q, g0y_q;  // word 0's gradients
     // A word is AW + 1 bits: a value at [AW-1:0], a gradient from setup at [AW:1] (the plane
     // unit's word with the bit below g, taken here by wiring).
     (* ram_style = "block" *) logic [AW:0] mem_q [2**(IW+3)];
-    logic [AW:0]   base_q;
+    logic [AW:0]   base_q, grad_q;
     logic [AW-1:0] sum, grad;
     logic [IW-1:0] idx_q;
-    logic [IW+2:0] raddr, waddr;
+    logic [IW+2:0] raddr, graddr, waddr;
     logic          cur_q;                 // bank of the current pixel's values
     logic          rd_bank_q;             // the bank the pass reads
     logic          cap_q, row_q, neg_q;   // the pass captures, steps a row, subtracts
     logic          start_pass, active, pass_end;
-    // StLoad: the word read (region, index) and the word arriving in base_q.
-    logic [2:0]    ld_reg_q, got_reg_q;
-    logic [IW-1:0] ld_p_q, got_p_q;
-    logic          got_q, loading;
-    logic          gx_turn, gy_turn;
+    // StLoad: which of word 0's gradients is read (0 g_x, 1 g_y), and which arrives in base_q.
+    logic          ld_y_q, got_y_q, got_q, loading;
     // This clock's word and what is done with it: the pass's registers, or in the deciding clock
     // the decision itself.
     logic [IW-1:0] c_idx;
@@ -503,9 +502,10 @@ module htx_raster_traverse #(
     assign c_row      = sweep_q ? row_q : step_row;
     assign c_neg      = sweep_q ? neg_q : step_neg;
 
-    assign grad    = c_row ? gy_q[0] : gx_q[0];
-    assign gx_turn = active || (loading && got_q && (got_reg_q == RegGx));
-    assign gy_turn = active || (loading && got_q && (got_reg_q == RegGy));
+    // Word 0 in the deciding clock; in a pass the word read with its value.
+    assign grad    = sweep_q ? grad_q[AW:1] : (step_row ? g0y_q : g0x_q);
+    logic unused_grad_lsb;
+    assign unused_grad_lsb = grad_q[0];  // (a value's bit in a start word)
     htx_raster_addsub #(.W(AW), .ZeroLsbs(8)) u_step (
       .a_i  (base_q[AW-1:0]),
       .b_i  (grad << 8),
@@ -521,7 +521,7 @@ module htx_raster_traverse #(
     // Read: StLoad's next word; the pass's next word; otherwise (between passes, and at a pass's
     // end) word 0 of the bank the next decision steps from.
     always_comb begin
-      if (state_q == StLoad)         raddr = {ld_reg_q, ld_p_q};
+      if (state_q == StLoad)         raddr = {grad_reg(ld_y_q, !par_q), IW'(0)};
       else if (start_pass)           raddr = {bank_reg(step_saved ? !cur_q : cur_q, par_q), IW'(1)};
       else if (sweep_q && !pass_end) raddr = {bank_reg(rd_bank_q, par_q), idx_q + 1'b1};
       else                           raddr = {bank_reg(past_end ? !cur_q : cur_q, par_q), IW'(0)};
@@ -532,7 +532,7 @@ module htx_raster_traverse #(
     always_comb begin
       if (hold) begin
         we    = 1'b1;
-        waddr = {(pl_sel_i == 2'd2) ? bank_reg(1'b0, !par_q) : RegGx + 3'(pl_sel_i),
+        waddr = {pl_sel_i[1] ? bank_reg(1'b0, !par_q) : grad_reg(pl_sel_i[0], !par_q),
                  IW'(pl_idx_i)};  // pl_sel_i: 0 g_x, 1 g_y, 2 start
         wdata = pl_data_i;
       end else begin
@@ -541,9 +541,18 @@ module htx_raster_traverse #(
         wdata = {1'b0, sum};
       end
     end
+    // The gradient of the word the value port reads (the next word of the pass).
+    assign graddr = {grad_reg(c_row, par_q), c_idx + 1'b1};
     always_ff @(posedge clk_i) begin
       if (we) mem_q[waddr] <= wdata;
-      if (!hold) base_q <= mem_q[raddr];
+      if (!hold) begin
+        base_q <= mem_q[raddr];
+        grad_q <= mem_q[graddr];
+      end
+      if (loading && got_q) begin
+        if (got_y_q) g0y_q <= base_q[AW:1];
+        else         g0x_q <= base_q[AW:1];
+      end
     end
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -555,51 +564,24 @@ module htx_raster_traverse #(
         cap_q     <= 1'b0;
         row_q     <= 1'b0;
         neg_q     <= 1'b0;
-        ld_reg_q  <= RegGx;
-        ld_p_q    <= '0;
-        got_reg_q <= RegGx;
-        got_p_q   <= '0;
+        ld_y_q    <= 1'b0;
+        got_y_q   <= 1'b0;
         got_q     <= 1'b0;
         par_q     <= 1'b1;  // the first triangle's start values go to region RegSt
         out_p_q   <= '0;
-        for (int p = 0; p < NR; p++) begin
-          gx_q[p] <= '0; gy_q[p] <= '0;
-        end
       end else if (abort_i) begin
         sweep_q  <= 1'b0;
-        ld_reg_q <= RegGx;
-        ld_p_q   <= '0;
+        ld_y_q   <= 1'b0;
         got_q    <= 1'b0;
         par_q    <= 1'b1;  // setup starts over too
       end else begin
         if (state_q == StIdle) cur_q <= 1'b0;  // bank 0 holds the start values
         if (load_last) par_q <= !par_q;
         if (loading) begin
-          // Read g_x of every word, then g_y; each arrives a clock later.
-          got_q     <= !load_last;
-          got_reg_q <= ld_reg_q;
-          got_p_q   <= ld_p_q;
-          if (load_last) begin
-            ld_reg_q <= RegGx;
-            ld_p_q   <= '0;
-          end else if (ld_p_q == IW'(NR - 1)) begin
-            ld_p_q   <= '0;
-            // (load_last resets it anyway; wrapping here keeps the read address inside the two
-            // gradient regions, which synthesis uses: 10,437 LUT4 without it, 10,381 with it.)
-            ld_reg_q <= (ld_reg_q == RegGy) ? RegGx : ld_reg_q + 3'd1;
-          end else begin
-            ld_p_q <= ld_p_q + 1'b1;
-          end
-        end
-        // The rings turn: in a pass each front goes to the back; in StLoad the word read enters
-        // at the back of its ring.
-        if (gx_turn) begin
-          for (int p = 0; p < NR - 1; p++) gx_q[p] <= gx_q[p+1];
-          gx_q[NR-1] <= active ? gx_q[0] : base_q[AW:1];
-        end
-        if (gy_turn) begin
-          for (int p = 0; p < NR - 1; p++) gy_q[p] <= gy_q[p+1];
-          gy_q[NR-1] <= active ? gy_q[0] : base_q[AW:1];
+          // Read word 0's g_x, then its g_y; each arrives a clock later.
+          got_q   <= !load_last;
+          got_y_q <= ld_y_q;
+          ld_y_q  <= !load_last && !ld_y_q;
         end
         for (int p = 0; p < NP; p++) begin
           if (active && c_cap && (c_idx == IW'(p + 3))) out_p_q[AW*p +: AW] <= base_q[AW-1:0];
@@ -623,8 +605,8 @@ module htx_raster_traverse #(
         end
       end
     end
-    // The last word (word NR-1's g_y) arrives and enters its ring: the triangle is taken.
-    assign load_last = loading && got_q && (got_reg_q == RegGy) && (got_p_q == IW'(NR - 1));
+    // Word 0's g_y arrives: the triangle is taken.
+    assign load_last = loading && got_q && got_y_q;
     // The fragment is complete when its capture pass ends; the edges' signs are the next pixel's.
     assign out_load  = pass_end && cap_q;
     assign out_last  = !cov;
