@@ -332,8 +332,11 @@ module htx_raster_traverse #(
     end else if (abort_i) begin
       state_q <= StIdle;
     end else if ((state_q == StIdle) || (state_q == StLoad)) begin
-      // SerialPlanes: the gradients come out of the RAM first (StLoad), after the last step's planes.
-      if (SerialPlanes && (state_q == StIdle) && tri_valid_i && !sweep_q) state_q <= StLoad;
+      // SerialPlanes: the gradients come out of the RAM first (StLoad), after the last step's planes
+      // and once the last fragment has left (its side band is side_q: no copy in the output).
+      if (SerialPlanes && (state_q == StIdle) && tri_valid_i && !sweep_q && !out_valid_q) begin
+        state_q <= StLoad;
+      end
       if (accept) begin
         tnew_q     <= 1'b1;
         side_q     <= tri_side_i;
@@ -618,7 +621,6 @@ module htx_raster_traverse #(
   // ---- Output register -------------------------------------------------------------------------
   logic [12:0]       out_x_q, out_y_q;
   logic [AddrW-1:0]  out_addr_q;
-  logic [SideW-1:0]  out_side_q;
   logic              out_first_q, out_last_q, out_tfirst_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -626,7 +628,6 @@ module htx_raster_traverse #(
       out_x_q     <= '0;
       out_y_q     <= '0;
       out_addr_q  <= '0;
-      out_side_q  <= '0;
       out_first_q <= 1'b0;
       out_last_q  <= 1'b0;
       out_tfirst_q <= 1'b0;
@@ -642,7 +643,6 @@ module htx_raster_traverse #(
         out_x_q     <= 13'(x_q);
         out_y_q     <= y_q;
         out_addr_q  <= row_base_q + AddrW'(x_q);
-        out_side_q  <= side_q;
         out_first_q <= first;
         out_tfirst_q <= tnew_q;
       end
@@ -656,7 +656,18 @@ module htx_raster_traverse #(
   assign frag_y_o         = out_y_q;
   assign frag_addr_o      = out_addr_q;
   assign frag_p_o         = out_p_q;
-  assign frag_side_o      = out_side_q;
+  // The triangle's side band: SerialPlanes takes the next triangle only once the output is empty,
+  // so the side band needs no copy per fragment there.
+  if (SerialPlanes) begin : g_side_tri
+    assign frag_side_o = side_q;
+  end else begin : g_side_frag
+    logic [SideW-1:0] out_side_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) out_side_q <= '0;
+      else if (!abort_i && emit) out_side_q <= side_q;
+    end
+    assign frag_side_o = out_side_q;
+  end
   assign frag_first_o     = out_first_q;
   assign frag_last_o      = out_last_q;
   assign frag_tfirst_o    = out_tfirst_q;
