@@ -73,7 +73,7 @@ module htx_raster_traverse #(
 
   // StBack (LookBehind = 0): walking left over covered pixels to the first one of the span.
   // StBase (SerialRowBase = 1): forming y_lo * stride before the first row.
-  // StLoad (SerialPlanes = 1): copying the planes' gradients out of the RAM, one a clock; the
+  // StLoad (SerialPlanes = 1): copying word 0's two gradients out of the RAM, one a clock; the
   // triangle is taken in its last clock.
   typedef enum logic [2:0] {StIdle, StSeek, StSeekL, StSeekR, StEmit, StBack, StBase, StLoad} state_e;
 
@@ -88,7 +88,7 @@ module htx_raster_traverse #(
   logic                    dneg_q;
   logic                    sweep_q;   // SerialPlanes: the planes are being stepped (0 otherwise)
   logic                    hold;      // SerialPlanes: setup writes the plane RAM; nothing moves
-  logic                    load_last; // SerialPlanes: StLoad copies the last gradient
+  logic                    load_last; // SerialPlanes: StLoad copies word 0's g_y
   logic                    accept;    // the triangle is taken this clock
   logic [2:0]              esgn_we;   // SerialPlanes: the pass writes edge k's new value ...
   logic                    esgn_d;    // ... whose sign bit is this
@@ -332,8 +332,8 @@ module htx_raster_traverse #(
     end else if (abort_i) begin
       state_q <= StIdle;
     end else if ((state_q == StIdle) || (state_q == StLoad)) begin
-      // SerialPlanes: the gradients come out of the RAM first (StLoad), after the last step's planes
-      // and once the last fragment has left (its side band is side_q: no copy in the output).
+      // SerialPlanes: word 0's gradients come out of the RAM first (StLoad), after the last step's
+      // planes and once the last fragment has left (its side band is side_q: no copy in the output).
       if (SerialPlanes && (state_q == StIdle) && tri_valid_i && !sweep_q && !out_valid_q) begin
         state_q <= StLoad;
       end
