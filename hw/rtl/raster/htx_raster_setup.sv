@@ -88,7 +88,7 @@ module htx_raster_setup #(
   output logic [3*NP*AW-1:0]   tri_p_o,       // plane p at 3 AW p: {start, gy, gx}, mod 2^AW
   // Iterative: the planes go instead (tri_p_o is zero) to the traversal's plane RAM, one word a
   // clock as each is done: pl_sel_o 0 gx, 1 gy, 2 start of plane pl_idx_o (mod 2^AW). They are all
-  // written before tri_valid_o rises; the traversal copies them before it takes the triangle. The
+  // written before tri_valid_o rises, into the next triangle's regions of that RAM. The
   // edges go there too, as planes 0..2 (a_k, b_k and E_k, the threshold-1 ones negated; tri_e_o
   // then matters only for its signs), and the attribute planes follow at 3 on.
   output logic                 pl_we_o,

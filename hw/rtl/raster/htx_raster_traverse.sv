@@ -94,7 +94,8 @@ module htx_raster_traverse #(
   logic                    esgn_d;    // ... whose sign bit is this
 
   // ---- Coverage at x - 1, x, x + 1 ---------------------------------------------------------------
-  logic [2:0] in_cur, in_prev_e, in_next_e, fail_pos, fail_neg, fail_zero, a_neg, a_zero;
+  logic [2:0] in_cur, in_prev_e, in_next_e, fail_pos, fail_neg, fail_zero, a_neg;
+  logic [2:0] a_zero_q;  // a_k = 0, from setup (it has the test for the threshold)
   // An edge value covers its pixel: E >= 0, and E > 0 where the edge's threshold is 1. Setup
   // delivers an edge whose threshold is 1 negated (-E; its steps subtract), so both tests are a
   // sign: E >= 0 is a clear sign bit of E, E >= 1 a set sign bit of -E. No comparison with zero.
@@ -107,10 +108,10 @@ module htx_raster_traverse #(
     // Coverage grows to the right where a > 0 (a < 0 for a reversed edge).
     // (Sign and zero tests, not comparisons: Yosys 0.23 builds those as carry chains.)
     logic a_pos;
-    assign a_pos = !a_neg[k] && !a_zero[k];
+    assign a_pos = !a_neg[k] && !a_zero_q[k];
     assign fail_pos[k]  = !in_cur[k] && (dneg_q ? a_neg[k] : a_pos);
     assign fail_neg[k]  = !in_cur[k] && (dneg_q ? a_pos : a_neg[k]);
-    assign fail_zero[k] = !in_cur[k] && a_zero[k];
+    assign fail_zero[k] = !in_cur[k] && a_zero_q[k];
   end
 
   // Two magnitude comparisons and two equalities give every relation of x to the box's columns
@@ -231,8 +232,6 @@ module htx_raster_traverse #(
     logic signed [EW-1:0] e_q [3];
     logic signed [EW-1:0] es_q [3];
     logic signed [EW-1:0] e_next [3];
-    logic [2:0]           azero_q;
-    assign a_zero = azero_q;
     for (genvar k = 0; k < 3; k++) begin : g_edge
       logic signed [EW-1:0] step_a, step_b, en;
       assign step_a = EW'(a_q[k]) <<< 8;
@@ -260,11 +259,9 @@ module htx_raster_traverse #(
         for (int k = 0; k < 3; k++) begin
           a_q[k] <= '0; b_q[k] <= '0; e_q[k] <= '0; es_q[k] <= '0;
         end
-        azero_q <= '0;
       end else if (abort_i) begin
         // (nothing: a new triangle loads them all)
       end else if (accept) begin
-        azero_q <= tri_a_zero_i;
         for (int k = 0; k < 3; k++) begin
           a_q[k] <= tri_a_i[DW*k +: DW];
           b_q[k] <= tri_b_i[DW*k +: DW];
@@ -279,20 +276,18 @@ module htx_raster_traverse #(
     assign unused_esgn = ^{esgn_we, esgn_d};
   end else begin : g_edges_ram
     // The edges are planes 0..2 of the plane RAM (g_planes_ser steps them); only their signs are
-    // kept, as the pass writes each new value (esgn_*), and a's sign and zero for the seek's
-    // direction. No look at x + 1: the decisions step right past a span's end instead.
-    logic [2:0] sgn_q, aneg_q, azero_q;
+    // kept, as the pass writes each new value (esgn_*), and a's sign for the seek's direction
+    // (a_zero_q is common). No look at x + 1: the decisions step right past a span's end instead.
+    logic [2:0] sgn_q, aneg_q;
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         sgn_q   <= '0;
         aneg_q  <= '0;
-        azero_q <= '0;
       end else if (accept) begin
         for (int k = 0; k < 3; k++) begin
           sgn_q[k]   <= tri_e_i[EW*k + EW - 1];
           aneg_q[k]  <= tri_a_i[DW*k + DW - 1];
         end
-        azero_q <= tri_a_zero_i;
       end else begin
         for (int k = 0; k < 3; k++) if (esgn_we[k]) sgn_q[k] <= esgn_d;
       end
@@ -301,7 +296,6 @@ module htx_raster_traverse #(
     assign in_next_e = '0;
     assign in_prev_e = '0;
     assign a_neg     = aneg_q;
-    assign a_zero    = azero_q;
     logic [3*EW-1:0] e_rest;
     logic [3*DW-1:0] a_rest;
     for (genvar k = 0; k < 3; k++) begin : g_rest
@@ -329,6 +323,7 @@ module htx_raster_traverse #(
       base_n_q   <= '0;
       thr_q      <= '0;
       dneg_q     <= 1'b0;
+      a_zero_q   <= '0;
     end else if (abort_i) begin
       state_q <= StIdle;
     end else if ((state_q == StIdle) || (state_q == StLoad)) begin
@@ -354,6 +349,7 @@ module htx_raster_traverse #(
         end
         thr_q      <= tri_thr_i;
         dneg_q     <= tri_dneg_i;
+        a_zero_q   <= tri_a_zero_i;
         state_q <= SerialRowBase ? StBase : StSeek;
       end
     end else if (SerialRowBase && (state_q == StBase)) begin
@@ -489,7 +485,7 @@ module htx_raster_traverse #(
     logic          ld_y_q, got_y_q, got_q, loading;
     // This clock's word and what is done with it: the pass's registers, or in the deciding clock
     // the decision itself.
-    logic [IW-1:0] c_idx;
+    logic [IW-1:0] c_idx, n_idx;  // n_idx: the word after c_idx, which the RAM reads now
     logic          c_cap, c_wr_bank, c_row, c_neg;
 
     assign hold       = pl_we_i;
@@ -498,6 +494,7 @@ module htx_raster_traverse #(
     assign active     = !hold && (sweep_q || start_pass);
     assign pass_end   = !hold && sweep_q && (idx_q == IW'(NR - 1));
     assign c_idx      = sweep_q ? idx_q : '0;
+    assign n_idx      = c_idx + 1'b1;
     assign c_cap      = sweep_q ? cap_q : emit;
     // A pass writes the current bank: the one the decision leaves for (save: the other one), which
     // cur_q holds from then on.
@@ -525,8 +522,8 @@ module htx_raster_traverse #(
     // end) word 0 of the bank the next decision steps from.
     always_comb begin
       if (state_q == StLoad)         raddr = {grad_reg(ld_y_q, !par_q), IW'(0)};
-      else if (start_pass)           raddr = {bank_reg(step_saved ? !cur_q : cur_q, par_q), IW'(1)};
-      else if (sweep_q && !pass_end) raddr = {bank_reg(rd_bank_q, par_q), idx_q + 1'b1};
+      else if (start_pass)           raddr = {bank_reg(step_saved ? !cur_q : cur_q, par_q), n_idx};
+      else if (sweep_q && !pass_end) raddr = {bank_reg(rd_bank_q, par_q), n_idx};
       else                           raddr = {bank_reg(past_end ? !cur_q : cur_q, par_q), IW'(0)};
     end
     // Write: setup's words (start values into the next triangle's region); the steps.
@@ -545,7 +542,7 @@ module htx_raster_traverse #(
       end
     end
     // The gradient of the word the value port reads (the next word of the pass).
-    assign graddr = {grad_reg(c_row, par_q), c_idx + 1'b1};
+    assign graddr = {grad_reg(c_row, par_q), n_idx};
     always_ff @(posedge clk_i) begin
       if (we) mem_q[waddr] <= wdata;
       if (!hold) begin
@@ -592,7 +589,7 @@ module htx_raster_traverse #(
         if (start_pass) begin
           // The pass goes on as its deciding clock began it (c_*).
           sweep_q   <= 1'b1;
-          idx_q     <= IW'(1);
+          idx_q     <= n_idx;  // (1)
           rd_bank_q <= step_saved ? !cur_q : cur_q;
           cap_q     <= c_cap;
           row_q     <= c_row;
@@ -604,7 +601,7 @@ module htx_raster_traverse #(
           idx_q   <= '0;
           sweep_q <= 1'b0;
         end else if (active) begin
-          idx_q <= idx_q + 1'b1;
+          idx_q <= n_idx;
         end
       end
     end
