@@ -205,7 +205,6 @@ TEST(SystemRender, SocConfigIsTheIcebreakerRasterUnit) {
   EXPECT_EQ(render_app::kRecordFormat.z_bits, f.z_bits);
   EXPECT_EQ(render_app::kRecordFormat.q_bits, f.q_bits);
   EXPECT_EQ(render_app::kRecordFormat.uv_int_bits, f.uv_int_bits);
-  EXPECT_EQ(render_app::kMethodsBuilt, cfg.methods);
   const htx::fw::AutoConfig a = htx::fw::auto_config_of(cfg);
   EXPECT_TRUE(render_app::kAutoConfig == a) << "AUTO's configuration";
   EXPECT_EQ(render_app::kAutoTolerance, htx::render::kOne / 16);

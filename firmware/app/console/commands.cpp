@@ -166,11 +166,13 @@ void cmd_render(char* rest) {
     g_last = render_app::draw_scene(*scene, draw);
     g_last_scene = scene->name;
     if (!g_last.ok) return error("render failed: ", g_last.error);
-    printf("render %s method %s triangles %lu sent %lu frame_cycles %lu raster_cycles %lu fragments %lu crc32 %08lx\r\n",
-           name, g_settings.method_text, static_cast<unsigned long>(g_last.stats.triangles),
-           static_cast<unsigned long>(g_last.stats.sent), static_cast<unsigned long>(g_last.frame_cycles),
-           static_cast<unsigned long>(g_last.counters.busy), static_cast<unsigned long>(g_last.counters.fragments),
-           static_cast<unsigned long>(g_last.crc));
+    printf("render %s method %s triangles %lu sent %lu frame_cycles %lu raster_cycles ", name, g_settings.method_text,
+           static_cast<unsigned long>(g_last.stats.triangles), static_cast<unsigned long>(g_last.stats.sent),
+           static_cast<unsigned long>(g_last.frame_cycles));
+    render_app::print_count(g_last.counters, g_last.counters.busy);
+    fputs(" fragments ", stdout);
+    render_app::print_count(g_last.counters, g_last.counters.fragments);
+    printf(" crc32 %08lx\r\n", static_cast<unsigned long>(g_last.crc));
     return;
   }
   error("unknown scene ", name);
@@ -179,6 +181,7 @@ void cmd_render(char* rest) {
 void cmd_stats() {
   if (!g_last_scene || !g_last.ok) return error("nothing rendered yet");
   const htx::hal::RasterCounters& c = g_last.counters;
+  if (!c.built) return error("this GPU has no raster counters (CAPS.COUNTERS = 0)");
   printf("scene %s busy %lu stall_input %lu stall_setup %lu stall_fragment %lu setup_busy %lu\r\n", g_last_scene,
          static_cast<unsigned long>(c.busy), static_cast<unsigned long>(c.stall_input),
          static_cast<unsigned long>(c.stall_setup), static_cast<unsigned long>(c.stall_fragment),

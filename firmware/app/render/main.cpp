@@ -6,8 +6,8 @@
 //     culled <u> frame_cycles <f> raster_cycles <r> fragments <g> crc32 <8 hex digits>
 // geometry_cycles_per_vertex: CPU cycles of process_vertices (transform, clip test, projection) per
 // vertex, the mean of kGeometryRuns runs after a warm-up. frame_cycles: CPU cycles of the whole frame
-// (clear, geometry, streaming, waiting for the raster unit). raster_cycles: the raster unit's
-// CNT_BUSY. crc32: frame_crc.hpp over the colour window. Exits 0, or 1 on any failure.
+// (clear, geometry, streaming, waiting for the raster unit). raster_cycles and fragments: the raster
+// unit's CNT_BUSY and CNT_FRAGMENTS, `-` on a build without counters (CAPS.COUNTERS). crc32: frame_crc.hpp over the colour window. Exits 0, or 1 on any failure.
 #include <stdint.h>
 #include <stdio.h>
 
@@ -30,11 +30,14 @@ bool render_scene(const render_app::SceneData& sc) {
   printf("render %s vertices %lu geometry_cycles_per_vertex ", sc.name,
          static_cast<unsigned long>(r.geometry_vertices / render_app::kGeometryRuns));
   render_app::print_ratio(r.geometry_cycles, r.geometry_vertices);
-  printf(" triangles %lu sent %lu clipped %lu culled %lu frame_cycles %lu raster_cycles %lu fragments %lu crc32 %08lx\n",
+  printf(" triangles %lu sent %lu clipped %lu culled %lu frame_cycles %lu raster_cycles ",
          static_cast<unsigned long>(r.stats.triangles), static_cast<unsigned long>(r.stats.sent),
          static_cast<unsigned long>(r.stats.clipped), static_cast<unsigned long>(r.stats.culled),
-         static_cast<unsigned long>(r.frame_cycles), static_cast<unsigned long>(r.counters.busy),
-         static_cast<unsigned long>(r.counters.fragments), static_cast<unsigned long>(r.crc));
+         static_cast<unsigned long>(r.frame_cycles));
+  render_app::print_count(r.counters, r.counters.busy);
+  fputs(" fragments ", stdout);
+  render_app::print_count(r.counters, r.counters.fragments);
+  printf(" crc32 %08lx\n", static_cast<unsigned long>(r.crc));
   return true;
 }
 

@@ -42,8 +42,21 @@ void print_ratio(uint64_t num, uint64_t den) {
   printf("%lu.%02lu", static_cast<unsigned long>(hundredths / 100), static_cast<unsigned long>(hundredths % 100));
 }
 
+void print_count(const htx::hal::RasterCounters& c, uint32_t value) {
+  if (c.built) {
+    printf("%lu", static_cast<unsigned long>(value));
+  } else {
+    fputs("-", stdout);
+  }
+}
+
 DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
   DrawResult r;
+  const uint32_t methods_built = htx::hal::raster_caps().methods;
+  if (settings.method != htx::render::kMethodAuto && !((methods_built >> settings.method) & 1u)) {
+    r.error = "this GPU does not build that perspective method (CAPS.METHODS)";
+    return r;
+  }
   for (uint32_t m = 0; m < sc.mesh_count; ++m) {
     if (sc.meshes[m].vertex_count > kMaxVertices) {
       r.error = "a mesh has more vertices than the vertex cache";
@@ -57,7 +70,8 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
   htx::render::FrameParams frame;
   frame.viewport = {kWidth, kHeight};
   frame.format = kRecordFormat;
-  frame.methods_built = kMethodsBuilt;
+  // The simulated SoC builds every method, the board AFFINE and RECIP_LUT: AUTO picks among these.
+  frame.methods_built = methods_built;
   frame.auto_config = kAutoConfig;
   frame.auto_tolerance = settings.auto_tolerance > 0 ? settings.auto_tolerance : kAutoTolerance;
   frame.cull_backfaces = sc.cull_backfaces;

@@ -1,6 +1,6 @@
 // What the render firmware assumes about the SoC's raster unit: the `icebreaker` configuration
-// (docs/soc.md, "GPU"). The raster unit has no capability register for these yet, so they are
-// compiled in; the system test checks them against htx::rtl_config("icebreaker").
+// (docs/soc.md, "GPU"). Its record widths and AUTO's bounds are compiled in (the system test checks
+// them against htx::rtl_config("icebreaker")); the methods it builds are read from CAPS.METHODS.
 #pragma once
 
 #include <stdint.h>
@@ -13,8 +13,6 @@ namespace render_app {
 
 // Vertex-record field widths of the icebreaker raster unit (ModelConfig::record_format()).
 inline constexpr htx::fw::RecordFormat kRecordFormat{12, 16, 24, 13};
-// Methods the raster unit builds (bit i = method i): AFFINE, SUBDIV, RECIP_LUT, RECIP_NR, DIVFREE.
-inline constexpr uint32_t kMethodsBuilt = 0x1F;
 // AUTO: the icebreaker raster unit's reciprocal bounds and costs, and issue 7's tolerance of 1/16
 // texel (Q16.16).
 inline constexpr htx::fw::AutoConfig kAutoConfig = htx::fw::kAutoConfigIcebreaker;

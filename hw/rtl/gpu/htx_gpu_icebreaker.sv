@@ -5,7 +5,10 @@
 module htx_gpu_icebreaker #(
   parameter int unsigned FbPixels = 19200,  // 160 x 120; the rtl engine uses 262144 (the depth window)
   parameter logic [4:0]  Methods  = 5'b11111,  // bit m: htx::Method m built (as htx_raster_icebreaker)
-  parameter int unsigned TexBAW   = 10      // blocks per bank = 2^TexBAW: 4K texels, 16 EBR (engine: 2^12)
+  parameter int unsigned TexBAW   = 10,     // blocks per bank = 2^TexBAW: 4K texels, 16 EBR (engine: 2^12)
+  // The raster unit's CNT_* counters: the Verilated models keep them (the rtl engine's metrics and
+  // the firmware's figures read them); the board's builds leave them out (docs/area.md).
+  parameter bit          RasterCounters = 1'b1
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -33,7 +36,7 @@ module htx_gpu_icebreaker #(
     .Iterative(1'b1), .QBits(24), .UvIntBits(13), .PixelSteps(1), .PerspColor(1'b0),
     .PixelPipelined(1'b0), .PixelMulIterative(1'b0), .SubdivDepth(64), .DfFracBits(2), .DfCap(64), .FifoDepth(64),
     .CoordW(20), .TF(10), .GradW(16), .LF(6), .TexFormats(3'b011), .TexFilters(3'b011),
-    .TexSlots(4), .TexLanes(1), .TexShiftAdd(1'b0), .TexCounters(1'b0), .LogIdx(6),
+    .TexSlots(4), .TexLanes(1), .TexShiftAdd(1'b0), .TexCounters(1'b0), .RasterCounters(RasterCounters), .LogIdx(6),
     .FbPixels(FbPixels), .TexBAW(TexBAW), .Methods(Methods)
   ) u_subsys (.*);
 endmodule

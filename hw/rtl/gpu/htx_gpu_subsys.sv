@@ -42,6 +42,7 @@ module htx_gpu_subsys #(
   parameter int unsigned TexLanes    = 4,
   parameter bit          TexShiftAdd = 1'b0,
   parameter bit          TexCounters = 1'b1,
+  parameter bit          RasterCounters = 1'b1,  // the raster unit's CNT_* (CAPS.COUNTERS)
   parameter int unsigned LogIdx      = 10
 ) (
   input  logic        clk_i,
@@ -137,7 +138,7 @@ module htx_gpu_subsys #(
     .PixelSteps(PixelSteps), .Methods(Methods), .TexLod(TexFilters[2]), .PerspColor(PerspColor),
     .PixelPipelined(PixelPipelined), .PixelMulIterative(PixelMulIterative),
     .SubdivDepth(SubdivDepth), .DfFracBits(DfFracBits), .DfCap(DfCap), .LF(LF), .LogIdx(LogIdx),
-    .CoordW(CoordW), .QW(QW), .GradW(GradW), .LocW(LocW),
+    .CoordW(CoordW), .QW(QW), .GradW(GradW), .LocW(LocW), .Counters(RasterCounters),
     .TexTagW(TagW)
   ) u_raster (
     .clk_i, .rst_ni,

@@ -39,7 +39,9 @@ module htx_raster #(
   parameter int unsigned QW         = QBits + GF + 2,
   parameter int unsigned GradW      = 24,       // lod_grad_bits
   parameter int unsigned LocW       = UvIntBits + TF,
-  parameter int unsigned TexTagW    = htx_raster_pkg::tex_tag_w(AddrW, ZBits)
+  parameter int unsigned TexTagW    = htx_raster_pkg::tex_tag_w(AddrW, ZBits),
+  // The CNT_* event counters (CAPS.COUNTERS); the board's build leaves them out (docs/area.md).
+  parameter bit          Counters   = 1'b1
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -779,19 +781,27 @@ module htx_raster #(
   // ---- Counters --------------------------------------------------------------------------------
   // CNT_BUSY .. CNT_PIXELS are eight consecutive words from a 32-byte boundary, counter i at
   // CNT_BUSY + 4 i, kept in one block RAM; CNT_DIVFREE_STEPS adds several a clock and stays a register.
+  // Without Counters every CNT_* reads 0 at once (CAPS.COUNTERS = 0).
   logic [31:0] cnt_rdata, cnt_df_q;
   assign cnt_read = !req_we_i &&
                     ((offset & ~12'h01F) == htx_raster_reg_pkg::RASTER_CNT_BUSY_OFFSET);
-  htx_raster_counters #(.N(8)) u_counters (
-    .clk_i, .rst_ni,
-    .clear_i  (cnt_reset),
-    .inc_i    ({pixel, tv_valid && tv_ready, setup_taken, setup_busy, trav_stall, setup_stall,
-                in_partial, busy}),
-    .rd_i     (req_valid_i && cnt_read),
-    .rd_idx_i (offset[4:2]),
-    .rd_ack_o (cnt_ack),
-    .rd_data_o(cnt_rdata)
-  );
+  if (Counters) begin : g_counters
+    htx_raster_counters #(.N(8)) u_counters (
+      .clk_i, .rst_ni,
+      .clear_i  (cnt_reset),
+      .inc_i    ({pixel, tv_valid && tv_ready, setup_taken, setup_busy, trav_stall, setup_stall,
+                  in_partial, busy}),
+      .rd_i     (req_valid_i && cnt_read),
+      .rd_idx_i (offset[4:2]),
+      .rd_ack_o (cnt_ack),
+      .rd_data_o(cnt_rdata)
+    );
+  end else begin : g_no_counters
+    assign cnt_ack   = 1'b1;
+    assign cnt_rdata = '0;
+    logic unused_events;
+    assign unused_events = ^{pixel, trav_stall, setup_stall, in_partial};
+  end
 
   // ---- Register writes and reads ---------------------------------------------------------------
   logic [31:0] rdata_d, rsp_rdata_q;
@@ -819,6 +829,10 @@ module htx_raster #(
       end
       htx_raster_reg_pkg::RASTER_FB_STRIDE_OFFSET: rdata_d = 32'(stride_q);
       htx_raster_reg_pkg::RASTER_STATE_OFFSET: rdata_d = last_state_q;
+      htx_raster_reg_pkg::RASTER_CAPS_OFFSET: begin
+        rdata_d[htx_raster_reg_pkg::RASTER_CAPS_METHODS_LSB +: 5]  = Methods;
+        rdata_d[htx_raster_reg_pkg::RASTER_CAPS_COUNTERS_LSB]      = Counters;
+      end
       htx_raster_reg_pkg::RASTER_CNT_BUSY_OFFSET,
       htx_raster_reg_pkg::RASTER_CNT_STALL_INPUT_OFFSET,
       htx_raster_reg_pkg::RASTER_CNT_STALL_SETUP_OFFSET,
@@ -879,7 +893,7 @@ module htx_raster #(
       end else if (clear_start) begin
         clr_pend_q <= 1'b0;
       end
-      if (cnt_reset) begin
+      if (cnt_reset || !Counters) begin
         cnt_df_q <= '0;
       end else begin
         cnt_df_q <= cnt_df_q + (df_steps_valid ? 32'(df_steps) : 32'd0);

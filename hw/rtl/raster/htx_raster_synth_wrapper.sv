@@ -5,7 +5,8 @@
 module htx_raster_synth_wrapper #(
   parameter bit         Full    = 1'b0,
   parameter logic [4:0] Methods = 5'b01111, // the synth-report designs leave DIVFREE out
-  parameter bit         TexLod  = 1'b1      // the LOD gradients for a trilinear texture unit
+  parameter bit         TexLod  = 1'b1,     // the LOD gradients for a trilinear texture unit
+  parameter bit         Counters = 1'b1     // the CNT_* event counters
 ) (
   input  logic clk_i,
   input  logic rst_ni,
@@ -46,7 +47,7 @@ module htx_raster_synth_wrapper #(
     .PixelSteps(Full ? 2 : 1), .Methods(Methods), .TexLod(TexLod), .PerspColor(Full),
     .PixelPipelined(Full),
     .PixelMulIterative(1'b0), .SubdivDepth(Full ? 128 : 64), .DfFracBits(Full ? 4 : 2), .DfCap(64),
-    .LF(Full ? 8 : 6), .LogIdx(Full ? 10 : 6), .CoordW(CoordW), .GradW(GradW)
+    .LF(Full ? 8 : 6), .LogIdx(Full ? 10 : 6), .CoordW(CoordW), .GradW(GradW), .Counters(Counters)
   ) u_raster (
     .clk_i, .rst_ni,
     .req_valid_i(in_q[0]),

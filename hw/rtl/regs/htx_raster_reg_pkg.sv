@@ -148,6 +148,18 @@ package htx_raster_reg_pkg;
   localparam logic [31:0] RASTER_STATE_TEXTURE_MASK = 32'hFF000000;
   localparam logic [31:0] RASTER_STATE_TEXTURE_RESET = 32'h00000000;
 
+  // CAPS (ro): What this build of the unit has (fixed by the RTL parameters; reads only)
+  localparam logic [11:0] RASTER_CAPS_OFFSET = 12'h020;
+  localparam logic [31:0] RASTER_CAPS_RESET = 32'h00000000;
+  localparam int unsigned RASTER_CAPS_METHODS_LSB = 0;
+  localparam int unsigned RASTER_CAPS_METHODS_WIDTH = 5;
+  localparam logic [31:0] RASTER_CAPS_METHODS_MASK = 32'h0000001F;
+  localparam logic [31:0] RASTER_CAPS_METHODS_RESET = 32'h00000000;
+  localparam int unsigned RASTER_CAPS_COUNTERS_LSB = 7;
+  localparam int unsigned RASTER_CAPS_COUNTERS_WIDTH = 1;
+  localparam logic [31:0] RASTER_CAPS_COUNTERS_MASK = 32'h00000080;
+  localparam logic [31:0] RASTER_CAPS_COUNTERS_RESET = 32'h00000000;
+
   // CNT_BUSY (ro): Clocks with STATUS.BUSY set. CNT_BUSY to CNT_PIXELS live in block RAM: a read of one waits up to 17 clocks and returns the count three clocks before it completes (exact once the unit is idle)
   localparam logic [11:0] RASTER_CNT_BUSY_OFFSET = 12'h040;
   localparam logic [31:0] RASTER_CNT_BUSY_RESET = 32'h00000000;

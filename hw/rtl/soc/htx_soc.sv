@@ -10,7 +10,10 @@ module htx_soc #(
   parameter int unsigned FbPixels    = 19200,  // the GPU's framebuffer, 160 x 120
   // The GPU's perspective methods (bit m: htx::Method m): all in simulation, where the firmware's
   // AUTO may choose any; the board's build takes AFFINE and RECIP_LUT (icebreaker-board).
-  parameter logic [4:0]  GpuMethods  = 5'b11111
+  parameter logic [4:0]  GpuMethods  = 5'b11111,
+  // The raster unit's CNT_* counters: built in simulation (the firmware prints raster cycles), left
+  // out of the board's build (htx_soc_synth_top; CAPS.COUNTERS tells the firmware).
+  parameter bit          GpuCounters = 1'b1
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -50,7 +53,8 @@ module htx_soc #(
 
   htx_soc_fabric #(
     .RamBytes(RamBytes), .RamInitFile(RamInitFile), .ClockHz(ClockHz), .Sim(Sim),
-    .StallInject(StallInject), .FbPixels(FbPixels), .GpuMethods(GpuMethods)
+    .StallInject(StallInject), .FbPixels(FbPixels), .GpuMethods(GpuMethods),
+    .GpuCounters(GpuCounters)
   ) u_fabric (
     .clk_i, .rst_ni,
     .ibus_req_valid_i(ibus_req_valid), .ibus_req_ready_o(ibus_req_ready),

@@ -1,6 +1,6 @@
 // Synthesis harness for soc_up5k in the synthesis report: the SoC as a board would have it (no
-// simulation ports, no stall injection, the board GPU's methods AFFINE and RECIP_LUT as
-// gpu_icebreaker_up5k), with only the clock, reset and serial pins at the package.
+// simulation ports, no stall injection, the board GPU's methods AFFINE and RECIP_LUT and no raster
+// event counters, as gpu_icebreaker_up5k), with only the clock, reset and serial pins at the package.
 module htx_soc_synth_top #(
   parameter int unsigned RamBytes = 4096
 ) (
@@ -13,7 +13,8 @@ module htx_soc_synth_top #(
   logic       sim_exit_unused, sim_putchar_unused;
   logic [7:0] sim_code_unused, sim_char_unused;
 
-  htx_soc #(.RamBytes(RamBytes), .Sim(1'b0), .StallInject(1'b0), .GpuMethods(htx_raster_pkg::board_methods())) u_soc (
+  htx_soc #(.RamBytes(RamBytes), .Sim(1'b0), .StallInject(1'b0), .GpuMethods(htx_raster_pkg::board_methods()),
+    .GpuCounters(1'b0)) u_soc (
     .clk_i, .rst_ni, .uart_rx_i, .uart_tx_o, .timer_irq_o,
     .sim_exit_o(sim_exit_unused), .sim_exit_code_o(sim_code_unused),
     .sim_putchar_o(sim_putchar_unused), .sim_char_o(sim_char_unused),

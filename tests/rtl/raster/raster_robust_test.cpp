@@ -287,6 +287,21 @@ TEST(RasterRobust, TinyTriangleSetupThroughput) {
               full_affine.setup_cycles_per_triangle, ice_affine.setup_cycles_per_triangle);
 }
 
+// CAPS names what the Verilated unit builds: every method of its configuration, and the counters
+// (the board's build, without them, is checked in tests/rtl/soc).
+TEST(RasterRobust, CapsNamesTheBuild) {
+  for (const std::string name : {"full", "full_pc", "icebreaker"}) {
+    rtl::RasterSim sim(name);
+    const uint32_t caps = sim.read_reg(R(CAPS));
+    const ModelConfig cfg = rtl_config(name == "icebreaker" ? "icebreaker" : "full");
+    EXPECT_EQ((caps & RASTER_CAPS_METHODS_Msk) >> RASTER_CAPS_METHODS_Pos, cfg.methods) << name;
+    EXPECT_NE(caps & RASTER_CAPS_COUNTERS_Msk, 0u) << name;
+    EXPECT_EQ(caps & ~(RASTER_CAPS_METHODS_Msk | RASTER_CAPS_COUNTERS_Msk), 0u) << name;
+    sim.write_reg(R(CAPS), 0u);  // read-only
+    EXPECT_EQ(sim.read_reg(R(CAPS)), caps) << name;
+  }
+}
+
 TEST(RasterRobust, MemoryWindows) {
   rtl::RasterSim sim("full");
   uint32_t v = 0;

@@ -120,6 +120,16 @@ TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
   for (uint32_t w = 0; w < 32; ++w) EXPECT_EQ(soc.read(kFbColor + 4 * w).rdata, 0x5A5A'5A5Au) << w;
   EXPECT_EQ(soc.read(kFbColor + 4 * 32).rdata, 0u);  // pixel 64: outside the 16 x 4 screen
   EXPECT_EQ(soc.read(kFbDepth + 4 * 63).rdata & 0xFFFFu, 0x0123u);
+  // This fabric's GPU is the board's (CMakeLists.txt): AFFINE and RECIP_LUT, no raster counters.
+  // Every CNT_* then answers 0 at once, after the clear above as after a counter reset.
+  EXPECT_EQ(soc.read(kRaster + RASTER_CAPS_Offset).rdata, 0b00101u << RASTER_CAPS_METHODS_Pos);
+  for (uint32_t off = RASTER_CNT_BUSY_Offset; off <= RASTER_CNT_DIVFREE_STEPS_Offset; off += 4) {
+    const auto r = soc.read(kRaster + off);
+    EXPECT_FALSE(r.err) << std::hex << off;
+    EXPECT_EQ(r.rdata, 0u) << std::hex << off;
+  }
+  soc.write(kRaster + RASTER_CTRL_Offset, RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_COUNTERS_RESET_Msk);
+  EXPECT_EQ(soc.read(kRaster + RASTER_CNT_BUSY_Offset).rdata, 0u);
 }
 
 TEST_P(FabricTest, RamByteLanes) {

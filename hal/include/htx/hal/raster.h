@@ -1,5 +1,5 @@
 // Raster unit driver (hw/regs/raster.json): framebuffer set-up, fast clear, the vertex FIFO and the
-// performance counters. A triangle is one state word (layout of register STATE) followed by the
+// performance counters, and what the build has (CAPS). A triangle is one state word (layout of register STATE) followed by the
 // kTriangleWords words of htx::fw::pack_triangle.
 #pragma once
 
@@ -11,7 +11,23 @@
 
 namespace htx::hal {
 
+// What this build of the raster unit has (register CAPS).
+struct RasterCaps {
+  uint32_t methods = 0;   // bit m = perspective method m (STATE.METHOD) is built
+  bool counters = false;  // the CNT_* counters are built (the board's build leaves them out)
+};
+
+inline RasterCaps raster_caps() {
+  const uint32_t c = HTX_RASTER->CAPS;
+  RasterCaps r;
+  r.methods = (c & RASTER_CAPS_METHODS_Msk) >> RASTER_CAPS_METHODS_Pos;
+  r.counters = (c & RASTER_CAPS_COUNTERS_Msk) != 0;
+  return r;
+}
+
+// built = false: the unit has no counters (CAPS.COUNTERS = 0) and every count reads 0.
 struct RasterCounters {
+  bool built = false;
   uint32_t busy = 0, stall_input = 0, stall_setup = 0, stall_fragment = 0, setup_busy = 0;
   uint32_t triangles = 0, fragments = 0, pixels = 0, divfree_steps = 0;
 };
@@ -62,6 +78,7 @@ inline void raster_clear_state_error() { HTX_RASTER->STATUS = RASTER_STATUS_ERR_
 inline void raster_reset_counters() { HTX_RASTER->CTRL = RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_COUNTERS_RESET_Msk; }
 
 inline void raster_read_counters(RasterCounters* c) {
+  c->built = raster_caps().counters;
   c->busy = HTX_RASTER->CNT_BUSY;
   c->stall_input = HTX_RASTER->CNT_STALL_INPUT;
   c->stall_setup = HTX_RASTER->CNT_STALL_SETUP;

@@ -207,6 +207,12 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
   }
 
   rtl::GpuSim sim(gpu_variant(cfg));
+  // The metrics come from the unit's counters, and every method the scene may use must be built.
+  const uint32_t caps = sim.read_reg(HTX_RASTER_REG(CAPS));
+  if (!(caps & RASTER_CAPS_COUNTERS_Msk))
+    throw std::logic_error("rtl engine: the Verilated GPU has no raster counters (CAPS.COUNTERS = 0)");
+  if (cfg.methods & ~((caps & RASTER_CAPS_METHODS_Msk) >> RASTER_CAPS_METHODS_Pos))
+    throw std::logic_error("rtl engine: the Verilated GPU does not build every method of the configuration");
   upload_textures(sim, scene);
   const uint32_t z_max = (uint32_t{1} << cfg.z_bits) - 1;
   sim.write_reg(HTX_RASTER_REG(FB_SIZE), (static_cast<uint32_t>(scene.width) << RASTER_FB_SIZE_WIDTH_Pos) |
