@@ -245,7 +245,8 @@ module htx_tex_sampler #(
 
   // The footprint's texels as read (c00, c10, c01, c11); stage C decodes them, Lanes = 1 only the
   // two it blends in each clock (2026-12-03: stage C held all four decoded, 64 flip-flops and two
-  // decoders more).
+  // decoders more). Lanes = 1 keeps the banks' words as read and picks each clock's two texels by
+  // the parities there: two bank multiplexers instead of four (2026-12-03, seventh session).
   logic [TexW-1:0] raw [4];
   logic [31:0]     unused_rgba;
   logic            bad;
@@ -261,7 +262,8 @@ module htx_tex_sampler #(
 
   // ---- Stage C ---------------------------------------------------------------------------------
   logic            c_valid_q, c_first_q, c_second_q, c_nearest_q;
-  logic [TexW-1:0] c_raw_q [4];
+  logic [TexW-1:0] c_raw_q [4];  // Lanes = 4: c00, c10, c01, c11; Lanes = 1: banks 0 .. 3
+  logic [3:0]      c_par_q;      // Lanes = 1: b_par_q
   logic [1:0]      c_fmt_q;
   logic [7:0]      c_wu_q, c_wv_q, c_wtri_q;
   logic [3:0]      c_l0_q;
@@ -290,7 +292,8 @@ module htx_tex_sampler #(
       c_first_q   <= b_first_q;
       c_second_q  <= b_second_q;
       c_nearest_q <= b_nearest_q;
-      for (int k = 0; k < 4; k++) c_raw_q[k] <= raw[k];
+      for (int k = 0; k < 4; k++) c_raw_q[k] <= (Lanes >= 4) ? raw[k] : s_rdata_i[k*TexW +: TexW];
+      c_par_q     <= b_par_q;
       c_fmt_q     <= b_fmt_q;
       c_wu_q      <= b_wu_q;
       c_wv_q      <= b_wv_q;
@@ -343,10 +346,14 @@ module htx_tex_sampler #(
     // A nearest item finishes in the clock it enters (st_q 0), so t_lo is then c00 decoded.
     logic [31:0] t_lo, t_hi;
     logic [1:0]  unused_bad;
+    // c00 and c10 (step 0) or c01 and c11: the row's bank by y0 or y1, the column's by x0 or x1.
+    logic [1:0]  bk_lo, bk_hi;
+    assign bk_lo = {st_q[0] ? c_par_q[3] : c_par_q[2], c_par_q[0]};
+    assign bk_hi = {st_q[0] ? c_par_q[3] : c_par_q[2], c_par_q[1]};
     htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_decode_lo (
-      .texel_i(st_q[0] ? c_raw_q[2] : c_raw_q[0]), .format_i(c_fmt_q), .rgba_o(t_lo), .bad_o(unused_bad[0]));
+      .texel_i(c_raw_q[bk_lo]), .format_i(c_fmt_q), .rgba_o(t_lo), .bad_o(unused_bad[0]));
     htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_decode_hi (
-      .texel_i(st_q[0] ? c_raw_q[3] : c_raw_q[1]), .format_i(c_fmt_q), .rgba_o(t_hi), .bad_o(unused_bad[1]));
+      .texel_i(c_raw_q[bk_hi]), .format_i(c_fmt_q), .rgba_o(t_hi), .bad_o(unused_bad[1]));
     assign e_lo = t_lo[8*ch_q +: 8];
     assign e_hi = t_hi[8*ch_q +: 8];
     always_comb begin
