@@ -8,6 +8,11 @@
 // release_i frees every word popped so far. full_o, empty_o and level_o count the words not yet
 // released (the bus sees a held record as FIFO words); none_o is "nothing left to pop". Hold = 0
 // releases each word as it is popped (peek_i and release_i are ignored; none_o is empty_o).
+//
+// No read is of the word being written: a push writes at wptr_q, a pop reads a word pushed before
+// (avail > 0) and a peek a word of the held record, already popped. So what the RAM returns for a
+// read of the address being written is left to it (no_rw_check: Yosys builds no bypass, 32
+// flip-flops and their multiplexer).
 module htx_raster_fifo #(
   parameter int unsigned Depth = 64,  // power of two
   parameter bit          Hold  = 1'b0
@@ -29,7 +34,7 @@ module htx_raster_fifo #(
 );
   localparam int unsigned PtrW = $clog2(Depth);
 
-  logic [31:0]     mem_q [Depth];
+  (* no_rw_check *) logic [31:0] mem_q [Depth];
   // Pointers with a wrap bit: written, popped, and released (the popped one without Hold).
   logic [PtrW:0]   wptr_q, rptr_q, fptr, level, avail;
   logic [PtrW-1:0] raddr;

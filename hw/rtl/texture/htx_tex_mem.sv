@@ -1,7 +1,8 @@
 // Texture memory (docs/texture.md, Memory layout): four banks by texel (u, v) parity, so any 2x2
 // footprint reads in one clock, and the bus window at 0x4000_0000. Window word w (byte offset / 4)
 // is bank w[1:0] = {v & 1, u & 1}, block w >> 2; one texel per 32-bit word (TexW low bits).
-// Writes take one clock and never wait. Reads share each bank's read port with the sampler: one is
+// Writes take one clock and wait only while the sampler reads, so no bank is ever written and read
+// in the same clock (htx_tex_bank). Reads share each bank's read port with the sampler: one is
 // accepted only in a clock where the sampler neither reads nor holds read data. A word beyond the
 // memory, or a write whose byte enables do not cover the texel, answers rsp_err and does nothing.
 module htx_tex_mem #(
@@ -35,7 +36,7 @@ module htx_tex_mem #(
   assign in_range  = (BAW >= 16) || ((word >> (BAW + 2)) == 18'd0);
   assign be_ok     = (TexW > 16) ? (&req_be_i) : (&req_be_i[1:0]);
   assign cpu_rd_ok = !s_re_i && !s_hold_i;
-  assign req_ready_o = req_we_i || cpu_rd_ok || !in_range;
+  assign req_ready_o = (req_we_i ? !s_re_i : cpu_rd_ok) || !in_range;
   assign accept    = req_valid_i && req_ready_o;
   assign cpu_we    = accept && req_we_i && in_range && be_ok;
   assign cpu_re    = accept && !req_we_i && in_range;

@@ -246,7 +246,7 @@ module htx_tex_sampler #(
   // The footprint's texels as read (c00, c10, c01, c11); stage C decodes them, Lanes = 1 only the
   // two it blends in each clock (2026-12-03: stage C held all four decoded, 64 flip-flops and two
   // decoders more). Lanes = 1 keeps the banks' words as read and picks each clock's two texels by
-  // the parities there: two bank multiplexers instead of four (2026-12-03, seventh session).
+  // the parities there: two bank multiplexers instead of four (2026-12-03, sixth session).
   logic [TexW-1:0] raw [4];
   logic [31:0]     unused_rgba;
   logic            bad;
@@ -326,7 +326,7 @@ module htx_tex_sampler #(
     assign f_tag     = c_tag_q;
     assign c_ready_l = !c_valid_q || f_take;
     logic unused_l4;
-    assign unused_l4 = ^{c_nearest_q, unused_bad};
+    assign unused_l4 = ^{c_nearest_q, unused_bad, c_par_q};
   end else begin : g_lane1
     // One channel at a time, one product per clock on one multiplier (one iCE40 DSP):
     //   step 0: h0 = 256 c00 + wu (c10 - c00);  step 1: h1 = 256 c01 + wu (c11 - c01);
