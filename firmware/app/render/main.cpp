@@ -7,7 +7,8 @@
 // geometry_cycles_per_vertex: CPU cycles of process_vertices (transform, clip test, projection) per
 // vertex, the mean of kGeometryRuns runs after a warm-up. frame_cycles: CPU cycles of the whole frame
 // (clear, geometry, streaming, waiting for the raster unit). raster_cycles and fragments: the raster
-// unit's CNT_BUSY and CNT_FRAGMENTS, `-` on a build without counters (CAPS.COUNTERS). crc32: frame_crc.hpp over the colour window. Exits 0, or 1 on any failure.
+// unit's CNT_BUSY and CNT_FRAGMENTS, `-` on a build without counters (CAPS.COUNTERS). crc32:
+// frame_crc.hpp over the colour window. Exits 0, or 1 on any failure.
 #include <stdint.h>
 #include <stdio.h>
 

@@ -36,7 +36,8 @@ module htx_gpu_synth_top #(
   end else begin : g_icebreaker
     // One perspective method besides AFFINE on the board: RECIP_LUT (table reciprocal, no Newton
     // step); no raster event counters, as the board's SoC builds it.
-    htx_gpu_icebreaker #(.FbPixels(4), .Methods(htx_raster_pkg::board_methods()), .RasterCounters(1'b0)) u_gpu (
+    htx_gpu_icebreaker #(.FbPixels(4), .Methods(htx_raster_pkg::board_methods()),
+                         .RasterCounters(1'b0)) u_gpu (
       .clk_i, .rst_ni,
       .reg_req_valid_i(reg_valid), .reg_req_ready_o(reg_ready), .reg_req_addr_i(reg_addr),
       .reg_req_we_i(reg_we), .reg_req_be_i(reg_be), .reg_req_wdata_i(reg_wdata),

@@ -1,8 +1,8 @@
 // One texture memory bank: a simple dual-port RAM (one write port, one registered read port with
 // enable, so the read data holds while the sampler stalls). Block RAM on iCE40. The caller never
 // reads in a clock in which it writes (htx_tex_mem), so what a read of the address being written
-// returns is left to the RAM (no_rw_check: Yosys builds no bypass for it, about 27 LUT4 and 27
-// flip-flops a bank).
+// returns is left to the RAM (no_rw_check: Yosys builds no bypass for it, about 29 LUT4 and 18
+// flip-flops a bank on the board's GPU).
 module htx_tex_bank #(
   parameter int unsigned W  = 16,
   parameter int unsigned AW = 10

@@ -1,6 +1,6 @@
-// Raster unit driver (hw/regs/raster.json): framebuffer set-up, fast clear, the vertex FIFO and the
-// performance counters, and what the build has (CAPS). A triangle is one state word (layout of register STATE) followed by the
-// kTriangleWords words of htx::fw::pack_triangle.
+// Raster unit driver (hw/regs/raster.json): framebuffer set-up, fast clear, the vertex FIFO, the
+// performance counters and what the build has (CAPS). A triangle is one state word (layout of
+// register STATE) followed by the kTriangleWords words of htx::fw::pack_triangle.
 #pragma once
 
 #include <stddef.h>
