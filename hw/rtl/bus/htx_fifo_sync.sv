@@ -1,5 +1,8 @@
 // Synchronous FIFO whose storage has a registered read port, so synthesis can place it in block RAM
 // (iCE40 EBR) instead of flip-flops. A pop presents the popped word on rdata_o in the next cycle.
+// A pop never reads the word being pushed (it reads only while the FIFO is not empty, and a push
+// happens only while it is not full), so what the RAM returns then is left to it (no_rw_check:
+// Yosys builds no bypass registers and multiplexer for it).
 module htx_fifo_sync #(
   parameter int unsigned Width = 8,
   parameter int unsigned Depth = 16   // power of two
@@ -16,7 +19,7 @@ module htx_fifo_sync #(
 );
   localparam int unsigned PtrWidth = $clog2(Depth);
 
-  logic [Width-1:0]    mem_q [Depth];
+  (* no_rw_check *) logic [Width-1:0] mem_q [Depth];
   logic [PtrWidth-1:0] wptr_q, rptr_q;
   logic [PtrWidth:0]   level_q;
   logic                do_push, do_pop;
