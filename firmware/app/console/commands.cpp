@@ -166,12 +166,10 @@ void cmd_render(char* rest) {
     g_last = render_app::draw_scene(*scene, draw);
     g_last_scene = scene->name;
     if (!g_last.ok) return error("render failed: ", g_last.error);
-    printf("render %s method %s triangles %lu sent %lu frame_cycles %lu raster_cycles ", name,
+    printf("render %s method %s triangles %lu sent %lu frame_cycles %lu ", name,
            g_settings.method_text, static_cast<unsigned long>(g_last.stats.triangles), static_cast<unsigned long>(g_last.stats.sent),
            static_cast<unsigned long>(g_last.frame_cycles));
-    render_app::print_count(g_last.counters, g_last.counters.busy);
-    fputs(" fragments ", stdout);
-    render_app::print_count(g_last.counters, g_last.counters.fragments);
+    render_app::print_raster_figures(g_last.counters);
     printf(" crc32 %08lx\r\n", static_cast<unsigned long>(g_last.crc));
     return;
   }

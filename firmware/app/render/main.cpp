@@ -31,13 +31,11 @@ bool render_scene(const render_app::SceneData& sc) {
   printf("render %s vertices %lu geometry_cycles_per_vertex ", sc.name,
          static_cast<unsigned long>(r.geometry_vertices / render_app::kGeometryRuns));
   render_app::print_ratio(r.geometry_cycles, r.geometry_vertices);
-  printf(" triangles %lu sent %lu clipped %lu culled %lu frame_cycles %lu raster_cycles ",
+  printf(" triangles %lu sent %lu clipped %lu culled %lu frame_cycles %lu ",
          static_cast<unsigned long>(r.stats.triangles), static_cast<unsigned long>(r.stats.sent),
          static_cast<unsigned long>(r.stats.clipped), static_cast<unsigned long>(r.stats.culled),
          static_cast<unsigned long>(r.frame_cycles));
-  render_app::print_count(r.counters, r.counters.busy);
-  fputs(" fragments ", stdout);
-  render_app::print_count(r.counters, r.counters.fragments);
+  render_app::print_raster_figures(r.counters);
   printf(" crc32 %08lx\n", static_cast<unsigned long>(r.crc));
   return true;
 }

@@ -42,11 +42,12 @@ void print_ratio(uint64_t num, uint64_t den) {
   printf("%lu.%02lu", static_cast<unsigned long>(hundredths / 100), static_cast<unsigned long>(hundredths % 100));
 }
 
-void print_count(const htx::hal::RasterCounters& c, uint32_t value) {
+void print_raster_figures(const htx::hal::RasterCounters& c) {
   if (c.built) {
-    printf("%lu", static_cast<unsigned long>(value));
+    printf("raster_cycles %lu fragments %lu", static_cast<unsigned long>(c.busy),
+           static_cast<unsigned long>(c.fragments));
   } else {
-    fputs("-", stdout);
+    fputs("raster_cycles - fragments -", stdout);
   }
 }
 

@@ -38,8 +38,8 @@ DrawResult draw_scene(const SceneData& scene, const DrawSettings& settings);
 // x.xx without floating point.
 void print_ratio(uint64_t num, uint64_t den);
 
-// One of the raster unit's counts: the number, or `-` when the unit has no counters (the board's
-// build; CAPS.COUNTERS = 0).
-void print_count(const htx::hal::RasterCounters& c, uint32_t value);
+// The report lines' "raster_cycles R fragments G" (CNT_BUSY, CNT_FRAGMENTS), each `-` when the
+// unit has no counters (the board's build; CAPS.COUNTERS = 0).
+void print_raster_figures(const htx::hal::RasterCounters& c);
 
 }  // namespace render_app

@@ -243,17 +243,22 @@ module htx_tex_sampler #(
     end
   end
 
-  // The footprint's texels as read (c00, c10, c01, c11); stage C decodes them, Lanes = 1 only the
-  // two it blends in each clock (2026-12-03: stage C held all four decoded, 64 flip-flops and two
-  // decoders more). Lanes = 1 keeps the banks' words as read and picks each clock's two texels by
-  // the parities there: two bank multiplexers instead of four (2026-12-03, sixth session).
+  // What stage C holds: Lanes = 4 the footprint's texels as read (c00, c10, c01, c11), picked
+  // from the banks by the parities; Lanes = 1 the banks' words themselves, from which stage C picks
+  // the two texels it blends in each clock (two bank multiplexers instead of four, 2026-12-03,
+  // sixth session). Stage C decodes after its register (2026-12-03: it held all four decoded, 64
+  // flip-flops and two decoders more).
   logic [TexW-1:0] raw [4];
   logic [31:0]     unused_rgba;
   logic            bad;
   for (genvar k = 0; k < 4; k++) begin : g_pick
-    logic [1:0] bk;
-    assign bk = {k[1] ? b_par_q[3] : b_par_q[2], k[0] ? b_par_q[1] : b_par_q[0]};
-    assign raw[k] = s_rdata_i[32'(bk)*TexW +: TexW];
+    if (Lanes >= 4) begin : g_texel
+      logic [1:0] bk;
+      assign bk = {k[1] ? b_par_q[3] : b_par_q[2], k[0] ? b_par_q[1] : b_par_q[0]};
+      assign raw[k] = s_rdata_i[32'(bk)*TexW +: TexW];
+    end else begin : g_bank
+      assign raw[k] = s_rdata_i[k*TexW +: TexW];
+    end
   end
   // (bad_o depends on the format alone.)
   htx_tex_decode #(.TexW(TexW), .Formats(Formats)) u_check (
@@ -292,7 +297,7 @@ module htx_tex_sampler #(
       c_first_q   <= b_first_q;
       c_second_q  <= b_second_q;
       c_nearest_q <= b_nearest_q;
-      for (int k = 0; k < 4; k++) c_raw_q[k] <= (Lanes >= 4) ? raw[k] : s_rdata_i[k*TexW +: TexW];
+      for (int k = 0; k < 4; k++) c_raw_q[k] <= raw[k];
       c_par_q     <= b_par_q;
       c_fmt_q     <= b_fmt_q;
       c_wu_q      <= b_wu_q;
