@@ -101,6 +101,13 @@ module htx_raster #(
   localparam int unsigned AW   = (AccU > AccC) ? ((AccU > AccZ) ? AccU : AccZ)
                                                : ((AccC > AccZ) ? AccC : AccZ);
   localparam int unsigned NP   = 9;
+  // Methods = 0 builds no texture mapping (CAPS.METHODS reads 0): the planes are z and the colour
+  // channels only, at the width of the edge values that share their RAM (AWP), no per-pixel
+  // divider (setup has its own reciprocal unit), and fragments go from the request stage straight
+  // to the fragment stage; the texture port stays idle. Setup refuses textured triangles.
+  localparam bit          Textured = |Methods;
+  localparam int unsigned AWZC = (AccC > AccZ) ? AccC : AccZ;
+  localparam int unsigned AWP  = Textured ? AW : ((AWZC > EW) ? AWZC : EW);
   localparam int unsigned SideW = 136 + 6 * GradW;  // state, flat, u_off, v_off, LOD gradients, shift
   // DIVFREE's seed takes the uq, vq, q gradients at full precision; they travel beside the side band
   // as far as the DIVFREE stage.
@@ -146,8 +153,8 @@ module htx_raster #(
   // `icebreaker` (Iterative): an AFFINE triangle's u, v planes take the places of its uq, vq
   // planes, which it does not use (setup writes them over those, FoldUv), so the traversal steps
   // seven planes a pass instead of nine; planes 7 and 8 of the fragment are its planes 5 and 6.
-  localparam bit          FoldUv = Iterative;
-  localparam int unsigned NPT    = FoldUv ? 7 : NP;
+  localparam bit          FoldUv = Iterative && Textured;
+  localparam int unsigned NPT    = !Textured ? 4 : FoldUv ? 7 : NP;
   logic        fifo_none, rec_release, vr_req;
   logic [4:0]  vr_off;
   htx_raster_fifo #(.Depth(FifoDepth), .Hold(RecInFifo)) u_fifo (
@@ -204,11 +211,11 @@ module htx_raster #(
   logic [2:0]         tri_thr, tri_a_zero;
   logic               tri_dneg;
   logic [3*EW-1:0]    tri_e;
-  logic [3*NP*AW-1:0] tri_p;
+  logic [3*NP*AWP-1:0] tri_p;
   logic               pl_we;
   logic [1:0]         pl_sel;
   logic [3:0]         pl_idx;
-  logic [AW:0]        pl_data;
+  logic [AWP:0]       pl_data;
   logic [6*GradW-1:0] tri_lod_g;
   logic [7:0]         tri_lod_shift;
   logic [6*GWU-1:0]   tri_dfg;
@@ -217,7 +224,7 @@ module htx_raster #(
   // The iterative divider's reciprocal unit also serves setup (1/|det| and AFFINE's 1/q_i): one
   // unit, table and multiplier instead of two. The pipelined divider's unit cannot take requests
   // between fragments, so there setup keeps its own.
-  localparam bit          SharedRecip = !PixelPipelined;
+  localparam bit          SharedRecip = !PixelPipelined && Textured;
   localparam int unsigned DetW        = 2 * DW + 1;
   logic                      rq_start, rq_done;
   logic [DetW-1:0]           rq_x;
@@ -228,7 +235,7 @@ module htx_raster #(
     .RecipG(RecipG), .NrSteps(SetupSteps), .Iterative(Iterative), .QBits(QBits),
     .UvIntBits(UvIntBits), .TF(TF), .GradW(GradW), .Methods(Methods), .PerspColor(PerspColor),
     .Lod(TexLod || HasDf), .ExtRecip(SharedRecip), .HoldRecord(Iterative),
-    .ValuesInFifo(RecInFifo), .FoldUv(FoldUv), .AW(AW), .NP(NP)
+    .ValuesInFifo(RecInFifo), .FoldUv(FoldUv), .AW(AWP), .NP(NP)
   ) u_setup (
     .clk_i, .rst_ni,
     .abort_i        (abort),
@@ -293,8 +300,19 @@ module htx_raster #(
   logic [AddrW-1:0]  tv_addr;
   logic [NP*AW-1:0]  tv_p;
   logic [SideT-1:0]  tv_side;
-  logic [NPT*AW-1:0] tv_pt;
-  if (FoldUv) begin : g_fold_uv
+  logic [NPT*AWP-1:0] tv_pt;
+  if (!Textured) begin : g_zc_planes
+    // z, r, g, b widened to the shade stage's plane width (it takes each plane's low bits).
+    for (genvar p = 0; p < NP; p++) begin : g_p
+      if (p < NPT) begin : g_built
+        assign tv_p[AW*p +: AW] = AW'(tv_pt[AWP*p +: AWP]);
+      end else begin : g_none
+        assign tv_p[AW*p +: AW] = '0;
+      end
+    end
+    logic unused_tri_p;
+    assign unused_tri_p = ^tri_p[3*NP*AWP-1:3*NPT*AWP];
+  end else if (FoldUv) begin : g_fold_uv
     assign tv_p = {tv_pt[AW*6 +: AW], tv_pt[AW*5 +: AW], tv_pt};
     logic unused_tri_p;
     assign unused_tri_p = ^tri_p[3*NP*AW-1:3*NPT*AW];  // (zero: the planes go through the RAM)
@@ -312,7 +330,7 @@ module htx_raster #(
   // clocks per triangle for the row-offset multiplier, and NP + 3 clocks per step for the edges'
   // and planes' values (in block RAM, on one adder; setup writes each triangle's edges and planes
   // straight into that RAM, so neither keeps them in registers).
-  htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NPT), .AW(AW), .SideW(SideT), .AddrW(AddrW),
+  htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NPT), .AW(AWP), .SideW(SideT), .AddrW(AddrW),
                         .LookBehind(!Iterative), .SerialRowBase(Iterative),
                         .SerialPlanes(Iterative)) u_traverse (
     .clk_i, .rst_ni,
@@ -331,7 +349,7 @@ module htx_raster #(
     .tri_thr_i       (tri_thr),
     .tri_dneg_i      (tri_dneg),
     .tri_e_i         (tri_e),
-    .tri_p_i         (tri_p[3*NPT*AW-1:0]),
+    .tri_p_i         (tri_p[3*NPT*AWP-1:0]),
     .pl_we_i         (pl_we),
     .pl_sel_i        (pl_sel),
     .pl_idx_i        (pl_idx),
@@ -492,35 +510,50 @@ module htx_raster #(
   logic [LocW-1:0]   dv_u, dv_v;
   logic [23:0]       dv_rgb;
   logic [PayD-1:0]   dv_pay;
-  htx_raster_divider #(
-    .AccQ(AccQ), .AccU(AccU), .AccC(AccC), .UvIntBits(UvIntBits), .W(RecipW), .K(RecipK), .G(RecipG),
-    .Steps(PixelSteps), .TF(TF), .LocW(LocW), .PayW(PayD), .Pipelined(PixelPipelined),
-    .Color(PerspColor), .MulIterative(PixelMulIterative), .MulDigits(Iterative),
-    .Aux(SharedRecip), .AuxW(DetW), .AuxSteps(SetupSteps)
-  ) u_divider (
-    .clk_i, .rst_ni,
-    .abort_i    (abort),
-    .in_valid_i (df_valid),
-    .in_ready_o (df_ready),
-    .in_need_i  (sh_need),
-    .in_lut_i   (sh_method == htx_raster_pkg::MethodRecipLut),
-    .in_q_i     (df_q),
-    .in_u_i     (df_u),
-    .in_v_i     (df_v),
-    .in_c_i     (df_c),
-    .in_pay_i   ({df_side, df_addr, df_z, df_rgb, df_ua, df_va, df_q, df_exact, df_x, df_div_color}),
-    .out_valid_o(dv_valid),
-    .out_ready_i(dv_ready),
-    .out_u_o    (dv_u),
-    .out_v_o    (dv_v),
-    .out_rgb_o  (dv_rgb),
-    .out_pay_o  (dv_pay),
-    .aux_start_i(rq_start),
-    .aux_x_i    (rq_x),
-    .aux_done_o (rq_done),
-    .aux_r_o    (rq_r),
-    .aux_msb_o  (rq_msb)
-  );
+  if (Textured) begin : g_divider
+    htx_raster_divider #(
+      .AccQ(AccQ), .AccU(AccU), .AccC(AccC), .UvIntBits(UvIntBits), .W(RecipW), .K(RecipK), .G(RecipG),
+      .Steps(PixelSteps), .TF(TF), .LocW(LocW), .PayW(PayD), .Pipelined(PixelPipelined),
+      .Color(PerspColor), .MulIterative(PixelMulIterative), .MulDigits(Iterative),
+      .Aux(SharedRecip), .AuxW(DetW), .AuxSteps(SetupSteps)
+    ) u_divider (
+      .clk_i, .rst_ni,
+      .abort_i    (abort),
+      .in_valid_i (df_valid),
+      .in_ready_o (df_ready),
+      .in_need_i  (sh_need),
+      .in_lut_i   (sh_method == htx_raster_pkg::MethodRecipLut),
+      .in_q_i     (df_q),
+      .in_u_i     (df_u),
+      .in_v_i     (df_v),
+      .in_c_i     (df_c),
+      .in_pay_i   ({df_side, df_addr, df_z, df_rgb, df_ua, df_va, df_q, df_exact, df_x, df_div_color}),
+      .out_valid_o(dv_valid),
+      .out_ready_i(dv_ready),
+      .out_u_o    (dv_u),
+      .out_v_o    (dv_v),
+      .out_rgb_o  (dv_rgb),
+      .out_pay_o  (dv_pay),
+      .aux_start_i(rq_start),
+      .aux_x_i    (rq_x),
+      .aux_done_o (rq_done),
+      .aux_r_o    (rq_r),
+      .aux_msb_o  (rq_msb)
+    );
+  end else begin : g_no_divider
+    // No texel coordinates to divide for; setup's reciprocals come from its own unit.
+    assign dv_valid = df_valid;
+    assign df_ready = dv_ready;
+    assign dv_u     = '0;
+    assign dv_v     = '0;
+    assign dv_rgb   = '0;
+    assign dv_pay   = {df_side, df_addr, df_z, df_rgb, df_ua, df_va, df_q, df_exact, df_x, df_div_color};
+    assign rq_done  = 1'b0;
+    assign rq_r     = '0;
+    assign rq_msb   = '0;
+    logic unused_div;
+    assign unused_div = ^{sh_need, df_u, df_v, df_c, rq_start, rq_x};
+  end
 
   logic [SideW-1:0] dv_side;
   logic [AddrW-1:0] dv_addr;
@@ -611,7 +644,10 @@ module htx_raster #(
   logic [7:0]       rq_shift_q;
   logic [LocW-1:0]  rq_lu_q, rq_lv_q;
   logic [TexTagW-1:0] rq_tag_q;
-  assign sd_ready = !rq_valid_q || tex_req_ready_i;
+  // The request stage hands its fragment to the texture unit, or without texture mapping straight
+  // to the fragment path (rq_take: taken this clock).
+  logic rq_take;
+  assign sd_ready = !rq_valid_q || rq_take;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       rq_valid_q <= 1'b0; rq_u_q <= '0; rq_v_q <= '0; rq_st_q <= '0; rq_q_q <= '0; rq_g_q <= '0;
@@ -637,37 +673,77 @@ module htx_raster #(
       end
     end
   end
-  assign tex_req_valid_o      = rq_valid_q;
-  assign tex_req_u_o          = rq_u_q;
-  assign tex_req_v_o          = rq_v_q;
-  assign tex_req_filter_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_FILTER_LSB +: 2];
-  assign tex_req_wrap_u_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_WRAP_U_LSB +: 2];
-  assign tex_req_wrap_v_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_WRAP_V_LSB +: 2];
-  assign tex_req_slot_o       = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_TEXTURE_LSB +: 8];
-  assign tex_req_lod_direct_o = 1'b0;
-  assign tex_req_lod_o        = '0;
-  // The LOD's Q is max(Q, 1) (docs/model.md §6, lod_at).
-  assign tex_req_lod_q_o      = ($signed(rq_q_q) < $signed(AccQ'(1))) ? QW'(1) : QW'(rq_q_q);
-  assign tex_req_lod_gux_o    = rq_g_q[0*GradW +: GradW];
-  assign tex_req_lod_guy_o    = rq_g_q[1*GradW +: GradW];
-  assign tex_req_lod_gvx_o    = rq_g_q[2*GradW +: GradW];
-  assign tex_req_lod_gvy_o    = rq_g_q[3*GradW +: GradW];
-  assign tex_req_lod_gqx_o    = rq_g_q[4*GradW +: GradW];
-  assign tex_req_lod_gqy_o    = rq_g_q[5*GradW +: GradW];
-  assign tex_req_lod_shift_o  = rq_shift_q;
-  assign tex_req_lod_u_o      = rq_lu_q;
-  assign tex_req_lod_v_o      = rq_lv_q;
-  assign tex_req_tag_o        = rq_tag_q;
+  logic               ret_valid, ret_ready;
+  logic [31:0]        ret_rgba;
+  logic [TexTagW-1:0] ret_tag;
+  if (Textured) begin : g_tex_port
+    assign tex_req_valid_o      = rq_valid_q;
+    assign tex_req_u_o          = rq_u_q;
+    assign tex_req_v_o          = rq_v_q;
+    assign tex_req_filter_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_FILTER_LSB +: 2];
+    assign tex_req_wrap_u_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_WRAP_U_LSB +: 2];
+    assign tex_req_wrap_v_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_WRAP_V_LSB +: 2];
+    assign tex_req_slot_o       = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_TEXTURE_LSB +: 8];
+    assign tex_req_lod_direct_o = 1'b0;
+    assign tex_req_lod_o        = '0;
+    // The LOD's Q is max(Q, 1) (docs/model.md §6, lod_at).
+    assign tex_req_lod_q_o      = ($signed(rq_q_q) < $signed(AccQ'(1))) ? QW'(1) : QW'(rq_q_q);
+    assign tex_req_lod_gux_o    = rq_g_q[0*GradW +: GradW];
+    assign tex_req_lod_guy_o    = rq_g_q[1*GradW +: GradW];
+    assign tex_req_lod_gvx_o    = rq_g_q[2*GradW +: GradW];
+    assign tex_req_lod_gvy_o    = rq_g_q[3*GradW +: GradW];
+    assign tex_req_lod_gqx_o    = rq_g_q[4*GradW +: GradW];
+    assign tex_req_lod_gqy_o    = rq_g_q[5*GradW +: GradW];
+    assign tex_req_lod_shift_o  = rq_shift_q;
+    assign tex_req_lod_u_o      = rq_lu_q;
+    assign tex_req_lod_v_o      = rq_lv_q;
+    assign tex_req_tag_o        = rq_tag_q;
+    assign rq_take         = tex_req_ready_i;
+    assign ret_valid       = tex_out_valid_i;
+    assign ret_rgba        = tex_out_rgba_i;
+    assign ret_tag         = tex_out_tag_i;
+    assign tex_out_ready_o = ret_ready;
+  end else begin : g_no_tex_port
+    // The fragment returns at once with its tag and no texel (textured is 0 in every tag).
+    assign tex_req_valid_o      = 1'b0;
+    assign tex_req_u_o          = '0;
+    assign tex_req_v_o          = '0;
+    assign tex_req_filter_o     = '0;
+    assign tex_req_wrap_u_o     = '0;
+    assign tex_req_wrap_v_o     = '0;
+    assign tex_req_slot_o       = '0;
+    assign tex_req_lod_direct_o = 1'b0;
+    assign tex_req_lod_o        = '0;
+    assign tex_req_lod_q_o      = '0;
+    assign tex_req_lod_gux_o    = '0;
+    assign tex_req_lod_guy_o    = '0;
+    assign tex_req_lod_gvx_o    = '0;
+    assign tex_req_lod_gvy_o    = '0;
+    assign tex_req_lod_gqx_o    = '0;
+    assign tex_req_lod_gqy_o    = '0;
+    assign tex_req_lod_shift_o  = '0;
+    assign tex_req_lod_u_o      = '0;
+    assign tex_req_lod_v_o      = '0;
+    assign tex_req_tag_o        = '0;
+    assign tex_out_ready_o      = 1'b0;
+    assign rq_take   = ret_ready;
+    assign ret_valid = rq_valid_q;
+    assign ret_rgba  = '0;
+    assign ret_tag   = rq_tag_q;
+    logic unused_tex;
+    assign unused_tex = ^{tex_req_ready_i, tex_out_valid_i, tex_out_rgba_i, tex_out_tag_i, rq_u_q, rq_v_q,
+                          rq_q_q, rq_g_q, rq_shift_q, rq_lu_q, rq_lv_q, rq_st_q};
+  end
 
   // ---- Texel back: drop what an abort left in the texture unit, combine, fragment stage ----------
   logic       req_fire, ret_fire, ret_keep, frag_ready;
   logic [7:0] out_cnt_q, drop_q, out_cnt_next;
   logic [15:0] pend_q;
-  assign req_fire = tex_req_valid_o && tex_req_ready_i;
-  assign ret_fire = tex_out_valid_i && tex_out_ready_o;
+  assign req_fire = rq_valid_q && rq_take;
+  assign ret_fire = ret_valid && ret_ready;
   assign out_cnt_next = out_cnt_q + 8'(req_fire) - 8'(ret_fire);
-  assign tex_out_ready_o = (drop_q != 0) || c_in_ready;
-  assign ret_keep = tex_out_valid_i && (drop_q == 0) && !abort;
+  assign ret_ready = (drop_q != 0) || c_in_ready;
+  assign ret_keep = ret_valid && (drop_q == 0) && !abort;
 
   logic [AddrW-1:0] t_addr;
   logic [ZBits-1:0] t_z;
@@ -675,7 +751,7 @@ module htx_raster #(
   logic             t_textured, t_modulate, t_zwrite;
   logic [2:0]       t_func;
   logic [31:0]      t_state;
-  assign {t_zwrite, t_func, t_modulate, t_textured, t_rgb, t_z, t_addr} = tex_out_tag_i;
+  assign {t_zwrite, t_func, t_modulate, t_textured, t_rgb, t_z, t_addr} = ret_tag;
   // Combine, then the fragment stage's input (c_*). `icebreaker` (Iterative) modulates one channel
   // per clock on one multiplier in a stage of its own; otherwise all channels at once, in place.
   logic             c_valid, c_in_ready, c_zwrite, cmb_busy;
@@ -683,7 +759,15 @@ module htx_raster #(
   logic [AddrW-1:0] c_addr;
   logic [ZBits-1:0] c_z;
   logic [23:0]      c_rgb;
-  if (Iterative) begin : g_combine_serial
+  if (!Textured) begin : g_no_combine
+    assign c_valid    = ret_keep;
+    assign c_in_ready = frag_ready;
+    assign c_rgb      = t_rgb;
+    assign {c_zwrite, c_func, c_z, c_addr} = {t_zwrite, t_func, t_z, t_addr};
+    assign cmb_busy   = 1'b0;
+    logic unused_t;
+    assign unused_t = ^{t_modulate, t_textured, ret_rgba};
+  end else if (Iterative) begin : g_combine_serial
     htx_tex_combine_serial #(.PayW(4 + ZBits + AddrW)) u_combine (
       .clk_i, .rst_ni,
       .abort_i    (abort),
@@ -691,7 +775,7 @@ module htx_raster #(
       .in_ready_o (c_in_ready),
       .textured_i (t_textured),
       .modulate_i (t_modulate),
-      .texel_i    (tex_out_rgba_i[23:0]),
+      .texel_i    (ret_rgba[23:0]),
       .color_i    (t_rgb),
       .pay_i      ({t_zwrite, t_func, t_z, t_addr}),
       .out_valid_o(c_valid),
@@ -701,7 +785,7 @@ module htx_raster #(
       .busy_o     (cmb_busy)
     );
     logic unused_alpha;
-    assign unused_alpha = ^tex_out_rgba_i[31:24];  // the fragment path has no alpha
+    assign unused_alpha = ^ret_rgba[31:24];  // the fragment path has no alpha
   end else begin : g_combine
     logic [31:0] t_rgba;
     logic        unused_alpha;
@@ -709,7 +793,7 @@ module htx_raster #(
     htx_tex_combine u_combine (
       .textured_i(t_textured),
       .modulate_i(t_modulate),
-      .texel_i   (tex_out_rgba_i),
+      .texel_i   (ret_rgba),
       .color_i   ({8'h00, t_rgb}),
       .rgba_o    (t_rgba)
     );

@@ -2,7 +2,9 @@
 // htx::model_config("icebreaker") (hw/model/src/model/config.cpp) field by field; the `rtl` engine
 // checks that before it renders.
 module htx_raster_icebreaker #(
-  parameter int unsigned FbPixels = 19200   // 160 x 120; the rtl engine uses 262144 (the depth window)
+  parameter int unsigned FbPixels = 19200,  // 160 x 120; the rtl engine uses 262144 (the depth window)
+  // The methods built; 5'b00000 is the build without texture mapping (raster_untextured_test.cpp).
+  parameter logic [4:0]  Methods  = 5'b11111
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -27,7 +29,7 @@ module htx_raster_icebreaker #(
 );
   htx_raster_subsys #(
     .XyIntBits(12), .ZBits(16), .GF(16), .RecipW(24), .RecipK(8), .RecipG(2), .SetupSteps(2),
-    .Iterative(1'b1), .QBits(24), .UvIntBits(13), .TF(10), .PixelSteps(1), .Methods(5'b11111),
+    .Iterative(1'b1), .QBits(24), .UvIntBits(13), .TF(10), .PixelSteps(1), .Methods(Methods),
     .PerspColor(1'b0), .PixelPipelined(1'b0), .PixelMulIterative(1'b0), .SubdivDepth(64), .DfFracBits(2), .DfCap(64), .LF(6), .LogIdx(6),
     .CoordW(20), .GradW(16),
     .FifoDepth(64), .FbPixels(FbPixels)

@@ -145,13 +145,18 @@ module htx_raster_setup #(
   // ---- Accept and check the state word --------------------------------------------------------
   // A method this build leaves out, a subdivision length outside 2..64 or a depth function beyond
   // `always` is consumed, draws nothing and raises ERR_STATE.
+  localparam bit Textured = |Methods;  // texture mapping built (some perspective method)
   logic take, state_bad, method_bad, tri_skip;
   logic [2:0] rec_method;
   logic [6:0] rec_n;
   assign rec_method  = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
   assign rec_n       = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_SUBDIV_N_LSB +: 7];
   // DIVFREE's SUBDIV_N field carries the texture's last mip level (0..8, docs/raster.md).
-  assign method_bad  = (rec_method > 3'd4) || !Methods[rec_method] ||
+  // A build without any method (Methods = 0: no texture mapping, `Textured` below) refuses a
+  // textured triangle instead, and takes an untextured one whatever its method field names.
+  assign method_bad  = (rec_method > 3'd4) ||
+                       (Textured ? !Methods[rec_method]
+                                 : rec_state_i[htx_raster_reg_pkg::RASTER_STATE_TEXTURED_LSB]) ||
                        ((rec_method == htx_raster_pkg::MethodSubdiv) && ((rec_n < 7'd2) || (rec_n > 7'd64))) ||
                        ((rec_method == htx_raster_pkg::MethodDivFree) && (rec_n > 7'd8));
   // take: setup starts on a record. Without HoldRecord it copies the record and releases it at
@@ -642,7 +647,8 @@ module htx_raster_setup #(
   // ---- Planes: z, r, g, b, q, uq, vq, and for AFFINE ua, va -------------------------------------
   // Nine plane units working in parallel, or (Iterative, the `icebreaker` configuration) one unit
   // taking the planes in turn (htx_raster_plane_seq).
-  localparam int unsigned NS  = HasAffine ? NP : 7;  // planes built: ua, va only for AFFINE
+  // Planes built: ua, va only for AFFINE; q, uq, vq only with texture mapping.
+  localparam int unsigned NS  = HasAffine ? NP : Textured ? 7 : 4;
   logic                 apl_start;         // AFFINE's vertex coordinates are ready (pulse)
   logic [1:0]           apl_done;          // the ua, va planes are done
   logic [LocW-1:0]      ua_v [3];
@@ -676,9 +682,15 @@ module htx_raster_setup #(
   // Every plane's vertex values widened to VSW signed bits (unsigned ones zero-extended): plane p,
   // vertex i at 3 p + i, in the order z, r, g, b, q, uq, vq, ua, va. Plane p's own value width is
   // plane_vb(p); its low bits of the widened word are its values.
-  localparam int unsigned VS  = ((ZBits > CB ? ZBits : CB) > (QBits > UQ ? QBits : UQ)
-                                 ? (ZBits > CB ? ZBits : CB) : (QBits > UQ ? QBits : UQ)) + 1;
-  localparam int unsigned VSW = (VS > LocW + 1) ? VS : LocW + 1;
+  // Without texture mapping only z and the colour channels have planes. The shared unit's jobs
+  // (the determinant and the edge values, 2 DW + 2 bits) bound the width from below as well: its
+  // accumulator is VSW + DW + 2 bits, and its words, VSW + GF + 3 bits, fill the plane RAM's AW + 1.
+  localparam int unsigned VZC = (ZBits > CB ? ZBits : CB) + 1;
+  localparam int unsigned VS  = Textured ? (((ZBits > CB ? ZBits : CB) > (QBits > UQ ? QBits : UQ)
+                                 ? (ZBits > CB ? ZBits : CB) : (QBits > UQ ? QBits : UQ)) + 1) : VZC;
+  localparam int unsigned VSL = (Textured && (LocW + 1 > VS)) ? LocW + 1 : VS;
+  localparam int unsigned VSJ = (AW - GF - 2 > DW) ? AW - GF - 2 : DW;
+  localparam int unsigned VSW = (VSL > VSJ) ? VSL : VSJ;
   function automatic int unsigned plane_vb(input int unsigned p);
     if (p == 0)      plane_vb = ZBits;
     else if (p <= 3) plane_vb = CB;
@@ -785,7 +797,7 @@ module htx_raster_setup #(
     logic [3:0]          s_idx;
     logic [NS*3*VSW-1:0] s_values;
     logic [GS-1:0]       s_gxw, s_gyw;
-    htx_raster_plane_seq #(.NP(NS), .NFirst(7), .VB(VSW), .DW(DW), .W(RecipW), .GF(GF), .ShiftW(ShiftW),
+    htx_raster_plane_seq #(.NP(NS), .NFirst((NS < 7) ? NS : 7), .VB(VSW), .DW(DW), .W(RecipW), .GF(GF), .ShiftW(ShiftW),
                            .AccW(AS), .GW(GS), .IdxW(4), .Load(ValuesInFifo), .Jobs(1'b1)) u_seq (
       .clk_i, .rst_ni,
       .abort_i      (planes_abort),
@@ -860,7 +872,18 @@ module htx_raster_setup #(
       logic [31:0] wsel;
       assign wsel     = vr_data_i & wmask;
       assign lo_value = VSW'(wsel) | VSW'(cbyte);
+      if (VSW < 32) begin : g_narrow
+        logic unused_wsel;
+        assign unused_wsel = ^wsel[31:VSW];  // (above every plane's value without texture mapping)
+      end
       assign late_value = (s_idx == 4'd7) ? VSW'($signed(ua_v[0])) : VSW'($signed(va_v[0]));
+      // The value with the high word of uq or vq above its low word (texture mapping only).
+      logic [VSW-1:0] hi_value;
+      if (Textured) begin : g_hi
+        assign hi_value = {(VSW-32)'($signed(vr_data_i[UQ-33:0])), a_q[2][31:0]};
+      end else begin : g_no_hi
+        assign hi_value = a_q[2];
+      end
       assign ua_take    = (ld_q == LdReq) && (s_idx == 4'd7);
       assign va_take    = (ld_q == LdReq) && (s_idx == 4'd8);
 
@@ -888,7 +911,7 @@ module htx_raster_setup #(
               if (!lhi_q) begin
                 a_q[0] <= a_q[1]; a_q[1] <= a_q[2]; a_q[2] <= lo_value;
               end else begin
-                a_q[2][VSW-1:32] <= (VSW-32)'($signed(vr_data_i[UQ-33:0]));
+                a_q[2] <= hi_value;
               end
               lhi_q <= !last_word;
               if (last_word) lv_q <= lv_q + 2'd1;
@@ -922,28 +945,36 @@ module htx_raster_setup #(
     assign pl_idx_o  = job_we ? {2'b00, job_widx}
                      : (FoldUv && (s_idx >= 4'd7)) ? s_idx + 4'd1 : s_idx + 4'd3;
     assign pl_data_o = (AW+1)'(s_word);
-    // Full-precision gradients of uq, vq (GWU bits) and q (GWQ bits, sign-extended) for the LOD unit.
-    logic [GWU-1:0] lgx_q [3];
-    logic [GWU-1:0] lgy_q [3];
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        for (int k = 0; k < 3; k++) begin lgx_q[k] <= '0; lgy_q[k] <= '0; end
-      end else if (s_valid && (s_idx >= 4'd4) && (s_idx <= 4'd6)) begin
-        if (s_idx == 4'd4) begin
-          lgx_q[2] <= GWU'($signed(s_gxw[GWQ-1:0]));
-          lgy_q[2] <= GWU'($signed(s_gyw[GWQ-1:0]));
-        end else begin
-          lgx_q[{1'b0, s_idx[1]}] <= s_gxw[GWU-1:0];  // 5 (uq) -> 0, 6 (vq) -> 1
-          lgy_q[{1'b0, s_idx[1]}] <= s_gyw[GWU-1:0];
+    if (Textured) begin : g_lg
+      // Full-precision gradients of uq, vq (GWU bits) and q (GWQ bits, sign-extended) for the LOD unit.
+      logic [GWU-1:0] lgx_q [3];
+      logic [GWU-1:0] lgy_q [3];
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          for (int k = 0; k < 3; k++) begin lgx_q[k] <= '0; lgy_q[k] <= '0; end
+        end else if (s_valid && (s_idx >= 4'd4) && (s_idx <= 4'd6)) begin
+          if (s_idx == 4'd4) begin
+            lgx_q[2] <= GWU'($signed(s_gxw[GWQ-1:0]));
+            lgy_q[2] <= GWU'($signed(s_gyw[GWQ-1:0]));
+          end else begin
+            lgx_q[{1'b0, s_idx[1]}] <= s_gxw[GWU-1:0];  // 5 (uq) -> 0, 6 (vq) -> 1
+            lgy_q[{1'b0, s_idx[1]}] <= s_gyw[GWU-1:0];
+          end
         end
       end
+      assign lg[0] = lgx_q[0];
+      assign lg[1] = lgy_q[0];
+      assign lg[2] = lgx_q[1];
+      assign lg[3] = lgy_q[1];
+      assign lg[4] = lgx_q[2];
+      assign lg[5] = lgy_q[2];
+    end else begin : g_no_lg
+      for (genvar k = 0; k < 6; k++) begin : g_zero
+        assign lg[k] = '0;
+      end
+      logic unused_res;
+      assign unused_res = ^{s_valid, apl_done};  // (no LOD gradients, no AFFINE planes)
     end
-    assign lg[0] = lgx_q[0];
-    assign lg[1] = lgy_q[0];
-    assign lg[2] = lgx_q[1];
-    assign lg[3] = lgy_q[1];
-    assign lg[4] = lgx_q[2];
-    assign lg[5] = lgy_q[2];
     logic unused_s;
     // ((AW+1)'() may drop a top bit of s_word)
     assign unused_s = ^{s_gxw, s_gyw, s_word};

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,45 @@ inline RtlResult draw(const std::string& name, const std::vector<Tri>& tris, int
   r.depth = sim.read_depth(n);
   for (uint32_t& z : r.depth) z &= (uint32_t{1} << z_bits) - 1;
   return r;
+}
+
+// Random untextured triangles (fixed seed): positions on and off the screen, tiny to huge, random
+// colours, depth, depth functions, depth write, flat or Gouraud, and any method.
+inline ScreenScene random_scene(uint32_t seed, int n, int width, int height) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  ScreenScene s;
+  s.name = "random";
+  s.width = width;
+  s.height = height;
+  s.clear_color = static_cast<uint16_t>(rng());
+  s.clear_depth = rng() % 3 == 0 ? static_cast<uint32_t>(rng()) : 0xFFFFFFFFu;
+  for (int i = 0; i < n; ++i) {
+    ScreenTri t;
+    // Size class: tiny (sub-pixel to a few pixels), screen-sized, or far beyond the screen.
+    const int cls = static_cast<int>(rng() % 8);
+    // (Mid-size and huge triangles are kept rarer than tiny ones so the test stays quick.)
+    const double spread = cls < 4 ? 4.0 : (cls < 7 ? 40.0 : (rng() % 4 == 0 ? 3000.0 : 40.0));
+    const double cx = unit(rng) * (width + 40) - 20, cy = unit(rng) * (height + 40) - 20;
+    for (ScreenVertex& v : t.v) {
+      v.x = cx + (unit(rng) - 0.5) * spread;
+      v.y = cy + (unit(rng) - 0.5) * spread;
+      v.z = unit(rng) * 1.2 - 0.1;  // clamped to [0, 1] by the encoder
+      v.w = 0.5 + unit(rng) * 4;
+      v.r = unit(rng);
+      v.g = unit(rng);
+      v.b = unit(rng);
+      v.a = unit(rng);
+    }
+    if (rng() % 16 == 0) t.v[2] = t.v[1];  // zero area
+    t.state.textured = false;
+    t.state.gouraud = rng() % 4 != 0;
+    t.state.depth_func = static_cast<DepthFunc>(rng() % 6);
+    t.state.depth_write = rng() % 4 != 0;
+    t.state.method = static_cast<Method>(rng() % 5);  // AFFINE, SUBDIV, RECIP_LUT, RECIP_NR, DIVFREE
+    s.tris.push_back(t);
+  }
+  return s;
 }
 
 }  // namespace htx::raster_test

@@ -9,6 +9,8 @@
 #include "Vhtx_raster_full_pc___024root.h"
 #include "Vhtx_raster_icebreaker.h"
 #include "Vhtx_raster_icebreaker___024root.h"
+#include "Vhtx_raster_icebreaker_untextured.h"
+#include "Vhtx_raster_icebreaker_untextured___024root.h"
 #include "htx_regs.h"
 #include "verilated.h"
 
@@ -72,6 +74,9 @@ bool read_request(Vhtx_raster_full& top, TexRequest* t) {
   HTX_READ_REQUEST(htx_raster_full__DOT__u_subsys, top.rootp, 48, 32, 24);
 }
 bool read_request(Vhtx_raster_icebreaker& top, TexRequest* t) {
+  HTX_READ_REQUEST(htx_raster_icebreaker__DOT__u_subsys, top.rootp, 20, 23, 16);
+}
+bool read_request(Vhtx_raster_icebreaker_untextured& top, TexRequest* t) {
   HTX_READ_REQUEST(htx_raster_icebreaker__DOT__u_subsys, top.rootp, 20, 23, 16);
 }
 bool read_request(Vhtx_raster_full_pc& top, TexRequest* t) {
@@ -146,9 +151,11 @@ RasterSim::RasterSim(const std::string& config) {
     port_ = std::make_unique<VerilatedPort<Vhtx_raster_full_pc>>();
   } else if (config == "icebreaker") {
     port_ = std::make_unique<VerilatedPort<Vhtx_raster_icebreaker>>();
+  } else if (config == "icebreaker_untextured") {
+    port_ = std::make_unique<VerilatedPort<Vhtx_raster_icebreaker_untextured>>();
   } else {
     throw std::invalid_argument("rtl engine: no Verilated raster for configuration '" + config +
-                                "' (built: full, full_pc, icebreaker)");
+                                "' (built: full, full_pc, icebreaker, icebreaker_untextured)");
   }
   port_->reset();
 }

@@ -27,8 +27,10 @@ struct TexRequest {
 class RasterSim {
  public:
   // config: "full" or "icebreaker" (the Verilated configurations; "full" as rtl_config, without
-  // perspective-correct colour), or "full_pc" (model_config("full") exactly, perspective_color
-  // included). Throws std::invalid_argument for any other name. Resets the subsystem.
+  // perspective-correct colour), "full_pc" (model_config("full") exactly, perspective_color
+  // included), or "icebreaker_untextured" (`icebreaker` built without texture mapping: it draws
+  // untextured triangles as "icebreaker" does and refuses textured ones). Throws
+  // std::invalid_argument for any other name. Resets the subsystem.
   explicit RasterSim(const std::string& config);
   ~RasterSim();
   RasterSim(const RasterSim&) = delete;
