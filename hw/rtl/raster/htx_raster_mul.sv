@@ -7,7 +7,8 @@
 // configuration trades clocks for LUTs and DSPs). DigitSerial = 1 (with Iterative = 0): one digit
 // product per clock on one DSP, or with b whole one 15-bit digit of a per clock on about
 // BWidth / 16 DSPs (g_digits; the `icebreaker` divider). The operands must stay stable while
-// start_i is held (they are read on every clock of the product); done_o is a one-cycle pulse.
+// start_i is held (DigitSerial reads them on every clock of the product; Iterative takes them,
+// neg_i and extra_i at the start); done_o is a one-cycle pulse.
 // abort_i drops a product in progress, so a unit aborted mid-product does not take its stale
 // result for the next one.
 module htx_raster_mul #(
@@ -161,20 +162,24 @@ module htx_raster_mul #(
     // in the same registers (the plane unit's rounding shift, instead of a barrel shifter).
     localparam int unsigned CntW = $clog2(BWidth + 2**ExtraW);
 
-    logic                     busy_q, done_q, last, in_mul, finish;
+    logic                     busy_q, done_q, last, in_mul, finish, neg_q;
     logic [CntW-1:0]          cnt_q;
     logic signed [AWidth:0]   h_q, addend, sum;
     logic [BWidth-1:0]        l_q;
+    // a, neg_i and extra_i are taken at the start, like b: the adder then starts from registers,
+    // not from the caller's operand multiplexers (`icebreaker`'s setup, docs/raster.md).
+    logic signed [AWidth-1:0] a_q;
+    logic [ExtraW-1:0]        extra_q;
 
     assign in_mul = (cnt_q < CntW'(BWidth));
     assign last   = (cnt_q == CntW'(BWidth - 1));
-    assign finish = (cnt_q == CntW'(BWidth - 1) + CntW'(extra_i));
-    assign addend = (l_q[0] && in_mul) ? (AWidth + 1)'(a_i) : '0;
+    assign finish = (cnt_q == CntW'(BWidth - 1) + CntW'(extra_q));
+    assign addend = (l_q[0] && in_mul) ? (AWidth + 1)'(a_q) : '0;
     // h + addend, or h - addend for b's sign bit: one adder (htx_raster_addsub), not two. A
     // negated product swaps the two: -(a b) = sum of -b_i a 2^i + b_(B-1) a 2^(B-1), and its
     // partial sums are bounded as the positive product's are.
     htx_raster_addsub #(.W(AWidth + 1)) u_addsub (
-      .a_i(h_q), .b_i(addend), .sub_i(last ^ neg_i), .sum_o(sum)
+      .a_i(h_q), .b_i(addend), .sub_i(last ^ neg_q), .sum_o(sum)
     );
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -184,6 +189,7 @@ module htx_raster_mul #(
         cnt_q  <= '0;
         h_q    <= '0;
         l_q    <= '0;
+        neg_q  <= 1'b0;
       end else if (abort_i) begin
         busy_q <= 1'b0;
         done_q <= 1'b0;
@@ -194,6 +200,7 @@ module htx_raster_mul #(
           cnt_q  <= '0;
           h_q    <= '0;
           l_q    <= b_i;
+          neg_q  <= neg_i;
         end else if (busy_q) begin
           {h_q, l_q} <= {sum[AWidth], sum, l_q[BWidth-1:1]};
           cnt_q      <= cnt_q + 1'b1;
@@ -202,6 +209,13 @@ module htx_raster_mul #(
             done_q <= 1'b1;
           end
         end
+      end
+    end
+
+    always_ff @(posedge clk_i) begin
+      if (!busy_q && !done_q && start_i) begin
+        a_q     <= a_i;
+        extra_q <= extra_i;
       end
     end
 

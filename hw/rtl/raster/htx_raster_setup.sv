@@ -123,7 +123,7 @@ module htx_raster_setup #(
   localparam int unsigned ShiftW = 8;
 
   // StCoef (ValuesInFifo): the edge coefficients are read from the record in the FIFO.
-  typedef enum logic [2:0] {StIdle, StCoef, StDet0, StDet1, StEdges, StWait, StOut} state_e;
+  typedef enum logic [2:0] {StIdle, StCoef, StDet0, StDet1, StDetChk, StEdges, StWait, StOut} state_e;
 
   state_e state_q;
   logic [31:0]            st_v;      // the record's values (HoldRecord: the input stage's)
@@ -345,6 +345,20 @@ module htx_raster_setup #(
     assign ethr[k] = !((!ea[k][DW-1] && !ea_zero[k]) ||
                        (ea_zero[k] && !eb[k][DW-1] && (eb[k] != 0)));
   end
+  // Iterative: the thresholds a clock later from a register (the coefficients hold from StDet0,
+  // and the first use is in StEdges), so their tests do not run on into the products that take
+  // them as a negation (`icebreaker`'s critical path, docs/raster.md).
+  logic [2:0] ethr_s;
+  if (Iterative) begin : g_thr_q
+    logic [2:0] ethr_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) ethr_q <= '0;
+      else         ethr_q <= ethr;
+    end
+    assign ethr_s = ethr_q;
+  end else begin : g_thr
+    assign ethr_s = ethr;
+  end
 
   // The vertex deltas are edge coefficients: dx1 = x1 - x0 = b_0 and dy2 = y2 - y0 = a_2, and dy1,
   // dx2 only negated, as a_0 = y0 - y1 and b_2 = x0 - x2: the plane units take those, and
@@ -481,7 +495,7 @@ module htx_raster_setup #(
       .a_i    (emul_a),
       .b_i    (emul_b),
       // (This branch is `full`'s, which negates |det| instead of redoing det: no redo_q term.)
-      .neg_i  ((state_q == StEdges) ? ethr[ek] : (state_q == StDet1)),
+      .neg_i  ((state_q == StEdges) ? ethr_s[ek] : (state_q == StDet1)),
       .extra_i(1'b0),
       .done_o (emul_done),
       .p_o    (emul_p)
@@ -503,7 +517,7 @@ module htx_raster_setup #(
     htx_raster_addsub #(.W(EW)) u_part (
       .a_i  (EW'(emul_p)),
       .b_i  (part_base),
-      .sub_i((state_q == StEdges) && !edge_half_q && (ethr[ek] ^ det_neg_q)),
+      .sub_i((state_q == StEdges) && !edge_half_q && (ethr_s[ek] ^ det_neg_q)),
       .sum_o(part_sum)
     );
     assign job_req  = 1'b0;
@@ -528,7 +542,7 @@ module htx_raster_setup #(
     assign j = edge_k_q;
     always_comb begin
       job_acc  = 1'b1;
-      job_neg  = ethr[1];
+      job_neg  = ethr_s[1];
       job_a    = eb[2];
       job_bsel = 3'd1;
       unique case (state_q)
@@ -536,18 +550,18 @@ module htx_raster_setup #(
         StDet1: begin job_neg = !redo_q; end
         default: begin
           unique case (j)
-            4'd0: begin job_a = ea[0]; job_bsel = 3'd2; job_neg = ethr[0]; job_acc = 1'b0; end
-            4'd1: begin job_a = eb[0]; job_bsel = 3'd3; job_neg = ethr[0]; end
+            4'd0: begin job_a = ea[0]; job_bsel = 3'd2; job_neg = ethr_s[0]; job_acc = 1'b0; end
+            4'd1: begin job_a = eb[0]; job_bsel = 3'd3; job_neg = ethr_s[0]; end
             4'd2: begin job_a = ea[1]; job_bsel = 3'd2; job_acc = 1'b0; end
             4'd3: begin job_a = eb[1]; job_bsel = 3'd3; end
             4'd4: begin job_a = eb[0]; job_bsel = 3'd0; end
-            4'd5: begin job_neg = !ethr[1]; end
-            4'd6: begin job_a = ea[2]; job_bsel = 3'd2; job_neg = ethr[2]; job_acc = 1'b0; end
-            4'd7: begin job_bsel = 3'd3; job_neg = ethr[2]; end
+            4'd5: begin job_neg = !ethr_s[1]; end
+            4'd6: begin job_a = ea[2]; job_bsel = 3'd2; job_neg = ethr_s[2]; job_acc = 1'b0; end
+            4'd7: begin job_bsel = 3'd3; job_neg = ethr_s[2]; end
             default: begin
               job_a    = j[0] ? eb[j[2:1]] : ea[j[2:1]];
               job_bsel = 3'd4;
-              job_neg  = ethr[j[2:1]];
+              job_neg  = ethr_s[j[2:1]];
               job_acc  = 1'b0;
             end
           endcase
@@ -582,14 +596,21 @@ module htx_raster_setup #(
   // -dx1 dy2 + dx2 dy1 = |det| (two more serial products, for half the triangles), instead of
   // through a negator; then det_next is |det| when det_start rises.
   localparam bit DetRedo = Iterative;
-  logic redo_q, det_again;
-  assign det_again = DetRedo && !redo_q && det_next[DetW-1];
+  // Iterative (DetCheck): det is registered (det_q) and judged in the clock after (StDetChk), so
+  // the plane unit's adder that forms it does not reach the record's release and the input stage
+  // in one clock (`icebreaker`'s critical path, docs/raster.md); one clock a triangle.
+  localparam bit DetCheck = Iterative;
+  logic                   redo_q, det_again, det_judge;
+  logic signed [DetW-1:0] det_j;  // the det judged
+  assign det_judge = DetCheck ? (state_q == StDetChk) : ((state_q == StDet1) && emul_done);
+  assign det_j     = DetCheck ? det_q : det_next;
+  assign det_again = DetRedo && !redo_q && det_j[DetW-1];
   assign det_abs   = (det_next[DetW-1] && !DetRedo) ? DetW'(-det_next) : DetW'(det_next);
-  assign tri_skip  = (state_q == StDet1) && emul_done && ((det_next == 0) || box_empty);
-  assign det_start = (state_q == StDet1) && emul_done && (det_next != 0) && !box_empty && !det_again;
+  assign tri_skip  = det_judge && ((det_j == 0) || box_empty);
+  assign det_start = det_judge && (det_j != 0) && !box_empty && !det_again;
   assign recip_start = det_start || av_start;
   // AFFINE's q_i: read from the FIFO in the clock before (ValuesInFifo), or the record's register.
-  assign recip_x = det_start ? det_abs
+  assign recip_x = det_start ? (DetCheck ? det_q : det_abs)
                  : ValuesInFifo ? DetW'(vr_data_i[QBits-1:0]) : DetW'(q_v[av_i]);
   assign planes_abort = abort_i || tri_skip;
   assign grad_shift = ShiftW'(RecipW) + ShiftW'(msbdet_q) - ShiftW'(GF);
@@ -1266,6 +1287,12 @@ module htx_raster_setup #(
           det_neg_q <= redo_q || det_next[DetW-1];
           edge_k_q  <= '0;
           edge_half_q <= 1'b0;
+          if (DetCheck) state_q <= StDetChk;
+          else if (tri_skip) state_q <= StIdle;
+          else if (det_again) begin redo_q <= 1'b1; state_q <= StDet0; end
+          else state_q <= StEdges;
+        end
+        StDetChk: begin
           if (tri_skip) state_q <= StIdle;
           else if (det_again) begin redo_q <= 1'b1; state_q <= StDet0; end
           else state_q <= StEdges;
@@ -1325,7 +1352,7 @@ module htx_raster_setup #(
   end
   assign tri_u_off_o = u_off_v;
   assign tri_v_off_o = v_off_v;
-  assign tri_thr_o = ethr;
+  assign tri_thr_o = ethr_s;
   assign tri_a_zero_o = ea_zero;
   assign tri_dneg_o = det_neg_q;
   assign busy_o    = (state_q != StIdle) && (state_q != StOut);

@@ -441,12 +441,13 @@ module htx_raster_traverse #(
     // triangle does not use and which are then that triangle's first bank; 2 and 3, or 6 and 7,
     // the gradients g_x and g_y (a and b of the edges), likewise a pair of regions a triangle.
     // A second read port (synthesis duplicates the block RAMs for it) reads each word's gradient
-    // in the clock its value is read, so no gradient is held in registers but word 0's, which the
-    // deciding clock steps before the RAM could know the direction: StLoad copies those two
-    // (3 clocks), then takes the triangle.
-    // The register after the RAM holds word 0 of the bank the next decision steps from, so the
-    // deciding clock steps edge 0 itself and the other NR - 1 words follow one a clock (a pass):
-    // NR clocks a step. Every pass steps (writes); a pass that leaves an emitted pixel also
+    // in the clock its value is read, so no gradient is held in registers.
+    // The deciding clock only decides, and reads word 0 of the bank the step goes from with the
+    // gradient of the step's direction; the NR words then follow one a clock (a pass): NR + 1
+    // clocks a step. (The deciding clock had stepped word 0 itself, from a register holding it and
+    // copies of its two gradients: NR clocks a step, but the decision then ran on through the
+    // step's adder into the RAM in one clock, `icebreaker`'s critical path; docs/raster.md.)
+    // Every pass steps (writes); a pass that leaves an emitted pixel also
     // captures its plane values into the fragment, and by its end the edges' signs tell whether the
     // next pixel is covered, that is whether the emitted one was its span's last. A row end after
     // a span steps the saved bank's values into the current one.
@@ -469,11 +470,11 @@ module htx_raster_traverse #(
     function automatic logic [2:0] grad_reg(input logic row, input logic par);
       grad_reg = {par, 1'b1, row};  // row 0: g_x, 1: g_y
     endfunction
-    logic [AW-1:0] g0x_q, g0y_q;  // word 0's gradients
     // A word is AW + 1 bits: a value at [AW-1:0], a gradient from setup at [AW:1] (the plane
     // unit's word with the bit below g, taken here by wiring).
     (* ram_style = "block" *) logic [AW:0] mem_q [2**(IW+3)];
-    logic [AW:0]   base_q, grad_q;
+    logic [AW-1:0] base_q;  // a value
+    logic [AW:0]   grad_q;
     logic [AW-1:0] sum, grad;
     logic [IW-1:0] idx_q;
     logic [IW+2:0] raddr, graddr, waddr;
@@ -481,35 +482,29 @@ module htx_raster_traverse #(
     logic          rd_bank_q;             // the bank the pass reads
     logic          cap_q, row_q, neg_q;   // the pass captures, steps a row, subtracts
     logic          start_pass, active, pass_end;
-    // StLoad: which of word 0's gradients is read (0 g_x, 1 g_y), and which arrives in base_q.
-    logic          ld_y_q, got_y_q, got_q, loading;
-    // This clock's word and what is done with it: the pass's registers, or in the deciding clock
-    // the decision itself.
+    logic          loading;
+    // This clock's word (a pass's), and the row flag of the gradients read now (the pass's, or in
+    // the deciding clock the decision's).
     logic [IW-1:0] c_idx, n_idx;  // n_idx: the word after c_idx, which the RAM reads now
-    logic          c_cap, c_wr_bank, c_row, c_neg;
+    logic          c_row;
 
     assign hold       = pl_we_i;
     assign loading    = (state_q == StLoad) && !hold;
     assign start_pass = !hold && !sweep_q && plane_step;
-    assign active     = !hold && (sweep_q || start_pass);
+    assign active     = !hold && sweep_q;
     assign pass_end   = !hold && sweep_q && (idx_q == IW'(NR - 1));
     assign c_idx      = sweep_q ? idx_q : '0;
     assign n_idx      = c_idx + 1'b1;
-    assign c_cap      = sweep_q ? cap_q : emit;
-    // A pass writes the current bank: the one the decision leaves for (save: the other one), which
-    // cur_q holds from then on.
-    assign c_wr_bank  = save ? !cur_q : cur_q;  // (save is 0 while sweep_q)
     assign c_row      = sweep_q ? row_q : step_row;
-    assign c_neg      = sweep_q ? neg_q : step_neg;
 
-    // Word 0 in the deciding clock; in a pass the word read with its value.
-    assign grad    = sweep_q ? grad_q[AW:1] : (step_row ? g0y_q : g0x_q);
+    // The gradient read with the value (word 0's in the deciding clock, for the pass's first step).
+    assign grad    = grad_q[AW:1];
     logic unused_grad_lsb;
     assign unused_grad_lsb = grad_q[0];  // (a value's bit in a start word)
     htx_raster_addsub #(.W(AW), .ZeroLsbs(8)) u_step (
       .a_i  (base_q[AW-1:0]),
       .b_i  (grad << 8),
-      .sub_i(c_neg),
+      .sub_i(neg_q),  // (the pass's: only a pass steps)
       .sum_o(sum)
     );
     // The edges' new signs, as their words are written.
@@ -521,8 +516,7 @@ module htx_raster_traverse #(
     // Read: StLoad's next word; the pass's next word; otherwise (between passes, and at a pass's
     // end) word 0 of the bank the next decision steps from.
     always_comb begin
-      if (state_q == StLoad)         raddr = {grad_reg(ld_y_q, !par_q), IW'(0)};
-      else if (start_pass)           raddr = {bank_reg(step_saved ? !cur_q : cur_q, par_q), n_idx};
+      if (start_pass)                raddr = {bank_reg(step_saved ? !cur_q : cur_q, par_q), IW'(0)};
       else if (sweep_q && !pass_end) raddr = {bank_reg(rd_bank_q, par_q), n_idx};
       else                           raddr = {bank_reg(past_end ? !cur_q : cur_q, par_q), IW'(0)};
     end
@@ -537,21 +531,19 @@ module htx_raster_traverse #(
         wdata = pl_data_i;
       end else begin
         we    = active;
-        waddr = {bank_reg(c_wr_bank, par_q), c_idx};
+        // A pass writes the current bank: the one its decision left for (save: the other one),
+        // which cur_q holds from then on.
+        waddr = {bank_reg(cur_q, par_q), c_idx};
         wdata = {1'b0, sum};
       end
     end
     // The gradient of the word the value port reads (the next word of the pass).
-    assign graddr = {grad_reg(c_row, par_q), n_idx};
+    assign graddr = {grad_reg(c_row, par_q), sweep_q ? n_idx : IW'(0)};
     always_ff @(posedge clk_i) begin
       if (we) mem_q[waddr] <= wdata;
       if (!hold) begin
-        base_q <= mem_q[raddr];
+        base_q <= mem_q[raddr][AW-1:0];
         grad_q <= mem_q[graddr];
-      end
-      if (loading && got_q) begin
-        if (got_y_q) g0y_q <= base_q[AW:1];
-        else         g0x_q <= base_q[AW:1];
       end
     end
 
@@ -564,36 +556,25 @@ module htx_raster_traverse #(
         cap_q     <= 1'b0;
         row_q     <= 1'b0;
         neg_q     <= 1'b0;
-        ld_y_q    <= 1'b0;
-        got_y_q   <= 1'b0;
-        got_q     <= 1'b0;
         par_q     <= 1'b1;  // the first triangle's start values go to region RegSt
         out_p_q   <= '0;
       end else if (abort_i) begin
         sweep_q  <= 1'b0;
-        ld_y_q   <= 1'b0;
-        got_q    <= 1'b0;
         par_q    <= 1'b1;  // setup starts over too
       end else begin
         if (state_q == StIdle) cur_q <= 1'b0;  // bank 0 holds the start values
         if (load_last) par_q <= !par_q;
-        if (loading) begin
-          // Read word 0's g_x, then its g_y; each arrives a clock later.
-          got_q   <= !load_last;
-          got_y_q <= ld_y_q;
-          ld_y_q  <= !load_last && !ld_y_q;
-        end
         for (int p = 0; p < NP; p++) begin
-          if (active && c_cap && (c_idx == IW'(p + 3))) out_p_q[AW*p +: AW] <= base_q[AW-1:0];
+          if (active && cap_q && (c_idx == IW'(p + 3))) out_p_q[AW*p +: AW] <= base_q[AW-1:0];
         end
         if (start_pass) begin
           // The pass goes on as its deciding clock began it (c_*).
           sweep_q   <= 1'b1;
-          idx_q     <= n_idx;  // (1)
+          idx_q     <= '0;
           rd_bank_q <= step_saved ? !cur_q : cur_q;
-          cap_q     <= c_cap;
+          cap_q     <= emit;
           row_q     <= c_row;
-          neg_q     <= c_neg;
+          neg_q     <= step_neg;
           // Leaving a span's first pixel: the step goes to the other bank, which becomes the
           // current one; the bank left behind keeps the first pixel's values for the next row.
           if (save) cur_q <= !cur_q;
@@ -605,8 +586,8 @@ module htx_raster_traverse #(
         end
       end
     end
-    // Word 0's g_y arrives: the triangle is taken.
-    assign load_last = loading && got_q && got_y_q;
+    // The triangle is taken in StLoad's one clock.
+    assign load_last = loading;
     // The fragment is complete when its capture pass ends; the edges' signs are the next pixel's.
     assign out_load  = pass_end && cap_q;
     assign out_last  = !cov;
