@@ -119,10 +119,22 @@ module htx_raster_traverse #(
   // few LUTs.
   logic cov, in_prev, in_next, left_of, right_of, empty_row, at_lo;
   logic below_lo, above_hi, on_lo, on_hi;
-  assign below_lo  = (x_q < x_lo_q);
-  assign above_hi  = (x_q > x_hi_q);
-  assign on_lo     = (x_q == x_lo_q);
-  assign on_hi     = (x_q == x_hi_q);
+  if (SerialPlanes && SerialRowBase) begin : g_xrel_q
+    // x moves only in a deciding clock that starts a pass (NP + 3 clocks without a decision), and
+    // the first decision of a triangle comes after StBase: the relations can come from a register
+    // a clock behind x, which takes their carry chains off the decision's path (docs/raster.md).
+    logic [3:0] xrel_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) xrel_q <= '0;
+      else         xrel_q <= {x_q < x_lo_q, x_q > x_hi_q, x_q == x_lo_q, x_q == x_hi_q};
+    end
+    assign {below_lo, above_hi, on_lo, on_hi} = xrel_q;
+  end else begin : g_xrel
+    assign below_lo  = (x_q < x_lo_q);
+    assign above_hi  = (x_q > x_hi_q);
+    assign on_lo     = (x_q == x_lo_q);
+    assign on_hi     = (x_q == x_hi_q);
+  end
   assign cov       = (&in_cur) && !below_lo && !above_hi;
   assign in_prev   = (&in_prev_e) && !below_lo && !on_lo;
   assign in_next   = (&in_next_e) && !above_hi && !on_hi;
