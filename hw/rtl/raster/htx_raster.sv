@@ -4,9 +4,10 @@
 // Parameters are the fields of the model's ModelConfig (docs/model.md) that this unit builds.
 // Every fragment that leaves traversal gets its texel coordinates from the perspective method
 // (shade: AFFINE; divider: RECIP_LUT, RECIP_NR, SUBDIV's exact points, perspective colour; subdiv:
-// SUBDIV's inner pixels) and leaves on the texture request port (docs/raster.md, "Texture port",
-// /work contract); the texel comes back in order with the fragment in its tag, then htx_tex_combine
-// and the fragment stage.
+// SUBDIV's inner pixels) and leaves on the texture request port (docs/raster.md, "Texture port";
+// docs/contracts.md); the texel comes back in order with the fragment in its tag, then htx_tex_combine
+// and the fragment stage. Built without any method (Methods = 0) the unit has no texture mapping:
+// fragments go from the request stage to the fragment stage, and textured triangles are refused.
 module htx_raster #(
   parameter int unsigned XyIntBits  = 16,
   parameter int unsigned ZBits      = 24,

@@ -1,8 +1,8 @@
 // Triangle setup (docs/model.md §2, docs/raster.md): determinant, winding (the model swaps vertices
 // 1 and 2 for a negative determinant: both windings are drawn), edge functions with the top-left rule, the pixel
 // box clipped to the screen, 1/det from the shared reciprocal unit, and the planes of z, the colour
-// channels (c q with PerspColor), q, uq, vq and, for AFFINE, the vertex texel coordinates
-// u_i = uq_i / q_i (three more reciprocals from the same unit, docs/model.md §5.1), and the LOD
+// channels (c q with PerspColor), q, uq, vq (with some method built) and, for AFFINE, the vertex
+// texel coordinates u_i = uq_i / q_i (three more reciprocals from the same unit, docs/model.md §5.1), and the LOD
 // unit's block-shifted gradients (§6). Edge values and plane values are delivered at the box's first pixel centre
 // (256 x_lo + 128, 256 y_lo + 128), where traversal starts. Zero-area triangles and triangles whose
 // box holds no pixel centre of the screen are consumed here and never reach traversal.

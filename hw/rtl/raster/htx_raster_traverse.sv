@@ -73,8 +73,8 @@ module htx_raster_traverse #(
 
   // StBack (LookBehind = 0): walking left over covered pixels to the first one of the span.
   // StBase (SerialRowBase = 1): forming y_lo * stride before the first row.
-  // StLoad (SerialPlanes = 1): copying word 0's two gradients out of the RAM, one a clock; the
-  // triangle is taken in its last clock.
+  // StLoad (SerialPlanes = 1): the one clock in which the triangle is taken, once the last step's
+  // planes are written and the last fragment has left.
   typedef enum logic [2:0] {StIdle, StSeek, StSeekL, StSeekR, StEmit, StBack, StBase, StLoad} state_e;
 
   state_e state_q;
@@ -88,7 +88,7 @@ module htx_raster_traverse #(
   logic                    dneg_q;
   logic                    sweep_q;   // SerialPlanes: the planes are being stepped (0 otherwise)
   logic                    hold;      // SerialPlanes: setup writes the plane RAM; nothing moves
-  logic                    load_last; // SerialPlanes: StLoad copies word 0's g_y
+  logic                    load_last; // SerialPlanes: StLoad takes the triangle
   logic                    accept;    // the triangle is taken this clock
   logic [2:0]              esgn_we;   // SerialPlanes: the pass writes edge k's new value ...
   logic                    esgn_d;    // ... whose sign bit is this
@@ -339,8 +339,8 @@ module htx_raster_traverse #(
     end else if (abort_i) begin
       state_q <= StIdle;
     end else if ((state_q == StIdle) || (state_q == StLoad)) begin
-      // SerialPlanes: word 0's gradients come out of the RAM first (StLoad), after the last step's
-      // planes and once the last fragment has left (its side band is side_q: no copy in the output).
+      // SerialPlanes: the triangle is taken in StLoad, after the last step's planes and once the
+      // last fragment has left (its side band is side_q: no copy in the output).
       if (SerialPlanes && (state_q == StIdle) && tri_valid_i && !sweep_q && !out_valid_q) begin
         state_q <= StLoad;
       end
@@ -525,8 +525,9 @@ module htx_raster_traverse #(
     end
     assign esgn_d = sum[AW-1];
 
-    // Read: StLoad's next word; the pass's next word; otherwise (between passes, and at a pass's
-    // end) word 0 of the bank the next decision steps from.
+    // Read: in the deciding clock word 0 of the bank the step goes from; in a pass its next word;
+    // otherwise (between passes, and at a pass's end) word 0 of the bank the next decision steps
+    // from (unused: the deciding clock reads it again).
     always_comb begin
       if (start_pass)                raddr = {bank_reg(step_saved ? !cur_q : cur_q, par_q), IW'(0)};
       else if (sweep_q && !pass_end) raddr = {bank_reg(rd_bank_q, par_q), n_idx};
@@ -580,7 +581,7 @@ module htx_raster_traverse #(
           if (active && cap_q && (c_idx == IW'(p + 3))) out_p_q[AW*p +: AW] <= base_q[AW-1:0];
         end
         if (start_pass) begin
-          // The pass goes on as its deciding clock began it (c_*).
+          // The pass steps as its deciding clock decided.
           sweep_q   <= 1'b1;
           idx_q     <= '0;
           rd_bank_q <= step_saved ? !cur_q : cur_q;
