@@ -658,14 +658,17 @@ module htx_raster #(
     end else if (sd_ready) begin
       rq_valid_q <= sd_valid;
       if (sd_valid) begin
-        rq_u_q     <= level0(sd_u, sd_side[95:64], sd_wrap_u == 2'd1);
-        rq_v_q     <= level0(sd_v, sd_side[127:96], sd_wrap_v == 2'd1);
-        rq_st_q    <= sd_st;
-        rq_q_q     <= sd_q;
-        rq_g_q     <= sd_side[128 +: 6*GradW];
-        rq_shift_q <= sd_side[128 + 6*GradW +: 8];
-        rq_lu_q    <= sd_u;
-        rq_lv_q    <= sd_v;
+        // Without texture mapping the request's fields stay 0 (the port is idle).
+        if (Textured) begin
+          rq_u_q     <= level0(sd_u, sd_side[95:64], sd_wrap_u == 2'd1);
+          rq_v_q     <= level0(sd_v, sd_side[127:96], sd_wrap_v == 2'd1);
+          rq_st_q    <= sd_st;
+          rq_q_q     <= sd_q;
+          rq_g_q     <= sd_side[128 +: 6*GradW];
+          rq_shift_q <= sd_side[128 + 6*GradW +: 8];
+          rq_lu_q    <= sd_u;
+          rq_lv_q    <= sd_v;
+        end
         rq_tag_q   <= {sd_st[htx_raster_reg_pkg::RASTER_STATE_DEPTH_WRITE_LSB],
                        sd_st[htx_raster_reg_pkg::RASTER_STATE_DEPTH_FUNC_LSB +: 3],
                        sd_st[htx_raster_reg_pkg::RASTER_STATE_COMBINE_LSB],
@@ -677,28 +680,28 @@ module htx_raster #(
   logic               ret_valid, ret_ready;
   logic [31:0]        ret_rgba;
   logic [TexTagW-1:0] ret_tag;
+  assign tex_req_valid_o      = Textured && rq_valid_q;
+  assign tex_req_u_o          = rq_u_q;
+  assign tex_req_v_o          = rq_v_q;
+  assign tex_req_filter_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_FILTER_LSB +: 2];
+  assign tex_req_wrap_u_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_WRAP_U_LSB +: 2];
+  assign tex_req_wrap_v_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_WRAP_V_LSB +: 2];
+  assign tex_req_slot_o       = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_TEXTURE_LSB +: 8];
+  assign tex_req_lod_direct_o = 1'b0;
+  assign tex_req_lod_o        = '0;
+  // The LOD's Q is max(Q, 1) (docs/model.md §6, lod_at).
+  assign tex_req_lod_q_o      = ($signed(rq_q_q) < $signed(AccQ'(1))) ? QW'(1) : QW'(rq_q_q);
+  assign tex_req_lod_gux_o    = rq_g_q[0*GradW +: GradW];
+  assign tex_req_lod_guy_o    = rq_g_q[1*GradW +: GradW];
+  assign tex_req_lod_gvx_o    = rq_g_q[2*GradW +: GradW];
+  assign tex_req_lod_gvy_o    = rq_g_q[3*GradW +: GradW];
+  assign tex_req_lod_gqx_o    = rq_g_q[4*GradW +: GradW];
+  assign tex_req_lod_gqy_o    = rq_g_q[5*GradW +: GradW];
+  assign tex_req_lod_shift_o  = rq_shift_q;
+  assign tex_req_lod_u_o      = rq_lu_q;
+  assign tex_req_lod_v_o      = rq_lv_q;
+  assign tex_req_tag_o        = Textured ? rq_tag_q : '0;  // (the tag also serves the return path)
   if (Textured) begin : g_tex_port
-    assign tex_req_valid_o      = rq_valid_q;
-    assign tex_req_u_o          = rq_u_q;
-    assign tex_req_v_o          = rq_v_q;
-    assign tex_req_filter_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_FILTER_LSB +: 2];
-    assign tex_req_wrap_u_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_WRAP_U_LSB +: 2];
-    assign tex_req_wrap_v_o     = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_WRAP_V_LSB +: 2];
-    assign tex_req_slot_o       = rq_st_q[htx_raster_reg_pkg::RASTER_STATE_TEXTURE_LSB +: 8];
-    assign tex_req_lod_direct_o = 1'b0;
-    assign tex_req_lod_o        = '0;
-    // The LOD's Q is max(Q, 1) (docs/model.md §6, lod_at).
-    assign tex_req_lod_q_o      = ($signed(rq_q_q) < $signed(AccQ'(1))) ? QW'(1) : QW'(rq_q_q);
-    assign tex_req_lod_gux_o    = rq_g_q[0*GradW +: GradW];
-    assign tex_req_lod_guy_o    = rq_g_q[1*GradW +: GradW];
-    assign tex_req_lod_gvx_o    = rq_g_q[2*GradW +: GradW];
-    assign tex_req_lod_gvy_o    = rq_g_q[3*GradW +: GradW];
-    assign tex_req_lod_gqx_o    = rq_g_q[4*GradW +: GradW];
-    assign tex_req_lod_gqy_o    = rq_g_q[5*GradW +: GradW];
-    assign tex_req_lod_shift_o  = rq_shift_q;
-    assign tex_req_lod_u_o      = rq_lu_q;
-    assign tex_req_lod_v_o      = rq_lv_q;
-    assign tex_req_tag_o        = rq_tag_q;
     assign rq_take         = tex_req_ready_i;
     assign ret_valid       = tex_out_valid_i;
     assign ret_rgba        = tex_out_rgba_i;
@@ -706,34 +709,13 @@ module htx_raster #(
     assign tex_out_ready_o = ret_ready;
   end else begin : g_no_tex_port
     // The fragment returns at once with its tag and no texel (textured is 0 in every tag).
-    assign tex_req_valid_o      = 1'b0;
-    assign tex_req_u_o          = '0;
-    assign tex_req_v_o          = '0;
-    assign tex_req_filter_o     = '0;
-    assign tex_req_wrap_u_o     = '0;
-    assign tex_req_wrap_v_o     = '0;
-    assign tex_req_slot_o       = '0;
-    assign tex_req_lod_direct_o = 1'b0;
-    assign tex_req_lod_o        = '0;
-    assign tex_req_lod_q_o      = '0;
-    assign tex_req_lod_gux_o    = '0;
-    assign tex_req_lod_guy_o    = '0;
-    assign tex_req_lod_gvx_o    = '0;
-    assign tex_req_lod_gvy_o    = '0;
-    assign tex_req_lod_gqx_o    = '0;
-    assign tex_req_lod_gqy_o    = '0;
-    assign tex_req_lod_shift_o  = '0;
-    assign tex_req_lod_u_o      = '0;
-    assign tex_req_lod_v_o      = '0;
-    assign tex_req_tag_o        = '0;
-    assign tex_out_ready_o      = 1'b0;
+    assign tex_out_ready_o = 1'b0;
     assign rq_take   = ret_ready;
     assign ret_valid = rq_valid_q;
     assign ret_rgba  = '0;
     assign ret_tag   = rq_tag_q;
     logic unused_tex;
-    assign unused_tex = ^{tex_req_ready_i, tex_out_valid_i, tex_out_rgba_i, tex_out_tag_i, rq_u_q, rq_v_q,
-                          rq_q_q, rq_g_q, rq_shift_q, rq_lu_q, rq_lv_q, rq_st_q};
+    assign unused_tex = ^{tex_req_ready_i, tex_out_valid_i, tex_out_rgba_i, tex_out_tag_i};
   end
 
   // ---- Texel back: drop what an abort left in the texture unit, combine, fragment stage ----------

@@ -706,10 +706,10 @@ module htx_raster_setup #(
   // Without texture mapping only z and the colour channels have planes. The shared unit's jobs
   // (the determinant and the edge values, 2 DW + 2 bits) bound the width from below as well: its
   // accumulator is VSW + DW + 2 bits, and its words, VSW + GF + 3 bits, fill the plane RAM's AW + 1.
-  localparam int unsigned VZC = (ZBits > CB ? ZBits : CB) + 1;
-  localparam int unsigned VS  = Textured ? (((ZBits > CB ? ZBits : CB) > (QBits > UQ ? QBits : UQ)
-                                 ? (ZBits > CB ? ZBits : CB) : (QBits > UQ ? QBits : UQ)) + 1) : VZC;
-  localparam int unsigned VSL = (Textured && (LocW + 1 > VS)) ? LocW + 1 : VS;
+  localparam int unsigned VZC = (ZBits > CB ? ZBits : CB) + 1;       // z, colour
+  localparam int unsigned VQU = (QBits > UQ ? QBits : UQ) + 1;        // q, uq, vq
+  localparam int unsigned VS  = (Textured && (VQU > VZC)) ? VQU : VZC;
+  localparam int unsigned VSL = (Textured && (LocW + 1 > VS)) ? LocW + 1 : VS;  // ua, va
   localparam int unsigned VSJ = (AW - GF - 2 > DW) ? AW - GF - 2 : DW;
   localparam int unsigned VSW = (VSL > VSJ) ? VSL : VSJ;
   function automatic int unsigned plane_vb(input int unsigned p);
@@ -1287,16 +1287,9 @@ module htx_raster_setup #(
           det_neg_q <= redo_q || det_next[DetW-1];
           edge_k_q  <= '0;
           edge_half_q <= 1'b0;
-          if (DetCheck) state_q <= StDetChk;
-          else if (tri_skip) state_q <= StIdle;
-          else if (det_again) begin redo_q <= 1'b1; state_q <= StDet0; end
-          else state_q <= StEdges;
+          if (DetCheck) state_q <= StDetChk;  // (else judged in this clock: det_judge below)
         end
-        StDetChk: begin
-          if (tri_skip) state_q <= StIdle;
-          else if (det_again) begin redo_q <= 1'b1; state_q <= StDet0; end
-          else state_q <= StEdges;
-        end
+        StDetChk: begin end  // (det_judge below)
         StEdges: if (emul_done && SharedPlanes) begin
           // Jobs 1, 5, 7 end an edge, 13 the gradients (g_edge_jobs). (Only the signs of e_q are
           // taken: the values go to the plane RAM.)
@@ -1328,6 +1321,13 @@ module htx_raster_setup #(
         StOut: if (tri_ready_i) state_q <= StIdle;
         default: state_q <= StIdle;
       endcase
+      // The determinant judged (StDet1's last clock, or DetCheck's StDetChk): skip the triangle,
+      // form |det| again, or go on to the edges.
+      if (det_judge) begin
+        if (tri_skip) state_q <= StIdle;
+        else if (det_again) begin redo_q <= 1'b1; state_q <= StDet0; end
+        else state_q <= StEdges;
+      end
     end
   end
 

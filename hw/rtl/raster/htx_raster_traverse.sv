@@ -525,14 +525,10 @@ module htx_raster_traverse #(
     end
     assign esgn_d = sum[AW-1];
 
-    // Read: in the deciding clock word 0 of the bank the step goes from; in a pass its next word;
-    // otherwise (between passes, and at a pass's end) word 0 of the bank the next decision steps
-    // from (unused: the deciding clock reads it again).
-    always_comb begin
-      if (start_pass)                raddr = {bank_reg(step_saved ? !cur_q : cur_q, par_q), IW'(0)};
-      else if (sweep_q && !pass_end) raddr = {bank_reg(rd_bank_q, par_q), n_idx};
-      else                           raddr = {bank_reg(past_end ? !cur_q : cur_q, par_q), IW'(0)};
-    end
+    // Read: in a pass its next word; otherwise word 0 of the bank a step would go from (the deciding
+    // clock's read; what is read in any other clock between passes, or at a pass's end, is unused).
+    assign raddr = sweep_q ? {bank_reg(rd_bank_q, par_q), n_idx}
+                           : {bank_reg(step_saved ? !cur_q : cur_q, par_q), IW'(0)};
     // Write: setup's words (start values into the next triangle's region); the steps.
     logic          we;
     logic [AW:0]   wdata;

@@ -26,14 +26,8 @@ void expect_frame(const ScreenScene& s, const std::string& what) {
   const raster_test::RtlResult r =
       raster_test::draw("full_pc", raster_test::encode(s, cfg), s.width, s.height, s.clear_color, s.clear_depth,
                         cfg.z_bits);
-  uint64_t bad = 0;
   size_t first = 0;
-  for (size_t i = 0; i < model.color.size(); ++i) {
-    if (r.color[i] != model.color[i] || r.depth[i] != model.depth[i]) {
-      if (!bad) first = i;
-      ++bad;
-    }
-  }
+  const uint64_t bad = raster_test::mismatch_pixels(r, model, &first);
   EXPECT_EQ(bad, 0u) << what << ": first mismatch at pixel " << first << ": rtl colour " << r.color[first]
                      << " depth " << r.depth[first] << ", model colour " << model.color[first] << " depth "
                      << model.depth[first];

@@ -68,12 +68,8 @@ inline std::vector<uint32_t> words_of(const std::vector<Tri>& tris) {
   return words;
 }
 
-// Clears to clear_color / clear_depth, draws, records every request, reads both memories (depth
-// masked to z_bits).
-inline RtlResult draw(const std::string& name, const std::vector<Tri>& tris, int w, int h, uint16_t clear_color,
-                      uint32_t clear_depth, unsigned z_bits) {
-  const std::vector<uint32_t> words = words_of(tris);
-  rtl::RasterSim sim(name);
+// Sets a w x h frame, clears it to clear_color / clear_depth and enables the unit.
+inline void clear_frame(rtl::RasterSim& sim, int w, int h, uint16_t clear_color, uint32_t clear_depth) {
   sim.write_reg(HTX_TEST_REG(FB_SIZE), (static_cast<uint32_t>(w) << RASTER_FB_SIZE_WIDTH_Pos) |
                                            (static_cast<uint32_t>(h) << RASTER_FB_SIZE_HEIGHT_Pos));
   sim.write_reg(HTX_TEST_REG(FB_STRIDE), static_cast<uint32_t>(w));
@@ -81,6 +77,35 @@ inline RtlResult draw(const std::string& name, const std::vector<Tri>& tris, int
   sim.write_reg(HTX_TEST_REG(CLEAR_DEPTH), std::min<uint32_t>(clear_depth, 0xFFFFFFu));
   sim.write_reg(HTX_TEST_REG(CTRL), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_CLEAR_COLOR_Msk | RASTER_CTRL_CLEAR_DEPTH_Msk);
   sim.wait_idle();
+}
+
+// Reads the w x h colour and depth memories into r (depth masked to z_bits).
+inline void read_frame(rtl::RasterSim& sim, int w, int h, unsigned z_bits, RtlResult* r) {
+  const uint32_t n = static_cast<uint32_t>(w) * static_cast<uint32_t>(h);
+  r->color = sim.read_color(n);
+  r->depth = sim.read_depth(n);
+  for (uint32_t& z : r->depth) z &= (uint32_t{1} << z_bits) - 1;
+}
+
+// Pixels whose colour or depth differ from the model's frame; *first: the first of them.
+inline uint64_t mismatch_pixels(const RtlResult& r, const Frame& m, size_t* first = nullptr) {
+  uint64_t bad = 0;
+  for (size_t i = 0; i < m.color.size(); ++i) {
+    if (r.color[i] != m.color[i] || r.depth[i] != m.depth[i]) {
+      if (!bad && first) *first = i;
+      ++bad;
+    }
+  }
+  return bad;
+}
+
+// Clears to clear_color / clear_depth, draws, records every request, reads both memories (depth
+// masked to z_bits).
+inline RtlResult draw(const std::string& name, const std::vector<Tri>& tris, int w, int h, uint16_t clear_color,
+                      uint32_t clear_depth, unsigned z_bits) {
+  const std::vector<uint32_t> words = words_of(tris);
+  rtl::RasterSim sim(name);
+  clear_frame(sim, w, h, clear_color, clear_depth);
   sim.write_reg(HTX_TEST_REG(CTRL), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_COUNTERS_RESET_Msk);
   RtlResult r;
   sim.record_requests(&r.requests);
@@ -94,10 +119,7 @@ inline RtlResult draw(const std::string& name, const std::vector<Tri>& tris, int
   r.setup_busy = sim.read_reg(HTX_TEST_REG(CNT_SETUP_BUSY));
   r.triangles = sim.read_reg(HTX_TEST_REG(CNT_TRIANGLES));
   r.divfree_steps = sim.read_reg(HTX_TEST_REG(CNT_DIVFREE_STEPS));
-  const uint32_t n = static_cast<uint32_t>(w) * static_cast<uint32_t>(h);
-  r.color = sim.read_color(n);
-  r.depth = sim.read_depth(n);
-  for (uint32_t& z : r.depth) z &= (uint32_t{1} << z_bits) - 1;
+  read_frame(sim, w, h, z_bits, &r);
   return r;
 }
 

@@ -5,7 +5,6 @@
 // nothing drawn) between good ones.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -27,20 +26,12 @@ using raster_test::RtlResult;
 
 constexpr const char* kBuild = "icebreaker_untextured";
 
-uint64_t mismatches(const RtlResult& r, const Frame& m, unsigned z_bits) {
-  const uint32_t zmask = (uint32_t{1} << z_bits) - 1;
-  uint64_t bad = 0;
-  for (size_t i = 0; i < m.color.size(); ++i)
-    bad += (r.color[i] != m.color[i]) || (r.depth[i] != (m.depth[i] & zmask));
-  return bad;
-}
-
 void expect_matches_model(const ScreenScene& s, const std::string& what) {
   const ModelConfig cfg = rtl_config("icebreaker");
   const Frame m = render_model(s, cfg);
   const RtlResult r = draw(kBuild, encode(s, cfg), s.width, s.height, s.clear_color, s.clear_depth, cfg.z_bits);
   ASSERT_EQ(r.color.size(), m.color.size()) << what;
-  EXPECT_EQ(mismatches(r, m, cfg.z_bits), 0u) << what;
+  EXPECT_EQ(raster_test::mismatch_pixels(r, m), 0u) << what;
   EXPECT_EQ(r.fragments, m.counters.fragments) << what;
   EXPECT_EQ(r.pixels, m.counters.pixels_written) << what;
   EXPECT_TRUE(r.requests.empty()) << what << ": the texture port was used";
@@ -48,7 +39,7 @@ void expect_matches_model(const ScreenScene& s, const std::string& what) {
 
 TEST(RasterUntextured, CapsNamesNoMethod) {
   rtl::RasterSim sim(kBuild);
-  const uint32_t caps = sim.read_reg(raster_test::reg_off(offsetof(HTX_RASTER_Type, CAPS)));
+  const uint32_t caps = sim.read_reg(HTX_TEST_REG(CAPS));
   EXPECT_EQ(caps & RASTER_CAPS_METHODS_Msk, 0u);
   EXPECT_NE(caps & RASTER_CAPS_COUNTERS_Msk, 0u);
 }
@@ -107,28 +98,18 @@ TEST(RasterUntextured, TexturedTriangleIsRefused) {
   stream.push_back(textured);
 
   rtl::RasterSim sim(kBuild);
-  const auto reg = [](size_t o) { return raster_test::reg_off(o); };
-  sim.write_reg(reg(offsetof(HTX_RASTER_Type, FB_SIZE)),
-                (64u << RASTER_FB_SIZE_WIDTH_Pos) | (48u << RASTER_FB_SIZE_HEIGHT_Pos));
-  sim.write_reg(reg(offsetof(HTX_RASTER_Type, FB_STRIDE)), 64u);
-  sim.write_reg(reg(offsetof(HTX_RASTER_Type, CLEAR_COLOR)), s.clear_color);
-  sim.write_reg(reg(offsetof(HTX_RASTER_Type, CLEAR_DEPTH)), std::min<uint32_t>(s.clear_depth, 0xFFFFFFu));
-  sim.write_reg(reg(offsetof(HTX_RASTER_Type, CTRL)),
-                RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_CLEAR_COLOR_Msk | RASTER_CTRL_CLEAR_DEPTH_Msk);
-  sim.wait_idle();
+  raster_test::clear_frame(sim, s.width, s.height, s.clear_color, s.clear_depth);
   sim.push_words(raster_test::words_of(stream));
   sim.wait_idle(50'000'000);
-  const uint32_t status = sim.read_reg(reg(offsetof(HTX_RASTER_Type, STATUS)));
+  const uint32_t status = sim.read_reg(HTX_TEST_REG(STATUS));
   EXPECT_NE(status & RASTER_STATUS_ERR_STATE_Msk, 0u);
   EXPECT_EQ(status & RASTER_STATUS_BUSY_Msk, 0u);
-  EXPECT_EQ(sim.read_reg(reg(offsetof(HTX_RASTER_Type, CNT_TRIANGLES))), stream.size());
+  EXPECT_EQ(sim.read_reg(HTX_TEST_REG(CNT_TRIANGLES)), stream.size());
 
   RtlResult r;
-  r.color = sim.read_color(64 * 48);
-  r.depth = sim.read_depth(64 * 48);
-  for (uint32_t& z : r.depth) z &= (uint32_t{1} << cfg.z_bits) - 1;
+  raster_test::read_frame(sim, s.width, s.height, cfg.z_bits, &r);
   const Frame m = render_model(s, cfg);  // the scene without the textured triangle
-  EXPECT_EQ(mismatches(r, m, cfg.z_bits), 0u);
+  EXPECT_EQ(raster_test::mismatch_pixels(r, m), 0u);
 }
 
 }  // namespace
