@@ -3,11 +3,16 @@
 // unsigned product: hi_signed = hi_unsigned - (a<0 ? b : 0) - (b<0 ? a : 0) (mod 2^32).
 // The correction needs no adder of its own: when both terms are present (MULH of two negative
 // operands) it is a + b, which execute's ALU adder computes anyway for a MUL-class instruction
-// (sum_i), so it is one 4:1 choice among 0, a, b and a + b.
-//   cycle 1 (start_i): the partial products and the signed correction are registered;
+// (sum_i), so it is one 4:1 choice among 0, a, b and a + b. Nor does its subtraction: the high
+// partial product's DSP adds ~corr as it forms hh (hh - corr = hh + ~corr + 1), and the 1 rides on
+// the lh product's DSP, which adds 2^16 to it, so that mid's upper half carries it into the high
+// word (both sums fit their 32 bits: lh + 2^16 <= 0xFFFF_0001, and mid < 2^33 still). The two
+// DSP adders replace a 32-bit subtractor and the correction's register.
+//   cycle 1 (start_i): the partial products (hh with the correction, lh with 2^16) are registered
+//                      in the DSPs;
 //   cycle 2:           mid = lh + hl, then the low word ll + mid[15:0] << 16 and the high word
-//                      (hh - corr) + mid[32:16] + the low word's carry are registered (two carry
-//                      chains in series, starting from the DSP output registers);
+//                      hh' + mid[32:16] + the low word's carry are registered (two carry chains
+//                      in series, starting from the DSP output registers);
 //   cycle 3:           the selected word comes straight from a register (done_next_o was high in
 //                      cycle 2; execute registers it into its own stall flip-flop).
 module htx_cpu_mul (
@@ -39,26 +44,24 @@ module htx_cpu_mul (
     endcase
   end
 
-  logic [31:0] p_ll_q, p_lh_q, p_hl_q, p_hh_q, corr_q;
-  logic [31:0] lo_q, hi_q, hs;
+  logic [31:0] p_ll_q, p_lh_q, p_hl_q, p_hh_q;
+  logic [31:0] lo_q, hi_q;
   logic [32:0] mid;
   logic [16:0] lo_upper;
   assign mid      = {1'b0, p_lh_q} + {1'b0, p_hl_q};
   assign lo_upper = {1'b0, p_ll_q[31:16]} + {1'b0, mid[15:0]};
-  assign hs       = p_hh_q - corr_q;
   logic        step1_q, step2_q;
 
   always_ff @(posedge clk_i) begin
     if (start_i) begin
       p_ll_q <= a_i[15:0]  * b_i[15:0];
-      p_lh_q <= a_i[15:0]  * b_i[31:16];
+      p_lh_q <= a_i[15:0]  * b_i[31:16] + 32'h0001_0000;  // the 1 of -corr, at mid's bit 16
       p_hl_q <= a_i[31:16] * b_i[15:0];
-      p_hh_q <= a_i[31:16] * b_i[31:16];
-      corr_q <= corr_d;
+      p_hh_q <= a_i[31:16] * b_i[31:16] + ~corr_d;        // hh - corr - 1
     end
     if (step1_q) begin
       lo_q <= {lo_upper[15:0], p_ll_q[15:0]};
-      hi_q <= hs + {15'b0, mid[32:16]} + {31'b0, lo_upper[16]};
+      hi_q <= p_hh_q + {15'b0, mid[32:16]} + {31'b0, lo_upper[16]};
     end
   end
 
