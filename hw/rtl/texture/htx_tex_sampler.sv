@@ -338,6 +338,10 @@ module htx_tex_sampler #(
     //   step 2: (256 h0 + wv (h1 - h0) + 2^15) >> 16, the channel's result (htx_tex_bilerp's
     //   integers), in 3 clocks a channel; nearest takes 1 clock. (Until 2026-12-02 this was a
     //   two-step pipeline with three multipliers, 4 clocks a bilinear texel: 3 DSPs.)
+    // Every step is one sum, product + addend (one adder, not three): steps 0 and 1 add 256 c +
+    // 128, so h0_q and h1_q hold h + 128 (h <= 255 * 256, so no wrap; their difference is still
+    // h1 - h0), and step 2 adds 256 (h0 + 128), whose 2^15 is the rounding. (The DSP's own adder
+    // cannot take the sum: the 17-bit signed operand makes Yosys split the product.)
     logic [1:0]         ch_q, st_q;
     logic [7:0]         e_lo, e_hi;  // this clock's channel of c00 and c10 (step 0) or c01 and c11
     logic [15:0]        h0_q, h1_q;
@@ -345,8 +349,7 @@ module htx_tex_sampler #(
     logic signed [16:0] m_a;
     logic [7:0]         m_w;
     logic signed [25:0] m_p;
-    logic [23:0]        tot;
-    logic [24:0]        rnd;
+    logic [25:0]        m_add, m_sum;
     logic               fin;
     // A nearest item finishes in the clock it enters (st_q 0), so t_lo is then c00 decoded.
     logic [31:0] t_lo, t_hi;
@@ -371,8 +374,8 @@ module htx_tex_sampler #(
       end
     end
     htx_tex_mul #(.AW(17), .ShiftAdd(ShiftAdd)) u_m (.a_i(m_a), .w_i(m_w), .p_o(m_p));
-    assign tot = 24'({h0_q, 8'd0} + 24'(m_p));
-    assign rnd = 25'(tot) + 25'd32768;
+    assign m_add = (st_q == 2'd2) ? {2'b0, h0_q, 8'd0} : {10'b0, e_lo, 8'h80};
+    assign m_sum = 26'(m_p) + m_add;
     // The quad's last clock: nearest, or the last channel's step 2.
     assign fin = c_nearest_q || ((ch_q == 2'd3) && (st_q == 2'd2));
     assign c_ready_l = !c_valid_q || (fin && f_take);
@@ -390,13 +393,13 @@ module htx_tex_sampler #(
     end
     always_ff @(posedge clk_i) begin
       if (c_valid_q && !fin) begin
-        if (st_q == 2'd0) h0_q <= 16'({e_lo, 8'd0} + 16'(m_p));
-        if (st_q == 2'd1) h1_q <= 16'({e_lo, 8'd0} + 16'(m_p));
-        if (st_q == 2'd2) part_q[8*ch_q +: 8] <= rnd[23:16];
+        if (st_q == 2'd0) h0_q <= m_sum[15:0];
+        if (st_q == 2'd1) h1_q <= m_sum[15:0];
+        if (st_q == 2'd2) part_q[8*ch_q +: 8] <= m_sum[23:16];
       end
     end
     assign f_valid  = c_valid_q && fin;
-    assign f_res    = c_nearest_q ? t_lo : {rnd[23:16], part_q};
+    assign f_res    = c_nearest_q ? t_lo : {m_sum[23:16], part_q};
     assign f_first  = c_first_q;
     assign f_second = c_second_q;
     assign f_wtri   = c_wtri_q;
@@ -404,7 +407,7 @@ module htx_tex_sampler #(
     assign f_lod    = c_lod_q;
     assign f_tag    = c_tag_q;
     logic unused_ls;
-    assign unused_ls = ^{m_p[25:24], rnd[24], rnd[15:0], unused_bad};
+    assign unused_ls = ^{m_sum[25:24], unused_bad};
   end
 
   // ---- Stage D ---------------------------------------------------------------------------------
