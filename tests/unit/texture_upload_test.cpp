@@ -197,6 +197,9 @@ TEST(TextureDriver, CapsStatusAndCounters) {
   EXPECT_EQ(caps.slots, 4u);
   EXPECT_EQ(caps.block_bits, 10u);
   EXPECT_EQ(caps.texel_bits, 16u);
+  EXPECT_FALSE(caps.window_read);
+  bus.poke(HTX_TEXTURE_BASE + TEXTURE_CAPS_Offset, 0x3u | TEXTURE_CAPS_WINDOW_READ_Msk);
+  EXPECT_TRUE(htx::hal::texture_caps().window_read);
   bus.poke(HTX_TEXTURE_BASE + TEXTURE_STATUS_Offset, TEXTURE_STATUS_ERR_FILTER_Msk);
   EXPECT_EQ(htx::hal::texture_errors(), TEXTURE_STATUS_ERR_FILTER_Msk);
   htx::hal::texture_clear_errors();

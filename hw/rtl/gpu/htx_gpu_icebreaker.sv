@@ -8,7 +8,10 @@ module htx_gpu_icebreaker #(
   parameter int unsigned TexBAW   = 10,     // blocks per bank = 2^TexBAW: 4K texels, 16 EBR (engine: 2^12)
   // The raster unit's CNT_* counters: the Verilated models keep them (the rtl engine's metrics and
   // the firmware's figures read them); the board's builds leave them out (docs/area.md).
-  parameter bit          RasterCounters = 1'b1
+  parameter bit          RasterCounters = 1'b1,
+  // Reads of the texture memory window (CAPS.WINDOW_READ): the board's builds leave them out (the
+  // memory is written only; docs/texture.md), the Verilated models keep them for the tests.
+  parameter bit          TexWindowRead = 1'b1
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -37,7 +40,7 @@ module htx_gpu_icebreaker #(
     .PixelPipelined(1'b0), .PixelMulIterative(1'b0), .SubdivDepth(64), .DfFracBits(2), .DfCap(64), .FifoDepth(64),
     .CoordW(20), .TF(10), .GradW(16), .LF(6), .TexFormats(3'b011), .TexFilters(3'b011),
     .TexSlots(4), .TexLanes(1), .TexShiftAdd(1'b0), .TexCounters(1'b0), .LogIdx(6),
-    .RasterCounters(RasterCounters),
+    .RasterCounters(RasterCounters), .TexWindowRead(TexWindowRead),
     .FbPixels(FbPixels), .TexBAW(TexBAW), .Methods(Methods)
   ) u_subsys (.*);
 endmodule

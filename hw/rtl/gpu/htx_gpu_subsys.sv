@@ -42,6 +42,7 @@ module htx_gpu_subsys #(
   parameter int unsigned TexLanes    = 4,
   parameter bit          TexShiftAdd = 1'b0,
   parameter bit          TexCounters = 1'b1,
+  parameter bit          TexWindowRead = 1'b1,   // reads of the texture memory window
   parameter bit          RasterCounters = 1'b1,  // the raster unit's CNT_* (CAPS.COUNTERS)
   parameter int unsigned LogIdx      = 10
 ) (
@@ -174,7 +175,8 @@ module htx_gpu_subsys #(
   htx_texture #(
     .CoordW(CoordW), .TF(TF), .LF(LF), .Formats(TexFormats), .Filters(TexFilters),
     .NumSlots(TexSlots), .BAW(TexBAW), .Lanes(TexLanes), .ShiftAdd(TexShiftAdd), .TagW(TagW),
-    .Counters(TexCounters), .QW(QW), .GradW(GradW), .LocW(LocW), .LogIdx(LogIdx)
+    .Counters(TexCounters), .WindowRead(TexWindowRead), .QW(QW), .GradW(GradW), .LocW(LocW),
+    .LogIdx(LogIdx)
   ) u_texture (
     .clk_i, .rst_ni,
     .reg_req_valid_i(rs_valid[1]), .reg_req_ready_o(rs_ready[1]), .reg_req_addr_i(rs_addr),

@@ -35,9 +35,10 @@ module htx_gpu_synth_top #(
       .mem_rsp_valid_o(mem_rsp_valid), .mem_rsp_rdata_o(mem_rdata), .mem_rsp_err_o(mem_rsp_err));
   end else begin : g_icebreaker
     // One perspective method besides AFFINE on the board: RECIP_LUT (table reciprocal, no Newton
-    // step); no raster event counters, as the board's SoC builds it.
+    // step); no raster event counters and a texture memory written only, as the board's SoC
+    // builds it.
     htx_gpu_icebreaker #(.FbPixels(4), .Methods(htx_raster_pkg::board_methods()),
-                         .RasterCounters(1'b0)) u_gpu (
+                         .RasterCounters(1'b0), .TexWindowRead(1'b0)) u_gpu (
       .clk_i, .rst_ni,
       .reg_req_valid_i(reg_valid), .reg_req_ready_o(reg_ready), .reg_req_addr_i(reg_addr),
       .reg_req_we_i(reg_we), .reg_req_be_i(reg_be), .reg_req_wdata_i(reg_wdata),

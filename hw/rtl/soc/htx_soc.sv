@@ -13,7 +13,10 @@ module htx_soc #(
   parameter logic [4:0]  GpuMethods  = 5'b11111,
   // The raster unit's CNT_* counters: built in simulation (the firmware prints raster cycles), left
   // out of the board's build (htx_soc_synth_top; CAPS.COUNTERS tells the firmware).
-  parameter bit          GpuCounters = 1'b1
+  parameter bit          GpuCounters = 1'b1,
+  // Reads of the texture memory window: built in simulation, left out of the board's build (the
+  // firmware only writes texture memory; TEXTURE CAPS.WINDOW_READ tells software).
+  parameter bit          GpuTexRead  = 1'b1
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -54,7 +57,7 @@ module htx_soc #(
   htx_soc_fabric #(
     .RamBytes(RamBytes), .RamInitFile(RamInitFile), .ClockHz(ClockHz), .Sim(Sim),
     .StallInject(StallInject), .FbPixels(FbPixels), .GpuMethods(GpuMethods),
-    .GpuCounters(GpuCounters)
+    .GpuCounters(GpuCounters), .GpuTexRead(GpuTexRead)
   ) u_fabric (
     .clk_i, .rst_ni,
     .ibus_req_valid_i(ibus_req_valid), .ibus_req_ready_o(ibus_req_ready),

@@ -5,9 +5,14 @@
 // in the same clock (htx_tex_bank). Reads share each bank's read port with the sampler: one is
 // accepted only in a clock where the sampler neither reads nor holds read data. A word beyond the
 // memory, or a write whose byte enables do not cover the texel, answers rsp_err and does nothing.
+// CpuRead = 0 (the board's builds) leaves the window's reads out: a read is taken at once and
+// answers rsp_err with 0, the banks' read ports are the sampler's alone (no address multiplexer)
+// and there is no read-data multiplexer: texture memory is written only (docs/texture.md, "Memory
+// layout").
 module htx_tex_mem #(
-  parameter int unsigned TexW = 16,
-  parameter int unsigned BAW  = 10    // block address bits (blocks per bank = 2^BAW)
+  parameter int unsigned TexW    = 16,
+  parameter int unsigned BAW     = 10,   // block address bits (blocks per bank = 2^BAW)
+  parameter bit          CpuRead = 1'b1
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -36,10 +41,10 @@ module htx_tex_mem #(
   assign in_range  = (BAW >= 16) || ((word >> (BAW + 2)) == 18'd0);
   assign be_ok     = (TexW > 16) ? (&req_be_i) : (&req_be_i[1:0]);
   assign cpu_rd_ok = !s_re_i && !s_hold_i;
-  assign req_ready_o = (req_we_i ? !s_re_i : cpu_rd_ok) || !in_range;
+  assign req_ready_o = (req_we_i ? !s_re_i : (cpu_rd_ok || !CpuRead)) || !in_range;
   assign accept    = req_valid_i && req_ready_o;
   assign cpu_we    = accept && req_we_i && in_range && be_ok;
-  assign cpu_re    = accept && !req_we_i && in_range;
+  assign cpu_re    = CpuRead && accept && !req_we_i && in_range;
 
   logic [BAW-1:0] blk;
   assign blk = BAW'(word >> 2);
@@ -52,7 +57,7 @@ module htx_tex_mem #(
       .waddr_i(blk),
       .wdata_i(req_wdata_i[TexW-1:0]),
       .re_i   (s_re_i || (cpu_re && (bank == 2'(b)))),
-      .raddr_i(s_re_i ? s_addr_i[b*BAW +: BAW] : blk),
+      .raddr_i((s_re_i || !CpuRead) ? s_addr_i[b*BAW +: BAW] : blk),
       .rdata_o(rdata[b])
     );
     assign s_rdata_o[b*TexW +: TexW] = rdata[b];
@@ -68,14 +73,14 @@ module htx_tex_mem #(
       rsp_bank_q <= '0;
     end else begin
       rsp_q      <= accept;
-      rsp_err_q  <= accept && (!in_range || (req_we_i && !be_ok));
+      rsp_err_q  <= accept && (!in_range || (req_we_i && !be_ok) || (!req_we_i && !CpuRead));
       rsp_rd_q   <= cpu_re;
       rsp_bank_q <= bank;
     end
   end
   assign rsp_valid_o = rsp_q;
   assign rsp_err_o   = rsp_err_q;
-  assign rsp_rdata_o = rsp_rd_q ? 32'(rdata[rsp_bank_q]) : 32'd0;
+  assign rsp_rdata_o = (CpuRead && rsp_rd_q) ? 32'(rdata[rsp_bank_q]) : 32'd0;
 
   logic unused;
   assign unused = ^{req_addr_i[31:20], req_addr_i[1:0], req_wdata_i, req_be_i};

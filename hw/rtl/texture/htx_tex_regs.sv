@@ -7,7 +7,8 @@ module htx_tex_regs #(
   parameter int unsigned NumSlots = 2,
   parameter int unsigned BAW      = 10,
   parameter int unsigned TexW     = 16,
-  parameter bit          Counters = 1'b1   // 0: CNT_* read 0 (saves two 32-bit counters)
+  parameter bit          Counters = 1'b1,  // 0: CNT_* read 0 (saves two 32-bit counters)
+  parameter bit          WindowRead = 1'b1 // announced in CAPS.WINDOW_READ (htx_tex_mem CpuRead)
 ) (
   input  logic               clk_i,
   input  logic               rst_ni,
@@ -92,7 +93,8 @@ module htx_tex_regs #(
     end else begin
       unique case (offset)
         htx_texture_reg_pkg::TEXTURE_CAPS_OFFSET:
-          rdata = {2'd0, 6'(TexW), 3'd0, 5'(BAW), 4'd0, 4'(NumSlots), Counters, Filters, 1'b0, Formats};
+          rdata = {2'd0, 6'(TexW), 3'd0, 5'(BAW), 3'd0, WindowRead, 4'(NumSlots), Counters, Filters, 1'b0,
+                   Formats};
         htx_texture_reg_pkg::TEXTURE_STATUS_OFFSET:
           rdata = {22'd0, err_filter_q, err_format_q, 7'd0, busy_i};
         htx_texture_reg_pkg::TEXTURE_CNT_SAMPLES_OFFSET: rdata = cnt_samples_q;

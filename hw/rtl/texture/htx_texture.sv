@@ -14,6 +14,7 @@ module htx_texture #(
   parameter bit          ShiftAdd = 1'b0,     // filter products in logic instead of DSPs
   parameter int unsigned TagW     = 32,       // request sideband carried to the output
   parameter bit          Counters = 1'b1,     // CNT_SAMPLES, CNT_BUSY built
+  parameter bit          WindowRead = 1'b1,   // reads of the memory window built (CAPS.WINDOW_READ)
   // LOD unit (trilinear only): q plane, gradients, local coordinates, log2 table.
   parameter int unsigned QW       = 58,
   parameter int unsigned GradW    = 24,
@@ -80,7 +81,7 @@ module htx_texture #(
   logic [25:0]            desc;
   logic                   err_format, err_filter, busy, sample;
   htx_tex_regs #(.Formats(Formats), .Filters(Filters), .NumSlots(NumSlots), .BAW(BAW), .TexW(TexW),
-                 .Counters(Counters)) u_regs (
+                 .Counters(Counters), .WindowRead(WindowRead)) u_regs (
     .clk_i, .rst_ni,
     .req_valid_i(reg_req_valid_i), .req_ready_o(reg_req_ready_o), .req_addr_i(reg_req_addr_i),
     .req_we_i(reg_req_we_i), .req_be_i(reg_req_be_i), .req_wdata_i(reg_req_wdata_i),
@@ -91,7 +92,7 @@ module htx_texture #(
   logic              s_re, s_hold;
   logic [4*BAW-1:0]  s_addr;
   logic [4*TexW-1:0] s_rdata;
-  htx_tex_mem #(.TexW(TexW), .BAW(BAW)) u_mem (
+  htx_tex_mem #(.TexW(TexW), .BAW(BAW), .CpuRead(WindowRead)) u_mem (
     .clk_i, .rst_ni,
     .req_valid_i(mem_req_valid_i), .req_ready_o(mem_req_ready_o), .req_addr_i(mem_req_addr_i),
     .req_we_i(mem_req_we_i), .req_be_i(mem_req_be_i), .req_wdata_i(mem_req_wdata_i),

@@ -25,6 +25,7 @@ TEST_P(GpuBus, RegisterPortDecodesBothBlocksAndRejectsTheRest) {
   EXPECT_EQ((caps & TEXTURE_CAPS_SLOTS_Msk) >> TEXTURE_CAPS_SLOTS_Pos, full ? 8u : 4u);
   EXPECT_EQ((caps & TEXTURE_CAPS_FORMATS_Msk) >> TEXTURE_CAPS_FORMATS_Pos, full ? 7u : 3u);
   EXPECT_EQ(sim.texture_blocks(), full ? 1u << 15 : 1u << 12);
+  EXPECT_NE(caps & TEXTURE_CAPS_WINDOW_READ_Msk, 0u);  // the Verilated models read texture memory back
   // RASTER answers its registers: FB_STRIDE is read/write.
   const uint32_t stride = HTX_RASTER_BASE + offsetof(HTX_RASTER_Type, FB_STRIDE);
   sim.write_reg(stride, 123);
@@ -78,6 +79,30 @@ TEST_P(GpuBus, TextureUploadReadsBackInTheDocumentedLayout) {
     ASSERT_LT(block, 7u + rtl::texture_chain_blocks(tex));
   }
   EXPECT_EQ(rtl::texture_descriptor(tex, 7), 7u | (5u << 16) | (4u << 20) | (1u << 24));
+}
+
+// The board's GPU writes texture memory only (htx_tex_mem CpuRead = 0, CAPS.WINDOW_READ = 0): a read
+// of the window answers an error with 0 at once and both ports go on working. (That the writes land
+// is what GpuScenes checks: it draws every textured scene on this model, bit for bit.)
+TEST(GpuBoardBus, TextureWindowIsWrittenOnly) {
+  GpuSim sim("icebreaker_board");
+  const uint32_t caps = sim.read_reg(HTX_TEXTURE_BASE + offsetof(HTX_TEXTURE_Type, CAPS));
+  EXPECT_EQ(caps & TEXTURE_CAPS_WINDOW_READ_Msk, 0u);
+  EXPECT_EQ((caps & TEXTURE_CAPS_SLOTS_Msk) >> TEXTURE_CAPS_SLOTS_Pos, 4u);
+  EXPECT_FALSE(sim.mem_write(GpuSim::kTextureWindow + 16, 0x0000A5A5u));
+  uint32_t v = 0xFFFFFFFFu;
+  EXPECT_TRUE(sim.mem_read(GpuSim::kTextureWindow + 16, &v));
+  EXPECT_EQ(v, 0u);
+  v = 0xFFFFFFFFu;
+  EXPECT_TRUE(sim.mem_read(GpuSim::kTextureWindow + 16 * sim.texture_blocks(), &v));  // beyond it, too
+  EXPECT_EQ(v, 0u);
+  EXPECT_TRUE(sim.mem_write(GpuSim::kTextureWindow + 16 * sim.texture_blocks(), 1));
+  EXPECT_FALSE(sim.mem_write(GpuSim::kColorWindow + 8, 0xBEEF1234u));
+  EXPECT_FALSE(sim.mem_read(GpuSim::kColorWindow + 8, &v));
+  EXPECT_EQ(v, 0xBEEF1234u);
+  const uint32_t tex1 = HTX_TEXTURE_BASE + offsetof(HTX_TEXTURE_Type, TEX1);
+  sim.write_reg(tex1, 0x01550042u);
+  EXPECT_EQ(sim.read_reg(tex1), 0x01550042u);
 }
 
 TEST(GpuSimConfig, UnknownConfigurationIsAnError) { EXPECT_THROW(GpuSim("tiny"), std::invalid_argument); }

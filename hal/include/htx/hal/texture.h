@@ -24,6 +24,7 @@ struct TextureCaps {
   uint32_t slots = 0;       // descriptors built
   uint32_t block_bits = 0;  // log2 of the 2x2 blocks the memory holds
   uint32_t texel_bits = 0;  // 16, or 32 with RGBA8888
+  bool window_read = false; // the memory window can be read back (not on the board: written only)
 };
 
 inline TextureCaps texture_caps() {
@@ -35,6 +36,7 @@ inline TextureCaps texture_caps() {
   t.slots = (c & TEXTURE_CAPS_SLOTS_Msk) >> TEXTURE_CAPS_SLOTS_Pos;
   t.block_bits = (c & TEXTURE_CAPS_BLOCK_BITS_Msk) >> TEXTURE_CAPS_BLOCK_BITS_Pos;
   t.texel_bits = (c & TEXTURE_CAPS_TEXEL_BITS_Msk) >> TEXTURE_CAPS_TEXEL_BITS_Pos;
+  t.window_read = (c & TEXTURE_CAPS_WINDOW_READ_Msk) != 0;
   return t;
 }
 
@@ -83,6 +85,8 @@ inline void texture_write_texel(uint32_t base_block, uint32_t log2_w, uint32_t l
   backend::mem_write32(kTexWindowBase + 4u * texture_word_index(base_block, log2_w, log2_h, level, i, j), texel);
 }
 
+// Only where TextureCaps::window_read: the board's texture memory is written only (a read of it is a
+// bus error).
 inline uint32_t texture_read_texel(uint32_t base_block, uint32_t log2_w, uint32_t log2_h, uint32_t level, uint32_t i,
                                    uint32_t j) {
   return backend::mem_read32(kTexWindowBase + 4u * texture_word_index(base_block, log2_w, log2_h, level, i, j));
