@@ -895,10 +895,12 @@ module htx_raster #(
         rdata_d[htx_raster_reg_pkg::RASTER_FB_SIZE_HEIGHT_LSB +: 13] = height_q;
       end
       htx_raster_reg_pkg::RASTER_FB_STRIDE_OFFSET: rdata_d = 32'(stride_q);
-      htx_raster_reg_pkg::RASTER_STATE_OFFSET: rdata_d = last_state_q;
+      // A diagnostic, built with the counters (CAPS.STATE): the board's build leaves both out.
+      htx_raster_reg_pkg::RASTER_STATE_OFFSET: rdata_d = Counters ? last_state_q : 32'd0;
       htx_raster_reg_pkg::RASTER_CAPS_OFFSET: begin
         rdata_d[htx_raster_reg_pkg::RASTER_CAPS_METHODS_LSB +: 5]  = Methods;
         rdata_d[htx_raster_reg_pkg::RASTER_CAPS_COUNTERS_LSB]      = Counters;
+        rdata_d[htx_raster_reg_pkg::RASTER_CAPS_STATE_LSB]         = Counters;
       end
       htx_raster_reg_pkg::RASTER_CNT_BUSY_OFFSET,
       htx_raster_reg_pkg::RASTER_CNT_STALL_INPUT_OFFSET,

@@ -100,7 +100,7 @@ package htx_raster_reg_pkg;
   localparam logic [31:0] RASTER_FB_STRIDE_PIXELS_MASK = 32'h00001FFF;
   localparam logic [31:0] RASTER_FB_STRIDE_PIXELS_RESET = 32'h00000140;
 
-  // STATE (ro): State word of the triangle last taken into setup. Its layout is the per-triangle state word, the first FIFO word of every triangle
+  // STATE (ro): State word of the triangle last taken into setup (a diagnostic: reads 0 where CAPS.STATE is 0). Its layout is the per-triangle state word, the first FIFO word of every triangle
   localparam logic [11:0] RASTER_STATE_OFFSET = 12'h01C;
   localparam logic [31:0] RASTER_STATE_RESET = 32'h00000000;
   localparam int unsigned RASTER_STATE_METHOD_LSB = 0;
@@ -159,6 +159,10 @@ package htx_raster_reg_pkg;
   localparam int unsigned RASTER_CAPS_COUNTERS_WIDTH = 1;
   localparam logic [31:0] RASTER_CAPS_COUNTERS_MASK = 32'h00000080;
   localparam logic [31:0] RASTER_CAPS_COUNTERS_RESET = 32'h00000000;
+  localparam int unsigned RASTER_CAPS_STATE_LSB = 8;
+  localparam int unsigned RASTER_CAPS_STATE_WIDTH = 1;
+  localparam logic [31:0] RASTER_CAPS_STATE_MASK = 32'h00000100;
+  localparam logic [31:0] RASTER_CAPS_STATE_RESET = 32'h00000000;
 
   // CNT_BUSY (ro): Clocks with STATUS.BUSY set. CNT_BUSY to CNT_PIXELS live in block RAM: a read of one waits up to 17 clocks and returns the count three clocks before it completes (exact once the unit is idle)
   localparam logic [11:0] RASTER_CNT_BUSY_OFFSET = 12'h040;

@@ -1,6 +1,11 @@
 // TEXTURE register block (hw/regs/texture.json): capabilities, status, counters and the texture
-// descriptors. Every access is accepted at once and answered the next clock; an offset with no
-// register reads 0 and ignores writes. Descriptor size fields are clamped into 3..8 when written.
+// descriptors. An access is answered the clock after it is accepted; an offset with no register
+// reads 0 and ignores writes. Descriptor size fields are clamped into 3..8 when written. Every
+// access is accepted at once, except with SharedDescMux a descriptor read in a clock in which the
+// unit takes a request (slot_take_i): the read and the requests then share one multiplexer over the
+// descriptors, which shows the request's slot in that clock, so the read waits (for as long as
+// requests are taken back to back: a unit that takes at most one request every few clocks, as
+// `icebreaker`'s, where the raster unit's fragments are far apart, is the one to build it in).
 module htx_tex_regs #(
   parameter logic [2:0]  Formats  = 3'b011,
   parameter logic [2:0]  Filters  = 3'b011,
@@ -8,7 +13,8 @@ module htx_tex_regs #(
   parameter int unsigned BAW      = 10,
   parameter int unsigned TexW     = 16,
   parameter bit          Counters = 1'b1,  // 0: CNT_* read 0 (saves two 32-bit counters)
-  parameter bit          WindowRead = 1'b1 // announced in CAPS.WINDOW_READ (htx_tex_mem CpuRead)
+  parameter bit          WindowRead = 1'b1, // announced in CAPS.WINDOW_READ (htx_tex_mem CpuRead)
+  parameter bit          SharedDescMux = 1'b0
 ) (
   input  logic               clk_i,
   input  logic               rst_ni,
@@ -24,6 +30,7 @@ module htx_tex_regs #(
   output logic               rsp_err_o,
 
   input  logic [7:0]          slot_i,    // taken modulo NumSlots
+  input  logic                slot_take_i, // the unit takes a request (desc_o for slot_i) this clock
   output logic [25:0]         desc_o,    // that slot's {format[1:0], log2_h[3:0], log2_w[3:0], base[15:0]}
   input  logic               busy_i,
   input  logic               err_format_i,
@@ -34,9 +41,8 @@ module htx_tex_regs #(
 
   logic [11:0] offset;
   logic        accept, wr;
-  assign req_ready_o = 1'b1;
-  assign accept = req_valid_i;
   assign offset = req_addr_i[11:0];
+  assign accept = req_valid_i && req_ready_o;
   assign wr     = accept && req_we_i && (&req_be_i);
 
   function automatic logic [3:0] clamp_log2(input logic [3:0] v);
@@ -50,6 +56,7 @@ module htx_tex_regs #(
   logic [2:0]  desc_idx;
   assign is_desc  = (offset[11:5] == 7'b0001000) && (offset[1:0] == 2'b00);  // 0x100..0x11C
   assign desc_idx = offset[4:2];
+  assign req_ready_o = !(SharedDescMux && is_desc && !req_we_i && slot_take_i);
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -79,17 +86,24 @@ module htx_tex_regs #(
     end
   end
 
-  if (NumSlots > 1) begin : g_slot
-    assign desc_o = desc_q[slot_i[SW-1:0]];
+  logic [25:0] desc_rd;  // the descriptor a read of slot desc_idx returns
+  if (NumSlots > 1 && SharedDescMux) begin : g_slot_shared
+    // The request's slot when a request is taken, else the read's (a descriptor read waits then).
+    assign desc_o  = desc_q[slot_take_i ? slot_i[SW-1:0] : desc_idx[SW-1:0]];
+    assign desc_rd = desc_o;
+  end else if (NumSlots > 1) begin : g_slot
+    assign desc_o  = desc_q[slot_i[SW-1:0]];
+    assign desc_rd = desc_q[desc_idx[SW-1:0]];
   end else begin : g_one_slot
-    assign desc_o = desc_q[0];
+    assign desc_o  = desc_q[0];
+    assign desc_rd = desc_q[0];
   end
 
   logic [31:0] rdata;
   always_comb begin
     rdata = '0;
     if (is_desc) begin
-      if (32'(desc_idx) < NumSlots) rdata = 32'(desc_q[SW'(desc_idx)]);
+      if (32'(desc_idx) < NumSlots) rdata = 32'(desc_rd);
     end else begin
       unique case (offset)
         htx_texture_reg_pkg::TEXTURE_CAPS_OFFSET:

@@ -116,6 +116,26 @@ TEST(RasterRobust, FullFifoStallsTheBusAndDropsNothing) {
   expect_frame(sim, s, cfg);
 }
 
+// STATE holds the state word of the triangle last taken into setup (0 before any).
+TEST(RasterRobust, StateIsTheLastTrianglesStateWord) {
+  const ModelConfig cfg = rtl_config("icebreaker");
+  ScreenScene s = small_scene();
+  s.tris.back().state.gouraud = true;
+  s.tris.back().state.depth_func = DepthFunc::Always;
+  rtl::RasterSim sim("icebreaker");
+  EXPECT_EQ(sim.read_reg(R(STATE)), 0u);
+  setup_frame(sim, s);
+  const std::vector<uint32_t> words = words_of(s, cfg);
+  const uint32_t last_state = pack_state_word(s.tris.back().state, s.tris.back().state.method);
+  ASSERT_NE(last_state, 0u);
+  ASSERT_NE(last_state, pack_state_word(s.tris.front().state, s.tris.front().state.method));
+  sim.push_words(words);
+  sim.wait_idle(1'000'000);
+  EXPECT_EQ(sim.read_reg(R(STATE)), last_state);
+  sim.write_reg(R(STATE), 0u);  // read-only
+  EXPECT_EQ(sim.read_reg(R(STATE)), last_state);
+}
+
 TEST(RasterRobust, SlowWriterSameFrame) {
   const ModelConfig cfg = rtl_config("icebreaker");
   const ScreenScene s = small_scene();
@@ -288,8 +308,8 @@ TEST(RasterRobust, TinyTriangleSetupThroughput) {
               full_affine.setup_cycles_per_triangle, ice_affine.setup_cycles_per_triangle);
 }
 
-// CAPS names what the Verilated unit builds: every method of its configuration, and the counters
-// (the board's build, without them, is checked in tests/rtl/soc).
+// CAPS names what the Verilated unit builds: every method of its configuration, the counters and
+// STATE (the board's build, without them, is checked in tests/rtl/soc).
 TEST(RasterRobust, CapsNamesTheBuild) {
   for (const std::string name : {"full", "full_pc", "icebreaker"}) {
     rtl::RasterSim sim(name);
@@ -297,7 +317,8 @@ TEST(RasterRobust, CapsNamesTheBuild) {
     const ModelConfig cfg = rtl_config(name == "icebreaker" ? "icebreaker" : "full");
     EXPECT_EQ((caps & RASTER_CAPS_METHODS_Msk) >> RASTER_CAPS_METHODS_Pos, cfg.methods) << name;
     EXPECT_NE(caps & RASTER_CAPS_COUNTERS_Msk, 0u) << name;
-    EXPECT_EQ(caps & ~(RASTER_CAPS_METHODS_Msk | RASTER_CAPS_COUNTERS_Msk), 0u) << name;
+    EXPECT_NE(caps & RASTER_CAPS_STATE_Msk, 0u) << name;
+    EXPECT_EQ(caps & ~(RASTER_CAPS_METHODS_Msk | RASTER_CAPS_COUNTERS_Msk | RASTER_CAPS_STATE_Msk), 0u) << name;
     sim.write_reg(R(CAPS), 0u);  // read-only
     EXPECT_EQ(sim.read_reg(R(CAPS)), caps) << name;
   }

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "fabric_harness.hpp"
+#include "htx/fw/vertex_record.h"
+#include "htx/model/config.hpp"
 #include "htx/sim/uart_line.hpp"
 #include "htx_regs.h"
 
@@ -137,6 +139,29 @@ TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
   }
   soc.write(kRaster + RASTER_CTRL_Offset, RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_COUNTERS_RESET_Msk);
   EXPECT_EQ(soc.read(kRaster + RASTER_CNT_BUSY_Offset).rdata, 0u);
+  // Nor STATE (CAPS.STATE = 0, checked with CAPS above): after a triangle it still reads 0.
+  htx::fw::VertexIn in[3] = {};
+  const double xy[3][2] = {{1, 1}, {14, 1}, {1, 3}};
+  for (int i = 0; i < 3; ++i) {
+    in[i].x = xy[i][0];
+    in[i].y = xy[i][1];
+    in[i].z = 0.5;
+    in[i].w = 1;
+    in[i].r = in[i].g = in[i].b = in[i].a = 1;
+  }
+  htx::fw::TriangleRecord rec;
+  ASSERT_EQ(htx::fw::encode_triangle(htx::model_config("icebreaker").record_format(), in, &rec),
+            htx::fw::kEncodeOk);
+  uint32_t packed[htx::fw::kTriangleWords];
+  htx::fw::pack_triangle(rec, packed);
+  soc.write(kRaster + RASTER_FIFO_Offset, (5u << RASTER_STATE_DEPTH_FUNC_Pos) | RASTER_STATE_GOURAUD_Msk);
+  for (uint32_t w : packed) soc.write(kRaster + RASTER_FIFO_Offset, w);
+  idle = false;
+  for (int i = 0; i < 20000 && !idle; ++i) idle = !(soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_BUSY_Msk);
+  ASSERT_TRUE(idle);
+  EXPECT_EQ(soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_ERR_STATE_Msk, 0u);
+  EXPECT_EQ(soc.read(kFbColor + 4 * 9).rdata & 0xFFFFu, 0xFFFFu);  // pixel (2, 1) of the 16 x 4 screen: white
+  EXPECT_EQ(soc.read(kRaster + RASTER_STATE_Offset).rdata, 0u);
 }
 
 TEST_P(FabricTest, RamByteLanes) {

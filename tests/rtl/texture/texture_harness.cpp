@@ -238,12 +238,12 @@ uint32_t TextureHarness::upload(const Texture& tex, unsigned slot, uint32_t base
 }
 
 std::vector<TexResult> TextureHarness::run(const std::vector<TexRequest>& reqs, unsigned stall_permille,
-                                           uint32_t seed, TexRunStats* stats) {
+                                           uint32_t seed, TexRunStats* stats, TexRunReads* reads) {
   TexturePort& p = *port_;
   std::mt19937 rng(seed);
   std::vector<TexResult> out;
   out.reserve(reqs.size());
-  size_t next = 0;
+  size_t next = 0, read_next = 0;
   uint64_t cycle = 0, first = 0, last = 0;
   bool started = false;
   const uint64_t limit = 64 * reqs.size() + 1000;
@@ -255,8 +255,15 @@ std::vector<TexResult> TextureHarness::run(const std::vector<TexRequest>& reqs, 
       p.req_tag = static_cast<uint32_t>(next);
     }
     p.out_ready = stall_permille == 0 || (rng() % 1000) >= stall_permille;
+    const bool reading = reads && !reads->offsets.empty();
+    if (reading) p.reg = {true, false, kRegBase + reads->offsets[read_next % reads->offsets.size()], 0, 0xF};
     p.settle();
     const bool in_fire = p.req_valid && p.req_ready;
+    if (reading) {
+      if (p.reg_rsp_valid) reads->values.push_back(p.reg_rdata);  // the read accepted last clock
+      if (p.reg_ready) ++read_next;
+      else ++reads->waited;
+    }
     if (p.out_valid && p.out_ready) {
       out.push_back(p.out);
       last = cycle;
@@ -271,7 +278,14 @@ std::vector<TexResult> TextureHarness::run(const std::vector<TexRequest>& reqs, 
   }
   p.req_valid = false;
   p.out_ready = true;
-  tick();
+  p.reg.valid = false;
+  if (reads && !reads->offsets.empty()) {  // the last read's response
+    p.settle();
+    if (p.reg_rsp_valid) reads->values.push_back(p.reg_rdata);
+    p.rise();
+  } else {
+    tick();
+  }
   if (stats) stats->cycles = last - first + 1;
   return out;
 }

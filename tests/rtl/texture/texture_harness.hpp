@@ -37,6 +37,14 @@ struct TexRunStats {
   uint64_t cycles = 0;          // from the first request accepted to the last result taken
 };
 
+// Register reads issued back to back on the register port while run() streams its requests: the
+// offsets in turn, each value as read, and the clocks a read was presented but not accepted.
+struct TexRunReads {
+  std::vector<uint32_t> offsets;
+  std::vector<uint32_t> values;  // one per read completed, in order
+  uint64_t waited = 0;
+};
+
 class TexturePort;
 
 class TextureHarness {
@@ -58,8 +66,9 @@ class TextureHarness {
 
   // Sends the requests in order (tag = index) and returns one result per request in output order.
   // stall_permille: chance per clock that the output is not taken.
+  // reads: register reads to issue meanwhile (TexRunReads).
   std::vector<TexResult> run(const std::vector<TexRequest>& reqs, unsigned stall_permille = 0,
-                             uint32_t seed = 1, TexRunStats* stats = nullptr);
+                             uint32_t seed = 1, TexRunStats* stats = nullptr, TexRunReads* reads = nullptr);
 
  private:
   void tick();

@@ -27,6 +27,7 @@ namespace {
 
 using rtl::TexRequest;
 using rtl::TexResult;
+using rtl::TexRunReads;
 using rtl::TextureHarness;
 
 uint32_t pack(Rgba8 c) {
@@ -91,13 +92,14 @@ struct Check {
 
 // Runs the requests and compares each result with the model.
 Check run_and_compare(TextureHarness& h, const ModelConfig& cfg, const std::vector<const Texture*>& slots,
-                      const std::vector<TexRequest>& reqs, unsigned stall = 0, uint32_t seed = 1) {
+                      const std::vector<TexRequest>& reqs, unsigned stall = 0, uint32_t seed = 1,
+                      TexRunReads* reads = nullptr) {
   std::vector<TexRequest> sent = reqs;
   for (TexRequest& r : sent) {
     r.u = reduce(r.u, r.wrap_u, h.coord_bits());
     r.v = reduce(r.v, r.wrap_v, h.coord_bits());
   }
-  const std::vector<TexResult> got = h.run(sent, stall, seed);
+  const std::vector<TexResult> got = h.run(sent, stall, seed, nullptr, reads);
   Check c;
   std::set<uint32_t> distinct;
   for (size_t i = 0; i < reqs.size(); ++i) {
@@ -292,6 +294,58 @@ TEST_P(TextureUnit, EveryFormatRandom) {
   EXPECT_EQ(h.reg_read(0x010), counters ? reqs.size() : 0u);
   h.reg_write(0x018, 1);
   EXPECT_EQ(h.reg_read(0x010), 0u);
+}
+
+// In `icebreaker` a descriptor read shares the descriptors' multiplexer with the requests
+// (htx_tex_regs SharedDescMux): it waits in a clock in which a request is taken. Reads of every slot
+// (and of one beyond the built slots, which reads 0) issued back to back while requests stream must
+// all answer their descriptor, in `icebreaker` some must have waited (in `full`, with a multiplexer
+// of their own, none), and every sample must still match the model.
+TEST_P(TextureUnit, DescriptorReadsWhileSampling) {
+  const ModelConfig& c = cfg();
+  TextureHarness h(GetParam());
+  std::mt19937 rng(31);
+  const unsigned built_slots = (h.reg_read(0x000) >> 8) & 0xF;
+  ASSERT_GE(built_slots, 2u);
+  std::vector<Texture> texs;
+  std::vector<const Texture*> slots;
+  uint32_t base = 0;
+  for (unsigned s = 0; s < built_slots; ++s) {
+    const unsigned a = 3 + s % 3, b = 3 + (s + 1) % 3;
+    std::vector<uint8_t> px(size_t{4} << (a + b));
+    for (uint8_t& x : px) x = static_cast<uint8_t>(rng());
+    texs.push_back(make_texture(s % 2 ? TexFormat::RGBA4444 : TexFormat::RGB565, a, b, px));
+  }
+  for (unsigned s = 0; s < built_slots; ++s) {
+    base += h.upload(texs[s], s, base);
+    slots.push_back(&texs[s]);
+  }
+  TexRunReads reads;
+  std::vector<uint32_t> expected;
+  for (unsigned s = 0; s <= built_slots && s < 8; ++s) {
+    reads.offsets.push_back(0x100 + 4 * s);
+    expected.push_back(h.reg_read(0x100 + 4 * s));
+  }
+  EXPECT_EQ(expected.back(), built_slots < 8 ? 0u : expected.back());  // a slot not built reads 0
+  const std::vector<Filter> filters = built_filters(c);
+  std::vector<TexRequest> reqs;
+  for (int n = 0; n < 1500; ++n) {
+    TexRequest r;
+    r.slot = static_cast<unsigned>(rng() % built_slots);
+    r.u = static_cast<int64_t>(rng() % (200u << c.texcoord_frac_bits)) - (50 << c.texcoord_frac_bits);
+    r.v = static_cast<int64_t>(rng() % (200u << c.texcoord_frac_bits)) - (50 << c.texcoord_frac_bits);
+    r.filter = filters[rng() % filters.size()];
+    r.wrap_u = static_cast<Wrap>(rng() % 3);
+    r.wrap_v = static_cast<Wrap>(rng() % 3);
+    reqs.push_back(r);
+  }
+  const Check k = run_and_compare(h, c, slots, reqs, 0, 1, &reads);
+  EXPECT_EQ(k.bad, 0u) << k.first;
+  ASSERT_GT(reads.values.size(), reqs.size());
+  if (GetParam() == "icebreaker") EXPECT_GT(reads.waited, 0u);
+  else EXPECT_EQ(reads.waited, 0u);
+  for (size_t i = 0; i < reads.values.size(); ++i)
+    ASSERT_EQ(reads.values[i], expected[i % expected.size()]) << "read " << i;
 }
 
 INSTANTIATE_TEST_SUITE_P(Configs, TextureUnit, ::testing::Values("full", "icebreaker"),
