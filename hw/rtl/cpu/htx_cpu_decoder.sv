@@ -1,6 +1,8 @@
 // RV32IM + Zicsr instruction decoder (combinational). Every encoding that is not a legal RV32IM,
 // Zicsr, FENCE/FENCE.I, ECALL, EBREAK, MRET or WFI instruction for an implemented CSR comes out with
-// `illegal` set and every action flag (including rd_we) clear.
+// `illegal` set and mul and div clear; its other flags are left as its opcode set them, since it
+// traps before execute acts (htx_cpu gates every action with the early trap; the stall chain starts
+// the multiplier and divider before that, from d_err_q alone, so those two flags are cleared here).
 module htx_cpu_decoder (
   input  logic [31:0]               instr_i,
   output htx_cpu_pkg::decoded_t     dec_o
@@ -195,24 +197,11 @@ module htx_cpu_decoder (
     if (d.rd == 5'd0) begin
       d.rd_we = 1'b0;
     end
-    // The operand fields (imm, alu_op, registers) stay as the opcode set them,
-    // so they do not wait for the legality check; only the actions are cancelled.
+    // Everything else stays as the opcode set it (docs/cpu.md): the early trap cancels the actions.
     if (!legal) begin
       d.illegal = 1'b1;
-      d.ecall   = 1'b0;
-      d.ebreak  = 1'b0;
-      d.mret    = 1'b0;
-      d.fencei  = 1'b0;
-      d.branch  = 1'b0;
-      d.jal     = 1'b0;
-      d.jalr    = 1'b0;
-      d.load    = 1'b0;
-      d.store   = 1'b0;
       d.mul     = 1'b0;
       d.div     = 1'b0;
-      d.csr     = 1'b0;
-      d.csr_we  = 1'b0;
-      d.rd_we   = 1'b0;
     end
   end
 

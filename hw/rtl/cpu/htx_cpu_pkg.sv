@@ -49,7 +49,7 @@ package htx_cpu_pkg;
   // What decode hands to execute. funct3 is kept whole: it selects the branch condition, the memory
   // access size and sign, the multiply/divide operation and the CSR operation.
   typedef struct packed {
-    logic        illegal;   // every action flag is clear; mtval will be 0
+    logic        illegal;   // an early trap (mul, div clear; other flags as decoded); mtval 0
     logic        ecall;
     logic        ebreak;
     logic        mret;
