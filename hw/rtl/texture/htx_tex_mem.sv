@@ -80,7 +80,7 @@ module htx_tex_mem #(
   end
   assign rsp_valid_o = rsp_q;
   assign rsp_err_o   = rsp_err_q;
-  assign rsp_rdata_o = (CpuRead && rsp_rd_q) ? 32'(rdata[rsp_bank_q]) : 32'd0;
+  assign rsp_rdata_o = rsp_rd_q ? 32'(rdata[rsp_bank_q]) : 32'd0;  // (cpu_re carries CpuRead)
 
   logic unused;
   assign unused = ^{req_addr_i[31:20], req_addr_i[1:0], req_wdata_i, req_be_i};

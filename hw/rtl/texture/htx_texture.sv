@@ -86,7 +86,8 @@ module htx_texture #(
     .req_valid_i(reg_req_valid_i), .req_ready_o(reg_req_ready_o), .req_addr_i(reg_req_addr_i),
     .req_we_i(reg_req_we_i), .req_be_i(reg_req_be_i), .req_wdata_i(reg_req_wdata_i),
     .rsp_valid_o(reg_rsp_valid_o), .rsp_rdata_o(reg_rsp_rdata_o), .rsp_err_o(reg_rsp_err_o),
-    .slot_i(req_slot_i), .slot_take_i(req_valid_i && req_ready_o), .desc_o(desc), .busy_i(busy), .err_format_i(err_format), .err_filter_i(err_filter),
+    .slot_i(req_slot_i), .slot_take_i(req_valid_i && req_ready_o), .desc_o(desc), .busy_i(busy),
+    .err_format_i(err_format), .err_filter_i(err_filter),
     .sample_i(sample));
 
   logic              s_re, s_hold;

@@ -123,9 +123,13 @@ TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
   soc.write(kRaster + RASTER_CLEAR_COLOR_Offset, 0x5A5Au);
   soc.write(kRaster + RASTER_CLEAR_DEPTH_Offset, 0x0123u);
   soc.write(kRaster + RASTER_CTRL_Offset, RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_CLEAR_COLOR_Msk | RASTER_CTRL_CLEAR_DEPTH_Msk);
-  bool idle = false;
-  for (int i = 0; i < 2000 && !idle; ++i) idle = !(soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_BUSY_Msk);
-  ASSERT_TRUE(idle);
+  // Polls STATUS until the raster unit is idle, at most `polls` times.
+  const auto raster_idle = [&](int polls) {
+    for (int i = 0; i < polls; ++i)
+      if (!(soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_BUSY_Msk)) return true;
+    return false;
+  };
+  ASSERT_TRUE(raster_idle(2000));
   for (uint32_t w = 0; w < 32; ++w) EXPECT_EQ(soc.read(kFbColor + 4 * w).rdata, 0x5A5A'5A5Au) << w;
   EXPECT_EQ(soc.read(kFbColor + 4 * 32).rdata, 0u);  // pixel 64: outside the 16 x 4 screen
   EXPECT_EQ(soc.read(kFbDepth + 4 * 63).rdata & 0xFFFFu, 0x0123u);
@@ -156,9 +160,7 @@ TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
   htx::fw::pack_triangle(rec, packed);
   soc.write(kRaster + RASTER_FIFO_Offset, (5u << RASTER_STATE_DEPTH_FUNC_Pos) | RASTER_STATE_GOURAUD_Msk);
   for (uint32_t w : packed) soc.write(kRaster + RASTER_FIFO_Offset, w);
-  idle = false;
-  for (int i = 0; i < 20000 && !idle; ++i) idle = !(soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_BUSY_Msk);
-  ASSERT_TRUE(idle);
+  ASSERT_TRUE(raster_idle(20000));
   EXPECT_EQ(soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_ERR_STATE_Msk, 0u);
   EXPECT_EQ(soc.read(kFbColor + 4 * 9).rdata & 0xFFFFu, 0xFFFFu);  // pixel (2, 1) of the 16 x 4 screen: white
   EXPECT_EQ(soc.read(kRaster + RASTER_STATE_Offset).rdata, 0u);

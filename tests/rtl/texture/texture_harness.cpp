@@ -244,6 +244,7 @@ std::vector<TexResult> TextureHarness::run(const std::vector<TexRequest>& reqs, 
   std::vector<TexResult> out;
   out.reserve(reqs.size());
   size_t next = 0, read_next = 0;
+  const bool reading = reads && !reads->offsets.empty();
   uint64_t cycle = 0, first = 0, last = 0;
   bool started = false;
   const uint64_t limit = 64 * reqs.size() + 1000;
@@ -255,7 +256,6 @@ std::vector<TexResult> TextureHarness::run(const std::vector<TexRequest>& reqs, 
       p.req_tag = static_cast<uint32_t>(next);
     }
     p.out_ready = stall_permille == 0 || (rng() % 1000) >= stall_permille;
-    const bool reading = reads && !reads->offsets.empty();
     if (reading) p.reg = {true, false, kRegBase + reads->offsets[read_next % reads->offsets.size()], 0, 0xF};
     p.settle();
     const bool in_fire = p.req_valid && p.req_ready;
@@ -279,13 +279,9 @@ std::vector<TexResult> TextureHarness::run(const std::vector<TexRequest>& reqs, 
   p.req_valid = false;
   p.out_ready = true;
   p.reg.valid = false;
-  if (reads && !reads->offsets.empty()) {  // the last read's response
-    p.settle();
-    if (p.reg_rsp_valid) reads->values.push_back(p.reg_rdata);
-    p.rise();
-  } else {
-    tick();
-  }
+  p.settle();
+  if (reading && p.reg_rsp_valid) reads->values.push_back(p.reg_rdata);  // the last read's response
+  p.rise();
   if (stats) stats->cycles = last - first + 1;
   return out;
 }
