@@ -7,8 +7,10 @@
 //                 instruction in E, the one in W, the last register write, the register file) and
 //                 registers the ALU operands, so E starts from flip-flops. Also precomputes every
 //                 trap that does not depend on E's results.
-//   E  execute    ALU, branch resolution, CSR access, traps, the data bus request, MUL/DIV.
-//   W  write-back waits for the data bus response of a load/store, writes the register file.
+//   E  execute    ALU, branch resolution, CSR access, the data bus request, MUL/DIV.
+//   W  write-back waits for the data bus response of a load/store, writes the register file, and
+//                 takes every trap: an access fault of its own load/store, or an instruction that
+//                 E found trapping and handed over with its mtval as the result.
 //
 // Timing rules (docs/cpu.md): the ALU's results never feed the stall or hand-over logic; those are
 // decided from registered state and the bus handshakes only. E's adder/logic result is forwarded
@@ -16,9 +18,9 @@
 // cycle later. Redirects decided in E or W are registered: fetch follows one cycle later and the
 // wrong-path instructions then in D and E are squashed.
 //
-// E only acts (bus request, CSR write, trap, redirect, hand-over to W) in a cycle in which W
-// completes without an access fault, so a faulting load/store in W can still cancel everything
-// younger: traps are precise.
+// E only acts (bus request, CSR write, redirect, hand-over to W) in a cycle in which W completes
+// without a trap, so a trap in W cancels everything younger: traps are precise. Taking every
+// trap in W gives mepc and mtval one source each (W's PC and result registers).
 module htx_cpu #(
   parameter logic [31:0] ResetVector = 32'h0000_0000
 ) (
@@ -105,7 +107,6 @@ module htx_cpu #(
   logic [31:0]             e_rs2_q, e_aux_q;                // store data, target (or instruction)
   logic                    e_br_eq_q, e_br_inv_q;           // branch condition: use eq, invert
   logic [31:2]             e_pc_q, e_npc_q;
-  logic                    e_illegal_q;
   logic                    e_pred_q, e_xtrap_q, e_late_q, e_sub_q, e_fwd_q;
   logic                    e_left_q, e_arith_q, e_fast_q, e_slt_q, e_shift_q;
   logic                    e_mem_q, e_mul_q, e_div_q;
@@ -117,6 +118,8 @@ module htx_cpu #(
   logic                    e_high_q;
 
   logic        w_valid_q, w_rd_we_q, w_load_q, w_store_q, w_nocount_q;
+  logic        w_xt_q;       // W holds an instruction that traps: w_result_q is its mtval
+  htx_cpu_pkg::exc_cause_e w_cause_q;
   logic        w_reverse_q;  // w_result_q is a bit-reversed left shift
   logic        w_wr_q;       // w_valid_q && w_rd_we_q
   logic [4:0]  w_rd_q;
@@ -131,7 +134,7 @@ module htx_cpu #(
 
   // ------------------------------------------------------------------------------------------
   // Write-back
-  logic        w_ready, w_fault;
+  logic        w_ready, w_fault, w_trap;
   logic [31:0] w_load_value;
   logic        rf_we;
   logic [31:0] rf_wdata;
@@ -139,6 +142,7 @@ module htx_cpu #(
   logic        w_memwait_q;  // W holds a load or store: it waits for the data response
   assign w_ready  = !w_memwait_q || dbus_rsp_valid_i;
   assign w_fault  = w_memwait_q && dbus_rsp_valid_i && dbus_rsp_err_i;
+  assign w_trap   = w_fault || w_xt_q;
   assign rf_we    = w_valid_q && w_ready && !w_fault && w_rd_we_q;
   always_comb begin
     if (w_load_q) begin
@@ -322,14 +326,15 @@ module htx_cpu #(
   always_comb begin
     d_exec.mret    = d_dec.mret;
     d_exec.fencei  = d_dec.fencei;
-    d_exec.branch  = d_dec.branch;
+    // (An illegal branch, JALR or CSR encoding is none of them in E: its result is its mtval, 0.)
+    d_exec.branch  = d_dec.branch && !d_dec.illegal;
     d_exec.jal     = d_dec.jal;
-    d_exec.jalr    = d_dec.jalr;
+    d_exec.jalr    = d_dec.jalr && !d_dec.illegal;
     d_exec.load    = d_dec.load;
     d_exec.store   = d_dec.store;
     d_exec.mul     = d_dec.mul;
     d_exec.div     = d_dec.div;
-    d_exec.csr     = d_dec.csr;
+    d_exec.csr     = d_dec.csr && !d_dec.illegal;
     d_exec.csr_we  = d_dec.csr_we;
     d_exec.csr_sel = d_dec.csr_sel;
     d_exec.funct3  = d_dec.funct3;
@@ -413,18 +418,16 @@ module htx_cpu #(
   // ------------------------------------------------------------------------------------------
   // Execute: traps
   htx_cpu_pkg::exc_cause_e e_cause;
-  logic [31:0]             e_tval;
   assign e_cause = e_xtrap_q ? e_cause_q : htx_cpu_pkg::ExcInstrMisaligned;
-  assign e_tval  = e_illegal_q ? 32'b0 :
-                   (e_q.branch || e_q.jal) ? e_aux_q : {alu_sum[31:1], alu_sum[0] && !e_q.jalr};
 
   // ------------------------------------------------------------------------------------------
   // Execute: memory, multiply, divide, CSR
-  logic        e_can_go, e_mem, e_mul, e_div, e_wait, e_done, e_commit;
+  logic        e_can_go, e_mem, e_mul, e_div, e_wait, e_done;
   logic        mul_busy, div_busy, csr_counting;
   logic        mul_done_next, div_done_next;
-  // A trap's CSR updates are applied one cycle after it is taken (together with the registered
+  // A trap's CSR updates are applied one cycle after W takes it (together with the registered
   // redirect); nothing can read those CSRs in between, because the instruction then in E is squashed.
+  // trap_pc_q and trap_tval_q are plain copies of W's PC and result.
   logic                    trap_q;
   htx_cpu_pkg::exc_cause_e trap_cause_q;
   logic [31:2]             trap_pc_q;
@@ -436,7 +439,7 @@ module htx_cpu #(
   // A CSR instruction waits until W is empty and its retirement is counted, so the counters it
   // reads are exact.
   assign e_live   = e_valid_q && !redirect_q;
-  assign e_can_go = e_live && w_ready && !w_fault && !(e_q.csr && (w_valid_q || csr_counting));
+  assign e_can_go = e_live && w_ready && !w_trap && !(e_q.csr && (w_valid_q || csr_counting));
   assign e_mem    = e_mem_q;  // (load || store) && no early trap, registered for the stall logic
   assign e_mul    = e_mul_q;
   assign e_div    = e_div_q;
@@ -486,24 +489,22 @@ module htx_cpu #(
   assign e_wait      = (e_mem && !dbus_req_ready_i) || unit_wait_q;
   assign e_done      = e_can_go && !e_wait;
 
-  // Outcomes of E for both branch outcomes (see br_cond): hand-over to W, trap (including an
-  // access fault in W), redirect, and whether the redirect goes to the fall-through PC.
+  // Outcomes of E for both branch outcomes (see br_cond): whether the instruction handed to W
+  // traps there (xt_*: an early trap, or a taken branch to a misaligned target), redirect (W's
+  // trap first), and whether the redirect goes to the fall-through PC.
   logic br_misaligned, e_jump, e_ctl_n, e_ctl_t;
   assign br_misaligned = e_q.branch && e_aux_q[1];
   assign e_jump        = e_q.jal || e_q.jalr;
-  assign e_ctl_n       = e_xtrap_q || e_q.mret || e_q.fencei || (e_jump != e_pred_q);
-  assign e_ctl_t       = e_xtrap_q || e_q.mret || e_q.fencei || br_misaligned ||
-                         ((e_jump || e_q.branch) != e_pred_q);
-  (* keep *) logic commit_t, commit_n, trap_t, trap_n, redir_t, redir_n, seq_t, seq_n;
-  assign commit_n = e_done && !e_xtrap_q;
-  assign commit_t = e_done && !e_xtrap_q && !br_misaligned;
-  assign trap_n   = w_fault || (e_done && e_xtrap_q);
-  assign trap_t   = w_fault || (e_done && (e_xtrap_q || br_misaligned));
-  assign redir_n  = w_fault || (e_done && e_ctl_n);
-  assign redir_t  = w_fault || (e_done && e_ctl_t);
-  assign seq_n    = !w_fault && !e_xtrap_q && (e_q.fencei || e_q.branch);
-  assign seq_t    = !w_fault && !e_xtrap_q && e_q.fencei;
-  assign e_commit = br_cond ? commit_t : commit_n;
+  assign e_ctl_n       = !e_xtrap_q && (e_q.mret || e_q.fencei || (e_jump != e_pred_q));
+  assign e_ctl_t       = !e_xtrap_q && !br_misaligned &&
+                         (e_q.mret || e_q.fencei || ((e_jump || e_q.branch) != e_pred_q));
+  (* keep *) logic xt_t, xt_n, redir_t, redir_n, seq_t, seq_n;
+  assign xt_n     = e_done && e_xtrap_q;
+  assign xt_t     = e_done && (e_xtrap_q || br_misaligned);
+  assign redir_n  = w_trap || (e_done && e_ctl_n);
+  assign redir_t  = w_trap || (e_done && e_ctl_t);
+  assign seq_n    = !w_trap && (e_q.fencei || e_q.branch);
+  assign seq_t    = !w_trap && e_q.fencei;
 
   logic csr_we, csr_instret_we;
   assign csr_we         = e_done && !e_xtrap_q && e_q.csr && e_q.csr_we;
@@ -519,7 +520,7 @@ module htx_cpu #(
     .we_i      (csr_we),
     .op_i      (e_q.funct3[1:0]),
     .src_i     (e_q.funct3[2] ? {27'b0, e_q.uimm} : e_a_q[31:0]),
-    .retire_i  (w_valid_q && w_ready && !w_fault && !w_nocount_q),
+    .retire_i  (w_valid_q && w_ready && !w_trap && !w_nocount_q),
     .counting_o(csr_counting),
     .trap_i    (trap_q),
     .cause_i   (trap_cause_q),
@@ -534,12 +535,21 @@ module htx_cpu #(
   // result and SLT (end of the carry chain) one level before it; the other results are chosen
   // first (kept as separate signals so synthesis does not fold the late values deeper into the
   // mux tree).
+  //
+  // A trapping instruction goes to W with its mtval as the result: the address of a misaligned
+  // load, store or JALR target (the adder), the target of a JAL or branch (e_aux_q), the PC of a
+  // fetch that faulted (AUIPC x0, 0 on the adder), 0 for an illegal instruction (no kind is
+  // selected) and for ECALL and EBREAK (the adder's 0 + 0).
   (* keep *) logic [31:0] e_result_rest, e_result_early;
   logic [31:0] e_result;
+  logic        sel_link, sel_aux, sel_fast;
+  assign sel_link = (e_q.jal || e_q.jalr) && !e_xtrap_q;
+  assign sel_aux  = e_q.branch || (e_q.jal && e_xtrap_q);
+  assign sel_fast = e_fast_q || (e_q.jalr && e_xtrap_q);
   // An AND-OR of the registered one-hot kinds (csr_rdata is already 0 unless a CSR instruction).
-  assign e_result_rest  = ({32{e_q.jal || e_q.jalr}} & {e_npc_q, 2'b00}) | csr_rdata |
-                          ({32{e_q.mul}} & mul_result) | ({32{e_q.div}} & div_result);
-  assign e_result_early = e_fast_q ? e_fast_result :               // fast: includes the address
+  assign e_result_rest  = ({32{sel_link}} & {e_npc_q, 2'b00}) | ({32{sel_aux}} & e_aux_q) |
+                          csr_rdata | ({32{e_q.mul}} & mul_result) | ({32{e_q.div}} & div_result);
+  assign e_result_early = sel_fast ? e_fast_result :               // fast: includes the address
                           e_slt_q  ? {31'b0, alu_lt} : e_result_rest;
   assign e_result       = e_shift_q ? alu_late : e_result_early;
 
@@ -575,7 +585,7 @@ module htx_cpu #(
   // taken, FENCE.I) or the other target.
   logic [31:2] late_pc;
   always_comb begin
-    if (w_fault || e_xtrap_q || (e_q.branch && e_aux_q[1])) begin
+    if (w_trap) begin
       late_pc = mtvec;
     end else if (e_q.mret) begin
       late_pc = mepc;
@@ -592,7 +602,7 @@ module htx_cpu #(
       trap_q     <= 1'b0;
     end else begin
       redirect_q <= br_cond ? redir_t : redir_n;
-      trap_q     <= br_cond ? trap_t : trap_n;
+      trap_q     <= w_trap;
     end
   end
 
@@ -601,9 +611,9 @@ module htx_cpu #(
     redirect_npc_q <= e_npc_q;
     redirect_seq_q <= br_cond ? seq_t : seq_n;
     trap_cause_q  <= w_fault ? (w_store_q ? htx_cpu_pkg::ExcStoreAccess : htx_cpu_pkg::ExcLoadAccess)
-                             : e_cause;
-    trap_pc_q     <= w_fault ? w_pc_q : e_pc_q;
-    trap_tval_q   <= w_fault ? w_result_q : e_tval;
+                             : w_cause_q;
+    trap_pc_q     <= w_pc_q;
+    trap_tval_q   <= w_result_q;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -612,6 +622,7 @@ module htx_cpu #(
       e_valid_q  <= 1'b0;
       w_valid_q  <= 1'b0;
       w_wr_q     <= 1'b0;
+      w_xt_q     <= 1'b0;
       lw_valid_q <= 1'b0;
       d_jump_q   <= 1'b0;
       w_memwait_q <= 1'b0;
@@ -623,9 +634,10 @@ module htx_cpu #(
       d_jump_q  <= f_take && f_valid && f_predict;
       e_valid_q <= e_accept ? d_go : (e_valid_q && !redirect_q);
       if (w_ready) begin
-        w_valid_q <= e_commit;
-        w_wr_q    <= e_commit && e_q.rd_we;
-        w_memwait_q <= e_commit && (e_q.load || e_q.store);
+        w_valid_q <= e_done;
+        w_xt_q    <= br_cond ? xt_t : xt_n;
+        w_wr_q    <= e_done && e_q.rd_we && !e_xtrap_q;
+        w_memwait_q <= e_done && e_mem_q;
       end
       if (rf_we) begin
         lw_valid_q <= 1'b1;
@@ -658,7 +670,6 @@ module htx_cpu #(
       e_br_inv_q <= d_dec.funct3[0];
       e_rs2_q   <= d_rs2;
       e_aux_q   <= d_target;
-      e_illegal_q <= d_dec.illegal;
       e_pc_q    <= d_pc_q;
       e_npc_q   <= d_npc_q;
       e_pred_q  <= d_pred_q;
@@ -674,19 +685,25 @@ module htx_cpu #(
       e_sub_q   <= sub_d;
       e_left_q  <= (d_dec.alu_op == htx_cpu_pkg::AluSll);
       e_arith_q <= (d_dec.alu_op == htx_cpu_pkg::AluSra);
-      e_fast_q  <= !(late_alu_d || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul || d_dec.div);
-      e_slt_q   <= (d_dec.alu_op == htx_cpu_pkg::AluSlt) || (d_dec.alu_op == htx_cpu_pkg::AluSltu);
-      e_shift_q <= (d_dec.alu_op == htx_cpu_pkg::AluSll) || (d_dec.alu_op == htx_cpu_pkg::AluSrl) ||
-                   (d_dec.alu_op == htx_cpu_pkg::AluSra);
+      // (Not for an illegal instruction, whose result is its mtval 0, nor a branch, whose result
+      // is its target for mtval.)
+      e_fast_q  <= !(late_alu_d || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul || d_dec.div ||
+                     d_dec.branch || d_dec.illegal);
+      e_slt_q   <= ((d_dec.alu_op == htx_cpu_pkg::AluSlt) || (d_dec.alu_op == htx_cpu_pkg::AluSltu)) &&
+                   !d_dec.illegal;
+      e_shift_q <= ((d_dec.alu_op == htx_cpu_pkg::AluSll) || (d_dec.alu_op == htx_cpu_pkg::AluSrl) ||
+                    (d_dec.alu_op == htx_cpu_pkg::AluSra)) && !d_dec.illegal;
       e_lo_q    <= d_lo;
     end
     if (w_ready) begin
       w_rd_q      <= e_q.rd;
-      w_rd_we_q   <= e_q.rd_we;
+      w_rd_we_q   <= e_q.rd_we && !e_xtrap_q;
+      w_cause_q   <= e_cause;
       w_load_q    <= e_q.load;
       w_store_q   <= e_q.store;
       w_funct3_q  <= e_q.funct3;
-      w_result_q  <= e_result;
+      // (A misaligned JALR's mtval is its target with bit 0 cleared.)
+      w_result_q  <= {e_result[31:1], e_result[0] && !(e_q.jalr && e_xtrap_q)};
       w_reverse_q <= e_left_q;
       w_pc_q      <= e_pc_q;
       w_nocount_q <= e_q.csr && e_q.csr_we && csr_instret_we;
