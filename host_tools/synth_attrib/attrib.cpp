@@ -3,13 +3,15 @@
 // so misleads (docs/area.md); this reads Yosys's JSON netlist of the flattened design instead.
 // Every flip-flop belongs to the scope of its register (the hierarchical name without its last
 // part); every SB_LUT4 and SB_CARRY to the scope of the first named signal found by following its
-// output forward (LUTs that ABC made out of several signals name none themselves). A signal named
-// in several scopes counts where it is made (see better()). Scopes are cut to --depth parts below
+// output forward (LUTs that ABC made out of several signals name none themselves; a mapped name
+// that steps forward through a cell does not count as a name, see wanders()). A signal named in
+// several scopes counts where it is made (see better()). Scopes are cut to --depth parts below
 // the common prefix and summed. The split is a heuristic; the total is exact.
 #include "attrib.hpp"
 
 #include <algorithm>
 #include <map>
+#include <regex>
 #include <unordered_map>
 #include <vector>
 
@@ -31,6 +33,19 @@ std::string signal_of(const std::string& name) {
 }
 
 bool is_ff(const std::string& type) { return type.rfind("SB_DFF", 0) == 0; }
+
+// Whether a mapped name is a path from its signal that steps forward through a cell (from an
+// input port to the output: "x_SB_LUT4_I2_O" is the output of a LUT that x feeds). Such a path can
+// wander through any logic x feeds and back, so it says nothing about where its net is made: a
+// net named only so counts as unnamed. Backward steps ("x_SB_LUT4_O_I2", x's LUT's input I2) stay
+// in the cone that makes x.
+bool wanders(const std::string& name) {
+  static const std::regex forward("_(I[0-3]|CI|D|E|R|S)(_[0-9]+)?_(O|CO|Q)(_[0-9]+)?(_|$)");
+  const std::string s = base_name(name);
+  const size_t dot = s.rfind('.');
+  const size_t mapped = s.find("_SB_", dot == std::string::npos ? 0 : dot);
+  return mapped != std::string::npos && std::regex_search(s.substr(mapped), forward);
+}
 
 // The scope of a net name: its base name without its last dotted part.
 std::string scope_of(const std::string& name) {
@@ -78,7 +93,7 @@ class Netlist {
  public:
   explicit Netlist(const Json& module) : module_(module) {
     for (const auto& [name, net] : module["netnames"].items()) {
-      if (net.value("hide_name", 0) != 0) continue;
+      if (net.value("hide_name", 0) != 0 || wanders(name)) continue;
       for (const Json& bit : net["bits"]) {
         if (!bit.is_number_integer()) continue;
         auto [it, fresh] = name_of_bit_.emplace(bit.get<long>(), name);
@@ -184,9 +199,12 @@ std::string attribute(const Json& module, const std::string& top, int depth, boo
   std::map<std::string, Counts> by_scope;
   Counts total;
   for (const auto& [scope, type] : cells) {
-    Counts& row = by_scope[scope.front() == '(' ? scope
-                           : by_signal         ? scope.substr(std::min(prefix.size(), scope.size()))
-                                               : cut(scope, prefix.size(), depth)];
+    std::string key = scope.front() == '(' ? scope
+                      : by_signal         ? scope.substr(std::min(prefix.size(), scope.size()))
+                                          : cut(scope, prefix.size(), depth);
+    // (The common prefix's own scope, e.g. a harness's registers around the design it holds.)
+    if (key.empty()) key = "(own)";
+    Counts& row = by_scope[key];
     for (Counts* c : {&row, &total}) {
       ++(type == "SB_LUT4" ? c->lut4 : type == "SB_CARRY" ? c->carry : c->ff);
     }

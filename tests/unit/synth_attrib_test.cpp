@@ -1,6 +1,7 @@
 // htx-synth-attrib's attribution on a hand-made flattened netlist: flip-flops count where their
 // register is, LUTs and carries where the first named signal after them is made, an input port's
-// alias and a pass-through output never take a signal from its source.
+// alias and a pass-through output never take a signal from its source, and a mapped name that
+// steps forward through a cell names nothing.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -24,10 +25,12 @@ Json netlist() {
   Json m;
   // u_a.x_q (bit 2) is a register; u_b.y (bit 4) is made by two LUTs, the first of which drives
   // an unnamed net (3); u_c.in_i aliases bit 4 in a deeper scope; u_d passes bit 4 through as
-  // out_o at u_b's depth; a carry computes u_a's next value (bit 5); the top's own signal z (6).
+  // out_o at u_b's depth; a carry computes u_a's next value (bit 5); the top's own signal z (6)
+  // named by the mapping after the LUT input it feeds; lut5's output (8) named by a path forward
+  // from u_b.y, which does not make it u_b's.
   m["netnames"] = {{"u_a.x_q", net({2})},         {"$abc$3", net({3}, true)}, {"u_b.y", net({4})},
                    {"u_top_c.u_c.in_i", net({4})}, {"u_d.out_o", net({4})},  {"u_a.x_d", net({5})},
-                   {"z_SB_LUT4_I0_O", net({6})}};
+                   {"z_SB_LUT4_O_I0", net({6})}, {"u_b.y_SB_LUT4_I0_O", net({8})}};
   m["cells"] = {
       {"u_a.x_q_SB_DFF_Q", cell("SB_DFF", {{"C", {1}}, {"D", {5}}, {"Q", {2}}})},
       {"$abc$lut1", cell("SB_LUT4", {{"I0", {2}}, {"I1", {2}}, {"I2", {2}}, {"I3", {2}}, {"O", {3}}})},
@@ -67,6 +70,12 @@ TEST(SynthAttrib, DepthCutsScopesBelowTheirCommonPrefix) {
   const std::string shallow = attribute(m, "t", 1);
   EXPECT_NE(shallow.find("u_x | 2 | 0 | 0\n"), std::string::npos) << shallow;
   EXPECT_NE(shallow.find("u_w | 1 | 0 | 0\n"), std::string::npos) << shallow;
+  // A signal of the common prefix's own scope (a harness's register around its design).
+  m["netnames"]["top.d"] = net({5});
+  m["cells"]["$l4"] = cell("SB_LUT4", {{"I0", {9}}, {"I1", {9}}, {"I2", {9}}, {"I3", {9}}, {"O", {5}}});
+  const std::string own = attribute(m, "t", 1);
+  EXPECT_NE(own.find("scope (below top) |"), std::string::npos) << own;
+  EXPECT_NE(own.find("(own) | 1 | 0 | 0\n"), std::string::npos) << own;
 }
 
 TEST(SynthAttrib, BySignalGivesEachSignalItsOwnRow) {
