@@ -100,6 +100,25 @@ misaligned_back:          // 2 mod 4: a target for backward branches and jumps
   // Traps back to back: the handler itself runs normally between them.
   TEST_TRAP(48, 11, 0, ecall)
   TEST_TRAP(49, 3, 0, ebreak)
+  // The instruction right behind a trapping one has no effect either: not a store, a CSR write,
+  // MRET or a divide, whether the trap was found before execute (ECALL, illegal, a misaligned
+  // load) or in it (a taken branch to a misaligned target).
+  la a0, tdata
+  TEST_CASE(50, a2, 0x5555, li a1, 0x5555; sw a1, 0(a0); li a3, 0x7777; la s7, 1f; ecall;
+            sw a3, 0(a0); 1: lw a2, 0(a0))
+  TEST_CASE(51, a2, 0x5555, li a3, 0x7777; la s7, 1f; .word 0; sh a3, 0(a0); 1: lw a2, 0(a0))
+  TEST_CASE(52, a2, 0x5555, li a3, 0x7777; la s7, 1f; lw a1, 1(a0); sw a3, 0(a0); 1: lw a2, 0(a0))
+  TEST_CASE(53, a2, 0x5555, li a3, 0x7777; la s7, 1f; beq x0, x0, misaligned_target; sw a3, 0(a0);
+            1: lw a2, 0(a0))
+  TEST_CASE(54, a2, 0x1234, li a1, 0x1234; csrw mscratch, a1; li a3, 0x4321; la s7, 1f; ebreak;
+            csrw mscratch, a3; 1: csrr a2, mscratch)
+  TEST_CASE(55, a2, 0x1234, li a3, 0x4321; la s7, 1f; .word 0xffffffff; csrw mscratch, a3;
+            1: csrr a2, mscratch)
+  TEST_CASE(56, a2, 0x1234, li a3, 0x4321; la s7, 1f; beq x0, x0, misaligned_target;
+            csrw mscratch, a3; 1: csrr a2, mscratch)
+  TEST_CASE(57, a4, 0x66, li a4, 0x66; li a1, 100; li a3, 7; la s7, 1f; ecall; div a4, a1, a3; 1:)
+  // An MRET that acted would first set MIE from MPIE (0 here), and the handler would see MPIE 0.
+  TEST_CASE(58, s6, 0x00001880, li a1, 0x8; csrw mstatus, a1; la s7, 1f; ecall; mret; 1:)
 TEST_END
   .section .text.init, "ax"   // same section as the tests, so branches reach the targets directly
 TRAP_HANDLER(trap_handler)
