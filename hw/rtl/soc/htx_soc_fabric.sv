@@ -3,16 +3,15 @@
 // puts the CPU on them.
 //
 //   ibus -> demux --RAM port A
-//                 \-IO arbiter port 0 --+
-//   dbus -> demux --RAM port B          |
-//                 |-IO arbiter port 1 --+-> IO demux -> SYSCTRL, UART, TIMER, RASTER + TEXTURE -> GPU reg
-//                 \-framebuffer/depth window + texture window ---------------------------------> GPU mem
+//   dbus -> demux --RAM port B
+//                 |-IO demux -> SYSCTRL, UART, TIMER, RASTER + TEXTURE -> GPU reg
+//                 \-framebuffer/depth window + texture window ---------> GPU mem
 //
-// Register blocks (0x2xxx_xxxx) are the same for both masters (contracts.md). The RAM is dual-ported,
-// so fetch and data never wait for each other there; only IO accesses share the arbiter. The GPU's
-// memory windows are data only: an instruction fetch from them answers rsp_err (there is no code
-// there, and the fetch path stays as short as before). Each demux answers addresses no slave claims
-// with rsp_err. With StallInject, every slave sits behind an htx_bus_stall whose random wait states
+// Code runs from RAM only: the register blocks (0x2xxx_xxxx) and the GPU's memory windows are on the
+// data port alone, and an instruction fetch from them answers rsp_err (there is no code there). So
+// the IO path has one master and no arbiter, and the fetch path only the RAM. The RAM is
+// dual-ported, so fetch and data never wait for each other. Each demux answers addresses no slave
+// claims with rsp_err. With StallInject, every slave sits behind an htx_bus_stall whose random wait states
 // are switched on by stall_en_i.
 //
 // The GPU is htx_gpu_icebreaker (docs/soc.md, "GPU"): raster and texture units in the `icebreaker`
@@ -79,13 +78,13 @@ module htx_soc_fabric #(
   localparam logic [31:0] TexBase = 32'h4000_0000;  // texture memory, 1 MiB
   localparam logic [31:0] TexMask = 32'hFFF0_0000;
 
-  // ---- CPU-side demuxes: slave 0 = RAM port, slave 1 = IO arbiter ----
-  logic [1:0]  i_valid, i_ready, i_rsp_valid, i_rsp_err;
+  // ---- CPU-side demuxes: ibus slave 0 = RAM port A; dbus slave 0 = RAM port B, 1 = IO demux,
+  // 2 and 3 = the GPU's memory windows (framebuffer/depth, texture) ----
+  logic [0:0]  i_valid, i_ready, i_rsp_valid, i_rsp_err;
   logic [31:0] i_addr, i_wdata;
   logic        i_we;
   logic [3:0]  i_be;
-  logic [63:0] i_rsp_rdata;
-  // dbus: slaves 2 and 3 = the GPU's memory windows (framebuffer/depth, texture).
+  logic [31:0] i_rsp_rdata;
   logic [3:0]   d_valid, d_ready, d_rsp_valid, d_rsp_err;
   logic [31:0]  d_addr, d_wdata;
   logic         d_we;
@@ -93,9 +92,9 @@ module htx_soc_fabric #(
   logic [127:0] d_rsp_rdata;
 
   htx_bus_demux #(
-    .NumSlaves(2),
-    .SlaveBase({IoBase, RamBase}),
-    .SlaveMask({IoMask, RamMask})
+    .NumSlaves(1),
+    .SlaveBase(RamBase),
+    .SlaveMask(RamMask)
   ) u_ibus_demux (
     .clk_i, .rst_ni,
     .m_req_valid_i(ibus_req_valid_i), .m_req_ready_o(ibus_req_ready_o),
@@ -162,33 +161,19 @@ module htx_soc_fabric #(
     .b_rsp_valid_o(rb_rsp_valid), .b_rsp_rdata_o(rb_rsp_rdata), .b_rsp_err_o(rb_rsp_err)
   );
 
-  // ---- IO: arbiter between the two CPU buses, then the register-block demux ----
+  // ---- IO: the register-block demux, on the data port alone ----
   logic        io_valid, io_ready, io_we, io_rsp_valid, io_rsp_err;
   logic [31:0] io_addr, io_wdata, io_rsp_rdata;
   logic [3:0]  io_be;
-  logic [31:0] io_rsp_rdata_shared;  // the arbiter returns one response to whichever master owns it
-  logic        io_rsp_err_shared;
-
-  htx_bus_arbiter #(.NumMasters(2)) u_io_arbiter (
-    .clk_i, .rst_ni,
-    .m_req_valid_i({d_valid[1], i_valid[1]}),
-    .m_req_ready_o({d_ready[1], i_ready[1]}),
-    .m_req_addr_i ({d_addr, i_addr}),
-    .m_req_we_i   ({d_we, i_we}),
-    .m_req_be_i   ({d_be, i_be}),
-    .m_req_wdata_i({d_wdata, i_wdata}),
-    .m_rsp_valid_o({d_rsp_valid[1], i_rsp_valid[1]}),
-    .m_rsp_rdata_o(io_rsp_rdata_shared),
-    .m_rsp_err_o  (io_rsp_err_shared),
-    .s_req_valid_o(io_valid), .s_req_ready_i(io_ready), .s_req_addr_o(io_addr),
-    .s_req_we_o(io_we), .s_req_be_o(io_be), .s_req_wdata_o(io_wdata),
-    .s_rsp_valid_i(io_rsp_valid), .s_rsp_rdata_i(io_rsp_rdata), .s_rsp_err_i(io_rsp_err)
-  );
-
-  assign i_rsp_rdata[63:32] = io_rsp_rdata_shared;
-  assign d_rsp_rdata[63:32] = io_rsp_rdata_shared;
-  assign i_rsp_err[1]       = io_rsp_err_shared;
-  assign d_rsp_err[1]       = io_rsp_err_shared;
+  assign io_valid           = d_valid[1];
+  assign d_ready[1]         = io_ready;
+  assign io_addr            = d_addr;
+  assign io_we              = d_we;
+  assign io_be              = d_be;
+  assign io_wdata           = d_wdata;
+  assign d_rsp_valid[1]     = io_rsp_valid;
+  assign d_rsp_rdata[63:32] = io_rsp_rdata;
+  assign d_rsp_err[1]       = io_rsp_err;
 
   logic [NumIo-1:0]    p_valid, p_ready, p_rsp_valid, p_rsp_err;
   logic [31:0]         p_addr, p_wdata;
