@@ -10,8 +10,8 @@
 #   flatten, check) instead of running synth_ice40 on it. For tops that are synthesised whole inside
 #   a larger linted top, and for `full` configurations whose synthesis takes minutes; those are
 #   synthesised by the `synth-report` target instead (docs/architecture.md, "Lint").
-# htx_ice40_equiv(NAME <module> SOURCES <sv files...>)
-#   Registers `lint.ice40_equiv.<module>`: Yosys proves the module's HTX_ICE40 netlist (iCE40 cells
+# htx_ice40_equiv(NAME <module> [TEST <test name>] [PARAMS NAME=VALUE...] SOURCES <sv files...>)
+#   Registers `lint.ice40_equiv.<test name>` (default: the module): Yosys proves the module's HTX_ICE40 netlist (iCE40 cells
 #   from Yosys's own simulation models) equivalent to its behavioural code (equiv_make,
 #   equiv_simple, equiv_induct, with the registers' reset made synchronous).
 # htx_verilate(<lib target> TOP <top> [ARGS <verilator args...>] [TRACE])
@@ -78,24 +78,37 @@ function(htx_rtl_top)
 endfunction()
 
 function(htx_ice40_equiv)
-  cmake_parse_arguments(A "" "NAME" "SOURCES" ${ARGN})
+  cmake_parse_arguments(A "" "NAME;TEST" "SOURCES;PARAMS" ${ARGN})
   if(NOT HTX_YOSYS_BIN)
     return()
   endif()
+  if(NOT A_TEST)
+    set(A_TEST ${A_NAME})
+  endif()
   htx_absolute_paths(srcs ${A_SOURCES})
   list(JOIN srcs " " files)
-  set(script ${CMAKE_BINARY_DIR}/lint/${A_NAME}.ice40_equiv.ys)
+  # PARAMS (NAME=VALUE ...): the parameters both netlists are elaborated with.
+  set(top_args)
+  foreach(p IN LISTS A_PARAMS)
+    string(REPLACE "=" ";" kv ${p})
+    list(GET kv 0 k)
+    list(GET kv 1 v)
+    string(APPEND top_args " -chparam ${k} ${v}")
+  endforeach()
+  set(script ${CMAKE_BINARY_DIR}/lint/${A_TEST}.ice40_equiv.ys)
   file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/lint)
   file(WRITE ${script}
-    "read_verilog -sv ${files}\nprep -top ${A_NAME}\nrename ${A_NAME} gold\ndesign -stash gold\n"
+    "read_verilog -sv ${files}\nhierarchy -top ${A_NAME}${top_args}\nprep -top ${A_NAME}\n"
+    "rename ${A_NAME} gold\ndesign -stash gold\n"
     "read_verilog -sv ${HTX_YOSYS_DEFINES} ${files}\nread_verilog -defer +/ice40/cells_sim.v\n"
-    "hierarchy -top ${A_NAME}\nflatten\nprep -top ${A_NAME}\nrename ${A_NAME} gate\ndesign -stash gate\n"
+    "hierarchy -top ${A_NAME}${top_args}\nflatten\nprep -top ${A_NAME}\nrename ${A_NAME} gate\n"
+    "design -stash gate\n"
     "design -copy-from gold -as gold gold\ndesign -copy-from gate -as gate gate\n"
     "equiv_make gold gate equiv\nhierarchy -top equiv\nasync2sync\nequiv_simple -seq 2\n"
     "equiv_induct\nequiv_status -assert\n")
-  add_test(NAME lint.ice40_equiv.${A_NAME}
-    COMMAND ${HTX_YOSYS_BIN} -q -l ${CMAKE_BINARY_DIR}/lint/${A_NAME}.ice40_equiv.log -s ${script})
-  set_tests_properties(lint.ice40_equiv.${A_NAME} PROPERTIES LABELS lint)
+  add_test(NAME lint.ice40_equiv.${A_TEST}
+    COMMAND ${HTX_YOSYS_BIN} -q -l ${CMAKE_BINARY_DIR}/lint/${A_TEST}.ice40_equiv.log -s ${script})
+  set_tests_properties(lint.ice40_equiv.${A_TEST} PROPERTIES LABELS lint)
 endfunction()
 
 # PREFIX names the generated class (default V<TOP>), so two parameterisations of one top can be

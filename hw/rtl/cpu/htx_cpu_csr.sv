@@ -75,7 +75,7 @@ module htx_cpu_csr (
   // counting in that cycle and the other half counts on. The next CSR instruction can execute two
   // cycles after the writer at the earliest (it waits for write-back to empty and for counting_o),
   // so it reads what was written. A retirement is added one cycle after it is reported, and a
-  // carry into the high half one cycle after the low half wraps (htx_cpu_counter), so each 32-bit
+  // carry into the high half one cycle after the low half wraps (htx_counter64), so each 32-bit
   // carry chain starts at a flip-flop. The pipeline does not count the instruction that writes
   // minstret(h), and runs a CSR instruction only when write-back is empty and counting_o is low, so
   // instret_q is exact when it is read and no retirement coincides with a write. A read of cycleh
@@ -105,7 +105,7 @@ module htx_cpu_csr (
     wdata_q <= wdata;
   end
 
-  htx_cpu_counter u_cycle (
+  htx_counter64 u_cycle (
     .clk_i,
     .rst_ni,
     .inc_i           (1'b1),
@@ -116,7 +116,7 @@ module htx_cpu_csr (
     .carry_pending_o (unused_cycle_carry)
   );
 
-  htx_cpu_counter u_instret (
+  htx_counter64 u_instret (
     .clk_i,
     .rst_ni,
     .inc_i           (retire_q),

@@ -1,8 +1,14 @@
 // 64-bit time counter with a 64-bit compare (hw/regs/timer.json). The counter advances once per
 // clock while CTRL.ENABLE is set; STATUS.MATCH is mtime >= mtimecmp and, with CTRL.IRQ_ENABLE,
 // drives irq_o. Only whole-word writes take effect (partial writes are ignored): byte merging would
-// double the 64-bit datapath on an iCE40. A write to MTIME_LO/HI replaces that half and the counter
-// resumes counting from the written value.
+// double the 64-bit datapath on an iCE40. A write to MTIME_LO/HI replaces that half (a carry out
+// of a low half being replaced is dropped) and the counter resumes counting from the written value.
+//
+// A request is registered as it is accepted and acts in the next clock, with its response in the
+// clock after (two clocks' latency, one request a clock). So the counter's write enables come from
+// flip-flops and can enter its carry chains (htx_counter64: one LUT4 a bit with the write, where a
+// write multiplexer after an incrementer costs two), and responses stay in request order: a read
+// accepted right after a write acts after it.
 module htx_timer (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -19,45 +25,43 @@ module htx_timer (
 
   output logic        irq_o
 );
-  logic [63:0] mtime_q, mtime_d, cmp_q, cmp_d;
+  logic [63:0] mtime, cmp_q;  // (mtime resets to 0 in htx_counter64, as hw/regs/timer.json says)
   logic        enable_q, irq_en_q, match;
-  logic [11:0] offset;
-  logic        accept, write;
   logic [31:0] rdata_d, rsp_rdata_q;
   logic        rsp_valid_q;
 
+  // The request, registered as it is accepted.
+  logic        act_q, act_write_q;
+  logic [11:0] act_offset_q;
+  logic [31:0] act_wdata_q;
+
   logic unused_addr;
   assign unused_addr = ^req_addr_i[31:12];
-  assign offset      = req_addr_i[11:0];
   assign req_ready_o = 1'b1;
-  assign accept      = req_valid_i;
-  assign write       = accept && req_we_i && (req_be_i == 4'b1111);
-  assign match       = (mtime_q >= cmp_q);
-  assign irq_o       = match && irq_en_q;
 
-  always_comb begin
-    mtime_d = enable_q ? mtime_q + 64'd1 : mtime_q;
-    cmp_d   = cmp_q;
-    if (write) begin
-      unique case (offset)
-        htx_timer_reg_pkg::TIMER_MTIME_LO_OFFSET:
-          mtime_d[31:0] = req_wdata_i;
-        htx_timer_reg_pkg::TIMER_MTIME_HI_OFFSET:
-          mtime_d[63:32] = req_wdata_i;
-        htx_timer_reg_pkg::TIMER_MTIMECMP_LO_OFFSET:
-          cmp_d[31:0] = req_wdata_i;
-        htx_timer_reg_pkg::TIMER_MTIMECMP_HI_OFFSET:
-          cmp_d[63:32] = req_wdata_i;
-        default: ;
-      endcase
-    end
-  end
+  logic wr_time_lo, wr_time_hi;
+  assign wr_time_lo = act_write_q && (act_offset_q == htx_timer_reg_pkg::TIMER_MTIME_LO_OFFSET);
+  assign wr_time_hi = act_write_q && (act_offset_q == htx_timer_reg_pkg::TIMER_MTIME_HI_OFFSET);
+
+  logic unused_carry;
+  htx_counter64 #(.CarryReg(1'b0)) u_mtime (
+    .clk_i, .rst_ni,
+    .inc_i          (enable_q),
+    .wr_lo_i        (wr_time_lo),
+    .wr_hi_i        (wr_time_hi),
+    .wdata_i        (act_wdata_q),
+    .count_o        (mtime),
+    .carry_pending_o(unused_carry)
+  );
+
+  assign match = (mtime >= cmp_q);
+  assign irq_o = match && irq_en_q;
 
   always_comb begin
     rdata_d = '0;
-    unique case (offset)
-      htx_timer_reg_pkg::TIMER_MTIME_LO_OFFSET:    rdata_d = mtime_q[31:0];
-      htx_timer_reg_pkg::TIMER_MTIME_HI_OFFSET:    rdata_d = mtime_q[63:32];
+    unique case (act_offset_q)
+      htx_timer_reg_pkg::TIMER_MTIME_LO_OFFSET:    rdata_d = mtime[31:0];
+      htx_timer_reg_pkg::TIMER_MTIME_HI_OFFSET:    rdata_d = mtime[63:32];
       htx_timer_reg_pkg::TIMER_MTIMECMP_LO_OFFSET: rdata_d = cmp_q[31:0];
       htx_timer_reg_pkg::TIMER_MTIMECMP_HI_OFFSET: rdata_d = cmp_q[63:32];
       htx_timer_reg_pkg::TIMER_CTRL_OFFSET: begin
@@ -72,22 +76,36 @@ module htx_timer (
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      mtime_q     <= {htx_timer_reg_pkg::TIMER_MTIME_HI_RESET, htx_timer_reg_pkg::TIMER_MTIME_LO_RESET};
-      cmp_q       <= {htx_timer_reg_pkg::TIMER_MTIMECMP_HI_RESET,
-                      htx_timer_reg_pkg::TIMER_MTIMECMP_LO_RESET};
-      enable_q    <= htx_timer_reg_pkg::TIMER_CTRL_ENABLE_RESET[htx_timer_reg_pkg::TIMER_CTRL_ENABLE_LSB];
-      irq_en_q    <= htx_timer_reg_pkg::TIMER_CTRL_IRQ_ENABLE_RESET[
-                       htx_timer_reg_pkg::TIMER_CTRL_IRQ_ENABLE_LSB];
-      rsp_valid_q <= 1'b0;
-      rsp_rdata_q <= '0;
+      act_q        <= 1'b0;
+      act_write_q  <= 1'b0;
+      act_offset_q <= '0;
+      act_wdata_q  <= '0;
+      cmp_q        <= {htx_timer_reg_pkg::TIMER_MTIMECMP_HI_RESET,
+                       htx_timer_reg_pkg::TIMER_MTIMECMP_LO_RESET};
+      enable_q     <= htx_timer_reg_pkg::TIMER_CTRL_ENABLE_RESET[htx_timer_reg_pkg::TIMER_CTRL_ENABLE_LSB];
+      irq_en_q     <= htx_timer_reg_pkg::TIMER_CTRL_IRQ_ENABLE_RESET[
+                        htx_timer_reg_pkg::TIMER_CTRL_IRQ_ENABLE_LSB];
+      rsp_valid_q  <= 1'b0;
+      rsp_rdata_q  <= '0;
     end else begin
-      mtime_q     <= mtime_d;
-      cmp_q       <= cmp_d;
-      rsp_valid_q <= accept;
-      if (accept && !req_we_i) rsp_rdata_q <= rdata_d;
-      if (write && offset == htx_timer_reg_pkg::TIMER_CTRL_OFFSET) begin
-        enable_q <= req_wdata_i[htx_timer_reg_pkg::TIMER_CTRL_ENABLE_LSB];
-        irq_en_q <= req_wdata_i[htx_timer_reg_pkg::TIMER_CTRL_IRQ_ENABLE_LSB];
+      act_q       <= req_valid_i;
+      act_write_q <= req_valid_i && req_we_i && (req_be_i == 4'b1111);
+      if (req_valid_i) begin
+        act_offset_q <= req_addr_i[11:0];
+        act_wdata_q  <= req_wdata_i;
+      end
+      rsp_valid_q <= act_q;
+      if (act_q && !act_write_q) rsp_rdata_q <= rdata_d;
+      if (act_write_q) begin
+        unique case (act_offset_q)
+          htx_timer_reg_pkg::TIMER_MTIMECMP_LO_OFFSET: cmp_q[31:0]  <= act_wdata_q;
+          htx_timer_reg_pkg::TIMER_MTIMECMP_HI_OFFSET: cmp_q[63:32] <= act_wdata_q;
+          htx_timer_reg_pkg::TIMER_CTRL_OFFSET: begin
+            enable_q <= act_wdata_q[htx_timer_reg_pkg::TIMER_CTRL_ENABLE_LSB];
+            irq_en_q <= act_wdata_q[htx_timer_reg_pkg::TIMER_CTRL_IRQ_ENABLE_LSB];
+          end
+          default: ;
+        endcase
       end
     end
   end

@@ -20,13 +20,14 @@ module htx_uart_rx (
   rx_state_e   state_q, state_d;
   logic [1:0]  sync_q;
   logic        line;
-  logic [15:0] baud_q, baud_d;
+  logic [15:0] baud_q, baud_d;  // clocks to the next sample, the last one being 1 (loading
+                                // divisor_i and divisor_i / 2, not one less, needs no subtractors)
   logic [2:0]  bit_q, bit_d;
   logic [7:0]  data_q, data_d;
   logic        tick;
 
   assign line = sync_q[1];
-  assign tick = (baud_q == '0);
+  assign tick = (baud_q == 16'd1);
 
   always_comb begin
     state_d     = state_q;
@@ -39,13 +40,13 @@ module htx_uart_rx (
       RxIdle: begin
         if (!line) begin
           state_d = RxStart;
-          baud_d  = {1'b0, divisor_i[15:1]} - 1'b1;  // to the middle of the start bit
+          baud_d  = {1'b0, divisor_i[15:1]};  // to the middle of the start bit
         end
       end
       RxStart: begin
         if (tick) begin
           state_d = line ? RxIdle : RxData;
-          baud_d  = divisor_i - 1'b1;
+          baud_d  = divisor_i;
           bit_d   = '0;
         end
       end
@@ -53,7 +54,7 @@ module htx_uart_rx (
         if (tick) begin
           data_d = {line, data_q[7:1]};
           bit_d  = bit_q + 1'b1;
-          baud_d = divisor_i - 1'b1;
+          baud_d = divisor_i;
           if (bit_q == 3'd7) state_d = RxStop;
         end
       end
@@ -74,7 +75,7 @@ module htx_uart_rx (
     if (!rst_ni) begin
       state_q <= RxIdle;
       sync_q  <= '1;
-      baud_q  <= '0;
+      baud_q  <= 16'd1;
       bit_q   <= '0;
       data_q  <= '0;
     end else begin

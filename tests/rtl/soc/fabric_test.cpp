@@ -315,6 +315,21 @@ TEST_P(FabricTest, UartSerialPinsBothWaysAndFramingError) {
   EXPECT_FALSE(st & UART_STATUS_RX_VALID_Msk);
   soc.write(kUart + UART_STATUS_Offset, UART_STATUS_RX_FRAME_ERR_Msk);
   EXPECT_FALSE(soc.read(kUart + UART_STATUS_Offset).rdata & UART_STATUS_RX_FRAME_ERR_Msk);
+
+  // Every bit on the TX pin lasts exactly the divisor: 0x55 changes the line at each of the nine
+  // bit boundaries from the start bit to the stop bit.
+  soc.dbus.pending.push_back({kUart + UART_DATA_Offset, true, 0x1, 0x55});
+  std::vector<uint64_t> edges;
+  bool line = soc.uart_tx();
+  for (int i = 0; i < 12 * static_cast<int>(kDiv) && edges.size() < 10; ++i) {
+    soc.step();
+    if (soc.uart_tx() != line) {
+      line = soc.uart_tx();
+      edges.push_back(soc.cycle());
+    }
+  }
+  ASSERT_EQ(edges.size(), 10u);  // the start bit's falling edge and nine boundaries
+  for (size_t i = 1; i < edges.size(); ++i) EXPECT_EQ(edges[i] - edges[i - 1], kDiv) << "bit " << i;
 }
 
 TEST_P(FabricTest, TimerCountsAndCompares) {
@@ -353,6 +368,44 @@ TEST_P(FabricTest, TimerCountsAndCompares) {
   for (int i = 0; i < 50; ++i) soc.step();
   EXPECT_EQ(soc.read(kTimer + TIMER_MTIME_LO_Offset).rdata, held);
   EXPECT_FALSE(soc.timer_irq());
+
+  // Requests back to back, without waiting for responses: each acts after the one before, so a
+  // read right behind a write sees it (the timer acts a clock after it accepts a request).
+  soc.dbus.responses.clear();
+  soc.dbus.pending.push_back({kTimer + TIMER_MTIMECMP_LO_Offset, true, 0xF, 0x1234'5678});
+  soc.dbus.pending.push_back({kTimer + TIMER_MTIMECMP_LO_Offset});
+  soc.dbus.pending.push_back({kTimer + TIMER_MTIME_HI_Offset, true, 0xF, 7});
+  soc.dbus.pending.push_back({kTimer + TIMER_MTIME_LO_Offset, true, 0xF, 0xFFFF'FFFFu});
+  soc.dbus.pending.push_back({kTimer + TIMER_MTIME_HI_Offset});
+  soc.dbus.pending.push_back({kTimer + TIMER_MTIME_LO_Offset});
+  soc.dbus.pending.push_back({kTimer + TIMER_MTIMECMP_LO_Offset, true, 0xF, 9});
+  soc.dbus.pending.push_back({kTimer + TIMER_MTIMECMP_HI_Offset, true, 0xF, 0});
+  soc.dbus.pending.push_back({kTimer + TIMER_STATUS_Offset});
+  ASSERT_TRUE(soc.drain());
+  ASSERT_EQ(soc.dbus.responses.size(), 9u);
+  EXPECT_EQ(soc.dbus.responses[1].rdata, 0x1234'5678u);
+  EXPECT_EQ(soc.dbus.responses[4].rdata, 7u);  // stopped: 0xFFFF_FFFF does not wrap into it
+  EXPECT_EQ(soc.dbus.responses[5].rdata, 0xFFFF'FFFFu);
+  EXPECT_EQ(soc.dbus.responses[8].rdata & TIMER_STATUS_MATCH_Msk, TIMER_STATUS_MATCH_Msk);
+
+  // Counting again, the low word wraps into the high one in the same clock: the compare never
+  // sees a value with a stale high word (7:FFFF_FFFF, then 8:0000_0000, never 7:0000_0000), so a
+  // match from 7:FFFF_FFF8 on holds across the wrap.
+  soc.write(kTimer + TIMER_MTIMECMP_HI_Offset, 7);
+  soc.write(kTimer + TIMER_MTIMECMP_LO_Offset, 0xFFFF'FFF8u);
+  soc.write(kTimer + TIMER_MTIME_LO_Offset, 0xFFFF'FFF0u);
+  soc.write(kTimer + TIMER_CTRL_Offset, TIMER_CTRL_ENABLE_Msk | TIMER_CTRL_IRQ_ENABLE_Msk);
+  uint64_t first_irq = 0;
+  for (int i = 0; i < 60 && first_irq == 0; ++i) {
+    soc.step();
+    if (soc.timer_irq()) first_irq = soc.cycle();
+  }
+  ASSERT_NE(first_irq, 0u);
+  for (int i = 0; i < 20; ++i) {
+    soc.step();
+    EXPECT_TRUE(soc.timer_irq()) << "the match holds once mtime has passed mtimecmp";
+  }
+  EXPECT_EQ(soc.read(kTimer + TIMER_MTIME_HI_Offset).rdata, 8u);
 }
 
 // Random traffic on both ports at once, checked against a model of memory: responses arrive in

@@ -1,12 +1,19 @@
-// 64-bit writable event counter (mcycle, minstret). Each 32-bit half can be written; the other
-// half keeps counting. The carry from the low half into the high half is registered, so the high
-// half follows a wrap one cycle later (carry_pending_o is high in that cycle).
+// 64-bit writable counter (the CPU's mcycle and minstret, the timer's mtime). Each 32-bit half can
+// be written; the other half keeps counting.
+//
+// CarryReg = 1 registers the carry from the low half into the high half, so each 32-bit carry
+// chain starts at a flip-flop (the CPU's counters, where a 64-bit chain would not meet the core's
+// clock): the high half follows a wrap one cycle later, and carry_pending_o is high in that cycle.
+// CarryReg = 0 carries through in the same cycle (the timer, whose compare sees every value).
 //
 // With HTX_ICE40 defined (the iCE40 synthesis flows) each bit is one SB_LUT4 and one SB_CARRY:
 // the write enable is the carry cell's second operand, so the chain computes garbage while the
-// half is written, which does not matter since the written value is taken. Yosys builds the
-// same function from the behavioural code with a second LUT per bit for the write multiplexer.
-module htx_cpu_counter (
+// half is written, which does not matter since the written value is taken (and the carry into a
+// high half that is not written is masked while the low half is). Yosys builds the same function
+// from the behavioural code with a second LUT per bit for the write multiplexer.
+module htx_counter64 #(
+  parameter bit CarryReg = 1'b1
+) (
   input  logic        clk_i,
   input  logic        rst_ni,
   input  logic        inc_i,     // add one this cycle
@@ -18,12 +25,15 @@ module htx_cpu_counter (
 );
 
   logic [31:0] lo_q, hi_q, lo_d, hi_d;
-  logic        carry_q, lo_carry;
+  logic        carry_q, lo_carry, hi_cin;
+
+  // The carry into the high half: this cycle's (CarryReg = 0) or the last cycle's.
+  assign hi_cin = CarryReg ? carry_q : lo_carry;
 
 `ifdef HTX_ICE40
   logic [32:0] lo_c, hi_c;
   assign lo_c[0] = inc_i;
-  assign hi_c[0] = carry_q;
+  assign hi_c[0] = hi_cin;
   for (genvar i = 0; i < 32; i++) begin : g_bit
     // O = I2 ? I0 : I1 ^ I3  (I0 write data, I1 count bit, I2 write enable, I3 carry in)
     SB_LUT4 #(.LUT_INIT(16'hA3AC)) u_lo_lut (
@@ -41,7 +51,7 @@ module htx_cpu_counter (
   assign lo_sum   = {1'b0, lo_q} + {32'b0, inc_i};
   assign lo_d     = wr_lo_i ? wdata_i : lo_sum[31:0];
   assign lo_carry = lo_sum[32] && !wr_lo_i;
-  assign hi_d     = wr_hi_i ? wdata_i : (hi_q + {31'b0, carry_q});
+  assign hi_d     = wr_hi_i ? wdata_i : (hi_q + {31'b0, hi_cin});
 `endif
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -52,7 +62,7 @@ module htx_cpu_counter (
     end else begin
       lo_q    <= lo_d;
       hi_q    <= hi_d;
-      carry_q <= lo_carry;
+      carry_q <= CarryReg && lo_carry;
     end
   end
 
