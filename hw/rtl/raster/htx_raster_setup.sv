@@ -244,6 +244,15 @@ module htx_raster_setup #(
   logic signed [DW-1:0] ea [3];
   logic signed [DW-1:0] eb [3];
   logic [2:0]           ethr, ea_zero;
+  // Each coefficient's sign and whether it is zero (the thresholds and the box take only these).
+  logic [2:0]           ea_neg, eb_neg, eb_zero;
+  // ValuesInFifo keeps the coefficients in a ring of registers (g_coef_read): ea, eb are its taps
+  // while it is at home (ring_home), and the jobs take their a operand from its head (ring_head),
+  // the coefficient whose home index is ring_pos (0..5: b_0, b_1, b_2, a_2, a_1, a_0); the job
+  // logic turns it (ring_turn) to the one a job needs.
+  logic signed [DW-1:0] ring_head;
+  logic [2:0]           ring_pos;
+  logic                 ring_turn;
   // ValuesInFifo: the record reader asks for word rd_off (rd_req) and takes it from vr_data_i a
   // clock later (rd_take); rd_idx counts the words: 0..7 the edge coefficients', 8..11 the box's.
   logic                 rd_req, rd_take;
@@ -258,6 +267,16 @@ module htx_raster_setup #(
       assign ea[k] = DW'(y_v[k]) - DW'(y_v[K1]);
       assign eb[k] = DW'(x_v[K1]) - DW'(x_v[k]);
     end
+    for (genvar k = 0; k < 3; k++) begin : g_flags
+      assign ea_neg[k]  = ea[k][DW-1];
+      assign eb_neg[k]  = eb[k][DW-1];
+      assign ea_zero[k] = (ea[k] == 0);
+      assign eb_zero[k] = (eb[k] == 0);
+    end
+    assign ring_head = '0;
+    assign ring_pos  = '0;
+    logic unused_ring;
+    assign unused_ring = ring_turn;
     assign x0_v    = x_v[0];
     assign y0_v    = y_v[0];
     assign rd_req  = 1'b0;
@@ -276,9 +295,20 @@ module htx_raster_setup #(
     logic                 cf_got_q; // its word is on vr_data_i
     logic signed [XW-1:0] cf_prev_q, cf_x0_q, cf_y0_q, cf_word;
     logic signed [DW-1:0] cf_diff;
-    logic signed [DW-1:0] ea_q [3];
-    logic signed [DW-1:0] eb_q [3];
     logic [1:0]           cf_v;     // the vertex read
+    // The coefficients in a ring of six registers, shifted in as they are formed (b_0, b_1, b_2,
+    // a_2, a_1, a_0: ring_q[0] ends with b_0), so a job's a operand is always the head and needs no
+    // six-way multiplexer: the ring turns by one a clock (ring_q[i] <= ring_q[i + 1], the head to
+    // the tail) until the coefficient a job needs is at the head. A coefficient and its partner in
+    // the determinant are three apart (b_0 a_2, b_2 a_0), so ring_q[3] is the other factor of a
+    // determinant product (the plane unit's dy2 input). Everything else reads the ring at home
+    // (ring_pos_q 0): the planes start only then. The signs and zero flags shift in alongside and
+    // do not turn (one zero detector on cf_diff instead of six on the registers).
+    logic signed [DW-1:0] ring_q [6];
+    logic [2:0]           ring_pos_q;
+    logic [5:0]           cneg_q, czero_q;  // by home index
+    logic                 c_load;
+    assign c_load = cf_got_q && !cf_q[3] && (cf_q[1:0] != 2'd0);  // words 1-3 and 5-7
     always_comb begin
       unique case (cf_q[2:0])
         3'd1, 3'd6: cf_v = 2'd1;
@@ -300,7 +330,6 @@ module htx_raster_setup #(
         cf_prev_q <= '0;
         cf_x0_q   <= '0;
         cf_y0_q   <= '0;
-        for (int k = 0; k < 3; k++) begin ea_q[k] <= '0; eb_q[k] <= '0; end
       end else if (abort_i) begin
         cf_q     <= 4'd12;
         cf_got_q <= 1'b0;
@@ -313,24 +342,42 @@ module htx_raster_setup #(
           if (!cf_q[3]) cf_prev_q <= cf_word;
           if (cf_q == 4'd0) cf_x0_q <= cf_word;
           if (cf_q == 4'd4) cf_y0_q <= cf_word;
-          unique case (cf_q)
-            4'd1: eb_q[0] <= cf_diff;
-            4'd2: eb_q[1] <= cf_diff;
-            4'd3: eb_q[2] <= cf_diff;
-            4'd5: ea_q[2] <= cf_diff;
-            4'd6: ea_q[1] <= cf_diff;
-            4'd7: ea_q[0] <= cf_diff;
-            default: ;
-          endcase
           cf_q <= cf_q + 4'd1;
         end
       end
     end
+    // A triangle taken starts at home: the six words shifted in then replace whatever the ring held.
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        ring_pos_q <= '0;
+      end else if (abort_i || (take && !state_bad)) begin
+        ring_pos_q <= '0;
+      end else if (ring_turn) begin
+        ring_pos_q <= (ring_pos_q == 3'd5) ? 3'd0 : ring_pos_q + 3'd1;
+      end
+    end
+    // (No reset: the ring is written before it is read, six words for every triangle.)
+    always_ff @(posedge clk_i) begin
+      if (c_load || ring_turn) begin
+        for (int i = 0; i < 5; i++) ring_q[i] <= ring_q[i + 1];
+        ring_q[5] <= c_load ? cf_diff : ring_q[0];
+      end
+      if (c_load) begin
+        cneg_q  <= {cf_diff[DW-1], cneg_q[5:1]};
+        czero_q <= {cf_diff == '0, czero_q[5:1]};
+      end
+    end
     assign cf_done = (cf_q == 4'd7) && cf_got_q && !abort_i;
     for (genvar k = 0; k < 3; k++) begin : g_k
-      assign ea[k] = ea_q[k];
-      assign eb[k] = eb_q[k];
+      assign eb[k]      = ring_q[k];      // (at home)
+      assign ea[k]      = ring_q[5 - k];
+      assign eb_neg[k]  = cneg_q[k];
+      assign ea_neg[k]  = cneg_q[5 - k];
+      assign eb_zero[k] = czero_q[k];
+      assign ea_zero[k] = czero_q[5 - k];
     end
+    assign ring_head = ring_q[0];
+    assign ring_pos  = ring_pos_q;
     assign x0_v = cf_x0_q;
     assign y0_v = cf_y0_q;
     logic unused_xy;
@@ -341,9 +388,8 @@ module htx_raster_setup #(
     // right a top edge; pixel centres exactly on them belong to this triangle (threshold 0).
     // (Signs and zero tests rather than "> 0": Yosys 0.23 builds a comparison as a carry chain,
     // a LUT and a carry a bit; docs/area.md.)
-    assign ea_zero[k] = (ea[k] == 0);
-    assign ethr[k] = !((!ea[k][DW-1] && !ea_zero[k]) ||
-                       (ea_zero[k] && !eb[k][DW-1] && (eb[k] != 0)));
+    assign ethr[k] = !((!ea_neg[k] && !ea_zero[k]) ||
+                       (ea_zero[k] && !eb_neg[k] && !eb_zero[k]));
   end
   // Iterative: the thresholds a clock later from a register (the coefficients hold from StDet0,
   // and the first use is in StEdges), so their tests do not run on into the products that take
@@ -380,8 +426,8 @@ module htx_raster_setup #(
   logic [2:0] xs_lt, ys_gt;  // bit k: x_k1 < x_k; y_k1 > y_k (the order of -y)
   logic [1:0] minx_sel, maxx_sel, miny_sel, maxy_sel;
   for (genvar k = 0; k < 3; k++) begin : g_order
-    assign xs_lt[k] = eb[k][DW-1];
-    assign ys_gt[k] = ea[k][DW-1];
+    assign xs_lt[k] = eb_neg[k];
+    assign ys_gt[k] = ea_neg[k];
   end
   assign minx_sel = least(xs_lt);
   assign maxx_sel = least(~xs_lt);
@@ -525,6 +571,9 @@ module htx_raster_setup #(
     assign job_acc  = 1'b0;
     assign job_a    = '0;
     assign job_bsel = '0;
+    assign ring_turn = 1'b0;
+    logic unused_ring_head;
+    assign unused_ring_head = ^{ring_head, ring_pos};
     assign job_we   = 1'b0;
     assign job_wsel = '0;
     assign job_widx = '0;
@@ -538,28 +587,36 @@ module htx_raster_setup #(
     // edges' gradients a_k, b_k as words for the plane RAM (j 8 .. 13: 2 a_0, 2 b_0, 2 a_1, ...).
     // An edge whose threshold is 1 has all its products negated (traversal takes it negated, -E,
     // and steps it by -a, -b).
+    // Each job's a operand is a coefficient, named by its home index tgt (0..2 b_k, 3..5 a_(5-k)).
+    // ValuesInFifo takes it from the ring's head (g_coef_read), turning the ring to it first (the
+    // job waits meanwhile); j 14 turns the ring home before the planes start. b_2 a_0's a_0 is then
+    // the ring's ring_q[3], the dy2 input (job_bsel 0), as a_2 is for b_0 a_2.
+    localparam logic [2:0] BselPartner = ValuesInFifo ? 3'd0 : 3'd1;  // a_0 for b_2 a_0
     logic [3:0] j;
+    logic [2:0] tgt;
+    logic       job_want, at_tgt;
     assign j = edge_k_q;
     always_comb begin
       job_acc  = 1'b1;
       job_neg  = ethr_s[1];
-      job_a    = eb[2];
-      job_bsel = 3'd1;
+      tgt      = 3'd2;  // b_2
+      job_bsel = BselPartner;
       unique case (state_q)
-        StDet0: begin job_a = eb[0]; job_bsel = 3'd0; job_neg = redo_q; job_acc = 1'b0; end
+        StDet0: begin tgt = 3'd0; job_bsel = 3'd0; job_neg = redo_q; job_acc = 1'b0; end
         StDet1: begin job_neg = !redo_q; end
         default: begin
           unique case (j)
-            4'd0: begin job_a = ea[0]; job_bsel = 3'd2; job_neg = ethr_s[0]; job_acc = 1'b0; end
-            4'd1: begin job_a = eb[0]; job_bsel = 3'd3; job_neg = ethr_s[0]; end
-            4'd2: begin job_a = ea[1]; job_bsel = 3'd2; job_acc = 1'b0; end
-            4'd3: begin job_a = eb[1]; job_bsel = 3'd3; end
-            4'd4: begin job_a = eb[0]; job_bsel = 3'd0; end
+            4'd0: begin tgt = 3'd5; job_bsel = 3'd2; job_neg = ethr_s[0]; job_acc = 1'b0; end
+            4'd1: begin tgt = 3'd0; job_bsel = 3'd3; job_neg = ethr_s[0]; end
+            4'd2: begin tgt = 3'd4; job_bsel = 3'd2; job_acc = 1'b0; end
+            4'd3: begin tgt = 3'd1; job_bsel = 3'd3; end
+            4'd4: begin tgt = 3'd0; job_bsel = 3'd0; end
             4'd5: begin job_neg = !ethr_s[1]; end
-            4'd6: begin job_a = ea[2]; job_bsel = 3'd2; job_neg = ethr_s[2]; job_acc = 1'b0; end
+            4'd6: begin tgt = 3'd3; job_bsel = 3'd2; job_neg = ethr_s[2]; job_acc = 1'b0; end
             4'd7: begin job_bsel = 3'd3; job_neg = ethr_s[2]; end
+            4'd14: tgt = 3'd0;  // (no job: home)
             default: begin
-              job_a    = j[0] ? eb[j[2:1]] : ea[j[2:1]];
+              tgt      = j[0] ? {1'b0, j[2:1]} : 3'd5 - {1'b0, j[2:1]};
               job_bsel = 3'd4;
               job_neg  = ethr_s[j[2:1]];
               job_acc  = 1'b0;
@@ -568,7 +625,21 @@ module htx_raster_setup #(
         end
       endcase
     end
-    assign job_req   = (state_q == StDet0) || (state_q == StDet1) || (state_q == StEdges);
+    assign job_want = (state_q == StDet0) || (state_q == StDet1) || (state_q == StEdges);
+    if (ValuesInFifo) begin : g_ring_jobs
+      assign job_a     = ring_head;
+      assign at_tgt    = (ring_pos == tgt);
+      assign ring_turn = job_want && !at_tgt;
+      assign job_req   = job_want && at_tgt && !((state_q == StEdges) && (j == 4'd14));
+    end else begin : g_mux_jobs
+      assign job_a     = tgt[2] ? ((tgt[0]) ? ea[0] : ea[1]) : (tgt[1] ? (tgt[0] ? ea[2] : eb[2])
+                                                                       : (tgt[0] ? eb[1] : eb[0]));
+      assign at_tgt    = 1'b1;
+      assign ring_turn = 1'b0;
+      assign job_req   = job_want;
+      logic unused_ring_head;
+      assign unused_ring_head = ^{ring_head, ring_pos, at_tgt};
+    end
     assign emul_done = job_done;
     // Words for the plane RAM: E_k where its last product is done (j 1, 5, 7: start, plane k),
     // and the gradients (j 8 .. 13: g_x for a, g_y for b, plane j[2:1]).
@@ -1296,11 +1367,15 @@ module htx_raster_setup #(
           if (edge_k_q == 4'd1) e_q[0] <= part_sum;
           if (edge_k_q == 4'd5) e_q[1] <= part_sum;
           if (edge_k_q == 4'd7) e_q[2] <= part_sum;
-          if (edge_k_q == 4'd13) begin
+          if ((edge_k_q == 4'd13) && !ValuesInFifo) begin
             plane_start_q <= 1'b1;
             state_q       <= StWait;
           end
           edge_k_q <= edge_k_q + 1'b1;
+        end else if ((edge_k_q == 4'd14) && ValuesInFifo && (ring_pos == 3'd0)) begin
+          // The ring is home (j 14 turned it): the planes read its taps.
+          plane_start_q <= 1'b1;
+          state_q       <= StWait;
         end else if (emul_done) begin
           if (!edge_half_q) begin
             part_q      <= part_sum;
