@@ -74,6 +74,12 @@ module htx_raster_plane #(
   logic signed [VB:0]   da1, da2;
   logic signed [NW-1:0] nx_q;
   logic [AccW-1:0]      gx_q, gy_q;
+  // The start value's products take their gradient from one register, sg_q: each gradient is
+  // formed into sg_next_q, which passes it on to sg_q when the next is formed (g_y) and again after
+  // the first start product, so sg_q holds g_x for StSx and g_y for StSy. Two registers that only
+  // load each other and the accumulator's sum, instead of a second gradient source on the
+  // multiplier's operand (gx_q and gy_q stay for the outputs; synthesis removes them unused).
+  logic [AccW-1:0]      sg_q, sg_next_q;
   logic [MA-1:0]        acc_q;
   logic [GW-1:0]        gxw_q, gyw_q;
   logic signed [VB:0]   a0e, a1e, a2e;
@@ -112,8 +118,8 @@ module htx_raster_plane #(
       StNy0: begin mul_a = MA'(da2); mul_b = MB'(dx1_i); end
       StNy1: begin mul_a = MA'(da1); mul_b = MB'(ndx2_i); end
       StGx, StGy: begin mul_a = MA'(nxy); mul_b = MB'($signed({1'b0, r_i})); end
-      StSx: begin mul_a = MA'($signed(gx_q)); mul_b = MB'(dxs_i); end
-      StSy: begin mul_a = MA'($signed(gy_q)); mul_b = MB'(dys_i); end
+      StSx: begin mul_a = MA'($signed(sg_q)); mul_b = MB'(dxs_i); end
+      StSy: begin mul_a = MA'($signed(sg_q)); mul_b = MB'(dys_i); end
       StJob: begin
         mul_a = MA'(job_a_i);
         unique case (job_bsel_i)
@@ -168,6 +174,8 @@ module htx_raster_plane #(
       nx_q    <= '0;
       gx_q    <= '0;
       gy_q    <= '0;
+      sg_q    <= '0;
+      sg_next_q <= '0;
       gxw_q   <= '0;
       gyw_q   <= '0;
       acc_q   <= '0;
@@ -188,11 +196,14 @@ module htx_raster_plane #(
         StWait: if (recip_valid_i) state_q <= StGx;
         StGx: if (mul_done) begin
           gx_q <= acc_sum[AccW:1]; gxw_q <= GW'(rounded); state_q <= NyAfterGx ? StNy0 : StGy;
+          sg_next_q <= acc_sum[AccW:1];
         end
         StGy: if (mul_done) begin
           gy_q <= acc_sum[AccW:1]; gyw_q <= GW'(rounded); state_q <= StSx;
+          sg_next_q <= acc_sum[AccW:1];
+          sg_q      <= sg_next_q;  // g_x
         end
-        StSx: if (mul_done) begin acc_q <= acc_sum; state_q <= StSy; end
+        StSx: if (mul_done) begin acc_q <= acc_sum; state_q <= StSy; sg_q <= sg_next_q; end  // g_y
         StSy: if (mul_done) begin acc_q <= acc_sum; state_q <= StDone; end
         default: state_q <= StIdle;
       endcase
