@@ -23,12 +23,17 @@ namespace {
 // holds dots).
 std::string base_name(const std::string& name) { return name.substr(0, name.find('$')); }
 
-// The signal a net is named after: Yosys's iCE40 mapping names the nets between cells after a
-// signal they lead to, with the cells' ports appended ("x_q_SB_LUT4_I0_O").
+// Where the cells' ports start in a base name (npos: none). Yosys's iCE40 mapping names the nets
+// between cells after a signal they lead to, with the cells' ports appended ("x_q_SB_LUT4_I0_O").
+size_t mapped_at(const std::string& s) {
+  const size_t dot = s.rfind('.');
+  return s.find("_SB_", dot == std::string::npos ? 0 : dot);
+}
+
+// The signal a net is named after.
 std::string signal_of(const std::string& name) {
   const std::string s = base_name(name);
-  const size_t dot = s.rfind('.');
-  const size_t mapped = s.find("_SB_", dot == std::string::npos ? 0 : dot);
+  const size_t mapped = mapped_at(s);
   return mapped == std::string::npos ? s : s.substr(0, mapped);
 }
 
@@ -42,8 +47,7 @@ bool is_ff(const std::string& type) { return type.rfind("SB_DFF", 0) == 0; }
 bool wanders(const std::string& name) {
   static const std::regex forward("_(I[0-3]|CI|D|E|R|S)(_[0-9]+)?_(O|CO|Q)(_[0-9]+)?(_|$)");
   const std::string s = base_name(name);
-  const size_t dot = s.rfind('.');
-  const size_t mapped = s.find("_SB_", dot == std::string::npos ? 0 : dot);
+  const size_t mapped = mapped_at(s);
   return mapped != std::string::npos && std::regex_search(s.substr(mapped), forward);
 }
 

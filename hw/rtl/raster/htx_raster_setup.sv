@@ -247,7 +247,7 @@ module htx_raster_setup #(
   // Each coefficient's sign and whether it is zero (the thresholds and the box take only these).
   logic [2:0]           ea_neg, eb_neg, eb_zero;
   // ValuesInFifo keeps the coefficients in a ring of registers (g_coef_read): ea, eb are its taps
-  // while it is at home (ring_home), and the jobs take their a operand from its head (ring_head),
+  // while it is at home (ring_pos 0), and the jobs take their a operand from its head (ring_head),
   // the coefficient whose home index is ring_pos (0..5: b_0, b_1, b_2, a_2, a_1, a_0); the job
   // logic turns it (ring_turn) to the one a job needs.
   logic signed [DW-1:0] ring_head;
@@ -594,7 +594,7 @@ module htx_raster_setup #(
     localparam logic [2:0] BselPartner = ValuesInFifo ? 3'd0 : 3'd1;  // a_0 for b_2 a_0
     logic [3:0] j;
     logic [2:0] tgt;
-    logic       job_want, at_tgt;
+    logic       job_want;
     assign j = edge_k_q;
     always_comb begin
       job_acc  = 1'b1;
@@ -627,18 +627,23 @@ module htx_raster_setup #(
     end
     assign job_want = (state_q == StDet0) || (state_q == StDet1) || (state_q == StEdges);
     if (ValuesInFifo) begin : g_ring_jobs
+      logic at_tgt;
       assign job_a     = ring_head;
       assign at_tgt    = (ring_pos == tgt);
       assign ring_turn = job_want && !at_tgt;
       assign job_req   = job_want && at_tgt && !((state_q == StEdges) && (j == 4'd14));
     end else begin : g_mux_jobs
-      assign job_a     = tgt[2] ? ((tgt[0]) ? ea[0] : ea[1]) : (tgt[1] ? (tgt[0] ? ea[2] : eb[2])
-                                                                       : (tgt[0] ? eb[1] : eb[0]));
-      assign at_tgt    = 1'b1;
+      // The coefficients by home index, and the job's one among them.
+      logic signed [DW-1:0] coef_home [6];
+      for (genvar k = 0; k < 3; k++) begin : g_home
+        assign coef_home[k]     = eb[k];
+        assign coef_home[5 - k] = ea[k];
+      end
+      assign job_a     = coef_home[tgt];
       assign ring_turn = 1'b0;
       assign job_req   = job_want;
       logic unused_ring_head;
-      assign unused_ring_head = ^{ring_head, ring_pos, at_tgt};
+      assign unused_ring_head = ^{ring_head, ring_pos};
     end
     assign emul_done = job_done;
     // Words for the plane RAM: E_k where its last product is done (j 1, 5, 7: start, plane k),

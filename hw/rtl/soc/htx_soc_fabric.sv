@@ -161,20 +161,7 @@ module htx_soc_fabric #(
     .b_rsp_valid_o(rb_rsp_valid), .b_rsp_rdata_o(rb_rsp_rdata), .b_rsp_err_o(rb_rsp_err)
   );
 
-  // ---- IO: the register-block demux, on the data port alone ----
-  logic        io_valid, io_ready, io_we, io_rsp_valid, io_rsp_err;
-  logic [31:0] io_addr, io_wdata, io_rsp_rdata;
-  logic [3:0]  io_be;
-  assign io_valid           = d_valid[1];
-  assign d_ready[1]         = io_ready;
-  assign io_addr            = d_addr;
-  assign io_we              = d_we;
-  assign io_be              = d_be;
-  assign io_wdata           = d_wdata;
-  assign d_rsp_valid[1]     = io_rsp_valid;
-  assign d_rsp_rdata[63:32] = io_rsp_rdata;
-  assign d_rsp_err[1]       = io_rsp_err;
-
+  // ---- IO: the register-block demux, on the data port alone (dbus demux slave 1) ----
   logic [NumIo-1:0]    p_valid, p_ready, p_rsp_valid, p_rsp_err;
   logic [31:0]         p_addr, p_wdata;
   logic                p_we;
@@ -189,9 +176,9 @@ module htx_soc_fabric #(
     .SlaveMask({RegMask, RegMask, RegMask, RegMask, RegMask})
   ) u_io_demux (
     .clk_i, .rst_ni,
-    .m_req_valid_i(io_valid), .m_req_ready_o(io_ready), .m_req_addr_i(io_addr),
-    .m_req_we_i(io_we), .m_req_be_i(io_be), .m_req_wdata_i(io_wdata),
-    .m_rsp_valid_o(io_rsp_valid), .m_rsp_rdata_o(io_rsp_rdata), .m_rsp_err_o(io_rsp_err),
+    .m_req_valid_i(d_valid[1]), .m_req_ready_o(d_ready[1]), .m_req_addr_i(d_addr),
+    .m_req_we_i(d_we), .m_req_be_i(d_be), .m_req_wdata_i(d_wdata),
+    .m_rsp_valid_o(d_rsp_valid[1]), .m_rsp_rdata_o(d_rsp_rdata[63:32]), .m_rsp_err_o(d_rsp_err[1]),
     .s_req_valid_o(p_valid), .s_req_ready_i(p_ready), .s_req_addr_o(p_addr),
     .s_req_we_o(p_we), .s_req_be_o(p_be), .s_req_wdata_o(p_wdata),
     .s_rsp_valid_i(p_rsp_valid), .s_rsp_rdata_i(p_rsp_rdata), .s_rsp_err_i(p_rsp_err)
