@@ -13,6 +13,12 @@
 // Jobs = 1: between planes the unit also runs setup's other products on its multiplier and
 // accumulator (job_*: the determinant and the edge values, one product a job), so setup has no
 // multiplier of its own for them.
+// RingB = 1 (with Iterative): the four vertex deltas all arrive on dy2_i, which is one place of
+// setup's ring of edge coefficients (htx_raster_setup, g_coef_read), and ndy1_i, dx1_i, ndx2_i
+// are unused. The unit names the ring position each delta product needs on ring_want_o (by its
+// state, turning ahead where it can) and starts the product only when ring_pos_i has reached
+// it; the multiplier takes its b operand at the start, so the ring may move on during a product.
+// One b source instead of four on the multiplier's operand.
 module htx_raster_plane #(
   parameter int unsigned VB        = 8,    // value bits
   parameter bit          Signed    = 1'b0, // vertex values are signed
@@ -22,6 +28,7 @@ module htx_raster_plane #(
   parameter bit          Iterative = 1'b0,
   parameter bit          Jobs      = 1'b0,
   parameter int unsigned ShiftW    = 7,
+  parameter bit          RingB     = 1'b0,
   parameter int unsigned AccW      = VB + GF + 2,
   parameter int unsigned GW        = VB + DW + 2 + GF + 1  // bounds |n R 2^-shift| (msb(det) >= 0)
 ) (
@@ -36,6 +43,8 @@ module htx_raster_plane #(
   input  logic [W:0]             r_i,
   input  logic [ShiftW-1:0]      shift_i,      // W + msb(det) - GF, at least 1
   input  logic                   det_neg_i,
+  input  logic [2:0]             ring_pos_i,   // RingB: the ring's position (see above)
+  output logic [2:0]             ring_want_o,  // RingB: the position the unit wants (0: home)
   output logic                   done_o,
   output logic [AccW-1:0]        gx_o, gy_o, start_o,
   output logic [GW-1:0]          gxw_o, gyw_o,
@@ -109,14 +118,46 @@ module htx_raster_plane #(
   assign mul_neg = (state_q == StJob) ? job_neg_i
                  : (det_neg_i && ((state_q == StGx) || (state_q == StGy)));
 
+  // The deltas: dy2 = a_2, ndy1 = a_0, dx1 = b_0, ndx2 = b_2 (setup's coefficients). With RingB
+  // they come in turn on dy2_i, the ring's place 3, which holds the coefficient of home index
+  // (ring position + 3) mod 6 (home indices 0..5: b_0, b_1, b_2, a_2, a_1, a_0): position 0 for
+  // a_2, 2 for a_0, 3 for b_0, 5 for b_2. The unit asks for the next delta's position while it
+  // waits for the reciprocal and forms g_x, and for home otherwise.
+  logic signed [DW-1:0] d_ndy1, d_dx1, d_ndx2;
+  logic                 ring_ok;
+  if (RingB) begin : g_ring_b
+    assign d_ndy1 = dy2_i;
+    assign d_dx1  = dy2_i;
+    assign d_ndx2 = dy2_i;
+    always_comb begin
+      unique case (state_q)
+        StNx1:                ring_want_o = 3'd2;
+        StWait, StGx, StNy0:  ring_want_o = 3'd3;
+        StNy1:                ring_want_o = 3'd5;
+        default:              ring_want_o = 3'd0;
+      endcase
+    end
+    assign ring_ok = (ring_pos_i == ring_want_o);
+    logic unused_ring_b;
+    assign unused_ring_b = ^{ndy1_i, dx1_i, ndx2_i};
+  end else begin : g_inputs_b
+    assign d_ndy1      = ndy1_i;
+    assign d_dx1       = dx1_i;
+    assign d_ndx2      = ndx2_i;
+    assign ring_want_o = 3'd0;
+    assign ring_ok     = 1'b1;
+    logic unused_ring_pos;
+    assign unused_ring_pos = ^ring_pos_i;
+  end
+
   always_comb begin
     mul_a = '0;
     mul_b = '0;
     unique case (state_q)
       StNx0: begin mul_a = MA'(da1); mul_b = MB'(dy2_i); end
-      StNx1: begin mul_a = MA'(da2); mul_b = MB'(ndy1_i); end
-      StNy0: begin mul_a = MA'(da2); mul_b = MB'(dx1_i); end
-      StNy1: begin mul_a = MA'(da1); mul_b = MB'(ndx2_i); end
+      StNx1: begin mul_a = MA'(da2); mul_b = MB'(d_ndy1); end
+      StNy0: begin mul_a = MA'(da2); mul_b = MB'(d_dx1); end
+      StNy1: begin mul_a = MA'(da1); mul_b = MB'(d_ndx2); end
       StGx, StGy: begin mul_a = MA'(nxy); mul_b = MB'($signed({1'b0, r_i})); end
       StSx: begin mul_a = MA'($signed(sg_q)); mul_b = MB'(dxs_i); end
       StSy: begin mul_a = MA'($signed(sg_q)); mul_b = MB'(dys_i); end
@@ -124,7 +165,7 @@ module htx_raster_plane #(
         mul_a = MA'(job_a_i);
         unique case (job_bsel_i)
           3'd0:    mul_b = MB'(dy2_i);
-          3'd1:    mul_b = MB'(ndy1_i);
+          3'd1:    mul_b = MB'(d_ndy1);
           3'd2:    mul_b = MB'(dxs_i);
           3'd3:    mul_b = MB'(dys_i);
           default: mul_b = MB'(2);
@@ -133,7 +174,12 @@ module htx_raster_plane #(
       default: ;
     endcase
   end
-  assign mul_start = (state_q != StIdle) && (state_q != StWait) && (state_q != StDone);
+  // A delta product waits until the ring is at its position (RingB); no other product waits.
+  logic delta_state;
+  assign delta_state = (state_q == StNx0) || (state_q == StNx1) || (state_q == StNy0) ||
+                       (state_q == StNy1);
+  assign mul_start = (state_q != StIdle) && (state_q != StWait) && (state_q != StDone) &&
+                     (!delta_state || ring_ok);
 
   // The multiplier shifts the gradient products right by shift - 1 itself (the iterative one in
   // its own registers, no barrel shifter), and only the last halving and its rounding are left here.

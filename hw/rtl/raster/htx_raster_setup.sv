@@ -253,6 +253,9 @@ module htx_raster_setup #(
   logic signed [DW-1:0] ring_head;
   logic [2:0]           ring_pos;
   logic                 ring_turn;
+  // The position the shared plane unit wants the ring at (ValuesInFifo: it takes its vertex
+  // deltas from ring_q[3], htx_raster_plane RingB); 0 (home) while it is idle.
+  logic [2:0]           plane_ring_want;
   // ValuesInFifo: the record reader asks for word rd_off (rd_req) and takes it from vr_data_i a
   // clock later (rd_take); rd_idx counts the words: 0..7 the edge coefficients', 8..11 the box's.
   logic                 rd_req, rd_take;
@@ -573,7 +576,7 @@ module htx_raster_setup #(
     assign job_bsel = '0;
     assign ring_turn = 1'b0;
     logic unused_ring_head;
-    assign unused_ring_head = ^{ring_head, ring_pos};
+    assign unused_ring_head = ^{ring_head, ring_pos, plane_ring_want};
     assign job_we   = 1'b0;
     assign job_wsel = '0;
     assign job_widx = '0;
@@ -628,9 +631,14 @@ module htx_raster_setup #(
     assign job_want = (state_q == StDet0) || (state_q == StDet1) || (state_q == StEdges);
     if (ValuesInFifo) begin : g_ring_jobs
       logic at_tgt;
+      logic [2:0] ring_tgt;
       assign job_a     = ring_head;
       assign at_tgt    = (ring_pos == tgt);
-      assign ring_turn = job_want && !at_tgt;
+      // The jobs turn the ring to their coefficient; while the planes run (StWait) it turns to
+      // where the plane unit wants it, and home when the planes are done (StOut waits for that:
+      // the traversal takes the coefficients' taps at home).
+      assign ring_tgt  = job_want ? tgt : plane_ring_want;
+      assign ring_turn = (job_want || (state_q == StWait)) && (ring_pos != ring_tgt);
       assign job_req   = job_want && at_tgt && !((state_q == StEdges) && (j == 4'd14));
     end else begin : g_mux_jobs
       // The coefficients by home index, and the job's one among them.
@@ -643,7 +651,7 @@ module htx_raster_setup #(
       assign ring_turn = 1'b0;
       assign job_req   = job_want;
       logic unused_ring_head;
-      assign unused_ring_head = ^{ring_head, ring_pos};
+      assign unused_ring_head = ^{ring_head, ring_pos, plane_ring_want};
     end
     assign emul_done = job_done;
     // Words for the plane RAM: E_k where its last product is done (j 1, 5, 7: start, plane k),
@@ -821,6 +829,7 @@ module htx_raster_setup #(
   if (!SharedPlanes) begin : g_planes_par
     // One plane unit per plane; ua and va (planes 7, 8) start when AFFINE's vertex coordinates are
     // ready. The unit of q, uq, vq also gives its gradients at full precision to the LOD shift.
+    assign plane_ring_want = 3'd0;  // (the ring is never turned without shared planes)
     for (genvar p = 0; p < NS; p++) begin : g_plane
       localparam int unsigned VBP = plane_vb(p);
       localparam int unsigned AP  = VBP + GF + 2;
@@ -832,6 +841,7 @@ module htx_raster_setup #(
       logic [AP:0]   w_word;
       logic          w_job_done;   // (no jobs: setup has its own multiplier for them)
       logic [2*DW+1:0] w_job_sum;
+      logic [2:0]    w_ring_want;    // (no ring: setup's coefficients are wires here)
       logic          unused_w_word;
       htx_raster_plane #(.VB(VBP), .Signed(p >= 5), .DW(DW), .W(RecipW), .GF(GF),
                          .Iterative(Iterative), .ShiftW(ShiftW)) u_plane (
@@ -845,6 +855,8 @@ module htx_raster_setup #(
         .r_i          (rdet_q),
         .shift_i      (grad_shift),
         .det_neg_i    (det_neg_q),
+        .ring_pos_i   (3'd0),
+        .ring_want_o  (w_ring_want),
         .done_o       (plane_done[p]),
         .gx_o(gx), .gy_o(gy), .start_o(st),
         .gxw_o(gxw), .gyw_o(gyw),
@@ -853,7 +865,7 @@ module htx_raster_setup #(
         .job_done_o(w_job_done), .job_sum_o(w_job_sum)
       );
       // (The parallel units hand over on tri_p_o.)
-      assign unused_w_word = ^{w_we, w_sel, w_word, w_job_done, w_job_sum};
+      assign unused_w_word = ^{w_we, w_sel, w_word, w_job_done, w_job_sum, w_ring_want};
       assign pgx[p] = AW'(gx);
       assign pgy[p] = AW'(gy);
       assign pst[p] = AW'(st);
@@ -895,7 +907,8 @@ module htx_raster_setup #(
     logic [NS*3*VSW-1:0] s_values;
     logic [GS-1:0]       s_gxw, s_gyw;
     htx_raster_plane_seq #(.NP(NS), .NFirst((NS < 7) ? NS : 7), .VB(VSW), .DW(DW), .W(RecipW), .GF(GF), .ShiftW(ShiftW),
-                           .AccW(AS), .GW(GS), .IdxW(4), .Load(ValuesInFifo), .Jobs(1'b1)) u_seq (
+                           .AccW(AS), .GW(GS), .IdxW(4), .Load(ValuesInFifo), .Jobs(1'b1),
+                           .RingB(ValuesInFifo)) u_seq (
       .clk_i, .rst_ni,
       .abort_i      (planes_abort),
       .start_i      (plane_start_q),
@@ -909,6 +922,8 @@ module htx_raster_setup #(
       .r_i          (rdet_q),
       .shift_i      (grad_shift),
       .det_neg_i    (det_neg_q),
+      .ring_pos_i   (ring_pos),
+      .ring_want_o  (plane_ring_want),
       .res_valid_o  (s_valid),
       .res_idx_o    (s_idx),
       .gxw_o(s_gxw), .gyw_o(s_gyw),
@@ -1394,7 +1409,8 @@ module htx_raster_setup #(
         end
         // (Not in the clock the planes start: their done flags still show the last triangle's.)
         StWait: begin
-          if (!plane_start_q && (&plane_done[6:0]) && lod_done && (!affine_q || av_done)) begin
+          if (!plane_start_q && (&plane_done[6:0]) && lod_done && (!affine_q || av_done) &&
+              (ring_pos == 3'd0)) begin
             state_q <= StOut;
           end
         end
