@@ -13,12 +13,18 @@
 // Jobs = 1: between planes the unit also runs setup's other products on its multiplier and
 // accumulator (job_*: the determinant and the edge values, one product a job), so setup has no
 // multiplier of its own for them.
-// RingB = 1 (with Iterative): the four vertex deltas all arrive on dy2_i, which is one place of
-// setup's ring of edge coefficients (htx_raster_setup, g_coef_read), and ndy1_i, dx1_i, ndx2_i
-// are unused. The unit names the ring position each delta product needs on ring_want_o (by its
-// state, turning ahead where it can) and starts the product only when ring_pos_i has reached
-// it; the multiplier takes its b operand at the start, so the ring may move on during a product.
-// One b source instead of four on the multiplier's operand.
+// Ring = 1 (with Iterative; setup's `icebreaker` form): n takes the symmetric form
+//   n_x = a0 a_1 + a1 a_2 + a2 a_0,  n_y = a0 b_1 + a1 b_2 + a2 b_0
+// with setup's edge coefficients a_k = y_k - y_k1, b_k = x_k1 - x_k (k1 = k + 1 mod 3), equal to
+// the form above (expand da1 = a1 - a0, da2 = a2 - a0): three products each, and no subtractors.
+// The a operand is always a0_i, the head of the caller's vertex values, which the caller rotates
+// by one vertex (a0 <- a1 <- a2 <- a0) on each val_turn_o pulse, one after each of these six
+// products, so they are back home when the start value reads a0. The b operand is always dy2_i,
+// one place of setup's ring of edge coefficients (htx_raster_setup, g_coef_read): the unit names
+// the ring position each product needs on ring_want_o and starts it only when ring_pos_i is
+// there; the multiplier takes its operands at the start, so the ring turns on to the next
+// product's position during a product. One source each for the multiplier's a and b operands
+// where the differences' form has two and four; a1_i, a2_i, dx1_i, ndy1_i, ndx2_i are unused.
 module htx_raster_plane #(
   parameter int unsigned VB        = 8,    // value bits
   parameter bit          Signed    = 1'b0, // vertex values are signed
@@ -28,7 +34,7 @@ module htx_raster_plane #(
   parameter bit          Iterative = 1'b0,
   parameter bit          Jobs      = 1'b0,
   parameter int unsigned ShiftW    = 7,
-  parameter bit          RingB     = 1'b0,
+  parameter bit          Ring      = 1'b0,
   parameter int unsigned AccW      = VB + GF + 2,
   parameter int unsigned GW        = VB + DW + 2 + GF + 1  // bounds |n R 2^-shift| (msb(det) >= 0)
 ) (
@@ -43,8 +49,9 @@ module htx_raster_plane #(
   input  logic [W:0]             r_i,
   input  logic [ShiftW-1:0]      shift_i,      // W + msb(det) - GF, at least 1
   input  logic                   det_neg_i,
-  input  logic [2:0]             ring_pos_i,   // RingB: the ring's position (see above)
-  output logic [2:0]             ring_want_o,  // RingB: the position the unit wants (0: home)
+  input  logic [2:0]             ring_pos_i,   // Ring: the ring's position (see above)
+  output logic [2:0]             ring_want_o,  // Ring: the position the unit wants (0: home)
+  output logic                   val_turn_o,   // Ring: rotate the vertex values (a pulse)
   output logic                   done_o,
   output logic [AccW-1:0]        gx_o, gy_o, start_o,
   output logic [GW-1:0]          gxw_o, gyw_o,
@@ -76,7 +83,7 @@ module htx_raster_plane #(
   localparam int unsigned PW = MA + MB;
 
   typedef enum logic [3:0] {
-    StIdle, StNx0, StNx1, StNy0, StNy1, StWait, StGx, StGy, StSx, StSy, StDone, StJob
+    StIdle, StNx0, StNx1, StNx2, StNy0, StNy1, StNy2, StWait, StGx, StGy, StSx, StSy, StDone, StJob
   } state_e;
 
   state_e state_q;
@@ -118,34 +125,47 @@ module htx_raster_plane #(
   assign mul_neg = (state_q == StJob) ? job_neg_i
                  : (det_neg_i && ((state_q == StGx) || (state_q == StGy)));
 
-  // The deltas: dy2 = a_2, ndy1 = a_0, dx1 = b_0, ndx2 = b_2 (setup's coefficients). With RingB
-  // they come in turn on dy2_i, the ring's place 3, which holds the coefficient of home index
-  // (ring position + 3) mod 6 (home indices 0..5: b_0, b_1, b_2, a_2, a_1, a_0): position 0 for
-  // a_2, 2 for a_0, 3 for b_0, 5 for b_2. The unit asks for the next delta's position while it
-  // waits for the reciprocal and forms g_x, and for home otherwise.
-  logic signed [DW-1:0] d_ndy1, d_dx1, d_ndx2;
-  logic                 ring_ok;
-  if (RingB) begin : g_ring_b
-    assign d_ndy1 = dy2_i;
-    assign d_dx1  = dy2_i;
-    assign d_ndx2 = dy2_i;
+  // n's products (StNx2 and StNy2 only with Ring).
+  logic n_state;
+  assign n_state = (state_q == StNx0) || (state_q == StNx1) || (state_q == StNx2) ||
+                   (state_q == StNy0) || (state_q == StNy1) || (state_q == StNy2);
+  logic ring_ok;
+  if (Ring) begin : g_ring
+    // Ring place 3 holds the coefficient of home index (position + 3) mod 6, home indices 0..5
+    // being b_0, b_1, b_2, a_2, a_1, a_0. Each product's position (pos_now) and, once its operands
+    // are taken (started_q), the next product's (pos_next); home while the planes end.
+    logic       started_q;
+    logic [2:0] pos_now, pos_next;
     always_comb begin
       unique case (state_q)
-        StNx1:                ring_want_o = 3'd2;
-        StWait, StGx, StNy0:  ring_want_o = 3'd3;
-        StNy1:                ring_want_o = 3'd5;
-        default:              ring_want_o = 3'd0;
+        StNx0:        begin pos_now = 3'd1; pos_next = 3'd0; end  // a0 a_1, then a_2
+        StNx1:        begin pos_now = 3'd0; pos_next = 3'd2; end  // a1 a_2, then a_0
+        StNx2:        begin pos_now = 3'd2; pos_next = 3'd4; end  // a2 a_0, then b_1
+        StWait, StGx: begin pos_now = 3'd4; pos_next = 3'd4; end
+        StNy0:        begin pos_now = 3'd4; pos_next = 3'd5; end  // a0 b_1, then b_2
+        StNy1:        begin pos_now = 3'd5; pos_next = 3'd3; end  // a1 b_2, then b_0
+        StNy2:        begin pos_now = 3'd3; pos_next = 3'd0; end  // a2 b_0, then home
+        default:      begin pos_now = 3'd0; pos_next = 3'd0; end
       endcase
     end
-    assign ring_ok = (ring_pos_i == ring_want_o);
-    logic unused_ring_b;
-    assign unused_ring_b = ^{ndy1_i, dx1_i, ndx2_i};
-  end else begin : g_inputs_b
-    assign d_ndy1      = ndy1_i;
-    assign d_dx1       = dx1_i;
-    assign d_ndx2      = ndx2_i;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        started_q <= 1'b0;
+      end else if (abort_i || mul_done) begin
+        started_q <= 1'b0;
+      end else if (mul_start) begin
+        started_q <= 1'b1;
+      end
+    end
+    assign ring_want_o = started_q ? pos_next : pos_now;
+    assign ring_ok     = (ring_pos_i == pos_now);
+    assign val_turn_o  = n_state && mul_done;
+    logic unused_ring;
+    assign unused_ring = ^{ndy1_i, dx1_i, ndx2_i, da1, da2};
+  end else begin : g_no_ring
     assign ring_want_o = 3'd0;
     assign ring_ok     = 1'b1;
+    assign val_turn_o  = 1'b0;
     logic unused_ring_pos;
     assign unused_ring_pos = ^ring_pos_i;
   end
@@ -154,10 +174,19 @@ module htx_raster_plane #(
     mul_a = '0;
     mul_b = '0;
     unique case (state_q)
-      StNx0: begin mul_a = MA'(da1); mul_b = MB'(dy2_i); end
-      StNx1: begin mul_a = MA'(da2); mul_b = MB'(d_ndy1); end
-      StNy0: begin mul_a = MA'(da2); mul_b = MB'(d_dx1); end
-      StNy1: begin mul_a = MA'(da1); mul_b = MB'(d_ndx2); end
+      StNx0, StNx1, StNx2, StNy0, StNy1, StNy2: begin
+        if (Ring) begin
+          mul_a = MA'(a0e);
+          mul_b = MB'(dy2_i);
+        end else begin
+          unique case (state_q)
+            StNx0:   begin mul_a = MA'(da1); mul_b = MB'(dy2_i); end
+            StNx1:   begin mul_a = MA'(da2); mul_b = MB'(ndy1_i); end
+            StNy0:   begin mul_a = MA'(da2); mul_b = MB'(dx1_i); end
+            default: begin mul_a = MA'(da1); mul_b = MB'(ndx2_i); end  // StNy1
+          endcase
+        end
+      end
       StGx, StGy: begin mul_a = MA'(nxy); mul_b = MB'($signed({1'b0, r_i})); end
       StSx: begin mul_a = MA'($signed(sg_q)); mul_b = MB'(dxs_i); end
       StSy: begin mul_a = MA'($signed(sg_q)); mul_b = MB'(dys_i); end
@@ -165,7 +194,7 @@ module htx_raster_plane #(
         mul_a = MA'(job_a_i);
         unique case (job_bsel_i)
           3'd0:    mul_b = MB'(dy2_i);
-          3'd1:    mul_b = MB'(d_ndy1);
+          3'd1:    mul_b = Ring ? MB'(dy2_i) : MB'(ndy1_i);
           3'd2:    mul_b = MB'(dxs_i);
           3'd3:    mul_b = MB'(dys_i);
           default: mul_b = MB'(2);
@@ -174,12 +203,9 @@ module htx_raster_plane #(
       default: ;
     endcase
   end
-  // A delta product waits until the ring is at its position (RingB); no other product waits.
-  logic delta_state;
-  assign delta_state = (state_q == StNx0) || (state_q == StNx1) || (state_q == StNy0) ||
-                       (state_q == StNy1);
+  // An n product waits until the ring is at its position (Ring); no other product waits.
   assign mul_start = (state_q != StIdle) && (state_q != StWait) && (state_q != StDone) &&
-                     (!delta_state || ring_ok);
+                     (!n_state || ring_ok);
 
   // The multiplier shifts the gradient products right by shift - 1 itself (the iterative one in
   // its own registers, no barrel shifter), and only the last halving and its rounding are left here.
@@ -234,11 +260,17 @@ module htx_raster_plane #(
         StJob: if (mul_done) begin acc_q <= acc_sum; state_q <= StIdle; end
         StNx0: if (mul_done) begin acc_q <= acc_sum; state_q <= StNx1; end
         StNx1: if (mul_done) begin
-          if (NyAfterGx) begin acc_q <= acc_sum; state_q <= StWait; end
+          if (Ring) begin acc_q <= acc_sum; state_q <= StNx2; end
+          else if (NyAfterGx) begin acc_q <= acc_sum; state_q <= StWait; end
           else begin nx_q <= NW'(acc_sum); state_q <= StNy0; end
         end
         StNy0: if (mul_done) begin acc_q <= acc_sum; state_q <= StNy1; end
-        StNy1: if (mul_done) begin acc_q <= acc_sum; state_q <= NyAfterGx ? StGy : StWait; end
+        StNx2: if (mul_done) begin acc_q <= acc_sum; state_q <= StWait; end
+        StNy1: if (mul_done) begin
+          acc_q   <= acc_sum;
+          state_q <= Ring ? StNy2 : (NyAfterGx ? StGy : StWait);
+        end
+        StNy2: if (mul_done) begin acc_q <= acc_sum; state_q <= StGy; end
         StWait: if (recip_valid_i) state_q <= StGx;
         StGx: if (mul_done) begin
           gx_q <= acc_sum[AccW:1]; gxw_q <= GW'(rounded); state_q <= NyAfterGx ? StNy0 : StGy;

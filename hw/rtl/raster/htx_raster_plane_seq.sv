@@ -26,7 +26,7 @@ module htx_raster_plane_seq #(
   parameter int unsigned IdxW   = $clog2(NP),
   parameter bit          Load   = 1'b0,
   parameter bit          Jobs   = 1'b0,   // the unit's job_* port (htx_raster_plane)
-  parameter bit          RingB  = 1'b0    // the deltas from setup's ring (htx_raster_plane)
+  parameter bit          Ring   = 1'b0    // htx_raster_plane's Ring form (needs Load)
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
@@ -44,6 +44,7 @@ module htx_raster_plane_seq #(
   input  logic                  det_neg_i,
   input  logic [2:0]            ring_pos_i,    // as htx_raster_plane's
   output logic [2:0]            ring_want_o,
+  output logic                  val_turn_o,    // Ring: rotate the loaded values (htx_raster_plane)
   output logic                  res_valid_o,
   output logic [IdxW-1:0]       res_idx_o,
   output logic [GW-1:0]         gxw_o, gyw_o,
@@ -85,7 +86,7 @@ module htx_raster_plane_seq #(
   assign go_plane = Load ? (want_q && have_i) : 1'b0;
 
   htx_raster_plane #(.VB(VB), .Signed(1'b1), .DW(DW), .W(W), .GF(GF), .Iterative(1'b1),
-                     .Jobs(Jobs), .ShiftW(ShiftW), .AccW(AccW), .GW(GW), .RingB(RingB)) u_plane (
+                     .Jobs(Jobs), .ShiftW(ShiftW), .AccW(AccW), .GW(GW), .Ring(Ring)) u_plane (
     .clk_i, .rst_ni,
     .abort_i,
     .start_i      (kick_q),
@@ -98,6 +99,7 @@ module htx_raster_plane_seq #(
     .det_neg_i,
     .ring_pos_i,
     .ring_want_o,
+    .val_turn_o,
     .done_o       (unit_done),
     .gx_o(unit_gx), .gy_o(unit_gy), .start_o(unit_start),
     .gxw_o, .gyw_o,

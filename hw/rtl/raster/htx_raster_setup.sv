@@ -842,6 +842,7 @@ module htx_raster_setup #(
       logic          w_job_done;   // (no jobs: setup has its own multiplier for them)
       logic [2*DW+1:0] w_job_sum;
       logic [2:0]    w_ring_want;    // (no ring: setup's coefficients are wires here)
+      logic          w_val_turn;
       logic          unused_w_word;
       htx_raster_plane #(.VB(VBP), .Signed(p >= 5), .DW(DW), .W(RecipW), .GF(GF),
                          .Iterative(Iterative), .ShiftW(ShiftW)) u_plane (
@@ -857,6 +858,7 @@ module htx_raster_setup #(
         .det_neg_i    (det_neg_q),
         .ring_pos_i   (3'd0),
         .ring_want_o  (w_ring_want),
+        .val_turn_o   (w_val_turn),
         .done_o       (plane_done[p]),
         .gx_o(gx), .gy_o(gy), .start_o(st),
         .gxw_o(gxw), .gyw_o(gyw),
@@ -865,7 +867,7 @@ module htx_raster_setup #(
         .job_done_o(w_job_done), .job_sum_o(w_job_sum)
       );
       // (The parallel units hand over on tri_p_o.)
-      assign unused_w_word = ^{w_we, w_sel, w_word, w_job_done, w_job_sum, w_ring_want};
+      assign unused_w_word = ^{w_we, w_sel, w_word, w_job_done, w_job_sum, w_ring_want, w_val_turn};
       assign pgx[p] = AW'(gx);
       assign pgy[p] = AW'(gy);
       assign pst[p] = AW'(st);
@@ -901,6 +903,7 @@ module htx_raster_setup #(
     localparam int unsigned AS  = VSW + GF + 2;
     localparam int unsigned GS  = VSW + DW + 2 + GF + 1;
     logic                s_valid, s_first, s_late, s_want, s_have, s_wwe;
+    logic                s_val_turn;  // rotate the plane's loaded values (Ring, g_load)
     logic [1:0]          s_wsel;
     logic [AS:0]         s_word;
     logic [3:0]          s_idx;
@@ -908,7 +911,7 @@ module htx_raster_setup #(
     logic [GS-1:0]       s_gxw, s_gyw;
     htx_raster_plane_seq #(.NP(NS), .NFirst((NS < 7) ? NS : 7), .VB(VSW), .DW(DW), .W(RecipW), .GF(GF), .ShiftW(ShiftW),
                            .AccW(AS), .GW(GS), .IdxW(4), .Load(ValuesInFifo), .Jobs(1'b1),
-                           .RingB(ValuesInFifo)) u_seq (
+                           .Ring(ValuesInFifo)) u_seq (
       .clk_i, .rst_ni,
       .abort_i      (planes_abort),
       .start_i      (plane_start_q),
@@ -924,6 +927,7 @@ module htx_raster_setup #(
       .det_neg_i    (det_neg_q),
       .ring_pos_i   (ring_pos),
       .ring_want_o  (plane_ring_want),
+      .val_turn_o   (s_val_turn),
       .res_valid_o  (s_valid),
       .res_idx_o    (s_idx),
       .gxw_o(s_gxw), .gyw_o(s_gyw),
@@ -944,6 +948,8 @@ module htx_raster_setup #(
       // The plane's three vertex values, loaded a word every two clocks (ask, take) into a shift
       // chain (vertex 0 ends in a_q[0]): the FIFO's read port is the multiplexer over planes and
       // vertices. AFFINE's u_i, v_i (planes 7, 8) come from their shift chains, a clock each.
+      // While the plane unit works the chain rotates on s_val_turn (a_q[0], its a operand, takes
+      // the next vertex; htx_raster_plane Ring), six times a plane, which brings it home.
       // (Asking for the next word in the clock that takes one saves about 20 clocks a triangle
       // and cost 37 LUT4: not done.)
       typedef enum logic [1:0] {LdIdle, LdReq, LdData, LdDone} ld_e;
@@ -1009,7 +1015,13 @@ module htx_raster_setup #(
           ld_q  <= LdIdle;
         end else begin
           unique case (ld_q)
-            LdIdle: if (s_want) begin ld_q <= LdReq; lv_q <= '0; lhi_q <= 1'b0; end
+            LdIdle: begin
+              if (s_want) begin
+                ld_q <= LdReq; lv_q <= '0; lhi_q <= 1'b0;
+              end else if (s_val_turn) begin
+                a_q[0] <= a_q[1]; a_q[1] <= a_q[2]; a_q[2] <= a_q[0];
+              end
+            end
             LdReq: begin
               if (late) begin
                 a_q[0] <= a_q[1]; a_q[1] <= a_q[2]; a_q[2] <= late_value;
@@ -1044,7 +1056,7 @@ module htx_raster_setup #(
       assign s_have   = 1'b0;
       assign s_values = sv[NS*3*VSW-1:0];
       logic unused_want;
-      assign unused_want = s_want;
+      assign unused_want = ^{s_want, s_val_turn};  // (Ring is off without Load)
     end
     assign plane_done = {{2{s_late}}, {7{s_first}}};
     assign apl_done   = {2{s_late}};
