@@ -25,6 +25,10 @@
 // there; the multiplier takes its operands at the start, so the ring turns on to the next
 // product's position during a product. One source each for the multiplier's a and b operands
 // where the differences' form has two and four; a1_i, a2_i, dx1_i, ndy1_i, ndx2_i are unused.
+// The start value's a0 2^GF is a product as well (a0 times the constant 2^GF, StS0), and the
+// accumulator's adder always adds acc_q: the unit clears acc_q before each sum's first product and
+// sets it to 1 for a gradient's rounding as that product takes n from it, which flip-flops with
+// synchronous set and reset do without a multiplexer.
 module htx_raster_plane #(
   parameter int unsigned VB        = 8,    // value bits
   parameter bit          Signed    = 1'b0, // vertex values are signed
@@ -83,7 +87,8 @@ module htx_raster_plane #(
   localparam int unsigned PW = MA + MB;
 
   typedef enum logic [3:0] {
-    StIdle, StNx0, StNx1, StNx2, StNy0, StNy1, StNy2, StWait, StGx, StGy, StSx, StSy, StDone, StJob
+    StIdle, StNx0, StNx1, StNx2, StNy0, StNy1, StNy2, StWait, StGx, StGy, StS0, StSx, StSy, StDone,
+    StJob
   } state_e;
 
   state_e state_q;
@@ -130,6 +135,7 @@ module htx_raster_plane #(
   assign n_state = (state_q == StNx0) || (state_q == StNx1) || (state_q == StNx2) ||
                    (state_q == StNy0) || (state_q == StNy1) || (state_q == StNy2);
   logic ring_ok;
+  logic prod_first;  // Ring: the state's product takes its operands in this clock
   if (Ring) begin : g_ring
     // Ring place 3 holds the coefficient of home index (position + 3) mod 6, home indices 0..5
     // being b_0, b_1, b_2, a_2, a_1, a_0. Each product's position (pos_now) and, once its operands
@@ -158,6 +164,7 @@ module htx_raster_plane #(
       end
     end
     assign ring_want_o = started_q ? pos_next : pos_now;
+    assign prod_first  = mul_start && !started_q;
     assign ring_ok     = (ring_pos_i == pos_now);
     assign val_turn_o  = n_state && mul_done;
     logic unused_ring;
@@ -166,6 +173,7 @@ module htx_raster_plane #(
     assign ring_want_o = 3'd0;
     assign ring_ok     = 1'b1;
     assign val_turn_o  = 1'b0;
+    assign prod_first  = 1'b0;
     logic unused_ring_pos;
     assign unused_ring_pos = ^ring_pos_i;
   end
@@ -188,6 +196,7 @@ module htx_raster_plane #(
         end
       end
       StGx, StGy: begin mul_a = MA'(nxy); mul_b = MB'($signed({1'b0, r_i})); end
+      StS0: begin mul_a = MA'(a0e); mul_b = MB'(1) << GF; end  // (Ring; 2^GF < 2^(MB-1))
       StSx: begin mul_a = MA'($signed(sg_q)); mul_b = MB'(dxs_i); end
       StSy: begin mul_a = MA'($signed(sg_q)); mul_b = MB'(dys_i); end
       StJob: begin
@@ -230,15 +239,47 @@ module htx_raster_plane #(
 
   // One adder for both sums of two products: n_x = da1 dy2 + da2 ndy1 (n_y likewise), then
   // start = a0 2^GF + g_x dxs + g_y dys (kept modulo 2^AccW), and the gradients' rounding p + 1.
+  // (Ring: three products for each n and for the start value, each sum started from a cleared
+  // acc_q, and the rounding's 1 set in acc_q; see above.)
   logic [MA-1:0] acc_base, acc_sum;
-  always_comb begin
-    if (state_q == StSx)                               acc_base = MA'(a0e) << GF;
-    else if ((state_q == StNx0) || (state_q == StNy0) || ((state_q == StJob) && !job_acc_i))
-      acc_base = '0;
-    else if ((state_q == StGx) || (state_q == StGy))   acc_base = MA'(1);
-    else                                               acc_base = acc_q;
+  logic          acc_clear, acc_one, acc_load;
+  if (Ring) begin : g_acc_ring
+    assign acc_base  = acc_q;
+    assign acc_clear = (((state_q == StIdle) || (state_q == StDone)) &&
+                        (start_i || (Jobs && job_i && !job_acc_i))) ||
+                       (mul_done && ((state_q == StGx) || (state_q == StGy)));
+    assign acc_one   = prod_first && ((state_q == StGx) || (state_q == StGy));
+  end else begin : g_acc_mux
+    always_comb begin
+      if (state_q == StSx)                               acc_base = MA'(a0e) << GF;
+      else if ((state_q == StNx0) || (state_q == StNy0) || ((state_q == StJob) && !job_acc_i))
+        acc_base = '0;
+      else if ((state_q == StGx) || (state_q == StGy))   acc_base = MA'(1);
+      else                                               acc_base = acc_q;
+    end
+    assign acc_clear = 1'b0;
+    assign acc_one   = 1'b0;
+    logic unused_first;
+    assign unused_first = prod_first;
   end
-  assign acc_sum = acc_base + MA'(mul_p);
+  assign acc_sum  = acc_base + MA'(mul_p);
+  // Where a product's sum goes to acc_q (n_x in nx_q instead without NyAfterGx).
+  assign acc_load = mul_done &&
+                    ((state_q == StJob) || (state_q == StNx0) || (state_q == StNx2) ||
+                     ((state_q == StNx1) && (Ring || NyAfterGx)) || (state_q == StNy0) ||
+                     (state_q == StNy1) || (state_q == StNy2) || (state_q == StS0) ||
+                     (state_q == StSx) || (state_q == StSy));
+
+  // (No reset: every sum starts from a cleared acc_q or a zero base.)
+  always_ff @(posedge clk_i) begin
+    if (acc_clear) begin
+      acc_q <= '0;
+    end else if (acc_one) begin
+      acc_q <= MA'(1);
+    end else if (acc_load) begin
+      acc_q <= acc_sum;
+    end
+  end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -250,39 +291,36 @@ module htx_raster_plane #(
       sg_next_q <= '0;
       gxw_q   <= '0;
       gyw_q   <= '0;
-      acc_q   <= '0;
     end else if (abort_i) begin
       state_q <= StIdle;
     end else begin
       unique case (state_q)
         StIdle, StDone: if (start_i) state_q <= StNx0;
                         else if (Jobs && job_i) state_q <= StJob;
-        StJob: if (mul_done) begin acc_q <= acc_sum; state_q <= StIdle; end
-        StNx0: if (mul_done) begin acc_q <= acc_sum; state_q <= StNx1; end
+        StJob: if (mul_done) state_q <= StIdle;
+        StNx0: if (mul_done) state_q <= StNx1;
         StNx1: if (mul_done) begin
-          if (Ring) begin acc_q <= acc_sum; state_q <= StNx2; end
-          else if (NyAfterGx) begin acc_q <= acc_sum; state_q <= StWait; end
+          if (Ring) state_q <= StNx2;
+          else if (NyAfterGx) state_q <= StWait;
           else begin nx_q <= NW'(acc_sum); state_q <= StNy0; end
         end
-        StNy0: if (mul_done) begin acc_q <= acc_sum; state_q <= StNy1; end
-        StNx2: if (mul_done) begin acc_q <= acc_sum; state_q <= StWait; end
-        StNy1: if (mul_done) begin
-          acc_q   <= acc_sum;
-          state_q <= Ring ? StNy2 : (NyAfterGx ? StGy : StWait);
-        end
-        StNy2: if (mul_done) begin acc_q <= acc_sum; state_q <= StGy; end
+        StNx2: if (mul_done) state_q <= StWait;
+        StNy0: if (mul_done) state_q <= StNy1;
+        StNy1: if (mul_done) state_q <= Ring ? StNy2 : (NyAfterGx ? StGy : StWait);
+        StNy2: if (mul_done) state_q <= StGy;
         StWait: if (recip_valid_i) state_q <= StGx;
         StGx: if (mul_done) begin
           gx_q <= acc_sum[AccW:1]; gxw_q <= GW'(rounded); state_q <= NyAfterGx ? StNy0 : StGy;
           sg_next_q <= acc_sum[AccW:1];
         end
         StGy: if (mul_done) begin
-          gy_q <= acc_sum[AccW:1]; gyw_q <= GW'(rounded); state_q <= StSx;
+          gy_q <= acc_sum[AccW:1]; gyw_q <= GW'(rounded); state_q <= Ring ? StS0 : StSx;
           sg_next_q <= acc_sum[AccW:1];
           sg_q      <= sg_next_q;  // g_x
         end
-        StSx: if (mul_done) begin acc_q <= acc_sum; state_q <= StSy; sg_q <= sg_next_q; end  // g_y
-        StSy: if (mul_done) begin acc_q <= acc_sum; state_q <= StDone; end
+        StS0: if (mul_done) state_q <= StSx;
+        StSx: if (mul_done) begin state_q <= StSy; sg_q <= sg_next_q; end  // g_y
+        StSy: if (mul_done) state_q <= StDone;
         default: state_q <= StIdle;
       endcase
     end
