@@ -8,7 +8,8 @@
 // product per clock on one DSP, or with b whole one 15-bit digit of a per clock on about
 // BWidth / 16 DSPs (g_digits; the `icebreaker` divider). The operands must stay stable while
 // start_i is held (DigitSerial reads them on every clock of the product; Iterative takes them,
-// neg_i and extra_i at the start); done_o is a one-cycle pulse.
+// neg_i and extra_i at the start); done_o is a one-cycle pulse. p_o is the product in the clock
+// done_o pulses (DigitSerial clears it after that clock; the other forms hold it until the next start).
 // abort_i drops a product in progress, so a unit aborted mid-product does not take its stale
 // result for the next one.
 module htx_raster_mul #(
@@ -78,14 +79,20 @@ module htx_raster_mul #(
       end
     end
     assign prod = da * db;
-    // Idle, i_q = j_q = 0: the clock that takes start_i multiplies the first pair onto zero.
+    // Idle, i_q = j_q = 0: the clock that takes start_i multiplies the first pair onto zero. acc_q
+    // is zero then: it has no reset and is cleared in every clock without a product after done_o's
+    // (the callers take p_o in that clock), which is its flip-flops' synchronous reset, so the
+    // first pair needs no zero base. With b whole (NB = 1) every digit starts a column.
     // (base is written with if/else: in one ?: with an unsigned '0 the whole expression would be
     // unsigned and >>> a logical shift.)
     assign go = !busy_q && !done_q && start_i;
-    always_comb begin
-      if (!busy_q)       base = '0;
-      else if (newcol_q) base = acc_q >>> DigW;
-      else               base = acc_q;
+    if (NB == 1) begin : g_base_col
+      assign base = acc_q >>> DigW;
+    end else begin : g_base
+      always_comb begin
+        if (newcol_q) base = acc_q >>> DigW;
+        else          base = acc_q;
+      end
     end
 
     // Next digit pair: along the column (i up, j down) or the start of the next one.
@@ -113,7 +120,6 @@ module htx_raster_mul #(
         newcol_q <= 1'b0;
         i_q      <= '0;
         j_q      <= '0;
-        acc_q    <= '0;
         low_q    <= '0;
       end else if (abort_i) begin
         busy_q <= 1'b0;
@@ -123,7 +129,6 @@ module htx_raster_mul #(
       end else begin
         done_q <= 1'b0;
         if (go || busy_q) begin
-          acc_q    <= base + AccW'(prod);
           if (busy_q && newcol_q) low_q <= {acc_q[DigW-1:0], low_q[LowW-1:DigW]};
           newcol_q <= col_end;
           if (last) begin
@@ -137,6 +142,14 @@ module htx_raster_mul #(
             j_q    <= j_next;
           end
         end
+      end
+    end
+
+    always_ff @(posedge clk_i) begin
+      if (abort_i || !(go || busy_q)) begin
+        acc_q <= '0;
+      end else begin
+        acc_q <= base + AccW'(prod);
       end
     end
 
