@@ -225,8 +225,10 @@ module htx_recip #(
   assign last_step = alt_q ? (32'(step_q) + 1 == AltSteps) : (32'(step_q) + 1 == Steps);
   assign no_steps  = only_q || (alt_q ? (AltSteps == 0) : (Steps == 0));
   assign mul_start = (state_q == StMulE) || (state_q == StMulR);
-  assign mul_a = (state_q == StMulE) ? MulW'(m_q) : MulW'(r_q);
-  assign mul_b = (state_q == StMulE) ? MulW'(r_q) : MulW'(c_q);
+  // e = m r, then r c: r is the b operand of both, so b has one source (the divider's shared
+  // multiplier takes b whole and a in digits; its other b is a reciprocal too).
+  assign mul_a = (state_q == StMulE) ? MulW'(m_q) : MulW'(c_q);
+  assign mul_b = MulW'(r_q);
 
   if (ExtMul) begin : g_ext_mul
     assign mul_start_o = mul_start;
