@@ -253,8 +253,8 @@ module htx_raster_setup #(
   logic signed [DW-1:0] ring_head;
   logic [2:0]           ring_pos;
   logic                 ring_turn;
-  // The position the shared plane unit wants the ring at (ValuesInFifo: it takes its vertex
-  // deltas from ring_q[3], htx_raster_plane RingB); 0 (home) while it is idle.
+  // The position the shared plane unit wants the ring at (ValuesInFifo: it takes the b operand
+  // of n's products from ring_q[3], htx_raster_plane Ring); 0 (home) while it is idle.
   logic [2:0]           plane_ring_want;
   // ValuesInFifo: the record reader asks for word rd_off (rd_req) and takes it from vr_data_i a
   // clock later (rd_take); rd_idx counts the words: 0..7 the edge coefficients', 8..11 the box's.
@@ -304,9 +304,11 @@ module htx_raster_setup #(
     // six-way multiplexer: the ring turns by one a clock (ring_q[i] <= ring_q[i + 1], the head to
     // the tail) until the coefficient a job needs is at the head. A coefficient and its partner in
     // the determinant are three apart (b_0 a_2, b_2 a_0), so ring_q[3] is the other factor of a
-    // determinant product (the plane unit's dy2 input). Everything else reads the ring at home
-    // (ring_pos_q 0): the planes start only then. The signs and zero flags shift in alongside and
-    // do not turn (one zero detector on cf_diff instead of six on the registers).
+    // determinant product (the plane unit's dy2 input). The plane unit then turns it to the
+    // coefficient each of n's products takes from ring_q[3] (plane_ring_want), and it turns home
+    // before the triangle is handed over, whose taps (ea, eb) the traversal reads. The signs and
+    // zero flags shift in alongside and do not turn (one zero detector on cf_diff instead of six on
+    // the registers).
     logic signed [DW-1:0] ring_q [6];
     logic [2:0]           ring_pos_q;
     logic [5:0]           cneg_q, czero_q;  // by home index
@@ -1405,7 +1407,7 @@ module htx_raster_setup #(
           end
           edge_k_q <= edge_k_q + 1'b1;
         end else if ((edge_k_q == 4'd14) && ValuesInFifo && (ring_pos == 3'd0)) begin
-          // The ring is home (j 14 turned it): the planes read its taps.
+          // The ring is home (j 14 turned it): the plane unit turns it from there.
           plane_start_q <= 1'b1;
           state_q       <= StWait;
         end else if (emul_done) begin
