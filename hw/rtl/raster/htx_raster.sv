@@ -751,7 +751,8 @@ module htx_raster #(
     logic unused_t;
     assign unused_t = ^{t_modulate, t_textured, ret_rgba};
   end else if (Iterative) begin : g_combine_serial
-    htx_tex_combine_serial #(.PayW(4 + ZBits + AddrW)) u_combine (
+    // (It also quantises to RGB565, a channel a clock: the fragment stage takes that, InRgb565.)
+    htx_tex_combine_serial #(.PayW(4 + ZBits + AddrW), .Rgb565(1'b1)) u_combine (
       .clk_i, .rst_ni,
       .abort_i    (abort),
       .in_valid_i (ret_keep),
@@ -810,7 +811,8 @@ module htx_raster #(
   end
 
   logic frag_busy, clearing, pixel, clear_start;
-  htx_raster_fragment #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels), .Forward(!Iterative))
+  htx_raster_fragment #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels), .Forward(!Iterative),
+                        .InRgb565(Textured && Iterative))
   u_fragment (
     .clk_i, .rst_ni,
     .abort_i       (abort),

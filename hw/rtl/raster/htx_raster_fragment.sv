@@ -9,11 +9,15 @@
 // last write (a stall of one clock, instead of an address comparison and a depth multiplexer).
 // The clear fills pixels 0 .. height * stride - 1 one per clock and only starts while no fragment
 // is in flight (the top holds setup meanwhile).
+// InRgb565 = 1 (`icebreaker` with texture mapping): in_rgb_i[15:0] is the colour already quantised
+// to RGB565 (the serial combine stage quantises a channel a clock on one quantiser,
+// htx_tex_combine_serial); otherwise this stage quantises the three channels itself.
 module htx_raster_fragment #(
   parameter int unsigned ZBits    = 24,
   parameter int unsigned AddrW    = 24,
   parameter int unsigned FbPixels = 76800,
-  parameter bit          Forward  = 1'b1
+  parameter bit          Forward  = 1'b1,
+  parameter bit          InRgb565 = 1'b0
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -23,7 +27,7 @@ module htx_raster_fragment #(
   output logic              in_ready_o,
   input  logic [AddrW-1:0]  in_addr_i,
   input  logic [ZBits-1:0]  in_z_i,
-  input  logic [23:0]       in_rgb_i,
+  input  logic [23:0]       in_rgb_i,    // r 7:0, g 15:8, b 23:16 (InRgb565: RGB565 in 15:0)
   input  logic [31:0]       in_state_i,
 
   input  logic              clear_start_i,
@@ -50,14 +54,6 @@ module htx_raster_fragment #(
 );
   localparam logic [ZBits-1:0] ZMax = {ZBits{1'b1}};
 
-  function automatic logic [7:0] quantise(input logic [7:0] c, input int unsigned bits);
-    // round(c (2^bits - 1) / 255): x = c (2^bits - 1) + 128; (x + (x >> 8)) >> 8. The product by
-    // the constant is written as (c << bits) - c, so it is an adder and not a DSP.
-    logic [15:0] x;
-    x = (16'(c) << bits) - 16'(c) + 16'd128;
-    quantise = 8'((x + (x >> 8)) >> 8);
-  endfunction
-
   // ---- F1: depth read ---------------------------------------------------------------------------
   logic             f2_valid_q, f2_zwrite_q;
   logic [AddrW-1:0] f2_addr_q;
@@ -67,9 +63,9 @@ module htx_raster_fragment #(
   logic             in_range;
   logic [7:0]       q_r, q_g, q_b;
 
-  assign q_r = quantise(in_rgb_i[7:0], 5);
-  assign q_g = quantise(in_rgb_i[15:8], 6);
-  assign q_b = quantise(in_rgb_i[23:16], 5);
+  assign q_r = htx_rgb565_pkg::quantise(in_rgb_i[7:0], 3'd5);
+  assign q_g = htx_rgb565_pkg::quantise(in_rgb_i[15:8], 3'd6);
+  assign q_b = htx_rgb565_pkg::quantise(in_rgb_i[23:16], 3'd5);
 
   assign in_range   = htx_raster_pkg::below_const(32'(in_addr_i), 32'(AddrW'(FbPixels)));
   assign in_ready_o = !clearing_o && (Forward || !f2_valid_q);
@@ -137,7 +133,7 @@ module htx_raster_fragment #(
         f2_z_q      <= in_z_i;
         f2_zwrite_q <= in_state_i[htx_raster_reg_pkg::RASTER_STATE_DEPTH_WRITE_LSB];
         f2_func_q   <= in_state_i[htx_raster_reg_pkg::RASTER_STATE_DEPTH_FUNC_LSB +: 3];
-        f2_rgb565_q <= {q_r[4:0], q_g[5:0], q_b[4:0]};
+        f2_rgb565_q <= InRgb565 ? in_rgb_i[15:0] : {q_r[4:0], q_g[5:0], q_b[4:0]};
       end
       last_wz_valid_q <= wz_en_o;
       if (wz_en_o) begin
