@@ -752,7 +752,8 @@ module htx_raster #(
     assign unused_t = ^{t_modulate, t_textured, ret_rgba};
   end else if (Iterative) begin : g_combine_serial
     // (It also quantises to RGB565, a channel a clock: the fragment stage takes that, InRgb565.)
-    htx_tex_combine_serial #(.PayW(4 + ZBits + AddrW), .Rgb565(1'b1)) u_combine (
+    logic [15:0] c_rgb565;
+    htx_tex_combine_serial #(.PayW(4 + ZBits + AddrW)) u_combine (
       .clk_i, .rst_ni,
       .abort_i    (abort),
       .in_valid_i (ret_keep),
@@ -764,10 +765,11 @@ module htx_raster #(
       .pay_i      ({t_zwrite, t_func, t_z, t_addr}),
       .out_valid_o(c_valid),
       .out_ready_i(frag_ready),
-      .rgb_o      (c_rgb),
+      .rgb565_o   (c_rgb565),
       .pay_o      ({c_zwrite, c_func, c_z, c_addr}),
       .busy_o     (cmb_busy)
     );
+    assign c_rgb = {8'd0, c_rgb565};
     logic unused_alpha;
     assign unused_alpha = ^ret_rgba[31:24];  // the fragment path has no alpha
   end else begin : g_combine

@@ -1,15 +1,11 @@
-// Texture combine of the colour channels r, g, b one channel per clock on one multiplier (the
-// `icebreaker` fragment path, which has no alpha): the same results as htx_tex_combine's low 24
-// bits. A valid/ready stage holding one fragment and its payload; a modulated fragment leaves it
-// 3 clocks after it entered (r and g go into the result register, b is formed as the fragment
-// leaves), any other after 1. abort_i empties it.
-// Rgb565 = 1: rgb_o[15:0] is the result quantised to the framebuffer's RGB565 (the fragment
-// stage's quantisation, htx_rgb565_pkg::quantise), each channel on one quantiser as it is formed
-// (or chosen: the texel's or the colour's), so every fragment leaves 3 clocks after it entered;
-// rgb_o[23:16] is 0.
+// Texture combine of the colour channels r, g, b one channel per clock on one multiplier, with
+// the result quantised to the framebuffer's RGB565 as each channel is formed (the `icebreaker`
+// fragment path, which has no alpha): per channel the same result as htx_tex_combine's, then
+// htx_rgb565_pkg::quantise, the fragment stage's quantisation, on one quantiser. A valid/ready
+// stage holding one fragment and its payload; every fragment leaves it 3 clocks after it entered
+// (r and g go into their fields, b is quantised as the fragment leaves). abort_i empties it.
 module htx_tex_combine_serial #(
-  parameter int unsigned PayW   = 8,
-  parameter bit          Rgb565 = 1'b0
+  parameter int unsigned PayW = 8
 ) (
   input  logic            clk_i,
   input  logic            rst_ni,
@@ -25,11 +21,11 @@ module htx_tex_combine_serial #(
 
   output logic            out_valid_o,
   input  logic            out_ready_i,
-  output logic [23:0]     rgb_o,
+  output logic [15:0]     rgb565_o,   // r 15:11, g 10:5, b 4:0
   output logic [PayW-1:0] pay_o,
   output logic            busy_o
 );
-  logic            valid_q, mod_q, loop_q;  // loop_q: the fragment takes a clock per channel
+  logic            valid_q, mod_q, tex_q;
   logic [1:0]      ch_q;
   logic [23:0]     t_q, c_q;
   logic [PayW-1:0] pay_q;
@@ -51,67 +47,48 @@ module htx_tex_combine_serial #(
 
   logic last_ch;
   assign last_ch     = (ch_q == 2'd2);
-  assign out_valid_o = valid_q && (!loop_q || last_ch);
+  assign out_valid_o = valid_q && last_ch;
   assign in_ready_o  = !valid_q || (out_valid_o && out_ready_i);
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       valid_q <= 1'b0;
       mod_q   <= 1'b0;
-      loop_q  <= 1'b0;
       ch_q    <= '0;
     end else if (abort_i) begin
       valid_q <= 1'b0;
       mod_q   <= 1'b0;
-      loop_q  <= 1'b0;
     end else if (in_ready_o) begin
       valid_q <= in_valid_i;
       mod_q   <= in_valid_i && textured_i && modulate_i;
-      loop_q  <= in_valid_i && (Rgb565 || (textured_i && modulate_i));
       ch_q    <= '0;
-    end else if (loop_q && !last_ch) begin
+    end else if (valid_q && !last_ch) begin
       ch_q <= ch_q + 2'd1;
     end
   end
+
+  // This clock's channel, quantised: the product, the texel's (replace) or the colour's
+  // (untextured).
+  logic [7:0] ch_value, q_ch;
+  logic [4:0] r5_q;
+  logic [5:0] g6_q;
+  assign ch_value = mod_q ? m_ch : (tex_q ? t_q[8*ch_q +: 8] : c_q[8*ch_q +: 8]);
+  assign q_ch     = htx_rgb565_pkg::quantise(ch_value, (ch_q == 2'd1) ? 3'd6 : 3'd5);
 
   always_ff @(posedge clk_i) begin
     if (in_ready_o && in_valid_i) begin
       t_q   <= texel_i;
       c_q   <= color_i;
+      tex_q <= textured_i;
       pay_q <= pay_i;
     end
+    if (valid_q && (ch_q == 2'd0)) r5_q <= q_ch[4:0];
+    if (valid_q && (ch_q == 2'd1)) g6_q <= q_ch[5:0];
   end
 
-  if (Rgb565) begin : g_rgb565
-    // This clock's channel, quantised: the product, the texel's (replace) or the colour's
-    // (untextured). r and g wait in their fields; b is quantised as the fragment leaves.
-    logic       tex_q;
-    logic [7:0] ch_value, q_ch;
-    logic [4:0] r5_q;
-    logic [5:0] g6_q;
-    assign ch_value = mod_q ? m_ch : (tex_q ? t_q[8*ch_q +: 8] : c_q[8*ch_q +: 8]);
-    assign q_ch     = htx_rgb565_pkg::quantise(ch_value, (ch_q == 2'd1) ? 3'd6 : 3'd5);
-    always_ff @(posedge clk_i) begin
-      if (in_ready_o && in_valid_i) tex_q <= textured_i;
-      if (valid_q && (ch_q == 2'd0)) r5_q <= q_ch[4:0];
-      if (valid_q && (ch_q == 2'd1)) g6_q <= q_ch[5:0];
-    end
-    assign rgb_o = {8'd0, r5_q, g6_q, q_ch[4:0]};
-    logic unused_q;
-    assign unused_q = ^q_ch[7:6];
-  end else begin : g_rgb888
-    // r and g go into the result register as they are formed (it starts as the texel's or the
-    // colour's value); b is formed as the fragment leaves.
-    logic [23:0] res_q;
-    always_ff @(posedge clk_i) begin
-      if (in_ready_o && in_valid_i) begin
-        res_q <= textured_i ? texel_i : color_i;
-      end else if (mod_q && !last_ch) begin
-        res_q[8*ch_q +: 8] <= m_ch;
-      end
-    end
-    assign rgb_o = mod_q ? {m_ch, res_q[15:0]} : res_q;
-  end
-  assign pay_o  = pay_q;
-  assign busy_o = valid_q;
+  assign rgb565_o = {r5_q, g6_q, q_ch[4:0]};
+  assign pay_o    = pay_q;
+  assign busy_o   = valid_q;
+  logic unused_q;
+  assign unused_q = ^q_ch[7:6];
 endmodule
