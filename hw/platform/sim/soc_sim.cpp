@@ -52,7 +52,7 @@ struct SocSim::Impl {
   // The framebuffer's colour memory, two pixels a word (the lower pixel in bits 15:0).
   auto& fb_color() {
     return top->rootp
-        ->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_gpu__DOT__u_subsys__DOT__u_fb__DOT__u_color__DOT__mem_q;
+        ->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_gpu__DOT__u_subsys__DOT__u_fb__DOT__u_color__DOT__g_behav__DOT__mem_q;
   }
 
   void half_cycle(bool clk) {

@@ -3,10 +3,15 @@
 // (docs/contracts.md): colour at 0x3000_0000, RGB565, two pixels per 32-bit word (the lower address
 // in bits 15:0); depth at 0x3010_0000, one pixel per word in the low ZBits. A bus access waits while
 // the raster uses the port it needs. An address beyond the memory answers rsp_err (reads give 0).
+// SinglePort = 1 (`icebreaker`, whose fragment stage never reads and writes depth in one clock): a
+// bus access waits while the raster uses its memory at all, so each memory sees one access a clock
+// and may be single-ported; Spram = 1 builds them from the UP5K's SPRAM (htx_fb_ram; ZBits = 16).
 module htx_fb #(
-  parameter int unsigned ZBits    = 24,
-  parameter int unsigned AddrW    = 24,
-  parameter int unsigned FbPixels = 76800   // even
+  parameter int unsigned ZBits      = 24,
+  parameter int unsigned AddrW      = 24,
+  parameter int unsigned FbPixels   = 76800,   // even
+  parameter bit          SinglePort = 1'b0,
+  parameter bit          Spram      = 1'b0     // needs SinglePort
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -43,8 +48,12 @@ module htx_fb #(
   assign in_range = is_color ? htx_raster_pkg::below_const(32'(bus_word), CWords)
                              : (is_depth && htx_raster_pkg::below_const(32'(bus_word), FbPixels));
   // The raster's ports come first: a bus read of depth needs the depth read port, a bus write the
-  // write port of its memory.
-  assign conflict = in_range && (req_we_i ? (is_color ? wc_en_i : wz_en_i) : (is_depth && zr_en_i));
+  // write port of its memory (SinglePort: any access needs the memory's one port).
+  if (SinglePort) begin : g_conflict_1p
+    assign conflict = in_range && (is_color ? wc_en_i : (zr_en_i || wz_en_i));
+  end else begin : g_conflict_2p
+    assign conflict = in_range && (req_we_i ? (is_color ? wc_en_i : wz_en_i) : (is_depth && zr_en_i));
+  end
   assign req_ready_o = !conflict;
   assign accept = req_valid_i && req_ready_o;
 
@@ -69,7 +78,7 @@ module htx_fb #(
       c_wdata = req_wdata_i;
     end
   end
-  htx_fb_ram #(.LaneW(16), .Lanes(2), .Words(CWords)) u_color (
+  htx_fb_ram #(.LaneW(16), .Lanes(2), .Words(CWords), .Spram(Spram)) u_color (
     .clk_i,
     .re_i   (bus_rd_c),
     .raddr_i(CAW'(bus_word)),
@@ -88,7 +97,7 @@ module htx_fb #(
   assign z_we    = wz_en_i || bus_wr_z;
   assign z_waddr = wz_en_i ? ZAW'(w_addr_i) : ZAW'(bus_word);
   assign z_wdata = wz_en_i ? wz_data_i : ZBits'(req_wdata_i);
-  htx_fb_ram #(.LaneW(ZBits), .Lanes(1), .Words(FbPixels)) u_depth (
+  htx_fb_ram #(.LaneW(ZBits), .Lanes(1), .Words(FbPixels), .Spram(Spram)) u_depth (
     .clk_i,
     .re_i   (z_re),
     .raddr_i(z_raddr),
@@ -98,6 +107,16 @@ module htx_fb #(
     .wdata_i(z_wdata)
   );
   assign zr_data_o = z_rdata;
+`ifndef SYNTHESIS
+  // A single-ported memory cannot read and write in one clock (the fragment stage's Forward = 0
+  // schedule and the arbitration above keep them apart).
+  if (SinglePort) begin : g_check_1p
+    always_ff @(posedge clk_i) begin
+      if (z_re && z_we) $error("htx_fb: depth read and write in one clock on a single port");
+      if (bus_rd_c && (|c_we)) $error("htx_fb: colour read and write in one clock on a single port");
+    end
+  end
+`endif
 
   // ---- Response ----------------------------------------------------------------------------------
   logic rsp_valid_q, rsp_err_q, rsp_c_q, rsp_z_q;

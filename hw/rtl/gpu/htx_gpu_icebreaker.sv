@@ -11,7 +11,10 @@ module htx_gpu_icebreaker #(
   parameter bit          RasterCounters = 1'b1,
   // Reads of the texture memory window (CAPS.WINDOW_READ): the board's builds leave them out (the
   // memory is written only; docs/texture.md), the Verilated models keep them for the tests.
-  parameter bit          TexWindowRead = 1'b1
+  parameter bit          TexWindowRead = 1'b1,
+  // Framebuffer and depth in the UP5K's SPRAM (the board's builds; Yosys only, docs/gpu.md). The
+  // memories are single-ported in every build, so simulation arbitrates as the board does.
+  parameter bit          FbSpram = 1'b0
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -41,6 +44,6 @@ module htx_gpu_icebreaker #(
     .CoordW(20), .TF(10), .GradW(16), .LF(6), .TexFormats(3'b011), .TexFilters(3'b011),
     .TexSlots(4), .TexLanes(1), .TexShiftAdd(1'b0), .TexCounters(1'b0), .LogIdx(6),
     .RasterCounters(RasterCounters), .TexWindowRead(TexWindowRead),
-    .FbPixels(FbPixels), .TexBAW(TexBAW), .Methods(Methods)
+    .FbPixels(FbPixels), .FbSinglePort(1'b1), .FbSpram(FbSpram), .TexBAW(TexBAW), .Methods(Methods)
   ) u_subsys (.*);
 endmodule

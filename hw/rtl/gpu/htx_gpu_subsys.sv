@@ -19,6 +19,8 @@ module htx_gpu_subsys #(
   parameter bit          Iterative   = 1'b0,
   parameter int unsigned FifoDepth   = 64,
   parameter int unsigned FbPixels    = 76800,
+  parameter bit          FbSinglePort = 1'b0,  // htx_fb's SinglePort and Spram
+  parameter bit          FbSpram     = 1'b0,
   parameter int unsigned QBits       = 32,
   parameter int unsigned UvIntBits   = 16,
   parameter int unsigned PixelSteps  = 2,
@@ -199,7 +201,8 @@ module htx_gpu_subsys #(
   );
 
   // ---- Framebuffer and depth memories ----------------------------------------------------------
-  htx_fb #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels)) u_fb (
+  htx_fb #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels), .SinglePort(FbSinglePort),
+           .Spram(FbSpram)) u_fb (
     .clk_i, .rst_ni,
     .zr_en_i(zr_en), .zr_addr_i(zr_addr), .zr_data_o(zr_data),
     .wc_en_i(wc_en), .wz_en_i(wz_en), .w_addr_i(w_addr), .wc_data_i(wc_data), .wz_data_i(wz_data),

@@ -1,8 +1,9 @@
 // Place-and-route harness for the GPU (raster unit + texture unit with both bus ports): the bus
 // inputs come from a shift register fed by one pin, the outputs fold into one registered pin, so
 // the design fits the UP5K package while no input is a constant. The framebuffer and depth
-// memories shrink to 4 pixels (on a board they are SPRAM or external; docs/gpu.md, Synthesis), so
-// the cells counted are the two units, the bus decode and the fragment-side memory ports.
+// memories are the board's: 160 x 120 pixels of RGB565 and 16-bit depth in the UP5K's four SPRAM
+// blocks (`icebreaker`); `full`'s (24-bit depth, no SPRAM form) shrink to 4 pixels (docs/gpu.md,
+// Synthesis). So the cells counted are the two units, the bus decode and the memory ports.
 // Full selects htx_gpu_full, else htx_gpu_icebreaker (board texture memory in both).
 module htx_gpu_synth_top #(
   parameter bit Full = 1'b0
@@ -37,8 +38,8 @@ module htx_gpu_synth_top #(
     // One perspective method besides AFFINE on the board: RECIP_LUT (table reciprocal, no Newton
     // step); no raster event counters and a texture memory written only, as the board's SoC
     // builds it.
-    htx_gpu_icebreaker #(.FbPixels(4), .Methods(htx_raster_pkg::board_methods()),
-                         .RasterCounters(1'b0), .TexWindowRead(1'b0)) u_gpu (
+    htx_gpu_icebreaker #(.FbPixels(19200), .Methods(htx_raster_pkg::board_methods()),
+                         .RasterCounters(1'b0), .TexWindowRead(1'b0), .FbSpram(1'b1)) u_gpu (
       .clk_i, .rst_ni,
       .reg_req_valid_i(reg_valid), .reg_req_ready_o(reg_ready), .reg_req_addr_i(reg_addr),
       .reg_req_we_i(reg_we), .reg_req_be_i(reg_be), .reg_req_wdata_i(reg_wdata),

@@ -29,7 +29,8 @@ module htx_soc_fabric #(
   parameter int unsigned FbPixels    = 19200,  // 160 x 120, even
   parameter logic [4:0]  GpuMethods  = 5'b11111, // bit m: htx::Method m built (htx_soc)
   parameter bit          GpuCounters = 1'b1,     // the raster unit's CNT_* (CAPS.COUNTERS)
-  parameter bit          GpuTexRead  = 1'b1      // texture window reads (TEXTURE CAPS.WINDOW_READ)
+  parameter bit          GpuTexRead  = 1'b1,     // texture window reads (TEXTURE CAPS.WINDOW_READ)
+  parameter bit          GpuFbSpram  = 1'b0      // framebuffer and depth in SPRAM (the board's builds)
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -300,7 +301,7 @@ module htx_soc_fabric #(
   end
 
   htx_gpu_icebreaker #(.FbPixels(FbPixels), .Methods(GpuMethods), .RasterCounters(GpuCounters),
-                       .TexWindowRead(GpuTexRead)) u_gpu (
+                       .TexWindowRead(GpuTexRead), .FbSpram(GpuFbSpram)) u_gpu (
     .clk_i(gpu_clk), .rst_ni,
     .reg_req_valid_i(q_valid[3]), .reg_req_ready_o(q_ready[3]), .reg_req_addr_i(q_addr[96 +: 32]),
     .reg_req_we_i(q_we[3]), .reg_req_be_i(q_be[12 +: 4]), .reg_req_wdata_i(q_wdata[96 +: 32]),

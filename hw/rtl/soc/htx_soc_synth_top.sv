@@ -14,7 +14,7 @@ module htx_soc_synth_top #(
   logic [7:0] sim_code_unused, sim_char_unused;
 
   htx_soc #(.RamBytes(RamBytes), .Sim(1'b0), .StallInject(1'b0), .GpuMethods(htx_raster_pkg::board_methods()),
-    .GpuCounters(1'b0), .GpuTexRead(1'b0)) u_soc (
+    .GpuCounters(1'b0), .GpuTexRead(1'b0), .GpuFbSpram(1'b1)) u_soc (
     .clk_i, .rst_ni, .uart_rx_i, .uart_tx_o, .timer_irq_o,
     .sim_exit_o(sim_exit_unused), .sim_exit_code_o(sim_code_unused),
     .sim_putchar_o(sim_putchar_unused), .sim_char_o(sim_char_unused),
