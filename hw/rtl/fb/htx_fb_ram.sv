@@ -24,7 +24,7 @@ module htx_fb_ram #(
 `ifdef HTX_ICE40
   localparam bit UseSpram = Spram;
 `else
-  localparam bit UseSpram = 1'b0;
+  localparam bit UseSpram = Spram && 1'b0;  // (the behavioural memory everywhere else)
 `endif
 
   if (UseSpram) begin : g_spram

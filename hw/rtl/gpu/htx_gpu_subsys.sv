@@ -71,7 +71,9 @@ module htx_gpu_subsys #(
   output logic [31:0] mem_rsp_rdata_o,
   output logic        mem_rsp_err_o
 );
-  localparam int unsigned AddrW = 24;
+  // Pixel addresses as wide as the memory needs, with one value beyond it: the traversal makes
+  // an address that does not fit all ones, which the fragment stage does not write.
+  localparam int unsigned AddrW = $clog2(FbPixels + 1);
   localparam int unsigned TagW  = htx_raster_pkg::tex_tag_w(AddrW, ZBits);
   localparam int unsigned QW    = QBits + GF + 2;   // the raster's Q plane accumulator
   localparam int unsigned LocW  = UvIntBits + TF;   // local texel coordinates

@@ -438,6 +438,20 @@ module htx_raster_setup #(
   assign maxx_sel = least(~xs_lt);
   assign miny_sel = least(~ys_gt);
   assign maxy_sel = least(ys_gt);
+  // A box's upper bound clipped to the screen, min(b, lim - 1) (lim: FB_SIZE's 13-bit width or
+  // height). A limit of 2^(BoxW-1) or more exceeds every bound b can hold (the icebreaker
+  // configuration's boxes are 13 bits signed), so it clips nothing; in BoxW bits its lim - 1
+  // would wrap negative and empty the box.
+  function automatic logic signed [BoxW-1:0] clip_hi(input logic signed [BoxW-1:0] b,
+                                                     input logic [12:0] lim);
+    logic signed [BoxW-1:0] top;
+    logic                   beyond;
+    top = $signed(BoxW'({1'b0, lim}) - BoxW'(1));
+    if (BoxW <= 13) beyond = (32'(lim) >> (BoxW - 1)) != 0;
+    else beyond = 1'b0;
+    clip_hi = (!beyond && (b > top)) ? top : b;
+  endfunction
+
   if (!ValuesInFifo) begin : g_box_mux
     logic signed [XW-1:0]   minx, maxx, miny, maxy;
     logic signed [BoxW-1:0] xl, xh, yl, yh;
@@ -452,8 +466,8 @@ module htx_raster_setup #(
       yh = BoxW'((XW'(maxy) - XW'(128)) >>> 8);
       x_lo = xl[BoxW-1] ? '0 : xl;  // (the sign bit, not "< 0": see ethr)
       y_lo = yl[BoxW-1] ? '0 : yl;
-      x_hi = (xh > $signed(BoxW'({1'b0, width_i}) - BoxW'(1)))  ? $signed(BoxW'({1'b0, width_i}) - BoxW'(1))  : xh;
-      y_hi = (yh > $signed(BoxW'({1'b0, height_i}) - BoxW'(1))) ? $signed(BoxW'({1'b0, height_i}) - BoxW'(1)) : yh;
+      x_hi = clip_hi(xh, width_i);
+      y_hi = clip_hi(yh, height_i);
     end
     assign bx_off = '0;
     logic unused_rd;
@@ -466,7 +480,7 @@ module htx_raster_setup #(
     logic                   bx_min, bx_y;
     logic [1:0]             bx_sel;
     logic signed [XW-1:0]   bv;
-    logic signed [BoxW-1:0] bb, blim, bres;
+    logic signed [BoxW-1:0] bb, bres;
     logic signed [BoxW-1:0] x_lo_q, x_hi_q, y_lo_q, y_hi_q;
     assign bx_q   = rd_idx[1:0];  // (words 8..11: rd_idx[3] set, rd_idx[2] clear)
     logic unused_idx;
@@ -478,8 +492,7 @@ module htx_raster_setup #(
     assign bx_off = vert_word(bx_sel, bx_y ? 4'd1 : 4'd0);  // x, y: words 0, 1 of a vertex
     assign bv     = $signed(vr_data_i[XW-1:0]);
     assign bb     = BoxW'((bv + (bx_min ? XW'(127) : -XW'(128))) >>> 8);
-    assign blim   = $signed(BoxW'({1'b0, bx_y ? height_i : width_i}) - BoxW'(1));
-    assign bres   = bx_min ? (bb[BoxW-1] ? '0 : bb) : ((bb > blim) ? blim : bb);
+    assign bres   = bx_min ? (bb[BoxW-1] ? '0 : bb) : clip_hi(bb, bx_y ? height_i : width_i);
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         x_lo_q <= '0;

@@ -54,7 +54,8 @@ module htx_raster_subsys #(
   output logic [31:0] mem_rsp_rdata_o,
   output logic        mem_rsp_err_o
 );
-  localparam int unsigned AddrW   = 24;
+  // Pixel addresses as wide as the memory needs, with one value beyond it (as htx_gpu_subsys).
+  localparam int unsigned AddrW   = $clog2(FbPixels + 1);
   localparam int unsigned QW      = QBits + GF + 2;
   localparam int unsigned LocW    = UvIntBits + TF;
   localparam int unsigned TexTagW = htx_raster_pkg::tex_tag_w(AddrW, ZBits);

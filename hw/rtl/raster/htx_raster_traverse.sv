@@ -6,6 +6,10 @@
 // same clock, so a row costs its span length plus how far its start moved; an empty row costs one.
 // LookBehind = 0 (`icebreaker`) leaves out the left look (three edge adders and their tests): a row
 // whose start is found by walking left steps one column past it and back, two clocks more.
+// Framebuffer addresses are AddrW bits (the subsystem sizes them to its memory): a row offset or
+// address that does not fit (a large stride x height) sets a sticky flag for the triangle, and the
+// fragment's address is then all ones, beyond any memory of fewer than 2^AddrW - 1 pixels, so the
+// fragment stage writes nothing there (rather than at the address modulo 2^AddrW).
 // SerialRowBase = 1 (`icebreaker`) forms the first row's framebuffer offset y_lo * stride by shift
 // and add, one bit of y_lo per clock (13 clocks per triangle), instead of with a multiplier (a DSP).
 // SerialPlanes = 1 (`icebreaker`) keeps the plane accumulators in one block RAM and steps them one
@@ -82,8 +86,15 @@ module htx_raster_traverse #(
   logic signed [XCW-1:0]   x_lo_q, x_hi_q, x_q, xs_q;
   logic [12:0]             y_q, y_hi_q;
   logic [AddrW-1:0]        row_base_q;
+  logic                    row_over_q;  // row_base_q overflowed AddrW bits (sticky per triangle)
   logic [12:0]             base_y_q;   // SerialRowBase: y_lo's bits not yet taken, MSB first
   logic [3:0]              base_n_q;   // SerialRowBase: bits left
+  // Row offset sums one bit wider than the address, and than the 13-bit stride and 15-bit column.
+  localparam int unsigned RSW = ((AddrW > XCW) ? AddrW : XCW) + 1;
+  logic [RSW-1:0] base_dbl, base_add, row_next;
+  assign base_dbl = RSW'({row_base_q, 1'b0}) + (base_y_q[12] ? RSW'(stride_i) : '0);  // Horner's step
+  assign base_add = RSW'(row_base_q) + RSW'(stride_i);                          // the next row's
+  assign row_next = (state_q == StBase) ? base_dbl : base_add;
   logic [2:0]              thr_q;
   logic                    dneg_q;
   logic                    sweep_q;   // SerialPlanes: the planes are being stepped (0 otherwise)
@@ -331,6 +342,7 @@ module htx_raster_traverse #(
       y_q        <= '0;
       y_hi_q     <= '0;
       row_base_q <= '0;
+      row_over_q <= 1'b0;
       base_y_q   <= '0;
       base_n_q   <= '0;
       thr_q      <= '0;
@@ -354,10 +366,12 @@ module htx_raster_traverse #(
         y_hi_q     <= tri_y_hi_i;
         if (SerialRowBase) begin
           row_base_q <= '0;
+          row_over_q <= 1'b0;
           base_y_q   <= tri_y_lo_i;
           base_n_q   <= 4'd13;
         end else begin
-          row_base_q <= AddrW'(tri_y_lo_i) * AddrW'(stride_i);
+          row_base_q <= AddrW'(26'(tri_y_lo_i) * 26'(stride_i));
+          row_over_q <= ((26'(tri_y_lo_i) * 26'(stride_i)) >> AddrW) != '0;
         end
         thr_q      <= tri_thr_i;
         dneg_q     <= tri_dneg_i;
@@ -366,7 +380,8 @@ module htx_raster_traverse #(
       end
     end else if (SerialRowBase && (state_q == StBase)) begin
       // Horner's rule, MSB first: base = 2 base + bit * stride.
-      row_base_q <= (row_base_q << 1) + (base_y_q[12] ? AddrW'(stride_i) : '0);
+      row_base_q <= AddrW'(row_next);
+      if ((row_next >> AddrW) != '0) row_over_q <= 1'b1;
       base_y_q   <= base_y_q << 1;
       base_n_q   <= base_n_q - 4'd1;
       if (base_n_q == 4'd1) state_q <= StSeek;
@@ -383,7 +398,8 @@ module htx_raster_traverse #(
             state_q <= StIdle;
           end else begin
             y_q        <= y_q + 1'b1;
-            row_base_q <= row_base_q + AddrW'(stride_i);
+            row_base_q <= AddrW'(row_next);
+            if ((row_next >> AddrW) != '0) row_over_q <= 1'b1;
             if (act == ActRowSaved) x_q <= xs_q;
             state_q <= StSeek;
           end
@@ -608,6 +624,8 @@ module htx_raster_traverse #(
   // ---- Output register -------------------------------------------------------------------------
   logic [12:0]       out_x_q, out_y_q;
   logic [AddrW-1:0]  out_addr_q;
+  logic [RSW-1:0]    addr_sum;
+  assign addr_sum = RSW'(row_base_q) + RSW'($unsigned(x_q));  // (x is on the screen when emitted)
   logic              out_first_q, out_last_q, out_tfirst_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -629,7 +647,7 @@ module htx_raster_traverse #(
       if (emit) begin
         out_x_q     <= 13'(x_q);
         out_y_q     <= y_q;
-        out_addr_q  <= row_base_q + AddrW'(x_q);
+        out_addr_q  <= (row_over_q || ((addr_sum >> AddrW) != '0)) ? '1 : AddrW'(addr_sum);
         out_first_q <= first;
         out_tfirst_q <= tnew_q;
       end

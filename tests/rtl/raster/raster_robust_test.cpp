@@ -238,6 +238,37 @@ TEST(RasterRobust, DegenerateOffscreenAndHugeTriangles) {
   }
 }
 
+// A framebuffer whose stride x height exceeds the memory: a pixel whose address y stride + x is
+// beyond the memory is not written, also where the address modulo the hardware's address width
+// (19 bits for the 262,144-pixel memory) would land inside it. Rows 64 to 70 at stride 8191 are at
+// 524,224 .. 573,370, which wrap to pixels 0 .. 49,232.
+TEST(RasterRobust, AddressBeyondTheMemoryWritesNothing) {
+  for (const char* name : {"full", "icebreaker"}) {
+    const ModelConfig cfg = rtl_config(name);
+    rtl::RasterSim sim(name);
+    const uint32_t n = 65536;
+    ScreenScene s;
+    s.width = 256;
+    s.height = 256;
+    s.clear_color = 0x1234;
+    setup_frame(sim, s);  // clears pixels 0 .. 65,535
+    sim.write_reg(R(FB_SIZE), 200u | (8191u << 16));
+    sim.write_reg(R(FB_STRIDE), 8191u);
+    ScreenScene big;
+    big.tris.push_back(tri(70, 63.5, 150, 63.5, 110, 71.5, 0.3));
+    big.tris.push_back(tri(60, 100, 190, 100, 120, 180, 0.3));  // rows whose offset itself overflows
+    sim.push_words(words_of(big, cfg));
+    sim.wait_idle(10'000'000);
+    const uint32_t frags = sim.read_reg(R(CNT_FRAGMENTS)), pixels = sim.read_reg(R(CNT_PIXELS));
+    EXPECT_GT(frags, 1000u) << name;  // both triangles were walked
+    EXPECT_EQ(pixels, 0u) << name;
+    const std::vector<uint16_t> c = sim.read_color(n);
+    uint32_t written = 0;
+    for (uint32_t i = 0; i < n; ++i) written += c[i] != s.clear_color;
+    EXPECT_EQ(written, 0u) << name;
+  }
+}
+
 // Setup takes the box's bounds from the signs of the edge coefficients (no comparators): every
 // order of the vertices, with two of them sharing x or y or all three on a line, must give the
 // model's box. A box too small drops pixels, so the covered pixel counts and the frames are compared.

@@ -46,6 +46,15 @@ int64_t sext(uint64_t v, unsigned bits) {
   return static_cast<int64_t>((v ^ m) - m);
 }
 
+// The subsystem's pixel address width, $clog2(FbPixels + 1): the low bits of a texture request's tag.
+constexpr unsigned addr_width(uint32_t pixels) {
+  unsigned w = 0;
+  while ((uint64_t{1} << w) < uint64_t{pixels} + 1) ++w;
+  return w;
+}
+constexpr uint32_t kAddrMask = (uint32_t{1} << addr_width(RasterSim::kFbPixels)) - 1;
+static_assert(addr_width(262144) == 19 && addr_width(19200) == 15);
+
 // The public loop-back signals of htx_raster_subsys (their names carry the top's name). Widths:
 // CoordW, LocW, GradW of the configuration.
 #define HTX_READ_REQUEST(SUB, R, COORDW, LOCW, GRADW)                                      \
@@ -66,7 +75,7 @@ int64_t sext(uint64_t v, unsigned bits) {
     t->lod_shift = root->SUB##__DOT__tex_req_lod_shift;                     \
     t->lod_u = sext(root->SUB##__DOT__tex_req_lod_u, LOCW);                 \
     t->lod_v = sext(root->SUB##__DOT__tex_req_lod_v, LOCW);                 \
-    t->addr = root->SUB##__DOT__tex_req_tag[0] & 0xFFFFFFu;                 \
+    t->addr = root->SUB##__DOT__tex_req_tag[0] & kAddrMask;                 \
     return true;                                                                           \
   } while (0)
 
