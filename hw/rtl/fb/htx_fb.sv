@@ -78,10 +78,14 @@ module htx_fb #(
       c_wdata = req_wdata_i;
     end
   end
+  // SinglePort: one address for both ports (the raster's write, else the bus's), so the memory
+  // needs no read/write address multiplexer of its own.
+  logic [CAW-1:0] c_raddr;
+  assign c_raddr = SinglePort ? c_waddr : CAW'(bus_word);
   htx_fb_ram #(.LaneW(16), .Lanes(2), .Words(CWords), .Spram(Spram)) u_color (
     .clk_i,
     .re_i   (bus_rd_c),
-    .raddr_i(CAW'(bus_word)),
+    .raddr_i(c_raddr),
     .rdata_o(c_rdata),
     .we_i   (c_we),
     .waddr_i(c_waddr),
@@ -93,9 +97,15 @@ module htx_fb #(
   logic [ZAW-1:0] z_raddr, z_waddr;
   logic [ZBits-1:0] z_wdata, z_rdata;
   assign z_re    = zr_en_i || bus_rd_z;
-  assign z_raddr = zr_en_i ? ZAW'(zr_addr_i) : ZAW'(bus_word);
   assign z_we    = wz_en_i || bus_wr_z;
-  assign z_waddr = wz_en_i ? ZAW'(w_addr_i) : ZAW'(bus_word);
+  if (SinglePort) begin : g_zaddr_1p
+    // One address: the raster's read or write (never both in a clock), else the bus's.
+    assign z_raddr = zr_en_i ? ZAW'(zr_addr_i) : (wz_en_i ? ZAW'(w_addr_i) : ZAW'(bus_word));
+    assign z_waddr = z_raddr;
+  end else begin : g_zaddr_2p
+    assign z_raddr = zr_en_i ? ZAW'(zr_addr_i) : ZAW'(bus_word);
+    assign z_waddr = wz_en_i ? ZAW'(w_addr_i) : ZAW'(bus_word);
+  end
   assign z_wdata = wz_en_i ? wz_data_i : ZBits'(req_wdata_i);
   htx_fb_ram #(.LaneW(ZBits), .Lanes(1), .Words(FbPixels), .Spram(Spram)) u_depth (
     .clk_i,
