@@ -721,7 +721,12 @@ module htx_raster #(
   // ---- Texel back: drop what an abort left in the texture unit, combine, fragment stage ----------
   logic       req_fire, ret_fire, ret_keep, frag_ready;
   logic [7:0] out_cnt_q, drop_q, out_cnt_next;
-  logic [15:0] pend_q;
+  // Fragments between the traversal's output and the texture request. With SUBDIV's fragment
+  // FIFO, DIVFREE's unit or the pipelined divider that can be many; otherwise a handful (the
+  // iterative divider holds one, the request stage one, the shade stage at most one), so four
+  // bits do (the board's build). Simulation checks that the count never wraps.
+  localparam int unsigned PendW = (Methods[1] || HasDf || PixelPipelined) ? 16 : 4;
+  logic [PendW-1:0] pend_q;
   assign req_fire = rq_valid_q && rq_take;
   assign ret_fire = ret_valid && ret_ready;
   assign out_cnt_next = out_cnt_q + 8'(req_fire) - 8'(ret_fire);
@@ -807,10 +812,16 @@ module htx_raster #(
         pend_q <= '0;
       end else begin
         if (ret_fire && (drop_q != 0)) drop_q <= drop_q - 8'd1;
-        pend_q <= pend_q + 16'(tv_valid && tv_ready) - 16'(req_fire);
+        pend_q <= pend_q + PendW'(tv_valid && tv_ready) - PendW'(req_fire);
       end
     end
   end
+`ifndef SYNTHESIS
+  always_ff @(posedge clk_i) begin
+    if (!abort && (tv_valid && tv_ready) && !req_fire && (&pend_q))
+      $error("htx_raster: the pending-fragment count would wrap (PendW too narrow)");
+  end
+`endif
 
   logic frag_busy, clearing, pixel, clear_start;
   htx_raster_fragment #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels), .Forward(!Iterative),
