@@ -44,6 +44,6 @@ module htx_gpu_icebreaker #(
     .CoordW(20), .TF(10), .GradW(16), .LF(6), .TexFormats(3'b011), .TexFilters(3'b011),
     .TexSlots(4), .TexLanes(1), .TexShiftAdd(1'b0), .TexCounters(1'b0), .LogIdx(6),
     .RasterCounters(RasterCounters), .TexWindowRead(TexWindowRead),
-    .FbPixels(FbPixels), .FbSinglePort(1'b1), .FbSpram(FbSpram), .TexBAW(TexBAW), .Methods(Methods)
+    .FbPixels(FbPixels), .FbSpram(FbSpram), .TexBAW(TexBAW), .Methods(Methods)
   ) u_subsys (.*);
 endmodule

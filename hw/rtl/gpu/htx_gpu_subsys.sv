@@ -19,8 +19,7 @@ module htx_gpu_subsys #(
   parameter bit          Iterative   = 1'b0,
   parameter int unsigned FifoDepth   = 64,
   parameter int unsigned FbPixels    = 76800,
-  parameter bit          FbSinglePort = 1'b0,  // htx_fb's SinglePort and Spram
-  parameter bit          FbSpram     = 1'b0,
+  parameter bit          FbSpram     = 1'b0,   // htx_fb's Spram (needs Iterative)
   parameter int unsigned QBits       = 32,
   parameter int unsigned UvIntBits   = 16,
   parameter int unsigned PixelSteps  = 2,
@@ -203,7 +202,9 @@ module htx_gpu_subsys #(
   );
 
   // ---- Framebuffer and depth memories ----------------------------------------------------------
-  htx_fb #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels), .SinglePort(FbSinglePort),
+  // The iterative raster's fragment stage never reads and writes depth in one clock (its Forward
+  // = 0 schedule), so its memories can be single-ported.
+  htx_fb #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels), .SinglePort(Iterative),
            .Spram(FbSpram)) u_fb (
     .clk_i, .rst_ni,
     .zr_en_i(zr_en), .zr_addr_i(zr_addr), .zr_data_o(zr_data),

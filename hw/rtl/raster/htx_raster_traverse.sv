@@ -95,6 +95,10 @@ module htx_raster_traverse #(
   assign base_dbl = RSW'({row_base_q, 1'b0}) + (base_y_q[12] ? RSW'(stride_i) : '0);  // Horner's step
   assign base_add = RSW'(row_base_q) + RSW'(stride_i);                          // the next row's
   assign row_next = (state_q == StBase) ? base_dbl : base_add;
+  logic row_next_over;  // row_next does not fit AddrW bits
+  assign row_next_over = (row_next >> AddrW) != '0;
+  logic [25:0] row_first;  // SerialRowBase = 0: y_lo * stride by a multiplier (13 x 13 bits)
+  assign row_first = 26'(tri_y_lo_i) * 26'(stride_i);
   logic [2:0]              thr_q;
   logic                    dneg_q;
   logic                    sweep_q;   // SerialPlanes: the planes are being stepped (0 otherwise)
@@ -370,8 +374,8 @@ module htx_raster_traverse #(
           base_y_q   <= tri_y_lo_i;
           base_n_q   <= 4'd13;
         end else begin
-          row_base_q <= AddrW'(26'(tri_y_lo_i) * 26'(stride_i));
-          row_over_q <= ((26'(tri_y_lo_i) * 26'(stride_i)) >> AddrW) != '0;
+          row_base_q <= AddrW'(row_first);
+          row_over_q <= (row_first >> AddrW) != '0;
         end
         thr_q      <= tri_thr_i;
         dneg_q     <= tri_dneg_i;
@@ -381,7 +385,7 @@ module htx_raster_traverse #(
     end else if (SerialRowBase && (state_q == StBase)) begin
       // Horner's rule, MSB first: base = 2 base + bit * stride.
       row_base_q <= AddrW'(row_next);
-      if ((row_next >> AddrW) != '0) row_over_q <= 1'b1;
+      if (row_next_over) row_over_q <= 1'b1;
       base_y_q   <= base_y_q << 1;
       base_n_q   <= base_n_q - 4'd1;
       if (base_n_q == 4'd1) state_q <= StSeek;
@@ -399,7 +403,7 @@ module htx_raster_traverse #(
           end else begin
             y_q        <= y_q + 1'b1;
             row_base_q <= AddrW'(row_next);
-            if ((row_next >> AddrW) != '0) row_over_q <= 1'b1;
+            if (row_next_over) row_over_q <= 1'b1;
             if (act == ActRowSaved) x_q <= xs_q;
             state_q <= StSeek;
           end

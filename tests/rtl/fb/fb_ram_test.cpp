@@ -4,40 +4,23 @@
 // read's data checked in the clock after it and held until the next read (label `rtl`).
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cstdint>
 #include <random>
 #include <vector>
 
 #include "Vhtx_fb_ram_tb.h"
+#include "vmodel_clock.hpp"
 
 namespace {
-
-class FbRam {
- public:
-  FbRam() {
-    m_.clk_i = 0;
-    m_.re_i = 0;
-    m_.we_i = 0;
-    m_.eval();
-  }
-  void clock() {
-    m_.clk_i = 1;
-    m_.eval();
-    m_.clk_i = 0;
-    m_.eval();
-  }
-  Vhtx_fb_ram_tb& pins() { return m_; }
-
- private:
-  Vhtx_fb_ram_tb m_;
-};
 
 constexpr uint32_t kDepthWords = 19200;
 
 TEST(FbRamSpram, ReadsWhatWasWrittenInBothShapes) {
-  FbRam ram;
-  auto& p = ram.pins();
+  Vhtx_fb_ram_tb p;
+  p.clk_i = 0;
+  p.re_i = 0;
+  p.we_i = 0;
+  p.eval();
   // The colour memory sees an address's low 14 bits (the test bench wires them), so its reference
   // has 16K words: the colour SPRAM block holds them all, its 9,600 and the rest.
   std::vector<uint32_t> color(16384, 0);
@@ -56,7 +39,7 @@ TEST(FbRamSpram, ReadsWhatWasWrittenInBothShapes) {
   // Every word written first, so each read has a defined reference.
   for (uint32_t a = 0; a < kDepthWords; ++a) {
     write(a, 3, a * 0x9E3779B9u);
-    ram.clock();
+    htx::raster_test::clock_edge(p);
   }
   p.we_i = 0;
 
@@ -79,7 +62,7 @@ TEST(FbRamSpram, ReadsWhatWasWrittenInBothShapes) {
     } else if (op == 2) {
       write(rng() % kDepthWords, rng() % 4, rng());
     }
-    ram.clock();
+    htx::raster_test::clock_edge(p);
     if (op < 2) have_read = true;
     if (have_read) {
       ASSERT_EQ(p.color_rdata_o, want_color) << "clock " << i;

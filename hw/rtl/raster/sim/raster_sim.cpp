@@ -1,5 +1,6 @@
 #include "htx/rtl/raster_sim.hpp"
 
+#include <bit>
 #include <cstddef>
 #include <stdexcept>
 
@@ -46,14 +47,9 @@ int64_t sext(uint64_t v, unsigned bits) {
   return static_cast<int64_t>((v ^ m) - m);
 }
 
-// The subsystem's pixel address width, $clog2(FbPixels + 1): the low bits of a texture request's tag.
-constexpr unsigned addr_width(uint32_t pixels) {
-  unsigned w = 0;
-  while ((uint64_t{1} << w) < uint64_t{pixels} + 1) ++w;
-  return w;
-}
-constexpr uint32_t kAddrMask = (uint32_t{1} << addr_width(RasterSim::kFbPixels)) - 1;
-static_assert(addr_width(262144) == 19 && addr_width(19200) == 15);
+// The subsystem's pixel address width, $clog2(FbPixels + 1), which is the bit width of FbPixels:
+// the low bits of a texture request's tag.
+constexpr uint32_t kAddrMask = (uint32_t{1} << std::bit_width(RasterSim::kFbPixels)) - 1;
 
 // The public loop-back signals of htx_raster_subsys (their names carry the top's name). Widths:
 // CoordW, LocW, GradW of the configuration.
