@@ -720,7 +720,11 @@ module htx_raster #(
 
   // ---- Texel back: drop what an abort left in the texture unit, combine, fragment stage ----------
   logic       req_fire, ret_fire, ret_keep, frag_ready;
-  logic [7:0] out_cnt_q, drop_q, out_cnt_next;
+  // Requests in the texture unit (out_cnt_q) and those an abort left there to drop (drop_q). The
+  // board's texture unit (Iterative's) holds at most five, one a sampler stage, so four bits do;
+  // simulation checks that the count never wraps.
+  localparam int unsigned OutW = Iterative ? 4 : 8;
+  logic [OutW-1:0] out_cnt_q, drop_q, out_cnt_next;
   // Fragments between the traversal's output and the texture request. With SUBDIV's fragment
   // FIFO, DIVFREE's unit or the pipelined divider that can be many; otherwise a handful (the
   // iterative divider holds one, the request stage one, the shade stage at most one), so four
@@ -729,7 +733,7 @@ module htx_raster #(
   logic [PendW-1:0] pend_q;
   assign req_fire = rq_valid_q && rq_take;
   assign ret_fire = ret_valid && ret_ready;
-  assign out_cnt_next = out_cnt_q + 8'(req_fire) - 8'(ret_fire);
+  assign out_cnt_next = out_cnt_q + OutW'(req_fire) - OutW'(ret_fire);
   assign ret_ready = (drop_q != 0) || c_in_ready;
   assign ret_keep = ret_valid && (drop_q == 0) && !abort;
 
@@ -811,7 +815,7 @@ module htx_raster #(
         drop_q <= out_cnt_next;
         pend_q <= '0;
       end else begin
-        if (ret_fire && (drop_q != 0)) drop_q <= drop_q - 8'd1;
+        if (ret_fire && (drop_q != 0)) drop_q <= drop_q - 1'b1;
         pend_q <= pend_q + PendW'(tv_valid && tv_ready) - PendW'(req_fire);
       end
     end
@@ -820,6 +824,8 @@ module htx_raster #(
   always_ff @(posedge clk_i) begin
     if (!abort && (tv_valid && tv_ready) && !req_fire && (&pend_q))
       $error("htx_raster: the pending-fragment count would wrap (PendW too narrow)");
+    if (req_fire && !ret_fire && (&out_cnt_q))
+      $error("htx_raster: the texture unit's request count would wrap (OutW too narrow)");
   end
 `endif
 
