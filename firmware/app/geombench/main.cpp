@@ -5,9 +5,15 @@
 //   geombench <scene> vertices <n> projected <p> cycles/vertex <c.cc>
 //   geombench <scene> triangles <n> sent <s> cycles/triangle <c>
 //   geombench all vertices <n> cycles/vertex <c.cc>
+// and, for each triangle sent, what triangle setup would cost in firmware (htx/fw/tri_setup.h,
+// docs/area.md "Setup in firmware"): coverage, 1/det, the planes of z, r, g, b, q, uq, vq and of
+// AFFINE's u, v, and AFFINE's six vertex divisions, with the `icebreaker` raster's parameters:
+//   geombench <scene> setup triangles <s> cycles/triangle <c>
 #include <stdint.h>
 #include <stdio.h>
 
+#include "htx/fw/tri_setup.h"
+#include "htx/fw/vertex_record.h"
 #include "htx/hal/timer.h"
 #include "htx/render/pipeline.h"
 #include "scenes.hpp"
@@ -22,6 +28,51 @@ htx::render::ScreenVert g_screen[kMaxVertices];
 uint8_t g_codes[kMaxVertices];
 
 void count_triangle(void* context, uint32_t, const uint32_t*) { ++*static_cast<uint32_t*>(context); }
+
+// Triangle setup in firmware for each triangle sent, timed on its own.
+struct SetupTally {
+  uint32_t triangles = 0;
+  uint64_t cycles = 0;
+  int64_t checksum = 0;  // keeps the results live
+};
+
+void time_setup(void* context, uint32_t, const uint32_t* words) {
+  SetupTally& t = *static_cast<SetupTally*>(context);
+  htx::fw::TriangleRecord rec;
+  htx::fw::unpack_triangle(words, &rec);
+  // The `icebreaker` raster's setup: W = 24, k = 8, g = 2, two Newton steps, 16 gradient and 10
+  // texel fraction bits, a 160 x 120 screen.
+  static uint32_t table[256];
+  if (table[0] == 0) htx::fw::recip_fill_table(8, 2, table);  // once, as firmware would at start
+  const htx::fw::RecipSetup rp{8, 2, 24, 2, table};
+  const uint64_t t0 = htx::hal::cpu_cycles();
+  htx::fw::CoverageSetup cs;
+  htx::fw::setup_coverage(rec, 160, 120, &cs);
+  if (cs.det != 0 && !cs.empty) {
+    const htx::fw::RecipResult inv = htx::fw::reciprocal(rp, static_cast<uint64_t>(cs.det));
+    htx::fw::Int128 v[3];
+    int64_t sum = 0;
+    for (int attr = 0; attr < 9; ++attr) {
+      for (int k = 0; k < 3; ++k) {
+        const htx::fw::VertexRecord& x = cs.rec.v[k];
+        switch (attr) {
+          case 0: v[k] = htx::fw::u128_from(x.z); break;
+          case 1: v[k] = htx::fw::u128_from(x.q); break;
+          case 2: v[k] = htx::fw::i128_from(x.uq); break;
+          case 3: v[k] = htx::fw::i128_from(x.vq); break;
+          case 7: v[k] = htx::fw::i128_from(htx::fw::divide_fixed(rp, htx::fw::i128_from(x.uq), x.q ? x.q : 1, 10)); break;
+          case 8: v[k] = htx::fw::i128_from(htx::fw::divide_fixed(rp, htx::fw::i128_from(x.vq), x.q ? x.q : 1, 10)); break;
+          default: v[k] = htx::fw::u128_from((x.rgba >> (8 * (attr - 4))) & 0xFF); break;
+        }
+      }
+      const htx::fw::PlaneSetup p = htx::fw::make_plane(cs, v, inv, 16);
+      sum += static_cast<int64_t>(p.gx.lo ^ p.gy.lo ^ p.base.lo);
+    }
+    t.checksum ^= sum;
+  }
+  t.cycles += htx::hal::cpu_cycles() - t0;
+  ++t.triangles;
+}
 
 // x.xx without floating point.
 void print_ratio(uint64_t num, uint64_t den) {
@@ -74,6 +125,14 @@ int main() {
     printf("geombench %s triangles %lu sent %lu clipped %lu cycles/triangle %lu\n", sc.name,
            static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(sent),
            static_cast<unsigned long>(st.clipped), static_cast<unsigned long>(dc / sc.triangle_count));
+
+    SetupTally tally;
+    if (htx::render::draw_mesh(frame, sc.view_proj, mesh, &cache, {time_setup, &tally}, &st) == htx::render::kDrawOk &&
+        tally.triangles != 0) {
+      printf("geombench %s setup triangles %lu cycles/triangle %lu (checksum %08lx)\n", sc.name,
+             static_cast<unsigned long>(tally.triangles), static_cast<unsigned long>(tally.cycles / tally.triangles),
+             static_cast<unsigned long>(static_cast<uint64_t>(tally.checksum) & 0xFFFFFFFFu));
+    }
   }
   printf("geombench all vertices %lu cycles/vertex ", static_cast<unsigned long>(all_vertices));
   print_ratio(all_cycles, all_vertices);
