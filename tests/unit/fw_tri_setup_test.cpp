@@ -4,6 +4,8 @@
 // and AFFINE's vertex divisions.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <random>
 #include <string>
