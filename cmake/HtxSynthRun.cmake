@@ -39,7 +39,13 @@ set(area_stat ${WORK}/${NAME}.area.stat.json)
 run_yosys(${AREA_TOP} "${area_files}" ${area_stat} "" ${WORK}/${NAME}.area.yosys.log)
 cell_count(${area_stat} SB_LUT4 lut4)
 cell_count(${area_stat} SB_MAC16 dsp)
-cell_count(${area_stat} SB_RAM40_4K ebr)
+# Block RAMs in every clock-polarity form (Yosys maps a memory written or read on a falling edge
+# to SB_RAM40_4KNW, NR or NRNW).
+set(ebr 0)
+foreach(kind SB_RAM40_4K SB_RAM40_4KNR SB_RAM40_4KNW SB_RAM40_4KNRNW)
+  cell_count(${area_stat} ${kind} n)
+  math(EXPR ebr "${ebr} + ${n}")
+endforeach()
 cell_count(${area_stat} SB_SPRAM256KA spram)
 
 set(netlist ${WORK}/${NAME}.pnr.netlist.json)
