@@ -81,13 +81,6 @@ inline constexpr Int128 i128_shift_round(Int128 a, int s) {
 }
 
 // Index of the most significant set bit of an unsigned 64-bit number (0 for 1); -1 for zero.
-inline constexpr int msb_index_u64(uint64_t x) {
-  int i = -1;
-  while (x != 0) {
-    x >>= 1;
-    ++i;
-  }
-  return i;
-}
+inline constexpr int msb_index_u64(uint64_t x) { return x == 0 ? -1 : 63 - __builtin_clzll(x); }
 
 }  // namespace htx::fw
