@@ -22,60 +22,62 @@ using namespace std::chrono_literals;
 using htx::model::i128;
 using htx::model::u128;
 
+htx::fw::Int128 to_fw(i128 v) {
+  const auto u = static_cast<u128>(v);
+  return htx::fw::Int128{static_cast<uint64_t>(u), static_cast<uint64_t>(u >> 64)};
+}
+
+// setup_cases.hpp's checksum interface on the model's setup (coverage is the firmware's code in
+// both; the reciprocal, the planes and the divisions are the model's own).
+struct ModelSetup {
+  const setupcheck::Config& c;
+  htx::model::RecipParams recip;
+  htx::fw::CoverageSetup coverage(const htx::fw::TriangleRecord& rec, int32_t width, int32_t height) const {
+    return htx::model::setup_coverage(rec, width, height);
+  }
+  htx::fw::RecipResult reciprocal(int64_t det) const {
+    const htx::model::Reciprocal r = htx::model::reciprocal(recip, static_cast<u128>(det));
+    return {r.value, r.shift};
+  }
+  htx::fw::PlaneSetup plane(const htx::fw::CoverageSetup& s, int plane, htx::fw::RecipResult inv) const {
+    std::array<i128, 3> v{};
+    for (int k = 0; k < 3; ++k) v[k] = htx::fw::plane_value(s.rec.v[k], plane);
+    const htx::model::Plane p = htx::model::make_plane(s, v, {inv.value, inv.shift}, c.params.grad_frac_bits);
+    htx::fw::PlaneSetup f;
+    f.base = to_fw(p.base);
+    f.gx = to_fw(p.gx);
+    f.gy = to_fw(p.gy);
+    f.x0 = p.x0;
+    f.y0 = p.y0;
+    return f;
+  }
+  int64_t divide(int64_t num, uint32_t q) const {
+    return htx::model::divide_fixed(recip, num, q, c.params.texcoord_frac_bits);
+  }
+};
+
 // The checksum of one configuration, computed with the model.
 uint32_t model_checksum(const setupcheck::Config& c) {
-  const htx::model::RecipParams rp{c.recip_k, c.recip_g, c.recip_width, c.setup_steps};
-  setupcheck::Lcg gen{2026};
-  uint32_t crc = 0;
-  for (uint32_t i = 0; i < setupcheck::kTriangles; ++i) {
-    const htx::fw::TriangleRecord rec = setupcheck::make_record(c, gen);
-    const htx::model::TriSetup s = htx::model::setup_coverage(rec, c.width, c.height);
-    crc = setupcheck::fold(crc, static_cast<uint64_t>(s.det));
-    if (s.det == 0) continue;
-    crc = setupcheck::fold(crc, s.empty ? 1 : 0);
-    crc = setupcheck::fold(crc, static_cast<uint64_t>(static_cast<int64_t>(s.x_lo)) ^ (static_cast<uint64_t>(s.x_hi) << 32));
-    crc = setupcheck::fold(crc, static_cast<uint64_t>(static_cast<int64_t>(s.y_lo)) ^ (static_cast<uint64_t>(s.y_hi) << 32));
-    for (const htx::model::Edge& e : s.edges) {
-      crc = setupcheck::fold(crc, static_cast<uint64_t>(e.a));
-      crc = setupcheck::fold(crc, static_cast<uint64_t>(e.b));
-      crc = setupcheck::fold(crc, static_cast<uint64_t>(e.threshold));
-    }
-    if (s.empty) continue;
-    const htx::model::Reciprocal inv = htx::model::reciprocal(rp, static_cast<u128>(s.det));
-    crc = setupcheck::fold(crc, inv.value);
-    crc = setupcheck::fold(crc, static_cast<uint64_t>(static_cast<int64_t>(inv.shift)));
-    for (int a = 0; a < 8; ++a) {
-      std::array<i128, 3> v{};
-      for (int k = 0; k < 3; ++k) v[k] = setupcheck::attribute(s.rec.v[k], a);
-      const htx::model::Plane p = htx::model::make_plane(s, v, {inv.value, inv.shift}, c.grad_frac_bits);
-      for (const i128 w : {p.base, p.gx, p.gy}) {
-        crc = setupcheck::fold(crc, static_cast<uint64_t>(static_cast<u128>(w)));
-        crc = setupcheck::fold(crc, static_cast<uint64_t>(static_cast<u128>(w) >> 64));
-      }
-    }
-    for (const htx::fw::VertexRecord& v : s.rec.v) {
-      for (const int64_t n : {v.uq, v.vq}) {
-        crc = setupcheck::fold(crc, static_cast<uint64_t>(htx::model::divide_fixed(rp, n, v.q, c.texcoord_frac_bits)));
-      }
-    }
-  }
-  return crc;
+  ModelSetup setup{c, {c.params.recip.k, c.params.recip.g, c.params.recip.width, c.params.recip.steps}};
+  uint32_t drawn = 0;
+  return setupcheck::checksum(c, setup, &drawn);
 }
 
 TEST(SystemSetupCheck, FirmwareSetupOnTheCpuMatchesTheModel) {
   // The shared configurations are the model's.
   for (const setupcheck::Config& c : setupcheck::kConfigs) {
     const htx::ModelConfig& m = htx::model_config(c.name);
-    EXPECT_EQ(c.format.xy_int_bits, m.xy_int_bits) << c.name;
-    EXPECT_EQ(c.format.z_bits, m.z_bits) << c.name;
-    EXPECT_EQ(c.format.q_bits, m.q_bits) << c.name;
-    EXPECT_EQ(c.format.uv_int_bits, m.uv_int_bits) << c.name;
-    EXPECT_EQ(c.recip_k, m.recip_table_bits) << c.name;
-    EXPECT_EQ(c.recip_g, m.recip_guard_bits) << c.name;
-    EXPECT_EQ(c.recip_width, m.recip_width) << c.name;
-    EXPECT_EQ(c.setup_steps, m.setup_nr_steps) << c.name;
-    EXPECT_EQ(c.grad_frac_bits, m.grad_frac_bits) << c.name;
-    EXPECT_EQ(c.texcoord_frac_bits, m.texcoord_frac_bits) << c.name;
+    const htx::fw::SetupParams& p = c.params;
+    EXPECT_EQ(p.format.xy_int_bits, m.xy_int_bits) << c.name;
+    EXPECT_EQ(p.format.z_bits, m.z_bits) << c.name;
+    EXPECT_EQ(p.format.q_bits, m.q_bits) << c.name;
+    EXPECT_EQ(p.format.uv_int_bits, m.uv_int_bits) << c.name;
+    EXPECT_EQ(p.recip.k, m.recip_table_bits) << c.name;
+    EXPECT_EQ(p.recip.g, m.recip_guard_bits) << c.name;
+    EXPECT_EQ(p.recip.width, m.recip_width) << c.name;
+    EXPECT_EQ(p.recip.steps, m.setup_nr_steps) << c.name;
+    EXPECT_EQ(p.grad_frac_bits, m.grad_frac_bits) << c.name;
+    EXPECT_EQ(p.texcoord_frac_bits, m.texcoord_frac_bits) << c.name;
   }
 
   const auto r = htx::test::run_program(

@@ -144,14 +144,7 @@ TEST_P(FwTriSetup, MatchesTheModelBitForBit) {
       std::array<i128, 3> mv{};
       Int128 fv[3];
       for (int k = 0; k < 3; ++k) {
-        const auto& v = ms.rec.v[k];
-        switch (attr) {
-          case 0: mv[k] = v.z; break;
-          case 1: mv[k] = v.q; break;
-          case 2: mv[k] = v.uq; break;
-          case 3: mv[k] = v.vq; break;
-          default: mv[k] = (v.rgba >> (8 * (attr - 4))) & 0xFF; break;
-        }
+        mv[k] = htx::fw::plane_value(ms.rec.v[k], attr);
         fv[k] = from_i128(mv[k]);
       }
       const htx::model::Plane mpl = htx::model::make_plane(ms, mv, {mr.value, mr.shift}, cfg.grad_frac_bits);

@@ -29,8 +29,10 @@ uint8_t g_codes[kMaxVertices];
 
 void count_triangle(void* context, uint32_t, const uint32_t*) { ++*static_cast<uint32_t*>(context); }
 
-// Triangle setup in firmware for each triangle sent, timed on its own.
+// Triangle setup in firmware for each triangle sent, timed on its own, with the `icebreaker`
+// raster's parameters (htx::fw::kIcebreakerSetup) on a 160 x 120 screen.
 struct SetupTally {
+  htx::fw::RecipSetup recip;  // with its table filled
   uint32_t triangles = 0;
   uint64_t cycles = 0;
   int64_t checksum = 0;  // keeps the results live
@@ -38,34 +40,30 @@ struct SetupTally {
 
 void time_setup(void* context, uint32_t, const uint32_t* words) {
   SetupTally& t = *static_cast<SetupTally*>(context);
+  const htx::fw::SetupParams& sp = htx::fw::kIcebreakerSetup;
   htx::fw::TriangleRecord rec;
   htx::fw::unpack_triangle(words, &rec);
-  // The `icebreaker` raster's setup: W = 24, k = 8, g = 2, two Newton steps, 16 gradient and 10
-  // texel fraction bits, a 160 x 120 screen.
-  static uint32_t table[256];
-  if (table[0] == 0) htx::fw::recip_fill_table(8, 2, table);  // once, as firmware would at start
-  const htx::fw::RecipSetup rp{8, 2, 24, 2, table};
   const uint64_t t0 = htx::hal::cpu_cycles();
   htx::fw::CoverageSetup cs;
   htx::fw::setup_coverage(rec, 160, 120, &cs);
   if (cs.det != 0 && !cs.empty) {
-    const htx::fw::RecipResult inv = htx::fw::reciprocal(rp, static_cast<uint64_t>(cs.det));
+    const htx::fw::RecipResult inv = htx::fw::reciprocal(t.recip, static_cast<uint64_t>(cs.det));
     htx::fw::Int128 v[3];
     int64_t sum = 0;
-    for (int attr = 0; attr < 9; ++attr) {
+    // Planes z, q, uq, vq, r, g, b (plane_value 0..6), then AFFINE's u and v from its vertex
+    // divisions.
+    for (int plane = 0; plane < 9; ++plane) {
       for (int k = 0; k < 3; ++k) {
         const htx::fw::VertexRecord& x = cs.rec.v[k];
-        switch (attr) {
-          case 0: v[k] = htx::fw::u128_from(x.z); break;
-          case 1: v[k] = htx::fw::u128_from(x.q); break;
-          case 2: v[k] = htx::fw::i128_from(x.uq); break;
-          case 3: v[k] = htx::fw::i128_from(x.vq); break;
-          case 7: v[k] = htx::fw::i128_from(htx::fw::divide_fixed(rp, htx::fw::i128_from(x.uq), x.q ? x.q : 1, 10)); break;
-          case 8: v[k] = htx::fw::i128_from(htx::fw::divide_fixed(rp, htx::fw::i128_from(x.vq), x.q ? x.q : 1, 10)); break;
-          default: v[k] = htx::fw::u128_from((x.rgba >> (8 * (attr - 4))) & 0xFF); break;
+        if (plane < 7) {
+          v[k] = htx::fw::i128_from(htx::fw::plane_value(x, plane));
+        } else {
+          const int64_t num = plane == 7 ? x.uq : x.vq;
+          v[k] = htx::fw::i128_from(htx::fw::divide_fixed(t.recip, htx::fw::i128_from(num), x.q ? x.q : 1,
+                                                          sp.texcoord_frac_bits));
         }
       }
-      const htx::fw::PlaneSetup p = htx::fw::make_plane(cs, v, inv, 16);
+      const htx::fw::PlaneSetup p = htx::fw::make_plane(cs, v, inv, sp.grad_frac_bits);
       sum += static_cast<int64_t>(p.gx.lo ^ p.gy.lo ^ p.base.lo);
     }
     t.checksum ^= sum;
@@ -80,9 +78,14 @@ void print_ratio(uint64_t num, uint64_t den) {
   printf("%lu.%02lu", static_cast<unsigned long>(hundredths / 100), static_cast<unsigned long>(hundredths % 100));
 }
 
+uint32_t g_recip_table[256];  // 2^k entries of kIcebreakerSetup's table
+
 }  // namespace
 
 int main() {
+  htx::fw::RecipSetup setup_recip = htx::fw::kIcebreakerSetup.recip;
+  htx::fw::recip_fill_table(setup_recip.k, setup_recip.g, g_recip_table);  // once, as firmware would
+  setup_recip.table = g_recip_table;
   uint32_t n = 0;
   const geombench::BenchScene* scenes = geombench::bench_scenes(&n);
   htx::render::VertexCache cache{g_clip, g_screen, g_codes, kMaxVertices};
@@ -126,7 +129,7 @@ int main() {
            static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(sent),
            static_cast<unsigned long>(st.clipped), static_cast<unsigned long>(dc / sc.triangle_count));
 
-    SetupTally tally;
+    SetupTally tally{setup_recip};
     if (htx::render::draw_mesh(frame, sc.view_proj, mesh, &cache, {time_setup, &tally}, &st) == htx::render::kDrawOk &&
         tally.triangles != 0) {
       printf("geombench %s setup triangles %lu cycles/triangle %lu (checksum %08lx)\n", sc.name,

@@ -1,7 +1,6 @@
 #include "htx/model/raster_setup.hpp"
 
 #include <algorithm>
-#include <utility>
 
 namespace htx::model {
 
@@ -11,40 +10,7 @@ i128 Plane::at(int64_t px, int64_t py) const {
 
 TriSetup setup_coverage(const fw::TriangleRecord& rec, int width, int height) {
   TriSetup s;
-  s.rec = rec;
-  auto& v = s.rec.v;
-  const int64_t det = (int64_t{v[1].x} - v[0].x) * (int64_t{v[2].y} - v[0].y) -
-                      (int64_t{v[2].x} - v[0].x) * (int64_t{v[1].y} - v[0].y);
-  if (det == 0) return s;
-  if (det < 0) std::swap(v[1], v[2]);
-  s.det = det < 0 ? -det : det;
-  for (int k = 0; k < 3; ++k) {
-    const auto& p = v[k];
-    const auto& q = v[(k + 1) % 3];
-    const int64_t dx = int64_t{q.x} - p.x, dy = int64_t{q.y} - p.y;
-    Edge& e = s.edges[k];
-    e.a = -dy;
-    e.b = dx;
-    e.x0 = p.x;
-    e.y0 = p.y;
-    // y points down, inside is E > 0: an edge going up is a left edge, a horizontal edge going
-    // right is a top edge. Pixels exactly on those belong to this triangle.
-    e.threshold = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;
-  }
-  const int64_t minx = std::min({int64_t{v[0].x}, int64_t{v[1].x}, int64_t{v[2].x}});
-  const int64_t maxx = std::max({int64_t{v[0].x}, int64_t{v[1].x}, int64_t{v[2].x}});
-  const int64_t miny = std::min({int64_t{v[0].y}, int64_t{v[1].y}, int64_t{v[2].y}});
-  const int64_t maxy = std::max({int64_t{v[0].y}, int64_t{v[1].y}, int64_t{v[2].y}});
-  // Pixel centres 256 i + 128 inside [min, max].
-  const int64_t xl = static_cast<int64_t>(ceil_div(minx - 128, 256));
-  const int64_t xh = static_cast<int64_t>(floor_div(maxx - 128, 256));
-  const int64_t yl = static_cast<int64_t>(ceil_div(miny - 128, 256));
-  const int64_t yh = static_cast<int64_t>(floor_div(maxy - 128, 256));
-  s.x_lo = static_cast<int>(std::max<int64_t>(xl, 0));
-  s.x_hi = static_cast<int>(std::min<int64_t>(xh, width - 1));
-  s.y_lo = static_cast<int>(std::max<int64_t>(yl, 0));
-  s.y_hi = static_cast<int>(std::min<int64_t>(yh, height - 1));
-  s.empty = s.x_lo > s.x_hi || s.y_lo > s.y_hi;
+  fw::setup_coverage(rec, width, height, &s);
   return s;
 }
 

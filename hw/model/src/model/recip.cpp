@@ -2,15 +2,12 @@
 
 #include <stdexcept>
 
+#include "htx/fw/tri_setup.h"
+
 namespace htx::model {
 
-uint32_t recip_table_entry(unsigned k, unsigned g, uint32_t i) {
-  // 2 / (a + b) with a + b = 2 + (2i + 1) / 2^k, scaled by 2^(k+g+1):
-  // 2^(2k+g+2) / (2^(k+1) + 2i + 1). The divisor is odd, so there is never an exact tie.
-  const uint64_t num = uint64_t{1} << (2 * k + g + 2);
-  const uint64_t den = (uint64_t{1} << (k + 1)) + 2 * uint64_t{i} + 1;
-  return static_cast<uint32_t>((2 * num + den) / (2 * den));
-}
+// The firmware's (firmware/lib tri_setup.h): one table for the model and the firmware.
+uint32_t recip_table_entry(unsigned k, unsigned g, uint32_t i) { return fw::recip_table_entry(k, g, i); }
 
 uint64_t recip_mantissa(const RecipParams& p, uint64_t mantissa) {
   const unsigned w = p.width;

@@ -3,7 +3,9 @@
 // unit (table and Newton steps), attribute planes and the divider's fixed-point division. The
 // same integer expressions as the host model (htx/model/raster_setup.hpp, recip.hpp), bit for bit,
 // so that firmware can do setup for a raster unit that leaves it out (docs/area.md, "Setup in
-// firmware"); tests/unit/fw_tri_setup_test.cpp holds it to the model.
+// firmware"). Coverage and the reciprocal table are the model's too (it calls them, as it uses the
+// vertex record's encoder); the rest is held to the model's checked 128-bit arithmetic by
+// tests/unit/fw_tri_setup_test.cpp.
 #pragma once
 
 #include <stdint.h>
@@ -65,8 +67,30 @@ struct PlaneSetup {
 // The plane through the setup's (reordered) vertices with values[3]; inv_det = 1/det.
 PlaneSetup make_plane(const CoverageSetup& s, const Int128 values[3], RecipResult inv_det, uint32_t frac_bits);
 
+// The vertex value of setup's attribute plane `plane` (0 z, 1 q, 2 uq, 3 vq, 4..7 the colour
+// channels r, g, b, a), signed.
+inline int64_t plane_value(const VertexRecord& v, int plane) {
+  switch (plane) {
+    case 0: return v.z;
+    case 1: return v.q;
+    case 2: return v.uq;
+    case 3: return v.vq;
+    default: return (v.rgba >> (8 * (plane - 4))) & 0xFF;
+  }
+}
+
 // num / den (den > 0) with frac_bits fraction bits, as the divider forms it: den normalised to M
 // 2^s, num' = round(num 2^-s) (exact for s <= 0), result round(num' R 2^(frac_bits - 2W + 1)).
 int64_t divide_fixed(const RecipSetup& p, Int128 num, uint64_t den, uint32_t frac_bits);
+
+// A configuration's setup parameters, those of the model's named configurations (htx::model_config;
+// tests/system/setup_check_test.cpp checks that they agree). recip.table is left null.
+struct SetupParams {
+  RecordFormat format;
+  RecipSetup recip;
+  uint32_t grad_frac_bits, texcoord_frac_bits;
+};
+inline constexpr SetupParams kIcebreakerSetup{{12, 16, 24, 13}, {8, 2, 24, 2, nullptr}, 16, 10};
+inline constexpr SetupParams kFullSetup{{16, 24, 32, 16}, {10, 2, 32, 2, nullptr}, 24, 16};
 
 }  // namespace htx::fw

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 
+#include "htx/fw/tri_setup.h"
 #include "htx/fw/vertex_record.h"
 #include "htx/model/config.hpp"
 #include "htx/model/wide.hpp"
@@ -20,19 +21,10 @@ struct Plane {
   i128 at(int64_t px, int64_t py) const;  // exact: equals stepping base by gx, gy
 };
 
-struct Edge {
-  int64_t a = 0, b = 0;  // E(px, py) = a * (px - x0) + b * (py - y0)
-  int64_t x0 = 0, y0 = 0;
-  int64_t threshold = 0;  // covered when E >= threshold: 0 on top-left edges, 1 elsewhere
-};
-
-struct TriSetup {
-  bool empty = true;  // zero area, or no pixel centre of the screen inside the bounding box
-  fw::TriangleRecord rec;  // vertices reordered (1 and 2 swapped) so the determinant is positive
-  int64_t det = 0;         // determinant in 1/65536 pixel^2, > 0
-  std::array<Edge, 3> edges;
-  int x_lo = 0, x_hi = -1, y_lo = 0, y_hi = -1;  // pixel box, clipped to the screen
-};
+// Coverage is the firmware's own code (firmware/lib tri_setup.h, all 64-bit integers), as the
+// vertex record's encoder is: one implementation of the edges, the top-left rule and the box.
+using Edge = fw::SetupEdge;
+using TriSetup = fw::CoverageSetup;
 
 // Coverage setup. Winding: both drawn (a negative determinant swaps vertices 1 and 2).
 TriSetup setup_coverage(const fw::TriangleRecord& rec, int width, int height);
