@@ -30,6 +30,7 @@
 #include "htx/render/frame.h"
 #include "htx/render/texture_upload.h"
 #include "htx/rtl/raster_engine.hpp"
+#include "frame_records.hpp"
 #include "render_scene.hpp"
 
 namespace htx {
@@ -137,7 +138,6 @@ TEST_P(TexturedCosim, FirmwareFrameEqualsModelFrameBitForBit) {
   EXPECT_EQ(hal::texture_errors(), 0u);
   hal::RasterCounters counters;
   hal::raster_read_counters(&counters);
-  EXPECT_EQ(counters.triangles, stats.sent);
 
   Frame rtl;
   rtl.width = kW;
@@ -151,7 +151,11 @@ TEST_P(TexturedCosim, FirmwareFrameEqualsModelFrameBitForBit) {
       rtl.depth.push_back(hal::fb_read_depth(kW, static_cast<uint32_t>(x), static_cast<uint32_t>(y)) & z_max);
 
   // The model: the streamed records, the model's own texture chains.
-  const std::vector<test::CapturedTriangle> streamed = test::split_fifo_stream(bus.fifo_words());
+  const test::FrameRecords fr =
+      test::frame_records(bus.fifo_words(), HTX_RASTER->CAPS, cfg, frame, rs.view_proj, meshes.data(),
+                          static_cast<uint32_t>(meshes.size()), &cache);
+  const std::vector<test::CapturedTriangle>& streamed = fr.tris;
+  EXPECT_EQ(counters.triangles, fr.sent);
   ASSERT_EQ(streamed.size(), stats.sent);
   ASSERT_GT(stats.sent, 0u);
   RecordScene records;

@@ -1,8 +1,10 @@
 // Robustness of the raster RTL (docs/robustness.md, "Raster unit"): random and corrupted FIFO word
 // streams (random words, random state words, truncated triangles, records at the extremes of the
-// coordinate range) in both configurations. Invariants checked on every stream:
+// coordinate range) in both configurations, each in its unit's form: vertex records (`full`) or
+// plane records (`icebreaker`, CAPS.FW_SETUP, whose random records also get valid boxes around
+// random planes and flags). Invariants checked on every stream:
 //   - bounded time: the unit is idle again within a bound proportional to the on-screen area per
-//     31-word group plus a constant (never a hang);
+//     triangle taken plus a constant (never a hang);
 //   - no write outside the frame: the stride gap, the rows below the frame and the top of both
 //     memories (where a negative address would wrap) keep their sentinels;
 //   - ABORT always returns the unit to idle with an empty FIFO, and a clean frame afterwards equals
@@ -18,8 +20,10 @@
 #include <string>
 #include <vector>
 
+#include "htx/fw/plane_record.h"
 #include "htx/fw/vertex_record.h"
 #include "htx/model/model.hpp"
+#include "htx/rtl/fifo_records.hpp"
 #include "htx/rtl/raster_engine.hpp"
 #include "htx/rtl/raster_sim.hpp"
 #include "htx_regs.h"
@@ -83,14 +87,9 @@ uint32_t count_outside_writes(rtl::RasterSim& sim, const FbLayout& f) {
   return bad;
 }
 
-// Setup clocks allowed per triangle. `icebreaker` sets up on one plane unit with one-bit-per-clock
-// products: nine planes of eight products of about 27 clocks, the rounding shifts (up to 53 clocks
-// per gradient), 1/det and AFFINE's three vertex reciprocals (each normalised one bit per clock, up
-// to 46), AFFINE's six coordinate products with up to 36 shift clocks each and the LOD block shift
-// (up to 16 clocks per gradient): below 4,400; then the determinant and the edges as twelve jobs
-// and the edges' gradients as six more, about 29 clocks each, and 16 clocks of coefficient reads:
-// below 5,000 (measured 2,494 on tiny triangles, 3,036 with AFFINE).
-uint64_t setup_allowance(const std::string& config) { return config == "icebreaker" ? 6000 : 400; }
+// Setup clocks allowed per triangle. `full` sets up in hardware in under 400. `icebreaker` reads
+// plane records, two clocks a word (the words themselves are bounded separately).
+uint64_t setup_allowance(const std::string& config) { return config == "icebreaker" ? 200 : 400; }
 
 // Clocks a traversal step may take at most. `full` steps a pixel a clock, its pipelined divider
 // keeps up and DIVFREE's walk holds it a few clocks (4). `icebreaker` steps its three edges and
@@ -98,18 +97,83 @@ uint64_t setup_allowance(const std::string& config) { return config == "icebreak
 // to 41 clocks), the Newton steps and the numerators' products (3 or 4 clocks each) (96).
 uint64_t step_clocks(const std::string& config) { return config == "icebreaker" ? 96 : 4; }
 
-// Clocks allowed for `groups` 31-word groups: each may cover the whole frame (a row costs its span
-// plus the distance its start moved, at most 2·width + 2 steps), plus setup and the words themselves.
+// Clocks allowed for `groups` triangles: each may cover the whole frame (a row costs its span plus
+// the distance its start moved, at most 2·width + 2 steps), plus setup and the words themselves.
 uint64_t cycle_bound(uint64_t groups, const FbLayout& f, uint64_t setup_clocks, uint64_t step) {
   return groups * ((2ull * f.width * f.height + 4ull * f.height) * step + setup_clocks) + 5000;
 }
 
-// Pushes words, then waits for idle within the bound; returns false (with a failure) on a hang.
-bool run_bounded(rtl::RasterSim& sim, const std::vector<uint32_t>& words, const FbLayout& f, const std::string& config,
+// A FIFO stream under construction in the unit's form, and the triangles the unit will count
+// taking (CNT_TRIANGLES). Plane records are followed word by word through htx_raster_planes_in's
+// framing (state word, six header words, DIVFREE's 18, pairs to the one marked LAST), so that
+// close() can end a record wherever random words left it.
+class Stream {
+ public:
+  Stream(const ModelConfig& cfg, rtl::RasterSim& sim, const FbLayout& f)
+      : form_(cfg, sim.read_reg(R(CAPS)), static_cast<int>(f.width), static_cast<int>(f.height)) {}
+
+  bool planes() const { return form_.fw_setup(); }
+  const std::vector<uint32_t>& words() const { return words_; }
+  uint64_t groups() const { return planes() ? groups_ : words_.size() / kGroupWords; }
+
+  void word(uint32_t w) {
+    words_.push_back(w);
+    if (!planes()) return;
+    if (!in_rec_) {
+      in_rec_ = true;
+      ++groups_;
+      divfree_ = (w & RASTER_STATE_METHOD_Msk) >> RASTER_STATE_METHOD_Pos == 4;
+      count_ = 1;
+      phase_ = kHead;
+    } else if (phase_ == kHead) {
+      if (++count_ == fw::kPlaneHeaderWords) {
+        phase_ = divfree_ ? kSide : kPairs;
+        count_ = 0;
+        high_ = false;
+      }
+    } else if (phase_ == kSide) {
+      if (++count_ == fw::kPlaneSideWords) phase_ = kPairs;
+    } else {
+      if (high_ && (w & fw::kPlaneLastBit)) in_rec_ = false;
+      high_ = !high_;
+    }
+  }
+  // In the middle of a plane record's header: the word index (else 0).
+  uint32_t header_word() const { return in_rec_ && phase_ == kHead ? count_ : 0; }
+
+  // A well-formed triangle (plane form: set up for the frame; one that draws nothing is not sent).
+  void record(uint32_t state, const fw::TriangleRecord& r) {
+    std::vector<uint32_t> w;
+    form_.append(&w, state, r);
+    for (uint32_t x : w) word(x);
+  }
+
+  // Vertex form: pads to whole groups. Plane form: ends the record under way.
+  void close(std::mt19937& rng) {
+    if (!planes()) {
+      while (words_.size() % kGroupWords) words_.push_back(rng());
+      return;
+    }
+    while (in_rec_) word(phase_ == kPairs && high_ ? (rng() | fw::kPlaneLastBit) : rng());
+  }
+
+ private:
+  enum Phase { kHead, kSide, kPairs };
+  rtl::FifoRecords form_;
+  std::vector<uint32_t> words_;
+  uint64_t groups_ = 0;
+  bool in_rec_ = false, divfree_ = false, high_ = false;
+  uint32_t count_ = 0;
+  Phase phase_ = kHead;
+};
+
+// Pushes the stream, then waits for idle within the bound; returns false (with a failure) on a hang.
+bool run_bounded(rtl::RasterSim& sim, const Stream& stream, const FbLayout& f, const std::string& config,
                  const std::string& what) {
+  const std::vector<uint32_t>& words = stream.words();
   const uint64_t start = sim.cycles();
   const uint64_t bound =
-      cycle_bound(words.size() / kGroupWords + 1, f, setup_allowance(config), step_clocks(config)) + words.size();
+      cycle_bound(stream.groups() + 1, f, setup_allowance(config), step_clocks(config)) + 2 * words.size();
   sim.push_words(words);
   const uint64_t used = sim.cycles() - start;
   if (used > bound) {
@@ -167,20 +231,14 @@ fw::TriangleRecord extreme_record(std::mt19937& rng, const ModelConfig& cfg, con
   return r;
 }
 
-void append_record(std::vector<uint32_t>& w, uint32_t state, const fw::TriangleRecord& r) {
-  uint32_t p[fw::kTriangleWords];
-  fw::pack_triangle(r, p);
-  w.push_back(state);
-  w.insert(w.end(), p, p + fw::kTriangleWords);
-}
-
 // A clean frame of ordinary triangles through the encoder: must equal the model exactly.
 void expect_clean_frame(rtl::RasterSim& sim, std::mt19937& rng, const ModelConfig& cfg, const std::string& what) {
   ScreenScene s;
   s.width = 40;
   s.height = 30;
   s.clear_color = static_cast<uint16_t>(rng());
-  std::vector<uint32_t> words;
+  const FbLayout f{40, 30, 40};
+  Stream words(cfg, sim, f);
   for (int t = 0; t < 6; ++t) {
     ScreenTri tri;
     std::uniform_real_distribution<double> px(-10, 50), c(0, 1);
@@ -206,10 +264,9 @@ void expect_clean_frame(rtl::RasterSim& sim, std::mt19937& rng, const ModelConfi
     }
     fw::TriangleRecord rec;
     ASSERT_EQ(fw::encode_triangle(cfg.record_format(), in, &rec), fw::kEncodeOk);
-    append_record(words, pack_state_word(tri.state, tri.state.method), rec);
+    words.record(pack_state_word(tri.state, tri.state.method), rec);
     s.tris.push_back(tri);
   }
-  const FbLayout f{40, 30, 40};
   setup_frame(sim, f, s.clear_color);
   ASSERT_TRUE(run_bounded(sim, words, f, cfg.name, what + " clean frame"));
   const htx::Frame m = render_model(s, cfg);
@@ -249,33 +306,45 @@ TEST_P(RasterFuzz, RandomStreamsBoundedAndInsideTheFrame) {
     f.stride = f.width + rng() % 9;
     if (iter % 6 == 5) f.stride = f.width + 1 + rng() % 8;  // always a gap
     setup_frame(sim, f, static_cast<uint16_t>(rng()));
-    std::vector<uint32_t> words;
+    Stream words(cfg, sim, f);
+    // A plane record's random words, with a box inside the frame half the time (random edges and
+    // planes then draw inside it), else random.
+    auto random_word = [&]() {
+      const uint32_t h = words.header_word();
+      if ((h == 2 || h == 3) && (rng() & 1u)) {
+        const uint32_t lim = h == 2 ? f.width : f.height;
+        const uint32_t lo = rng() % lim, hi = lo + rng() % (lim - lo);
+        return lo | (hi << 16);
+      }
+      return static_cast<uint32_t>(rng());
+    };
     const int pieces = 4 + static_cast<int>(rng() % 10);
     for (int p = 0; p < pieces; ++p) {
       switch (rng() % 5) {
         case 0:  // random words
-          for (uint32_t k = 1 + rng() % 40; k > 0; --k) words.push_back(rng());
+          for (uint32_t k = 1 + rng() % 40; k > 0; --k) words.word(random_word());
           break;
         case 1:  // a random state word ahead of a random record
-          words.push_back(state_word(rng, false));
-          for (size_t k = 0; k < fw::kTriangleWords; ++k) words.push_back(rng());
+          words.word(state_word(rng, false));
+          for (size_t k = 0; k < fw::kTriangleWords; ++k) words.word(random_word());
+          if (words.planes()) words.close(rng);
           break;
         case 2:  // truncated triangle
-          words.push_back(state_word(rng, true));
-          for (uint32_t k = rng() % fw::kTriangleWords; k > 0; --k) words.push_back(rng());
+          words.word(state_word(rng, true));
+          for (uint32_t k = rng() % fw::kTriangleWords; k > 0; --k) words.word(random_word());
           break;
         default:  // well-formed record at the extremes
-          append_record(words, state_word(rng, true), extreme_record(rng, cfg, f));
+          words.record(state_word(rng, true), extreme_record(rng, cfg, f));
           break;
       }
     }
-    while (words.size() % kGroupWords) words.push_back(rng());
+    words.close(rng);
     if (!run_bounded(sim, words, f, name, what)) return;
     EXPECT_EQ(count_outside_writes(sim, f), 0u) << what << ": a write landed outside the " << f.width << "x"
                                                 << f.height << " frame (stride " << f.stride << ")";
-    // Counters are consistent: every group was taken.
-    EXPECT_EQ(sim.read_reg(R(CNT_TRIANGLES)), words.size() / kGroupWords) << what;
-    groups += words.size() / kGroupWords;
+    // Counters are consistent: every triangle was taken.
+    EXPECT_EQ(sim.read_reg(R(CNT_TRIANGLES)), words.groups()) << what;
+    groups += words.groups();
     fragments += sim.read_reg(R(CNT_FRAGMENTS));
     busy += sim.read_reg(R(CNT_BUSY));
     err_state += (sim.read_reg(R(STATUS)) & RASTER_STATUS_ERR_STATE_Msk) != 0;
@@ -302,9 +371,11 @@ TEST_P(RasterFuzz, AbortAnywhereThenCleanFrame) {
   for (int iter = 0; iter < 60; ++iter) {
     const std::string what = name + " abort " + std::to_string(iter);
     setup_frame(sim, f, static_cast<uint16_t>(rng()));
-    std::vector<uint32_t> words;
-    for (int t = 0; t < 3; ++t) append_record(words, state_word(rng, true), extreme_record(rng, cfg, f));
-    for (uint32_t k = rng() % 90; k > 0; --k) words.push_back(rng());
+    Stream stream(cfg, sim, f);
+    for (int t = 0; t < 3; ++t) stream.record(state_word(rng, true), extreme_record(rng, cfg, f));
+    for (uint32_t k = rng() % 90; k > 0; --k) stream.word(rng());
+    std::vector<uint32_t> words = stream.words();
+    if (words.empty()) words.push_back(rng());
     words.resize(1 + rng() % words.size());
     switch (iter % 3) {
       case 0:  // disabled: words pile up (at most a FIFO's worth, or the bus write would hold)
@@ -343,7 +414,7 @@ TEST_P(RasterFuzz, ExtremeRecordsEqualTheModel) {
     scene.width = static_cast<int>(f.width);
     scene.height = static_cast<int>(f.height);
     scene.clear_color = static_cast<uint16_t>(rng());
-    std::vector<uint32_t> words;
+    Stream words(cfg, sim, fs);
     for (int t = 0; t < 8; ++t) {
       RecordTriangle rt;
       rt.record = extreme_record(rng, cfg, fs);
@@ -352,7 +423,7 @@ TEST_P(RasterFuzz, ExtremeRecordsEqualTheModel) {
       rt.state.depth_write = rng() & 1u;
       rt.state.gouraud = rng() & 1u;
       rt.state.method = Method::RecipNr;
-      append_record(words, pack_state_word(rt.state, rt.state.method), rt.record);
+      words.record(pack_state_word(rt.state, rt.state.method), rt.record);
       scene.tris.push_back(rt);
     }
     setup_frame(sim, fs, scene.clear_color);

@@ -23,6 +23,7 @@
 #include "htx/model/scenes.hpp"
 #include "htx/model/texture.hpp"
 #include "htx/render/frame.h"
+#include "frame_records.hpp"
 #include "htx/rtl/raster_engine.hpp"
 #include "render_scene.hpp"
 #include "render_state.hpp"
@@ -134,7 +135,10 @@ CosimFrame cosim_frame(const std::string& scene_name) {
     for (int b = 0; b < 4; ++b) bytes.push_back(static_cast<uint8_t>(t >> (8 * b)));
   records.textures.push_back(
       make_texture(TexFormat::RGB565, render_app::kTextureLog2, render_app::kTextureLog2, bytes));
-  for (const test::CapturedTriangle& t : test::split_fifo_stream(bus.fifo_words()))
+  const test::FrameRecords fr =
+      test::frame_records(bus.fifo_words(), HTX_RASTER->CAPS, cfg, frame, rs.view_proj, meshes.data(),
+                          static_cast<uint32_t>(meshes.size()), &cache);
+  for (const test::CapturedTriangle& t : fr.tris)
     records.tris.push_back({t.record, unpack_state_word(t.state_word)});
   const Frame model = render_model_records(records, cfg);
   if (model.color != out.color) throw std::runtime_error("cosim frame differs from the model's frame");

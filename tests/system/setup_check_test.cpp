@@ -78,6 +78,7 @@ TEST(SystemSetupCheck, FirmwareSetupOnTheCpuMatchesTheModel) {
     EXPECT_EQ(p.recip.steps, m.setup_nr_steps) << c.name;
     EXPECT_EQ(p.grad_frac_bits, m.grad_frac_bits) << c.name;
     EXPECT_EQ(p.texcoord_frac_bits, m.texcoord_frac_bits) << c.name;
+    EXPECT_EQ(p.lod_grad_bits, m.lod_grad_bits) << c.name;
   }
 
   const auto r = htx::test::run_program(

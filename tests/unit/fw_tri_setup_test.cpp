@@ -1,7 +1,8 @@
 // The firmware's triangle setup (firmware/lib tri_setup.h, int128.h) against the host model's
 // (htx/model/raster_setup.hpp, recip.hpp), bit for bit, on random triangles in each named
 // configuration's record format: coverage, the determinant's reciprocal, every attribute plane
-// and AFFINE's vertex divisions.
+// and AFFINE's vertex divisions, and (W <= 30) the 64-bit paths the plane records use (make_plane
+// takes make_plane_64 wherever the values allow, so its comparison covers that path too).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -139,6 +140,11 @@ TEST_P(FwTriSetup, MatchesTheModelBitForBit) {
     const htx::fw::RecipResult fr = htx::fw::reciprocal(fp, static_cast<uint64_t>(fs.det));
     ASSERT_EQ(fr.value, mr.value) << "triangle " << i;
     ASSERT_EQ(fr.shift, mr.shift);
+    if (cfg.recip_width <= 30) {  // the 64-bit path the plane records take
+      const htx::fw::RecipResult f64 = htx::fw::reciprocal_64(fp, static_cast<uint64_t>(fs.det));
+      ASSERT_EQ(f64.value, mr.value) << "triangle " << i;
+      ASSERT_EQ(f64.shift, mr.shift);
+    }
     // Every attribute the raster unit interpolates: z, q, uq, vq, the four colour channels.
     for (int attr = 0; attr < 8; ++attr) {
       std::array<i128, 3> mv{};
@@ -160,9 +166,15 @@ TEST_P(FwTriSetup, MatchesTheModelBitForBit) {
       const auto& v = ms.rec.v[k];
       const i128 q = v.q < 1 ? 1 : v.q;
       for (const int64_t num : {v.uq, v.vq}) {
+        const int64_t want = htx::model::divide_fixed(mp, num, q, cfg.texcoord_frac_bits);
         ASSERT_EQ(htx::fw::divide_fixed(fp, htx::fw::i128_from(num), static_cast<uint64_t>(q), cfg.texcoord_frac_bits),
-                  htx::model::divide_fixed(mp, num, q, cfg.texcoord_frac_bits))
+                  want)
             << "triangle " << i << " vertex " << k;
+        int64_t got = 0;
+        if (cfg.recip_width <= 30) {
+          ASSERT_TRUE(htx::fw::divide_fixed_64(fp, num, static_cast<uint64_t>(q), cfg.texcoord_frac_bits, &got));
+          ASSERT_EQ(got, want) << "triangle " << i << " vertex " << k;
+        }
       }
     }
   }

@@ -17,7 +17,7 @@ inline constexpr uint32_t kStoreMeshes = 8;
 uint8_t* staging_bytes();
 
 // Both buffers, contiguous (2 * kStoreBytes): at boot, before any scene arrives, the scratch image
-// of the texture upload (soc_texture.hpp). The 64 KiB RAM has no room for a third buffer.
+// of the texture upload (soc_texture.hpp).
 uint32_t* boot_scratch_words();
 
 // Checks the `size` received bytes and, if they are a valid scene, makes them the committed scene.

@@ -5,16 +5,19 @@
 //   geombench <scene> vertices <n> projected <p> cycles/vertex <c.cc>
 //   geombench <scene> triangles <n> sent <s> cycles/triangle <c>
 //   geombench all vertices <n> cycles/vertex <c.cc>
-// and, for each triangle sent, what triangle setup would cost in firmware (htx/fw/tri_setup.h,
-// docs/area.md "Setup in firmware"): coverage, 1/det, the planes of z, r, g, b, q, uq, vq and of
-// AFFINE's u, v, and AFFINE's six vertex divisions, with the `icebreaker` raster's parameters:
-//   geombench <scene> setup triangles <s> cycles/triangle <c>
+// and, for each triangle sent, what its setup costs the firmware for the `icebreaker` raster unit,
+// which takes plane records (CAPS.FW_SETUP; htx/fw/plane_record.h, docs/raster.md "Plane record"):
+// the plane record as the HAL makes it (coverage, 1/det, the edges and the planes, AFFINE's
+// vertex divisions, DIVFREE's side band) for a 160 x 120 screen, without the FIFO writes:
+//   geombench <scene> setup triangles <s> records <r> words <w> cycles/triangle <c>
 #include <stdint.h>
 #include <stdio.h>
 
+#include "htx/fw/plane_record.h"
 #include "htx/fw/tri_setup.h"
 #include "htx/fw/vertex_record.h"
 #include "htx/hal/timer.h"
+#include "htx_regs.h"
 #include "htx/render/pipeline.h"
 #include "scenes.hpp"
 
@@ -29,47 +32,34 @@ uint8_t g_codes[kMaxVertices];
 
 void count_triangle(void* context, uint32_t, const uint32_t*) { ++*static_cast<uint32_t*>(context); }
 
-// Triangle setup in firmware for each triangle sent, timed on its own, with the `icebreaker`
-// raster's parameters (htx::fw::kIcebreakerSetup) on a 160 x 120 screen.
+// The plane record of each triangle sent, timed on its own, with the `icebreaker` raster's
+// parameters (htx::fw::kIcebreakerSetup, its table filled) on a 160 x 120 screen.
 struct SetupTally {
-  htx::fw::RecipSetup recip;  // with its table filled
-  uint32_t triangles = 0;
+  htx::fw::SetupParams params;
+  uint32_t triangles = 0, records = 0, words = 0;
   uint64_t cycles = 0;
-  int64_t checksum = 0;  // keeps the results live
+  uint32_t checksum = 0;  // keeps the results live
 };
 
-void time_setup(void* context, uint32_t, const uint32_t* words) {
+void time_setup(void* context, uint32_t state_word, const uint32_t* words) {
   SetupTally& t = *static_cast<SetupTally*>(context);
-  const htx::fw::SetupParams& sp = htx::fw::kIcebreakerSetup;
   htx::fw::TriangleRecord rec;
   htx::fw::unpack_triangle(words, &rec);
+  htx::fw::PlaneJob job;
+  job.params = &t.params;
+  job.width = 160;
+  job.height = 120;
+  job.state_word = state_word;
+  job.method = (state_word & RASTER_STATE_METHOD_Msk) >> RASTER_STATE_METHOD_Pos;
+  uint32_t out[htx::fw::kPlaneRecordMaxWords];
+  size_t n = 0;
   const uint64_t t0 = htx::hal::cpu_cycles();
-  htx::fw::CoverageSetup cs;
-  htx::fw::setup_coverage(rec, 160, 120, &cs);
-  if (cs.det != 0 && !cs.empty) {
-    const htx::fw::RecipResult inv = htx::fw::reciprocal(t.recip, static_cast<uint64_t>(cs.det));
-    htx::fw::Int128 v[3];
-    int64_t sum = 0;
-    // Planes z, q, uq, vq, r, g, b (plane_value 0..6), then AFFINE's u and v from its vertex
-    // divisions.
-    for (int plane = 0; plane < 9; ++plane) {
-      for (int k = 0; k < 3; ++k) {
-        const htx::fw::VertexRecord& x = cs.rec.v[k];
-        if (plane < 7) {
-          v[k] = htx::fw::i128_from(htx::fw::plane_value(x, plane));
-        } else {
-          const int64_t num = plane == 7 ? x.uq : x.vq;
-          v[k] = htx::fw::i128_from(htx::fw::divide_fixed(t.recip, htx::fw::i128_from(num), x.q ? x.q : 1,
-                                                          sp.texcoord_frac_bits));
-        }
-      }
-      const htx::fw::PlaneSetup p = htx::fw::make_plane(cs, v, inv, sp.grad_frac_bits);
-      sum += static_cast<int64_t>(p.gx.lo ^ p.gy.lo ^ p.base.lo);
-    }
-    t.checksum ^= sum;
-  }
+  const htx::fw::PlaneStatus status = htx::fw::encode_plane_record(job, rec, out, &n);
   t.cycles += htx::hal::cpu_cycles() - t0;
   ++t.triangles;
+  t.records += status == htx::fw::kPlaneOk;
+  t.words += static_cast<uint32_t>(n);
+  for (size_t i = 0; i < n; ++i) t.checksum = (t.checksum << 1 | t.checksum >> 31) ^ out[i];
 }
 
 // x.xx without floating point.
@@ -83,9 +73,9 @@ uint32_t g_recip_table[256];  // 2^k entries of kIcebreakerSetup's table
 }  // namespace
 
 int main() {
-  htx::fw::RecipSetup setup_recip = htx::fw::kIcebreakerSetup.recip;
-  htx::fw::recip_fill_table(setup_recip.k, setup_recip.g, g_recip_table);  // once, as firmware would
-  setup_recip.table = g_recip_table;
+  htx::fw::SetupParams setup = htx::fw::kIcebreakerSetup;
+  htx::fw::recip_fill_table(setup.recip.k, setup.recip.g, g_recip_table);  // once, as the HAL does
+  setup.recip.table = g_recip_table;
   uint32_t n = 0;
   const geombench::BenchScene* scenes = geombench::bench_scenes(&n);
   htx::render::VertexCache cache{g_clip, g_screen, g_codes, kMaxVertices};
@@ -129,12 +119,13 @@ int main() {
            static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(sent),
            static_cast<unsigned long>(st.clipped), static_cast<unsigned long>(dc / sc.triangle_count));
 
-    SetupTally tally{setup_recip};
+    SetupTally tally{setup};
     if (htx::render::draw_mesh(frame, sc.view_proj, mesh, &cache, {time_setup, &tally}, &st) == htx::render::kDrawOk &&
         tally.triangles != 0) {
-      printf("geombench %s setup triangles %lu cycles/triangle %lu (checksum %08lx)\n", sc.name,
-             static_cast<unsigned long>(tally.triangles), static_cast<unsigned long>(tally.cycles / tally.triangles),
-             static_cast<unsigned long>(static_cast<uint64_t>(tally.checksum) & 0xFFFFFFFFu));
+      printf("geombench %s setup triangles %lu records %lu words %lu cycles/triangle %lu (checksum %08lx)\n", sc.name,
+             static_cast<unsigned long>(tally.triangles), static_cast<unsigned long>(tally.records),
+             static_cast<unsigned long>(tally.words), static_cast<unsigned long>(tally.cycles / tally.triangles),
+             static_cast<unsigned long>(tally.checksum));
     }
   }
   printf("geombench all vertices %lu cycles/vertex ", static_cast<unsigned long>(all_vertices));

@@ -18,8 +18,7 @@ struct DrawSettings {
 };
 
 inline constexpr uint32_t kGeometryRuns = 4;
-// The vertex cache's size: the most vertices a mesh may have (floor has 81; the 64 KiB RAM leaves
-// the console no room for more beside its scene store).
+// The vertex cache's size: the most vertices a mesh may have (floor has 81).
 inline constexpr uint32_t kMaxMeshVertices = 96;
 
 struct DrawResult {

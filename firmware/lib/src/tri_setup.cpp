@@ -16,33 +16,17 @@ int64_t max3(int64_t a, int64_t b, int64_t c) {
 int64_t floor_div256(int64_t a) { return a >> 8; }
 int64_t ceil_div256(int64_t a) { return -((-a) >> 8); }
 
-// a fits a signed 64-bit number.
-bool fits_i64(Int128 a) { return a.hi == (static_cast<int64_t>(a.lo) < 0 ? ~uint64_t{0} : 0); }
-
-// The plane's numerators n_x = da1 dy2 - da2 dy1, n_y = da2 dx1 - da1 dx2 in 64-bit arithmetic
-// when every step fits (the `icebreaker` formats always do); false when one does not.
-bool numerators_64(Int128 da1, Int128 da2, uint64_t dx1, uint64_t dy1, uint64_t dx2, uint64_t dy2, Int128* nx,
-                   Int128* ny) {
-  if (!fits_i64(da1) || !fits_i64(da2)) return false;
-  const int64_t a1 = static_cast<int64_t>(da1.lo), a2 = static_cast<int64_t>(da2.lo);
-  int64_t p1, p2, p3, p4, x, y;
-  if (__builtin_mul_overflow(a1, static_cast<int64_t>(dy2), &p1) ||
-      __builtin_mul_overflow(a2, static_cast<int64_t>(dy1), &p2) ||
-      __builtin_mul_overflow(a2, static_cast<int64_t>(dx1), &p3) ||
-      __builtin_mul_overflow(a1, static_cast<int64_t>(dx2), &p4) || __builtin_sub_overflow(p1, p2, &x) ||
-      __builtin_sub_overflow(p3, p4, &y)) {
-    return false;
-  }
-  *nx = i128_from(x);
-  *ny = i128_from(y);
-  return true;
+// |a| < 2^36: make_plane_64's bound on a plane's vertex values.
+bool within_plane_64(Int128 a) {
+  const uint64_t bias = uint64_t{1} << 36;  // a + 2^36 in [0, 2^37)
+  const Int128 b = i128_add(a, u128_from(bias));
+  return b.hi == 0 && (b.lo >> 37) == 0;
 }
 
-// a b for an unsigned 64-bit b: one 64 x 64-bit product where a fits 64 bits.
-Int128 mul_by_u64(Int128 a, uint64_t b) {
-  if (!fits_i64(a)) return i128_mul(a, u128_from(b));
-  const bool neg = i128_negative(a);
-  const Int128 m = mul_64x64(neg ? 0 - a.lo : a.lo, b);
+// a b for a signed 64-bit a and an unsigned 64-bit b: one 64 x 64-bit product.
+Int128 mul_i64_u64(int64_t a, uint64_t b) {
+  const bool neg = a < 0;
+  const Int128 m = mul_64x64(neg ? 0 - static_cast<uint64_t>(a) : static_cast<uint64_t>(a), b);
   return neg ? i128_neg(m) : m;
 }
 
@@ -107,21 +91,26 @@ void recip_fill_table(uint32_t k, uint32_t g, uint32_t* table) {
   for (uint32_t i = 0; i < (uint32_t{1} << k); ++i) table[i] = recip_table_entry(k, g, i);
 }
 
-uint64_t recip_mantissa(const RecipSetup& p, uint64_t mantissa) {
+uint64_t recip_mantissa_64(const RecipSetup& p, uint64_t mantissa) {
   const uint32_t w = p.width;
   const uint32_t index = static_cast<uint32_t>((mantissa >> (w - 1 - p.k)) & ((uint64_t{1} << p.k) - 1));
   const uint32_t entry = p.table ? p.table[index] : recip_table_entry(p.k, p.g, index);
-  if (w <= 30) {
-    // m r < 2^(2W+1) and r c < 2^(2W+2): 64 bits hold every step (the `icebreaker` unit's W = 24).
-    uint64_t r = uint64_t{entry} << (w - (p.k + p.g + 1));
-    const uint64_t two = uint64_t{1} << (w + 1), half = uint64_t{1} << (w - 1);
-    for (uint32_t s = 0; s < p.steps; ++s) {
-      const uint64_t e = (mantissa * r) >> (w - 1);
-      const uint64_t c = e < two ? two - e : 0;
-      r = (r * c + half) >> w;
-    }
-    return r;
+  // m r < 2^(2W+1) and r c < 2^(2W+2): 64 bits hold every step for W <= 30.
+  uint64_t r = uint64_t{entry} << (w - (p.k + p.g + 1));
+  const uint64_t two = uint64_t{1} << (w + 1), half = uint64_t{1} << (w - 1);
+  for (uint32_t s = 0; s < p.steps; ++s) {
+    const uint64_t e = (mantissa * r) >> (w - 1);
+    const uint64_t c = e < two ? two - e : 0;
+    r = (r * c + half) >> w;
   }
+  return r;
+}
+
+uint64_t recip_mantissa(const RecipSetup& p, uint64_t mantissa) {
+  const uint32_t w = p.width;
+  if (w <= 30) return recip_mantissa_64(p, mantissa);
+  const uint32_t index = static_cast<uint32_t>((mantissa >> (w - 1 - p.k)) & ((uint64_t{1} << p.k) - 1));
+  const uint32_t entry = p.table ? p.table[index] : recip_table_entry(p.k, p.g, index);
   Int128 r = i128_shl(u128_from(entry), w - (p.k + p.g + 1));
   const Int128 two = i128_shl(Int128{1, 0}, w + 1);
   const Int128 half = i128_shl(Int128{1, 0}, w - 1);
@@ -146,24 +135,65 @@ RecipResult reciprocal(const RecipSetup& p, uint64_t x) {
   return {recip_mantissa(p, m), static_cast<int32_t>(p.width) + msb};
 }
 
+RecipResult reciprocal_64(const RecipSetup& p, uint64_t x) {
+  int32_t msb = 0;
+  const uint64_t m = recip_normalise(x, p.width, &msb);
+  return {recip_mantissa_64(p, m), static_cast<int32_t>(p.width) + msb};
+}
+
+void make_plane_64(const CoverageSetup& s, const int64_t values[3], RecipResult inv_det, uint32_t frac_bits,
+                   PlaneSetup* out) {
+  const VertexRecord* v = s.rec.v;
+  const int64_t dx1 = int64_t{v[1].x} - v[0].x, dy1 = int64_t{v[1].y} - v[0].y;
+  const int64_t dx2 = int64_t{v[2].x} - v[0].x, dy2 = int64_t{v[2].y} - v[0].y;
+  // |da| < 2^37 and |d| < 2^25: each product below 2^62, n below 2^63.
+  const int64_t da1 = values[1] - values[0], da2 = values[2] - values[0];
+  const int64_t nx = da1 * dy2 - da2 * dy1, ny = da2 * dx1 - da1 * dx2;
+  const int32_t shift = inv_det.shift - static_cast<int32_t>(frac_bits);
+  out->base = i128_shl(i128_from(values[0]), frac_bits);
+  out->gx = i128_shift_round(mul_i64_u64(nx, inv_det.value), shift);
+  out->gy = i128_shift_round(mul_i64_u64(ny, inv_det.value), shift);
+  out->x0 = v[0].x;
+  out->y0 = v[0].y;
+}
+
 PlaneSetup make_plane(const CoverageSetup& s, const Int128 values[3], RecipResult inv_det, uint32_t frac_bits) {
+  PlaneSetup p;
+  if (within_plane_64(values[0]) && within_plane_64(values[1]) && within_plane_64(values[2])) {
+    const int64_t v64[3] = {static_cast<int64_t>(values[0].lo), static_cast<int64_t>(values[1].lo),
+                            static_cast<int64_t>(values[2].lo)};
+    make_plane_64(s, v64, inv_det, frac_bits, &p);
+    return p;
+  }
   const VertexRecord* v = s.rec.v;
   const Int128 dx1 = i128_from(int64_t{v[1].x} - v[0].x), dy1 = i128_from(int64_t{v[1].y} - v[0].y);
   const Int128 dx2 = i128_from(int64_t{v[2].x} - v[0].x), dy2 = i128_from(int64_t{v[2].y} - v[0].y);
   const Int128 da1 = i128_sub(values[1], values[0]), da2 = i128_sub(values[2], values[0]);
-  Int128 nx, ny;
-  if (!numerators_64(da1, da2, dx1.lo, dy1.lo, dx2.lo, dy2.lo, &nx, &ny)) {
-    nx = i128_sub(i128_mul(da1, dy2), i128_mul(da2, dy1));
-    ny = i128_sub(i128_mul(da2, dx1), i128_mul(da1, dx2));
-  }
+  const Int128 nx = i128_sub(i128_mul(da1, dy2), i128_mul(da2, dy1));
+  const Int128 ny = i128_sub(i128_mul(da2, dx1), i128_mul(da1, dx2));
   const int32_t shift = inv_det.shift - static_cast<int32_t>(frac_bits);
-  PlaneSetup p;
   p.base = i128_shl(values[0], frac_bits);
-  p.gx = i128_shift_round(mul_by_u64(nx, inv_det.value), shift);
-  p.gy = i128_shift_round(mul_by_u64(ny, inv_det.value), shift);
+  p.gx = i128_shift_round(i128_mul(nx, u128_from(inv_det.value)), shift);
+  p.gy = i128_shift_round(i128_mul(ny, u128_from(inv_det.value)), shift);
   p.x0 = v[0].x;
   p.y0 = v[0].y;
   return p;
+}
+
+bool divide_fixed_64(const RecipSetup& p, int64_t num, uint64_t den, uint32_t frac_bits, int64_t* out) {
+  int32_t msb = 0;
+  const uint64_t m = recip_normalise(den, p.width, &msb);
+  const int32_t s = msb - static_cast<int32_t>(p.width - 1);
+  int64_t n;
+  if (s > 0) {
+    n = static_cast<int64_t>(i128_shift_round(i128_from(num), s).lo);  // round(num 2^-s)
+  } else if (__builtin_mul_overflow(num, int64_t{1} << -s, &n)) {
+    return false;
+  }
+  const Int128 q = mul_i64_u64(n, recip_mantissa_64(p, m));
+  *out = static_cast<int64_t>(
+      i128_shift_round(q, 2 * static_cast<int32_t>(p.width) - 1 - static_cast<int32_t>(frac_bits)).lo);
+  return true;
 }
 
 int64_t divide_fixed(const RecipSetup& p, Int128 num, uint64_t den, uint32_t frac_bits) {

@@ -1,8 +1,8 @@
-// Simulation top of the SoC (Verilated): 64 KiB RAM, simulation-only SYSCTRL ports, random wait states
+// Simulation top of the SoC (Verilated): 128 KiB RAM, simulation-only SYSCTRL ports, random wait states
 // available on every slave, and the CPU's counters brought out for the harness's report.
 // Simulation only (hierarchical references); boards instantiate htx_soc directly.
 module htx_soc_sim_top #(
-  parameter int unsigned RamBytes = 65536,
+  parameter int unsigned RamBytes = 131072,
   parameter int unsigned ClockHz  = 12_000_000
 ) (
   input  logic        clk_i,

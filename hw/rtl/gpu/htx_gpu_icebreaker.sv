@@ -43,7 +43,7 @@ module htx_gpu_icebreaker #(
     .PixelPipelined(1'b0), .PixelMulIterative(1'b0), .SubdivDepth(64), .DfFracBits(2), .DfCap(64), .FifoDepth(64),
     .CoordW(20), .TF(10), .GradW(16), .LF(6), .TexFormats(3'b011), .TexFilters(3'b011),
     .TexSlots(4), .TexLanes(1), .TexShiftAdd(1'b0), .TexCounters(1'b0), .LogIdx(6),
-    .RasterCounters(RasterCounters), .TexWindowRead(TexWindowRead),
+    .RasterCounters(RasterCounters), .TexWindowRead(TexWindowRead), .FwSetup(1'b1),
     .FbPixels(FbPixels), .FbSpram(FbSpram), .TexBAW(TexBAW), .Methods(Methods)
   ) u_subsys (.*);
 endmodule

@@ -44,6 +44,7 @@ module htx_gpu_subsys #(
   parameter bit          TexShiftAdd = 1'b0,
   parameter bit          TexCounters = 1'b1,
   parameter bit          TexWindowRead = 1'b1,   // reads of the texture memory window
+  parameter bit          FwSetup = 1'b0,  // the raster unit takes plane records (CAPS.FW_SETUP)
   parameter bit          RasterCounters = 1'b1,  // the raster unit's CNT_* (CAPS.COUNTERS)
   parameter int unsigned LogIdx      = 10
 ) (
@@ -143,7 +144,7 @@ module htx_gpu_subsys #(
     .PixelPipelined(PixelPipelined), .PixelMulIterative(PixelMulIterative),
     .SubdivDepth(SubdivDepth), .DfFracBits(DfFracBits), .DfCap(DfCap), .LF(LF), .LogIdx(LogIdx),
     .CoordW(CoordW), .QW(QW), .GradW(GradW), .LocW(LocW), .Counters(RasterCounters),
-    .TexTagW(TagW)
+    .FwSetup(FwSetup), .TexTagW(TagW)
   ) u_raster (
     .clk_i, .rst_ni,
     .req_valid_i(rs_valid[0]), .req_ready_o(rs_ready[0]), .req_addr_i(rs_addr),

@@ -42,7 +42,11 @@ module htx_raster #(
   parameter int unsigned LocW       = UvIntBits + TF,
   parameter int unsigned TexTagW    = htx_raster_pkg::tex_tag_w(AddrW, ZBits),
   // The CNT_* event counters (CAPS.COUNTERS); the board's build leaves them out (docs/area.md).
-  parameter bit          Counters   = 1'b1
+  parameter bit          Counters   = 1'b1,
+  // Setup is the firmware's (CAPS.FW_SETUP; `icebreaker`, docs/raster.md "Plane record"): the FIFO
+  // takes plane records, which htx_raster_planes_in writes into the traversal's plane RAM, in place
+  // of the input stage and htx_raster_setup. Needs Iterative (the traversal's planes in RAM).
+  parameter bit          FwSetup    = 1'b0
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -150,7 +154,7 @@ module htx_raster #(
   logic [31:0] fifo_rdata;
   // RecInFifo (`icebreaker`): the record setup works on stays in the FIFO's block RAM, and setup
   // reads its values from there (htx_raster_setup ValuesInFifo).
-  localparam bit RecInFifo = Iterative && !PerspColor;
+  localparam bit RecInFifo = Iterative && !PerspColor && !FwSetup;
   // `icebreaker` (Iterative): an AFFINE triangle's u, v planes take the places of its uq, vq
   // planes, which it does not use (setup writes them over those, FoldUv), so the traversal steps
   // seven planes a pass instead of nine; planes 7 and 8 of the fragment are its planes 5 and 6.
@@ -174,36 +178,8 @@ module htx_raster #(
     .level_o   (fifo_level)
   );
 
-  logic               rec_valid, rec_ready, in_partial, in_busy;
-  logic [31:0]        rec_state, rec_u_off, rec_v_off;
-  logic [3*XW-1:0]    rec_x, rec_y;
-  logic [3*ZBits-1:0] rec_z;
-  logic [3*32-1:0]    rec_rgba;
-  logic [3*QBits-1:0] rec_q;
-  logic [3*UQ-1:0]    rec_uq, rec_vq;
-  htx_raster_input #(.XW(XW), .ZBits(ZBits), .QBits(QBits), .UQ(UQ)) u_input (
-    .clk_i, .rst_ni,
-    .abort_i     (abort),
-    .enable_i    (enable_q),
-    .fifo_empty_i(fifo_none),
-    .fifo_pop_o  (fifo_pop),
-    .fifo_rdata_i(fifo_rdata),
-    .rec_valid_o (rec_valid),
-    .rec_ready_i (rec_ready),
-    .rec_state_o (rec_state),
-    .rec_x_o     (rec_x),
-    .rec_y_o     (rec_y),
-    .rec_z_o     (rec_z),
-    .rec_rgba_o  (rec_rgba),
-    .rec_q_o     (rec_q),
-    .rec_uq_o    (rec_uq),
-    .rec_vq_o    (rec_vq),
-    .rec_u_off_o (rec_u_off),
-    .rec_v_off_o (rec_v_off),
-    .busy_o      (in_busy),
-    .partial_o   (in_partial)
-  );
-
+  logic               in_partial, in_busy;
+  logic [31:0]        rec_state;
   // ---- Setup -----------------------------------------------------------------------------------
   logic               tri_valid, tri_ready;
   logic [31:0]        tri_state, tri_flat, tri_u_off, tri_v_off;
@@ -231,69 +207,154 @@ module htx_raster #(
   logic [DetW-1:0]           rq_x;
   logic [RecipW:0]           rq_r;
   logic [$clog2(DetW)-1:0]   rq_msb;
-  htx_raster_setup #(
-    .XyIntBits(XyIntBits), .ZBits(ZBits), .GF(GF), .RecipW(RecipW), .RecipK(RecipK),
-    .RecipG(RecipG), .NrSteps(SetupSteps), .Iterative(Iterative), .QBits(QBits),
-    .UvIntBits(UvIntBits), .TF(TF), .GradW(GradW), .Methods(Methods), .PerspColor(PerspColor),
-    .Lod(TexLod || HasDf), .ExtRecip(SharedRecip), .HoldRecord(Iterative),
-    .ValuesInFifo(RecInFifo), .FoldUv(FoldUv), .AW(AWP), .NP(NP)
-  ) u_setup (
-    .clk_i, .rst_ni,
-    .abort_i        (abort),
-    .width_i        (width_q),
-    .height_i       (height_q),
-    .rec_valid_i    (rec_valid),
-    .rec_ready_o    (rec_ready),
-    .hold_i         (clr_pend_q),
-    .rec_state_i    (rec_state),
-    .rec_x_i        (rec_x),
-    .rec_y_i        (rec_y),
-    .rec_z_i        (rec_z),
-    .rec_rgba_i     (rec_rgba),
-    .rec_q_i        (rec_q),
-    .rec_uq_i       (rec_uq),
-    .rec_vq_i       (rec_vq),
-    .rec_u_off_i    (rec_u_off),
-    .rec_v_off_i    (rec_v_off),
-    .tri_valid_o    (tri_valid),
-    .tri_ready_i    (tri_ready),
-    .tri_state_o    (tri_state),
-    .tri_flat_rgba_o(tri_flat),
-    .tri_x_lo_o     (tri_x_lo),
-    .tri_x_hi_o     (tri_x_hi),
-    .tri_y_lo_o     (tri_y_lo),
-    .tri_y_hi_o     (tri_y_hi),
-    .tri_a_o        (tri_a),
-    .tri_b_o        (tri_b),
-    .tri_a_zero_o   (tri_a_zero),
-    .tri_thr_o      (tri_thr),
-    .tri_dneg_o     (tri_dneg),
-    .tri_e_o        (tri_e),
-    .tri_p_o        (tri_p),
-    .pl_we_o        (pl_we),
-    .pl_sel_o       (pl_sel),
-    .pl_idx_o       (pl_idx),
-    .pl_data_o      (pl_data),
-    .tri_u_off_o    (tri_u_off),
-    .tri_v_off_o    (tri_v_off),
-    .tri_lod_g_o    (tri_lod_g),
-    .tri_lod_shift_o(tri_lod_shift),
-    .tri_dfg_o      (tri_dfg),
-    .busy_o         (setup_busy),
-    .stall_o        (setup_stall),
-    .taken_o        (setup_taken),
-    .err_o          (setup_err),
-    .rq_start_o     (rq_start),
-    .rq_x_o         (rq_x),
-    .rq_done_i      (rq_done),
-    .rq_r_i         (rq_r),
-    .rq_msb_i       (rq_msb),
-    .vr_req_o       (vr_req),
-    .vr_off_o       (vr_off),
-    .vr_data_i      (fifo_rdata)
-  );
-  // The FIFO frees the record's words when setup releases it (a FIFO without Hold ignores that).
-  assign rec_release = rec_valid && rec_ready;
+
+
+  if (FwSetup) begin : g_fw_setup
+    // The firmware did setup: the reader takes the plane records.
+    htx_raster_planes_in #(.Methods(Methods), .DW(DW), .EW(EW), .AW(AWP), .GradW(GradW), .GWU(GWU)) u_planes_in (
+      .clk_i, .rst_ni,
+      .abort_i        (abort),
+      .enable_i       (enable_q),
+      .hold_i         (clr_pend_q),
+      .width_i        (width_q),
+      .height_i       (height_q),
+      .fifo_none_i    (fifo_none),
+      .fifo_pop_o     (fifo_pop),
+      .fifo_rdata_i   (fifo_rdata),
+      .tri_valid_o    (tri_valid),
+      .tri_ready_i    (tri_ready),
+      .tri_state_o    (tri_state),
+      .tri_flat_rgba_o(tri_flat),
+      .tri_x_lo_o     (tri_x_lo),
+      .tri_x_hi_o     (tri_x_hi),
+      .tri_y_lo_o     (tri_y_lo),
+      .tri_y_hi_o     (tri_y_hi),
+      .tri_a_o        (tri_a),
+      .tri_a_zero_o   (tri_a_zero),
+      .tri_thr_o      (tri_thr),
+      .tri_dneg_o     (tri_dneg),
+      .tri_e_o        (tri_e),
+      .tri_u_off_o    (tri_u_off),
+      .tri_v_off_o    (tri_v_off),
+      .tri_lod_g_o    (tri_lod_g),
+      .tri_lod_shift_o(tri_lod_shift),
+      .tri_dfg_o      (tri_dfg),
+      .pl_we_o        (pl_we),
+      .pl_sel_o       (pl_sel),
+      .pl_idx_o       (pl_idx),
+      .pl_data_o      (pl_data),
+      .busy_o         (setup_busy),
+      .stall_o        (setup_stall),
+      .partial_o      (in_partial),
+      .taken_o        (setup_taken),
+      .err_o          (setup_err)
+    );
+    assign in_busy     = 1'b0;
+    assign rec_state   = fifo_rdata;  // (the state word, in the clock taken_o rises)
+    assign rec_release = 1'b0;
+    assign vr_req      = 1'b0;
+    assign vr_off      = '0;
+    assign rq_start    = 1'b0;
+    assign rq_x        = '0;
+    logic unused_rq;
+    assign unused_rq   = ^{rq_done, rq_r, rq_msb};
+    assign tri_b       = '0;
+    assign tri_p       = '0;
+  end else begin : g_hw_setup
+    logic               rec_valid, rec_ready;
+    logic [31:0]        rec_u_off, rec_v_off;
+    logic [3*XW-1:0]    rec_x, rec_y;
+    logic [3*ZBits-1:0] rec_z;
+    logic [3*32-1:0]    rec_rgba;
+    logic [3*QBits-1:0] rec_q;
+    logic [3*UQ-1:0]    rec_uq, rec_vq;
+    htx_raster_input #(.XW(XW), .ZBits(ZBits), .QBits(QBits), .UQ(UQ)) u_input (
+      .clk_i, .rst_ni,
+      .abort_i     (abort),
+      .enable_i    (enable_q),
+      .fifo_empty_i(fifo_none),
+      .fifo_pop_o  (fifo_pop),
+      .fifo_rdata_i(fifo_rdata),
+      .rec_valid_o (rec_valid),
+      .rec_ready_i (rec_ready),
+      .rec_state_o (rec_state),
+      .rec_x_o     (rec_x),
+      .rec_y_o     (rec_y),
+      .rec_z_o     (rec_z),
+      .rec_rgba_o  (rec_rgba),
+      .rec_q_o     (rec_q),
+      .rec_uq_o    (rec_uq),
+      .rec_vq_o    (rec_vq),
+      .rec_u_off_o (rec_u_off),
+      .rec_v_off_o (rec_v_off),
+      .busy_o      (in_busy),
+      .partial_o   (in_partial)
+    );
+
+    htx_raster_setup #(
+      .XyIntBits(XyIntBits), .ZBits(ZBits), .GF(GF), .RecipW(RecipW), .RecipK(RecipK),
+      .RecipG(RecipG), .NrSteps(SetupSteps), .Iterative(Iterative), .QBits(QBits),
+      .UvIntBits(UvIntBits), .TF(TF), .GradW(GradW), .Methods(Methods), .PerspColor(PerspColor),
+      .Lod(TexLod || HasDf), .ExtRecip(SharedRecip), .HoldRecord(Iterative),
+      .ValuesInFifo(RecInFifo), .FoldUv(FoldUv), .AW(AWP), .NP(NP)
+    ) u_setup (
+      .clk_i, .rst_ni,
+      .abort_i        (abort),
+      .width_i        (width_q),
+      .height_i       (height_q),
+      .rec_valid_i    (rec_valid),
+      .rec_ready_o    (rec_ready),
+      .hold_i         (clr_pend_q),
+      .rec_state_i    (rec_state),
+      .rec_x_i        (rec_x),
+      .rec_y_i        (rec_y),
+      .rec_z_i        (rec_z),
+      .rec_rgba_i     (rec_rgba),
+      .rec_q_i        (rec_q),
+      .rec_uq_i       (rec_uq),
+      .rec_vq_i       (rec_vq),
+      .rec_u_off_i    (rec_u_off),
+      .rec_v_off_i    (rec_v_off),
+      .tri_valid_o    (tri_valid),
+      .tri_ready_i    (tri_ready),
+      .tri_state_o    (tri_state),
+      .tri_flat_rgba_o(tri_flat),
+      .tri_x_lo_o     (tri_x_lo),
+      .tri_x_hi_o     (tri_x_hi),
+      .tri_y_lo_o     (tri_y_lo),
+      .tri_y_hi_o     (tri_y_hi),
+      .tri_a_o        (tri_a),
+      .tri_b_o        (tri_b),
+      .tri_a_zero_o   (tri_a_zero),
+      .tri_thr_o      (tri_thr),
+      .tri_dneg_o     (tri_dneg),
+      .tri_e_o        (tri_e),
+      .tri_p_o        (tri_p),
+      .pl_we_o        (pl_we),
+      .pl_sel_o       (pl_sel),
+      .pl_idx_o       (pl_idx),
+      .pl_data_o      (pl_data),
+      .tri_u_off_o    (tri_u_off),
+      .tri_v_off_o    (tri_v_off),
+      .tri_lod_g_o    (tri_lod_g),
+      .tri_lod_shift_o(tri_lod_shift),
+      .tri_dfg_o      (tri_dfg),
+      .busy_o         (setup_busy),
+      .stall_o        (setup_stall),
+      .taken_o        (setup_taken),
+      .err_o          (setup_err),
+      .rq_start_o     (rq_start),
+      .rq_x_o         (rq_x),
+      .rq_done_i      (rq_done),
+      .rq_r_i         (rq_r),
+      .rq_msb_i       (rq_msb),
+      .vr_req_o       (vr_req),
+      .vr_off_o       (vr_off),
+      .vr_data_i      (fifo_rdata)
+    );
+    // The FIFO frees the record's words when setup releases it (a FIFO without Hold ignores that).
+    assign rec_release = rec_valid && rec_ready;
+  end
 
   // ---- Traversal -------------------------------------------------------------------------------
   logic              tv_valid, tv_ready, trav_busy, trav_stall, tv_first, tv_last, tv_tfirst;
@@ -922,6 +983,7 @@ module htx_raster #(
         rdata_d[htx_raster_reg_pkg::RASTER_CAPS_METHODS_LSB +: 5]  = Methods;
         rdata_d[htx_raster_reg_pkg::RASTER_CAPS_COUNTERS_LSB]      = Counters;
         rdata_d[htx_raster_reg_pkg::RASTER_CAPS_STATE_LSB]         = Counters;
+        rdata_d[htx_raster_reg_pkg::RASTER_CAPS_FW_SETUP_LSB]      = FwSetup;
       end
       htx_raster_reg_pkg::RASTER_CNT_BUSY_OFFSET,
       htx_raster_reg_pkg::RASTER_CNT_STALL_INPUT_OFFSET,

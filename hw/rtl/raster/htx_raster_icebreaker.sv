@@ -32,7 +32,7 @@ module htx_raster_icebreaker #(
     .Iterative(1'b1), .QBits(24), .UvIntBits(13), .TF(10), .PixelSteps(1), .Methods(Methods),
     .PerspColor(1'b0), .PixelPipelined(1'b0), .PixelMulIterative(1'b0), .SubdivDepth(64), .DfFracBits(2), .DfCap(64), .LF(6), .LogIdx(6),
     .CoordW(20), .GradW(16),
-    .FifoDepth(64), .FbPixels(FbPixels)
+    .FifoDepth(64), .FbPixels(FbPixels), .FwSetup(1'b1)
   ) u_subsys (
     .clk_i,
     .rst_ni,

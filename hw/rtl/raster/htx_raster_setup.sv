@@ -146,27 +146,16 @@ module htx_raster_setup #(
   // A method this build leaves out, a subdivision length outside 2..64 or a depth function beyond
   // `always` is consumed, draws nothing and raises ERR_STATE.
   localparam bit Textured = |Methods;  // texture mapping built (some perspective method)
-  logic take, state_bad, method_bad, tri_skip;
+  logic take, state_bad, tri_skip;
   logic [2:0] rec_method;
-  logic [6:0] rec_n;
   assign rec_method  = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
-  assign rec_n       = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_SUBDIV_N_LSB +: 7];
-  // DIVFREE's SUBDIV_N field carries the texture's last mip level (0..8, docs/raster.md).
-  // A build without any method (Methods = 0: no texture mapping, `Textured` below) refuses a
-  // textured triangle instead, and takes an untextured one whatever its method field names.
-  assign method_bad  = (rec_method > 3'd4) ||
-                       (Textured ? !Methods[rec_method]
-                                 : rec_state_i[htx_raster_reg_pkg::RASTER_STATE_TEXTURED_LSB]) ||
-                       ((rec_method == htx_raster_pkg::MethodSubdiv) && ((rec_n < 7'd2) || (rec_n > 7'd64))) ||
-                       ((rec_method == htx_raster_pkg::MethodDivFree) && (rec_n > 7'd8));
   // take: setup starts on a record. Without HoldRecord it copies the record and releases it at
   // once; with it, it releases it when nothing reads it any more: a bad state word at once, a
   // triangle that draws nothing after the determinant, any other when traversal takes it.
   assign take        = rec_valid_i && (state_q == StIdle) && !hold_i;
   assign rec_ready_o = HoldRecord ? ((take && state_bad) || tri_skip || ((state_q == StOut) && tri_ready_i))
                                   : ((state_q == StIdle) && !hold_i);
-  assign state_bad   = method_bad ||
-                       (rec_state_i[htx_raster_reg_pkg::RASTER_STATE_DEPTH_FUNC_LSB +: 3] > 3'd5);
+  assign state_bad   = htx_raster_pkg::state_bad(rec_state_i, Methods);
   assign taken_o     = take;
   assign err_o       = take && state_bad;
 

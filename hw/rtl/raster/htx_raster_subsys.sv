@@ -29,7 +29,8 @@ module htx_raster_subsys #(
   parameter int unsigned LF          = 8,
   parameter int unsigned LogIdx      = 10,
   parameter int unsigned CoordW     = 48,
-  parameter int unsigned GradW      = 24
+  parameter int unsigned GradW      = 24,
+  parameter bit          FwSetup    = 1'b0   // setup is the firmware's (plane records)
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -91,7 +92,8 @@ module htx_raster_subsys #(
     .FbPixels(FbPixels), .AddrW(AddrW), .QBits(QBits), .UvIntBits(UvIntBits), .TF(TF),
     .PixelSteps(PixelSteps), .Methods(Methods), .PerspColor(PerspColor),
     .PixelPipelined(PixelPipelined), .PixelMulIterative(PixelMulIterative),
-    .SubdivDepth(SubdivDepth), .DfFracBits(DfFracBits), .DfCap(DfCap), .LF(LF), .LogIdx(LogIdx), .CoordW(CoordW), .GradW(GradW)
+    .SubdivDepth(SubdivDepth), .DfFracBits(DfFracBits), .DfCap(DfCap), .LF(LF), .LogIdx(LogIdx), .CoordW(CoordW), .GradW(GradW),
+    .FwSetup(FwSetup)
   ) u_raster (
     .clk_i, .rst_ni,
     .req_valid_i(reg_req_valid_i), .req_ready_o(reg_req_ready_o), .req_addr_i(reg_req_addr_i),

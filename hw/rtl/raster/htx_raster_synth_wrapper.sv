@@ -47,7 +47,7 @@ module htx_raster_synth_wrapper #(
     .PixelSteps(Full ? 2 : 1), .Methods(Methods), .TexLod(TexLod), .PerspColor(Full),
     .PixelPipelined(Full),
     .PixelMulIterative(1'b0), .SubdivDepth(Full ? 128 : 64), .DfFracBits(Full ? 4 : 2), .DfCap(64),
-    .LF(Full ? 8 : 6), .LogIdx(Full ? 10 : 6), .CoordW(CoordW), .GradW(GradW), .Counters(Counters)
+    .LF(Full ? 8 : 6), .LogIdx(Full ? 10 : 6), .CoordW(CoordW), .GradW(GradW), .Counters(Counters), .FwSetup(!Full)
   ) u_raster (
     .clk_i, .rst_ni,
     .req_valid_i(in_q[0]),

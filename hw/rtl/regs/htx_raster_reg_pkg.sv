@@ -163,6 +163,10 @@ package htx_raster_reg_pkg;
   localparam int unsigned RASTER_CAPS_STATE_WIDTH = 1;
   localparam logic [31:0] RASTER_CAPS_STATE_MASK = 32'h00000100;
   localparam logic [31:0] RASTER_CAPS_STATE_RESET = 32'h00000000;
+  localparam int unsigned RASTER_CAPS_FW_SETUP_LSB = 9;
+  localparam int unsigned RASTER_CAPS_FW_SETUP_WIDTH = 1;
+  localparam logic [31:0] RASTER_CAPS_FW_SETUP_MASK = 32'h00000200;
+  localparam logic [31:0] RASTER_CAPS_FW_SETUP_RESET = 32'h00000000;
 
   // CNT_BUSY (ro): Clocks with STATUS.BUSY set. CNT_BUSY to CNT_PIXELS live in block RAM: a read of one waits up to 17 clocks and returns the count three clocks before it completes (exact once the unit is idle)
   localparam logic [11:0] RASTER_CNT_BUSY_OFFSET = 12'h040;

@@ -13,7 +13,9 @@
 #include <gtest/gtest.h>
 
 #include "htx/fw/vertex_record.h"
+#include "htx/model/config.hpp"
 #include "htx/model/perspective.hpp"
+#include "htx/rtl/fifo_records.hpp"
 #include "htx/rtl/raster_engine.hpp"
 #include "htx/rtl/raster_sim.hpp"
 #include "htx_regs.h"
@@ -56,15 +58,21 @@ struct RtlResult {
   uint64_t busy = 0, fragments = 0, pixels = 0, setup_busy = 0, triangles = 0, divfree_steps = 0;
 };
 
-// The FIFO stream of the triangles: each one's state word, then its packed record.
-inline std::vector<uint32_t> words_of(const std::vector<Tri>& tris) {
+// The configuration a built unit is of ("icebreaker_untextured" is `icebreaker`'s, "full_pc" `full`'s).
+inline const ModelConfig& config_of_build(const std::string& name) {
+  return model_config(name.rfind("icebreaker", 0) == 0 ? "icebreaker" : "full");
+}
+
+// How the unit takes triangles (CAPS.FW_SETUP: plane records set up for a w x h screen).
+inline rtl::FifoRecords fifo_form(rtl::RasterSim& sim, const std::string& name, int w, int h) {
+  return rtl::FifoRecords(config_of_build(name), sim.read_reg(HTX_TEST_REG(CAPS)), w, h);
+}
+
+// The FIFO stream of the triangles in the unit's form: each one's state word, then its packed
+// record; or its plane record (a triangle that draws nothing is then not sent).
+inline std::vector<uint32_t> words_of(const std::vector<Tri>& tris, const rtl::FifoRecords& form) {
   std::vector<uint32_t> words;
-  for (const Tri& t : tris) {
-    uint32_t packed[fw::kTriangleWords];
-    fw::pack_triangle(t.rec, packed);
-    words.push_back(pack_state_word(t.state, t.state.method, t.top_level));
-    words.insert(words.end(), packed, packed + fw::kTriangleWords);
-  }
+  for (const Tri& t : tris) form.append(&words, pack_state_word(t.state, t.state.method, t.top_level), t.rec);
   return words;
 }
 
@@ -103,8 +111,8 @@ inline uint64_t mismatch_pixels(const RtlResult& r, const Frame& m, size_t* firs
 // masked to z_bits).
 inline RtlResult draw(const std::string& name, const std::vector<Tri>& tris, int w, int h, uint16_t clear_color,
                       uint32_t clear_depth, unsigned z_bits) {
-  const std::vector<uint32_t> words = words_of(tris);
   rtl::RasterSim sim(name);
+  const std::vector<uint32_t> words = words_of(tris, fifo_form(sim, name, w, h));
   clear_frame(sim, w, h, clear_color, clear_depth);
   sim.write_reg(HTX_TEST_REG(CTRL), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_COUNTERS_RESET_Msk);
   RtlResult r;

@@ -8,8 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "htx/fw/plane_record.h"
 #include "htx/fw/vertex_record.h"
 #include "htx/model/model.hpp"
+#include "htx/rtl/fifo_records.hpp"
 #include "htx/rtl/raster_engine.hpp"
 #include "htx/rtl/raster_sim.hpp"
 #include "htx_regs.h"
@@ -36,8 +38,15 @@ ScreenTri tri(double x0, double y0, double x1, double y1, double x2, double y2, 
   return t;
 }
 
-std::vector<uint32_t> words_of(const ScreenScene& s, const ModelConfig& cfg) {
-  std::vector<uint32_t> w;
+// Each sent triangle's FIFO words in the unit's form: its state word and packed vertex record, or
+// (CAPS.FW_SETUP) its plane record, set up for the screen in FB_SIZE as the firmware's HAL does (a
+// triangle that draws nothing there is then not sent).
+std::vector<std::vector<uint32_t>> records_of(const ScreenScene& s, const ModelConfig& cfg, rtl::RasterSim& sim) {
+  const uint32_t size = sim.read_reg(R(FB_SIZE));
+  const rtl::FifoRecords form(cfg, sim.read_reg(R(CAPS)),
+                              static_cast<int>((size & RASTER_FB_SIZE_WIDTH_Msk) >> RASTER_FB_SIZE_WIDTH_Pos),
+                              static_cast<int>((size & RASTER_FB_SIZE_HEIGHT_Msk) >> RASTER_FB_SIZE_HEIGHT_Pos));
+  std::vector<std::vector<uint32_t>> out;
   for (const ScreenTri& t : s.tris) {
     fw::VertexIn in[3];
     for (int i = 0; i < 3; ++i) {
@@ -52,11 +61,15 @@ std::vector<uint32_t> words_of(const ScreenScene& s, const ModelConfig& cfg) {
     }
     fw::TriangleRecord rec;
     if (fw::encode_triangle(cfg.record_format(), in, &rec) != fw::kEncodeOk) continue;
-    uint32_t p[fw::kTriangleWords];
-    fw::pack_triangle(rec, p);
-    w.push_back(pack_state_word(t.state, t.state.method));
-    w.insert(w.end(), p, p + fw::kTriangleWords);
+    std::vector<uint32_t> w;
+    if (form.append(&w, pack_state_word(t.state, t.state.method), rec)) out.push_back(w);
   }
+  return out;
+}
+
+std::vector<uint32_t> words_of(const ScreenScene& s, const ModelConfig& cfg, rtl::RasterSim& sim) {
+  std::vector<uint32_t> w;
+  for (const std::vector<uint32_t>& r : records_of(s, cfg, sim)) w.insert(w.end(), r.begin(), r.end());
   return w;
 }
 
@@ -98,7 +111,7 @@ TEST(RasterRobust, FullFifoStallsTheBusAndDropsNothing) {
   setup_frame(sim, s);
   // Disabled, the unit takes nothing: 93 words into a 64-word FIFO must stall the writer.
   sim.write_reg(R(CTRL), 0);
-  const std::vector<uint32_t> w = words_of(s, cfg);
+  const std::vector<uint32_t> w = words_of(s, cfg, sim);
   ASSERT_EQ(w.size(), 93u);
   const std::vector<uint32_t> first(w.begin(), w.begin() + 64);
   sim.push_words(first);
@@ -125,13 +138,13 @@ TEST(RasterRobust, StateIsTheLastTrianglesStateWord) {
   rtl::RasterSim sim("icebreaker");
   EXPECT_EQ(sim.read_reg(R(STATE)), 0u);
   setup_frame(sim, s);
-  const std::vector<uint32_t> words = words_of(s, cfg);
+  const std::vector<std::vector<uint32_t>> recs = records_of(s, cfg, sim);
   // The last triangle sent: its state word leads its record at the end of the stream.
-  ASSERT_GE(words.size(), 2 * (1 + fw::kTriangleWords));  // two triangles at least
-  const uint32_t last_state = words[words.size() - 1 - fw::kTriangleWords];
+  ASSERT_GE(recs.size(), 2u);
+  const uint32_t last_state = recs.back()[0];
   ASSERT_NE(last_state, 0u);
-  ASSERT_NE(last_state, words[0]);
-  sim.push_words(words);
+  ASSERT_NE(last_state, recs[0][0]);
+  sim.push_words(words_of(s, cfg, sim));
   sim.wait_idle(1'000'000);
   EXPECT_EQ(sim.read_reg(R(STATE)), last_state);
   sim.write_reg(R(STATE), 0u);  // read-only
@@ -143,7 +156,7 @@ TEST(RasterRobust, SlowWriterSameFrame) {
   const ScreenScene s = small_scene();
   rtl::RasterSim sim("icebreaker");
   setup_frame(sim, s);
-  sim.push_words(words_of(s, cfg), 3, 17);  // 17 idle clocks after every third word
+  sim.push_words(words_of(s, cfg, sim), 3, 17);  // 17 idle clocks after every third word
   sim.wait_idle(1'000'000);
   EXPECT_GT(sim.read_reg(R(CNT_STALL_INPUT)), 0u);
   expect_frame(sim, s, cfg);
@@ -158,7 +171,7 @@ TEST(RasterRobust, AbortMidTriangleThenCleanFrame) {
     big.height = 48;
     big.tris.push_back(tri(-500, -400, 900, -300, 0, 700, 0.2));  // covers the screen
     setup_frame(sim, big);
-    std::vector<uint32_t> w = words_of(big, cfg);
+    std::vector<uint32_t> w = words_of(big, cfg, sim);
     sim.push_words(w);
     sim.idle(300);  // drawing is under way
     ASSERT_TRUE(sim.read_reg(R(STATUS)) & RASTER_STATUS_BUSY_Msk);
@@ -172,7 +185,7 @@ TEST(RasterRobust, AbortMidTriangleThenCleanFrame) {
     // A whole clean frame afterwards matches the model.
     const ScreenScene s = small_scene();
     setup_frame(sim, s);
-    sim.push_words(words_of(s, cfg));
+    sim.push_words(words_of(s, cfg, sim));
     sim.wait_idle(1'000'000);
     expect_frame(sim, s, cfg);
   }
@@ -187,16 +200,13 @@ TEST(RasterRobust, BadStateWordIsConsumedBetweenGoodTriangles) {
     rtl::RasterSim sim(name);
     const ScreenScene s = small_scene();  // three triangles
     setup_frame(sim, s);
-    std::vector<uint32_t> w = words_of(s, cfg);
-    const size_t rec = 1 + fw::kTriangleWords;
-    ASSERT_EQ(w.size(), 3 * rec);
+    const std::vector<std::vector<uint32_t>> recs = records_of(s, cfg, sim);
+    ASSERT_EQ(recs.size(), 3u);
     // A copy of the second triangle with a bad depth function, before it and after the last.
-    std::vector<uint32_t> bad(w.begin() + rec, w.begin() + 2 * rec);
+    std::vector<uint32_t> bad = recs[1];
     bad[0] |= RASTER_STATE_DEPTH_FUNC_Msk;  // 7
-    std::vector<uint32_t> stream(w.begin(), w.begin() + rec);
-    stream.insert(stream.end(), bad.begin(), bad.end());
-    stream.insert(stream.end(), w.begin() + rec, w.end());
-    stream.insert(stream.end(), bad.begin(), bad.end());
+    std::vector<uint32_t> stream = recs[0];
+    for (const std::vector<uint32_t>& r : {bad, recs[1], recs[2], bad}) stream.insert(stream.end(), r.begin(), r.end());
     sim.push_words(stream);
     sim.wait_idle(1'000'000);
     EXPECT_TRUE(sim.read_reg(R(STATUS)) & RASTER_STATUS_ERR_STATE_Msk) << name;
@@ -257,7 +267,7 @@ TEST(RasterRobust, AddressBeyondTheMemoryWritesNothing) {
     ScreenScene big;
     big.tris.push_back(tri(70, 63.5, 150, 63.5, 110, 71.5, 0.3));
     big.tris.push_back(tri(60, 100, 190, 100, 120, 180, 0.3));  // rows whose offset itself overflows
-    sim.push_words(words_of(big, cfg));
+    sim.push_words(words_of(big, cfg, sim));
     sim.wait_idle(10'000'000);
     const uint32_t frags = sim.read_reg(R(CNT_FRAGMENTS)), pixels = sim.read_reg(R(CNT_PIXELS));
     EXPECT_GT(frags, 1000u) << name;  // both triangles were walked
@@ -342,19 +352,81 @@ TEST(RasterRobust, TinyTriangleSetupThroughput) {
 }
 
 // CAPS names what the Verilated unit builds: every method of its configuration, the counters and
-// STATE (the board's build, without them, is checked in tests/rtl/soc).
+// STATE (the board's build, without them, is checked in tests/rtl/soc), and whether setup is the
+// firmware's (`icebreaker`: plane records).
 TEST(RasterRobust, CapsNamesTheBuild) {
   for (const std::string name : {"full", "full_pc", "icebreaker"}) {
     rtl::RasterSim sim(name);
     const uint32_t caps = sim.read_reg(R(CAPS));
-    const ModelConfig cfg = rtl_config(name == "icebreaker" ? "icebreaker" : "full");
+    const bool ice = name == "icebreaker";
+    const ModelConfig cfg = rtl_config(ice ? "icebreaker" : "full");
     EXPECT_EQ((caps & RASTER_CAPS_METHODS_Msk) >> RASTER_CAPS_METHODS_Pos, cfg.methods) << name;
     EXPECT_NE(caps & RASTER_CAPS_COUNTERS_Msk, 0u) << name;
     EXPECT_NE(caps & RASTER_CAPS_STATE_Msk, 0u) << name;
-    EXPECT_EQ(caps & ~(RASTER_CAPS_METHODS_Msk | RASTER_CAPS_COUNTERS_Msk | RASTER_CAPS_STATE_Msk), 0u) << name;
+    EXPECT_EQ((caps & RASTER_CAPS_FW_SETUP_Msk) != 0, ice) << name;
+    EXPECT_EQ(caps & ~(RASTER_CAPS_METHODS_Msk | RASTER_CAPS_COUNTERS_Msk | RASTER_CAPS_STATE_Msk |
+                       RASTER_CAPS_FW_SETUP_Msk),
+              0u)
+        << name;
     sim.write_reg(R(CAPS), 0u);  // read-only
     EXPECT_EQ(sim.read_reg(R(CAPS)), caps) << name;
   }
+}
+
+// A plane record (CAPS.FW_SETUP) whose box is empty or reaches past FB_SIZE is read to its end,
+// draws nothing and raises ERR_STATE; the records around it draw as the model says. Likewise a
+// record cut short by ABORT, and one with a pair past the last plane index.
+TEST(RasterRobust, BadPlaneRecordsAreConsumedBetweenGoodOnes) {
+  const ModelConfig cfg = rtl_config("icebreaker");
+  const ScreenScene s = small_scene();  // 64 x 48, three triangles
+  const uint32_t box_bad[] = {
+      (40u << 16) | 41u,       // x_lo > x_hi
+      (64u << 16) | 10u,       // x_hi = width
+      (8191u << 16) | 0u,      // x_hi far beyond
+  };
+  for (int variant = 0; variant < 5; ++variant) {
+    rtl::RasterSim sim("icebreaker");
+    setup_frame(sim, s);
+    const std::vector<std::vector<uint32_t>> recs = records_of(s, cfg, sim);
+    ASSERT_EQ(recs.size(), 3u);
+    std::vector<uint32_t> bad = recs[1];
+    ASSERT_GT(bad.size(), fw::kPlaneHeaderWords + 6);
+    if (variant < 3) {
+      bad[2] = box_bad[variant];
+    } else if (variant == 3) {
+      bad[3] = (48u << 16) | 5u;  // y_hi = height
+    } else {
+      bad[3] = (2u << 16) | 3u;   // y_lo > y_hi
+    }
+    sim.write_reg(R(STATUS), RASTER_STATUS_ERR_STATE_Msk);  // (rw1c)
+    std::vector<uint32_t> stream = recs[0];
+    for (const std::vector<uint32_t>& r : {bad, recs[1], recs[2], bad}) stream.insert(stream.end(), r.begin(), r.end());
+    sim.push_words(stream);
+    sim.wait_idle(1'000'000);
+    EXPECT_TRUE(sim.read_reg(R(STATUS)) & RASTER_STATUS_ERR_STATE_Msk) << "variant " << variant;
+    EXPECT_EQ(sim.read_reg(R(STATUS)) & RASTER_STATUS_BUSY_Msk, 0u) << "variant " << variant;
+    EXPECT_EQ(sim.read_reg(R(CNT_TRIANGLES)), 5u) << "variant " << variant;
+    expect_frame(sim, s, cfg);
+  }
+  // Pairs at plane indices the traversal does not use (10..15) write nothing it reads.
+  rtl::RasterSim sim("icebreaker");
+  setup_frame(sim, s);
+  std::vector<std::vector<uint32_t>> recs = records_of(s, cfg, sim);
+  std::vector<uint32_t> stream;
+  for (std::vector<uint32_t>& r : recs) {
+    const uint32_t last = r.back();
+    r.back() &= ~fw::kPlaneLastBit;
+    for (uint32_t idx = 10; idx < 16; ++idx) {
+      r.push_back(0xDEADBEEFu);
+      r.push_back((last & ~(0xFu << fw::kPlaneIndexPos) & ~fw::kPlaneLastBit) | (idx << fw::kPlaneIndexPos));
+    }
+    r.back() |= fw::kPlaneLastBit;
+    stream.insert(stream.end(), r.begin(), r.end());
+  }
+  sim.push_words(stream);
+  sim.wait_idle(1'000'000);
+  EXPECT_EQ(sim.read_reg(R(STATUS)) & RASTER_STATUS_ERR_STATE_Msk, 0u);
+  expect_frame(sim, s, cfg);
 }
 
 TEST(RasterRobust, MemoryWindows) {

@@ -40,8 +40,11 @@ raster_test::RtlResult run_rtl(const std::string& name, const std::vector<Tri>& 
 
 struct Port {  // the port widths of the named configurations (docs/raster.md)
   unsigned coord_w, loc_w, grad_w;
+  // Plane records (`icebreaker`, CAPS.FW_SETUP) carry the LOD gradients for DIVFREE only; the port's
+  // LOD gradients and shift are zero for the other methods.
+  bool lod_divfree_only;
 };
-Port port_of(const std::string& cfg) { return cfg == "full" ? Port{48, 32, 24} : Port{20, 23, 16}; }
+Port port_of(const std::string& cfg) { return cfg == "full" ? Port{48, 32, 24, false} : Port{20, 23, 16, true}; }
 
 int64_t sext(i128 v, unsigned bits) {
   const i128 m = i128{1} << bits;
@@ -96,8 +99,9 @@ std::vector<rtl::TexRequest> expected(const std::vector<Tri>& tris, const ModelC
         r.slot = static_cast<uint8_t>(t.state.texture);
         const int64_t px = 256 * int64_t{x} + 128, py = 256 * int64_t{y} + 128;
         r.lod_q = static_cast<uint64_t>(std::max<i128>(unit.q_plane().at(px, py), 1));
-        for (int i = 0; i < 6; ++i) r.lod_g[i] = sext(g[i] >> shift, port.grad_w);
-        r.lod_shift = static_cast<uint32_t>(shift);
+        const bool lod = !port.lod_divfree_only || t.state.method == Method::DivFree;
+        for (int i = 0; i < 6; ++i) r.lod_g[i] = lod ? sext(g[i] >> shift, port.grad_w) : 0;
+        r.lod_shift = lod ? static_cast<uint32_t>(shift) : 0;
         r.lod_u = sext(span.u[k], port.loc_w);
         r.lod_v = sext(span.v[k], port.loc_w);
         r.addr = static_cast<uint32_t>(y * w + x);
@@ -367,13 +371,14 @@ TEST_P(TexcoordDivfreeAbort, AbortThenCleanStreamMatchesModel) {
                                            (uint32_t{kH} << RASTER_FB_SIZE_HEIGHT_Pos));
   sim.write_reg(HTX_TEST_REG(FB_STRIDE), kW);
   sim.write_reg(HTX_TEST_REG(CTRL), RASTER_CTRL_ENABLE_Msk);
+  const rtl::FifoRecords form = raster_test::fifo_form(sim, name, kW, kH);
   // Every clock of a stretch of drawing (a span start, its level choice and walk fall inside it),
   // and a few moments further on.
   std::vector<unsigned> waits;
   for (unsigned w = 120; w < 185; ++w) waits.push_back(w);
   for (unsigned w : {60u, 233u, 389u, 577u}) waits.push_back(w);
   for (const unsigned wait : waits) {
-    sim.push_words(words_of(big));
+    sim.push_words(words_of(big, form));
     sim.idle(wait);
     ASSERT_TRUE(sim.read_reg(HTX_TEST_REG(STATUS)) & RASTER_STATUS_BUSY_Msk) << name << " " << wait;
     sim.write_reg(HTX_TEST_REG(CTRL), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_ABORT_Msk);
@@ -382,7 +387,7 @@ TEST_P(TexcoordDivfreeAbort, AbortThenCleanStreamMatchesModel) {
     std::vector<rtl::TexRequest> got;
     sim.write_reg(HTX_TEST_REG(CTRL), RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_COUNTERS_RESET_Msk);
     sim.record_requests(&got);
-    sim.push_words(words_of(clean));
+    sim.push_words(words_of(clean, form));
     sim.wait_idle(10'000'000);
     sim.record_requests(nullptr);
     uint64_t steps = 0;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fabric_harness.hpp"
+#include "htx/fw/plane_record.h"
 #include "htx/fw/vertex_record.h"
 #include "htx/model/config.hpp"
 #include "htx/sim/uart_line.hpp"
@@ -141,9 +142,11 @@ TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
   for (uint32_t w = 0; w < 32; ++w) EXPECT_EQ(soc.read(kFbColor + 4 * w).rdata, 0x5A5A'5A5Au) << w;
   EXPECT_EQ(soc.read(kFbColor + 4 * 32).rdata, 0u);  // pixel 64: outside the 16 x 4 screen
   EXPECT_EQ(soc.read(kFbDepth + 4 * 63).rdata & 0xFFFFu, 0x0123u);
-  // This fabric's GPU is the board's (CMakeLists.txt): AFFINE and RECIP_LUT, no raster counters.
-  // Every CNT_* then answers 0 at once, after the clear above as after a counter reset.
-  EXPECT_EQ(soc.read(kRaster + RASTER_CAPS_Offset).rdata, 0b00101u << RASTER_CAPS_METHODS_Pos);
+  // This fabric's GPU is the board's (CMakeLists.txt): AFFINE and RECIP_LUT, no raster counters,
+  // setup in firmware (plane records). Every CNT_* then answers 0 at once, after the clear above
+  // as after a counter reset.
+  EXPECT_EQ(soc.read(kRaster + RASTER_CAPS_Offset).rdata,
+            (0b00101u << RASTER_CAPS_METHODS_Pos) | RASTER_CAPS_FW_SETUP_Msk);
   for (uint32_t off = RASTER_CNT_BUSY_Offset; off <= RASTER_CNT_DIVFREE_STEPS_Offset; off += 4) {
     const auto r = soc.read(kRaster + off);
     EXPECT_FALSE(r.err) << std::hex << off;
@@ -164,10 +167,16 @@ TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
   htx::fw::TriangleRecord rec;
   ASSERT_EQ(htx::fw::encode_triangle(htx::model_config("icebreaker").record_format(), in, &rec),
             htx::fw::kEncodeOk);
-  uint32_t packed[htx::fw::kTriangleWords];
-  htx::fw::pack_triangle(rec, packed);
-  soc.write(kRaster + RASTER_FIFO_Offset, (5u << RASTER_STATE_DEPTH_FUNC_Pos) | RASTER_STATE_GOURAUD_Msk);
-  for (uint32_t w : packed) soc.write(kRaster + RASTER_FIFO_Offset, w);
+  // Set up as the firmware does for a unit with CAPS.FW_SETUP: a plane record.
+  htx::fw::PlaneJob job;
+  job.params = &htx::fw::kIcebreakerSetup;
+  job.width = 16;
+  job.height = 4;
+  job.state_word = (5u << RASTER_STATE_DEPTH_FUNC_Pos) | RASTER_STATE_GOURAUD_Msk;
+  uint32_t words[htx::fw::kPlaneRecordMaxWords];
+  size_t n = 0;
+  ASSERT_EQ(htx::fw::encode_plane_record(job, rec, words, &n), htx::fw::kPlaneOk);
+  for (size_t i = 0; i < n; ++i) soc.write(kRaster + RASTER_FIFO_Offset, words[i]);
   ASSERT_TRUE(raster_idle(20000));
   EXPECT_EQ(soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_ERR_STATE_Msk, 0u);
   EXPECT_EQ(soc.read(kFbColor + 4 * 9).rdata & 0xFFFFu, 0xFFFFu);  // pixel (2, 1) of the 16 x 4 screen: white

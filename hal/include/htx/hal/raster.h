@@ -1,11 +1,15 @@
 // Raster unit driver (hw/regs/raster.json): framebuffer set-up, fast clear, the vertex FIFO, the
 // performance counters and what the build has (CAPS). A triangle is one state word (layout of
-// register STATE) followed by the kTriangleWords words of htx::fw::pack_triangle.
+// register STATE) followed by the kTriangleWords words of htx::fw::pack_triangle; a unit that
+// leaves setup to the firmware (CAPS.FW_SETUP) takes it as a plane record instead, which
+// raster_push_triangle makes (htx/fw/plane_record.h).
 #pragma once
 
 #include <stddef.h>
 #include <stdint.h>
 
+#include "htx/fw/plane_record.h"
+#include "htx/fw/tri_setup.h"
 #include "htx/fw/vertex_record.h"
 #include "htx/hal/regs.h"
 
@@ -15,6 +19,7 @@ namespace htx::hal {
 struct RasterCaps {
   uint32_t methods = 0;   // bit m = perspective method m (STATE.METHOD) is built
   bool counters = false;  // the CNT_* counters are built (the board's build leaves them out)
+  bool fw_setup = false;  // the FIFO takes plane records: setup is the firmware's
 };
 
 inline RasterCaps raster_caps() {
@@ -22,6 +27,7 @@ inline RasterCaps raster_caps() {
   RasterCaps r;
   r.methods = (c & RASTER_CAPS_METHODS_Msk) >> RASTER_CAPS_METHODS_Pos;
   r.counters = (c & RASTER_CAPS_COUNTERS_Msk) != 0;
+  r.fw_setup = (c & RASTER_CAPS_FW_SETUP_Msk) != 0;
   return r;
 }
 
@@ -57,7 +63,45 @@ inline void raster_push(const uint32_t* words, size_t n) {
   for (size_t i = 0; i < n; ++i) HTX_RASTER->FIFO = words[i];
 }
 
+// Setup's parameters for a unit with CAPS.FW_SETUP: the `icebreaker` configuration's, the only
+// build that leaves setup to the firmware (its formats are the ones the firmware encodes for it).
+// The reciprocal table (2^k words) is filled on first use.
+inline const fw::SetupParams& raster_fw_setup_params() {
+  static uint32_t table[uint32_t{1} << fw::kIcebreakerSetup.recip.k];
+  static fw::SetupParams params = fw::kIcebreakerSetup;  // (constant-initialised: no guard)
+  if (params.recip.table == nullptr) {
+    fw::recip_fill_table(params.recip.k, params.recip.g, table);
+    params.recip.table = table;
+  }
+  return params;
+}
+
+// Sets the triangle up for the screen in FB_SIZE and queues its plane record; a triangle that
+// draws nothing there is not sent. Returns the words queued.
+inline size_t raster_push_plane_record(uint32_t state_word, const fw::TriangleRecord& rec) {
+  const uint32_t size = HTX_RASTER->FB_SIZE;
+  fw::PlaneJob job;
+  job.params = &raster_fw_setup_params();
+  job.width = static_cast<int32_t>((size & RASTER_FB_SIZE_WIDTH_Msk) >> RASTER_FB_SIZE_WIDTH_Pos);
+  job.height = static_cast<int32_t>((size & RASTER_FB_SIZE_HEIGHT_Msk) >> RASTER_FB_SIZE_HEIGHT_Pos);
+  job.state_word = state_word;
+  job.method = (state_word & RASTER_STATE_METHOD_Msk) >> RASTER_STATE_METHOD_Pos;
+  job.texture_planes = (HTX_RASTER->CAPS & RASTER_CAPS_METHODS_Msk) != 0;
+  uint32_t words[fw::kPlaneRecordMaxWords];
+  size_t n = 0;
+  const fw::PlaneStatus status = fw::encode_plane_record(job, rec, words, &n);
+  raster_push(words, n);
+  return status;
+}
+
+// Queues a triangle: its state word and packed vertex record, or (CAPS.FW_SETUP) its plane record.
 inline void raster_push_triangle(uint32_t state_word, const uint32_t words[fw::kTriangleWords]) {
+  if (HTX_RASTER->CAPS & RASTER_CAPS_FW_SETUP_Msk) {
+    fw::TriangleRecord rec;
+    fw::unpack_triangle(words, &rec);
+    raster_push_plane_record(state_word, rec);
+    return;
+  }
   HTX_RASTER->FIFO = state_word;
   raster_push(words, fw::kTriangleWords);
 }

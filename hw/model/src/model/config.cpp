@@ -55,6 +55,16 @@ void check(bool ok, const char* field, const char* range) {
 
 }  // namespace
 
+fw::SetupParams ModelConfig::setup_params() const {
+  fw::SetupParams p{};
+  p.format = record_format();
+  p.recip = {recip_table_bits, recip_guard_bits, recip_width, setup_nr_steps, nullptr};
+  p.grad_frac_bits = grad_frac_bits;
+  p.texcoord_frac_bits = texcoord_frac_bits;
+  p.lod_grad_bits = lod_grad_bits;
+  return p;
+}
+
 fw::RecordFormat ModelConfig::record_format() const {
   fw::RecordFormat f;
   f.xy_int_bits = static_cast<uint8_t>(xy_int_bits);

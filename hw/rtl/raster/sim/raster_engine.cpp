@@ -13,6 +13,7 @@
 #include "htx/model/names.hpp"
 #include "htx/model/perspective.hpp"
 #include "htx/model/texture.hpp"
+#include "htx/rtl/fifo_records.hpp"
 #include "htx/rtl/gpu_sim.hpp"
 #include "htx/rtl/texture_layout.hpp"
 #include "htx_regs.h"
@@ -182,8 +183,11 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
 
   // Encode first, so a bad triangle is reported before any simulation.
   const fw::RecordFormat format = cfg.record_format();
-  std::vector<uint32_t> words;
-  uint64_t sent = 0;
+  struct Encoded {
+    uint32_t state_word;
+    fw::TriangleRecord rec;
+  };
+  std::vector<Encoded> encoded;
   for (const ScreenTri& tri : scene.tris) {
     const TriState& st = tri.state;
     const Method method = st.method == Method::Auto ? model::auto_method(tri, cfg) : st.method;
@@ -193,17 +197,14 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
       throw std::invalid_argument("rtl engine: subdiv_n " + std::to_string(st.subdiv_n) + " outside 2..64");
     if (st.textured) check_texture_state(scene.textures, st, cfg);
     const fw::VertexIn in[3] = {to_vertex_in(tri.v[0]), to_vertex_in(tri.v[1]), to_vertex_in(tri.v[2])};
-    fw::TriangleRecord rec;
-    const fw::EncodeStatus status = fw::encode_triangle(format, in, &rec);
+    Encoded e;
+    const fw::EncodeStatus status = fw::encode_triangle(format, in, &e.rec);
     if (status == fw::kEncodeBadFormat) throw std::logic_error("rtl engine: bad record format");
     if (status != fw::kEncodeOk) continue;  // the firmware does not send it
-    uint32_t packed[fw::kTriangleWords];
-    fw::pack_triangle(rec, packed);
     // DIVFREE's level choice (bilinear, trilinear) needs the texture's last mip level.
     const unsigned top = st.textured ? level_count(scene.textures[static_cast<size_t>(st.texture)]) - 1 : 0;
-    words.push_back(pack_state_word(st, method, top));
-    words.insert(words.end(), packed, packed + fw::kTriangleWords);
-    ++sent;
+    e.state_word = pack_state_word(st, method, top);
+    encoded.push_back(e);
   }
 
   rtl::GpuSim sim(gpu_variant(cfg));
@@ -213,6 +214,11 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
     throw std::logic_error("rtl engine: the Verilated GPU has no raster counters (CAPS.COUNTERS = 0)");
   if (cfg.methods & ~((caps & RASTER_CAPS_METHODS_Msk) >> RASTER_CAPS_METHODS_Pos))
     throw std::logic_error("rtl engine: the Verilated GPU does not build every method of the configuration");
+  // Vertex records, or (CAPS.FW_SETUP) plane records set up as the firmware does.
+  const rtl::FifoRecords records(cfg, caps, scene.width, scene.height);
+  std::vector<uint32_t> words;
+  uint64_t sent = 0;
+  for (const Encoded& e : encoded) sent += records.append(&words, e.state_word, e.rec) ? 1 : 0;
   upload_textures(sim, scene);
   const uint32_t z_max = (uint32_t{1} << cfg.z_bits) - 1;
   sim.write_reg(HTX_RASTER_REG(FB_SIZE), (static_cast<uint32_t>(scene.width) << RASTER_FB_SIZE_WIDTH_Pos) |
@@ -238,6 +244,7 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
   s.covered_pixels = sim.read_reg(HTX_RASTER_REG(CNT_FRAGMENTS));
   s.pixels_written = sim.read_reg(HTX_RASTER_REG(CNT_PIXELS));
   s.triangles = sim.read_reg(HTX_RASTER_REG(CNT_TRIANGLES));
+  s.triangles_encoded = encoded.size();
   s.triangles_sent = sent;
   s.setup_busy_cycles = sim.read_reg(HTX_RASTER_REG(CNT_SETUP_BUSY));
   s.stall_input = sim.read_reg(HTX_RASTER_REG(CNT_STALL_INPUT));

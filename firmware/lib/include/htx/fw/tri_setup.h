@@ -58,6 +58,11 @@ struct RecipResult {
 };
 RecipResult reciprocal(const RecipSetup& p, uint64_t x);
 
+// The same for W <= 30, in 64-bit arithmetic only (what the firmware's plane records use: the rv32im
+// CPU's code for the 128-bit paths costs RAM it does not have; docs/firmware.md).
+uint64_t recip_mantissa_64(const RecipSetup& p, uint64_t mantissa);
+RecipResult reciprocal_64(const RecipSetup& p, uint64_t x);
+
 // A plane on the subpixel grid: value(px, py) 2^F = base + gx (px - x0) + gy (py - y0), F the
 // gradients' fraction bits; base = a0 2^F.
 struct PlaneSetup {
@@ -66,6 +71,11 @@ struct PlaneSetup {
 };
 // The plane through the setup's (reordered) vertices with values[3]; inv_det = 1/det.
 PlaneSetup make_plane(const CoverageSetup& s, const Int128 values[3], RecipResult inv_det, uint32_t frac_bits);
+// The same for vertex values |values[i]| < 2^36 (every `icebreaker` plane's), whose numerators
+// n_x, n_y fit 64 bits with any record's coordinates (|deltas| < 2^25): only the product by 1/det
+// is 128-bit. make_plane takes this path wherever the values allow.
+void make_plane_64(const CoverageSetup& s, const int64_t values[3], RecipResult inv_det, uint32_t frac_bits,
+                   PlaneSetup* out);
 
 // The vertex value of setup's attribute plane `plane` (0 z, 1 q, 2 uq, 3 vq, 4..7 the colour
 // channels r, g, b, a), signed.
@@ -82,6 +92,8 @@ inline int64_t plane_value(const VertexRecord& v, int plane) {
 // num / den (den > 0) with frac_bits fraction bits, as the divider forms it: den normalised to M
 // 2^s, num' = round(num 2^-s) (exact for s <= 0), result round(num' R 2^(frac_bits - 2W + 1)).
 int64_t divide_fixed(const RecipSetup& p, Int128 num, uint64_t den, uint32_t frac_bits);
+// The same for W <= 30 where num 2^-s fits 64 bits; false where it does not.
+bool divide_fixed_64(const RecipSetup& p, int64_t num, uint64_t den, uint32_t frac_bits, int64_t* out);
 
 // A configuration's setup parameters, those of the model's named configurations (htx::model_config;
 // tests/system/setup_check_test.cpp checks that they agree). recip.table is left null.
@@ -89,8 +101,9 @@ struct SetupParams {
   RecordFormat format;
   RecipSetup recip;
   uint32_t grad_frac_bits, texcoord_frac_bits;
+  uint32_t lod_grad_bits;  // the LOD unit's block-shifted gradients (DIVFREE's and trilinear's)
 };
-inline constexpr SetupParams kIcebreakerSetup{{12, 16, 24, 13}, {8, 2, 24, 2, nullptr}, 16, 10};
-inline constexpr SetupParams kFullSetup{{16, 24, 32, 16}, {10, 2, 32, 2, nullptr}, 24, 16};
+inline constexpr SetupParams kIcebreakerSetup{{12, 16, 24, 13}, {8, 2, 24, 2, nullptr}, 16, 10, 16};
+inline constexpr SetupParams kFullSetup{{16, 24, 32, 16}, {10, 2, 32, 2, nullptr}, 24, 16, 24};
 
 }  // namespace htx::fw

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "htx/fw/tri_setup.h"
 #include "htx/fw/vertex_record.h"
 #include "htx/model/types.hpp"
 
@@ -76,6 +77,8 @@ struct ModelConfig {
   bool has_filter(Filter f) const { return (filters >> static_cast<unsigned>(f)) & 1u; }
   bool has_format(TexFormat f) const { return (formats >> static_cast<unsigned>(f)) & 1u; }
   fw::RecordFormat record_format() const;
+  // Setup's parameters for the firmware's setup library (htx/fw/tri_setup.h); recip.table is null.
+  fw::SetupParams setup_params() const;
   // Throws std::invalid_argument naming the field when a width is outside what the model supports.
   void validate() const;
 };

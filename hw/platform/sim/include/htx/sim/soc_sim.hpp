@@ -40,7 +40,7 @@ const char* to_string(StopReason r);
 class SocSim {
  public:
   static constexpr uint32_t kClockHz = 12'000'000;  // htx_soc_sim_top's ClockHz (SYSCTRL.CLOCK_HZ)
-  static constexpr uint32_t kRamBytes = 65536;
+  static constexpr uint32_t kRamBytes = 131072;  // htx_soc_sim_top's RamBytes
   static constexpr uint32_t kFbPixels = 19200;  // the GPU's framebuffer (htx_soc_fabric's FbPixels)
 
   // Throws std::runtime_error if a segment does not fit in RAM or the trace cannot be opened.

@@ -19,7 +19,9 @@ struct RtlStats {
   uint64_t covered_pixels = 0;  // fragments traversal produced (CNT_FRAGMENTS)
   uint64_t pixels_written = 0;  // CNT_PIXELS
   uint64_t triangles = 0;       // triangles taken from the FIFO (CNT_TRIANGLES)
-  uint64_t triangles_sent = 0;  // triangles the encoder accepted and the host pushed
+  uint64_t triangles_encoded = 0;  // triangles the encoder accepted
+  // ... and the host pushed: all of them, or (CAPS.FW_SETUP) those whose setup draws something
+  uint64_t triangles_sent = 0;
   uint64_t setup_busy_cycles = 0;
   uint64_t stall_input = 0, stall_setup = 0, stall_fragment = 0;
   uint64_t clear_cycles = 0;    // clocks of the fast clear before drawing
