@@ -200,7 +200,7 @@ module htx_raster #(
   logic               setup_busy, setup_stall, setup_taken, setup_err;
   // The iterative divider's reciprocal unit also serves setup (1/|det| and AFFINE's 1/q_i): one
   // unit, table and multiplier instead of two. The pipelined divider's unit cannot take requests
-  // between fragments, so there setup keeps its own.
+  // between fragments, so there setup keeps its own. (FwSetup: no setup, so no second client.)
   localparam bit          SharedRecip = !PixelPipelined && Textured;
   localparam int unsigned DetW        = 2 * DW + 1;
   logic                      rq_start, rq_done;
@@ -577,7 +577,7 @@ module htx_raster #(
       .AccQ(AccQ), .AccU(AccU), .AccC(AccC), .UvIntBits(UvIntBits), .W(RecipW), .K(RecipK), .G(RecipG),
       .Steps(PixelSteps), .TF(TF), .LocW(LocW), .PayW(PayD), .Pipelined(PixelPipelined),
       .Color(PerspColor), .MulIterative(PixelMulIterative), .MulDigits(Iterative),
-      .Aux(SharedRecip), .AuxW(DetW), .AuxSteps(SetupSteps)
+      .Aux(SharedRecip && !FwSetup), .AuxW(DetW), .AuxSteps(SetupSteps)
     ) u_divider (
       .clk_i, .rst_ni,
       .abort_i    (abort),
