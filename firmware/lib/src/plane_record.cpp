@@ -95,7 +95,6 @@ PlaneStatus encode_plane_record(const PlaneJob& job, const TriangleRecord& rec, 
   PlaneSetup planes[7];  // z, r, g, b, q, uq, vq
   const int attr[7] = {0, 4, 5, 6, 1, 2, 3};  // plane_value's numbering
   const int count = job.texture_planes ? 7 : 4;
-  bool ok = true;
   for (int p = 0; p < count; ++p) {
     for (int i = 0; i < 3; ++i) vals[i] = plane_value(r[i], attr[p]);
     make_plane_64(s, vals, inv, gf, &planes[p]);
@@ -105,13 +104,13 @@ PlaneStatus encode_plane_record(const PlaneJob& job, const TriangleRecord& rec, 
     int64_t ua[3], va[3];
     for (int i = 0; i < 3; ++i) {
       const uint64_t q = r[i].q < 1 ? 1 : r[i].q;
-      ok = ok && divide_fixed_64(prm.recip, r[i].uq, q, prm.texcoord_frac_bits, &ua[i]) &&
-           divide_fixed_64(prm.recip, r[i].vq, q, prm.texcoord_frac_bits, &va[i]);
+      if (!divide_fixed_64(prm.recip, r[i].uq, q, prm.texcoord_frac_bits, &ua[i]) ||
+          !divide_fixed_64(prm.recip, r[i].vq, q, prm.texcoord_frac_bits, &va[i]))
+        return kPlaneTooWide;
     }
     make_plane_64(s, ua, inv, gf, &planes[5]);
     make_plane_64(s, va, inv, gf, &planes[6]);
   }
-  if (!ok) return kPlaneTooWide;
   for (int p = 0; p < count; ++p)
     put_plane(&w, 3 + static_cast<uint32_t>(p), planes[p].gx, planes[p].gy, plane_at(planes[p], px, py));
   w[-1] |= kPlaneLastBit;
