@@ -38,20 +38,4 @@ package htx_raster_pkg;
   function automatic logic [4:0] board_methods();
     board_methods = (5'd1 << MethodAffine) | (5'd1 << MethodRecipLut);
   endfunction
-
-  // A state word the unit refuses (setup's, or the plane-record reader's check): a method this
-  // build leaves out, a subdivision length outside 2..64, DIVFREE's last mip level beyond 8, or a
-  // depth function beyond `always`. A build without any method (methods = 0: no texture mapping)
-  // refuses a textured triangle instead, and takes an untextured one whatever its method field names.
-  function automatic logic state_bad(input logic [31:0] st, input logic [4:0] methods);
-    logic [2:0] m;
-    logic [6:0] n;
-    m = st[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
-    n = st[htx_raster_reg_pkg::RASTER_STATE_SUBDIV_N_LSB +: 7];
-    state_bad = (m > 3'd4) ||
-                ((methods != 5'd0) ? !methods[m] : st[htx_raster_reg_pkg::RASTER_STATE_TEXTURED_LSB]) ||
-                ((m == MethodSubdiv) && ((n < 7'd2) || (n > 7'd64))) ||
-                ((m == MethodDivFree) && (n > 7'd8)) ||
-                (st[htx_raster_reg_pkg::RASTER_STATE_DEPTH_FUNC_LSB +: 3] > 3'd5);
-  endfunction
 endpackage

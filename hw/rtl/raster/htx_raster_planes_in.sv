@@ -84,6 +84,9 @@ module htx_raster_planes_in #(
   assign w_lim  = (cnt_q == 5'd2) ? width_i : height_i;
   assign box_ok = (w_lo <= w_hi) && (w_hi < w_lim);
 
+  logic state_bad;  // of the word on fifo_rdata_i, taken as a state word
+  htx_raster_state_check #(.Methods(Methods)) u_state_check (.state_i(fifo_rdata_i), .bad_o(state_bad));
+
   logic got_state, got_pair, got_last;
   assign got_state = pend_q && !in_rec_q;
   assign got_pair  = pend_q && in_rec_q && (phase_q == PhPlanes) && half_q;
@@ -112,7 +115,7 @@ module htx_raster_planes_in #(
         phase_q  <= PhHead;
         cnt_q    <= 5'd1;
         half_q   <= 1'b0;
-        drop_q   <= htx_raster_pkg::state_bad(fifo_rdata_i, Methods);
+        drop_q   <= state_bad;
       end else if (pend_q) begin
         unique case (phase_q)
           PhHead: begin

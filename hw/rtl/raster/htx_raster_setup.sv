@@ -155,7 +155,7 @@ module htx_raster_setup #(
   assign take        = rec_valid_i && (state_q == StIdle) && !hold_i;
   assign rec_ready_o = HoldRecord ? ((take && state_bad) || tri_skip || ((state_q == StOut) && tri_ready_i))
                                   : ((state_q == StIdle) && !hold_i);
-  assign state_bad   = htx_raster_pkg::state_bad(rec_state_i, Methods);
+  htx_raster_state_check #(.Methods(Methods)) u_state_check (.state_i(rec_state_i), .bad_o(state_bad));
   assign taken_o     = take;
   assign err_o       = take && state_bad;
 
