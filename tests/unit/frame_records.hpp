@@ -32,15 +32,9 @@ inline FrameRecords frame_records(const std::vector<uint32_t>& fifo, uint32_t ca
     r.sent = r.tris.size();
     return r;
   }
-  auto capture = [](void* ctx, uint32_t state_word, const uint32_t* words) {
-    CapturedTriangle t;
-    t.state_word = state_word;
-    fw::unpack_triangle(words, &t.record);
-    static_cast<std::vector<CapturedTriangle>*>(ctx)->push_back(t);
-  };
   render::DrawStats stats;
   for (uint32_t i = 0; i < count; ++i)
-    if (render::draw_mesh(frame, view_proj, meshes[i], cache, render::TriangleSink{capture, &r.tris}, &stats) !=
+    if (render::draw_mesh(frame, view_proj, meshes[i], cache, capture_sink(&r.tris), &stats) !=
         render::kDrawOk)
       throw std::runtime_error("frame_records: draw_mesh failed on the second run");
   std::vector<uint32_t> expect;

@@ -41,6 +41,8 @@ void capture(void* context, uint32_t state_word, const uint32_t* words) {
 
 }  // namespace
 
+render::TriangleSink capture_sink(std::vector<CapturedTriangle>* out) { return render::TriangleSink{capture, out}; }
+
 std::vector<CapturedTriangle> draw_scene(const RenderScene& scene, const fw::RecordFormat& format,
                                          uint32_t methods_built, render::DrawStats* stats) {
   std::vector<CapturedTriangle> out;
@@ -56,7 +58,7 @@ std::vector<CapturedTriangle> draw_scene(const RenderScene& scene, const fw::Rec
     std::vector<uint8_t> codes(d.vertices.size());
     render::VertexCache cache{clip.data(), screen.data(), codes.data(), static_cast<uint32_t>(d.vertices.size())};
     const render::DrawStatus st =
-        render::draw_mesh(frame, scene.view_proj, d.mesh, &cache, render::TriangleSink{capture, &out}, &local);
+        render::draw_mesh(frame, scene.view_proj, d.mesh, &cache, capture_sink(&out), &local);
     if (st != render::kDrawOk) throw std::runtime_error("draw_mesh failed with status " + std::to_string(st));
   }
   if (stats) *stats = local;

@@ -28,6 +28,9 @@ struct CapturedTriangle {
   fw::TriangleRecord record;
 };
 
+// A pipeline sink that appends every triangle to *out.
+render::TriangleSink capture_sink(std::vector<CapturedTriangle>* out);
+
 // Runs the firmware pipeline over every mesh into a capturing sink.
 std::vector<CapturedTriangle> draw_scene(const RenderScene& scene, const fw::RecordFormat& format,
                                          uint32_t methods_built, render::DrawStats* stats = nullptr);

@@ -14,8 +14,8 @@
 #include <stdio.h>
 
 #include "htx/fw/plane_record.h"
-#include "htx/fw/tri_setup.h"
 #include "htx/fw/vertex_record.h"
+#include "htx/hal/raster.h"
 #include "htx/hal/timer.h"
 #include "htx_regs.h"
 #include "htx/render/pipeline.h"
@@ -32,10 +32,13 @@ uint8_t g_codes[kMaxVertices];
 
 void count_triangle(void* context, uint32_t, const uint32_t*) { ++*static_cast<uint32_t*>(context); }
 
-// The plane record of each triangle sent, timed on its own, with the `icebreaker` raster's
-// parameters (htx::fw::kIcebreakerSetup, its table filled) on a 160 x 120 screen.
+// The plane record of each triangle sent, timed on its own, as the HAL makes it for the
+// `icebreaker` raster unit (htx::hal::raster_plane_job: its parameters and table) on a 160 x 120
+// screen with texture mapping built.
+constexpr uint32_t kSetupFbSize = 160u | (120u << RASTER_FB_SIZE_HEIGHT_Pos);
+constexpr uint32_t kSetupCaps = RASTER_CAPS_METHODS_Msk | RASTER_CAPS_FW_SETUP_Msk;
+
 struct SetupTally {
-  htx::fw::SetupParams params;
   uint32_t triangles = 0, records = 0, words = 0;
   uint64_t cycles = 0;
   uint32_t checksum = 0;  // keeps the results live
@@ -45,12 +48,7 @@ void time_setup(void* context, uint32_t state_word, const uint32_t* words) {
   SetupTally& t = *static_cast<SetupTally*>(context);
   htx::fw::TriangleRecord rec;
   htx::fw::unpack_triangle(words, &rec);
-  htx::fw::PlaneJob job;
-  job.params = &t.params;
-  job.width = 160;
-  job.height = 120;
-  job.state_word = state_word;
-  job.method = (state_word & RASTER_STATE_METHOD_Msk) >> RASTER_STATE_METHOD_Pos;
+  const htx::fw::PlaneJob job = htx::hal::raster_plane_job(state_word, kSetupFbSize, kSetupCaps);
   uint32_t out[htx::fw::kPlaneRecordMaxWords];
   size_t n = 0;
   const uint64_t t0 = htx::hal::cpu_cycles();
@@ -68,14 +66,10 @@ void print_ratio(uint64_t num, uint64_t den) {
   printf("%lu.%02lu", static_cast<unsigned long>(hundredths / 100), static_cast<unsigned long>(hundredths % 100));
 }
 
-uint32_t g_recip_table[256];  // 2^k entries of kIcebreakerSetup's table
-
 }  // namespace
 
 int main() {
-  htx::fw::SetupParams setup = htx::fw::kIcebreakerSetup;
-  htx::fw::recip_fill_table(setup.recip.k, setup.recip.g, g_recip_table);  // once, as the HAL does
-  setup.recip.table = g_recip_table;
+  htx::hal::raster_fw_setup_params();  // fills the reciprocal table once, outside the timing
   uint32_t n = 0;
   const geombench::BenchScene* scenes = geombench::bench_scenes(&n);
   htx::render::VertexCache cache{g_clip, g_screen, g_codes, kMaxVertices};
@@ -119,7 +113,7 @@ int main() {
            static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(sent),
            static_cast<unsigned long>(st.clipped), static_cast<unsigned long>(dc / sc.triangle_count));
 
-    SetupTally tally{setup};
+    SetupTally tally;
     if (htx::render::draw_mesh(frame, sc.view_proj, mesh, &cache, {time_setup, &tally}, &st) == htx::render::kDrawOk &&
         tally.triangles != 0) {
       printf("geombench %s setup triangles %lu records %lu words %lu cycles/triangle %lu (checksum %08lx)\n", sc.name,

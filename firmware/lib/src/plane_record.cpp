@@ -29,12 +29,16 @@ Int128 plane_at(const PlaneSetup& p, int64_t px, int64_t py) {
 
 int msb_index_u128(Int128 a) { return a.hi != 0 ? 64 + msb_index_u64(a.hi) : msb_index_u64(a.lo); }
 
-// Appends `bits` bits of v at bit position *pos of the side band.
+// Appends the low `bits` bits of v (at most 128) at bit position *pos of the zeroed side band,
+// as many at a time as fit the current word.
 void put_bits(uint32_t* side, uint32_t* pos, Int128 v, uint32_t bits) {
-  for (uint32_t i = 0; i < bits; ++i, ++*pos) {
-    const uint64_t word = i < 64 ? v.lo : v.hi;
-    const uint32_t bit = static_cast<uint32_t>((i < 128 ? word >> (i & 63) : word >> 63) & 1u);
-    side[*pos >> 5] |= bit << (*pos & 31);
+  for (uint32_t i = 0; i < bits;) {
+    const uint32_t off = *pos & 31;
+    const uint32_t take = (bits - i < 32 - off) ? bits - i : 32 - off;
+    const uint64_t chunk = i128_sar(v, i).lo & ((uint64_t{1} << take) - 1);
+    side[*pos >> 5] |= static_cast<uint32_t>(chunk) << off;
+    *pos += take;
+    i += take;
   }
 }
 

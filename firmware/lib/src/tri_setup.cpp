@@ -23,6 +23,12 @@ bool within_plane_64(Int128 a) {
   return b.hi == 0 && (b.lo >> 37) == 0;
 }
 
+// The reciprocal table's entry for a W-bit mantissa (its k bits below the leading one).
+uint32_t table_entry(const RecipSetup& p, uint64_t mantissa) {
+  const uint32_t index = static_cast<uint32_t>((mantissa >> (p.width - 1 - p.k)) & ((uint64_t{1} << p.k) - 1));
+  return p.table ? p.table[index] : recip_table_entry(p.k, p.g, index);
+}
+
 // a b for a signed 64-bit a and an unsigned 64-bit b: one 64 x 64-bit product.
 Int128 mul_i64_u64(int64_t a, uint64_t b) {
   const bool neg = a < 0;
@@ -93,8 +99,7 @@ void recip_fill_table(uint32_t k, uint32_t g, uint32_t* table) {
 
 uint64_t recip_mantissa_64(const RecipSetup& p, uint64_t mantissa) {
   const uint32_t w = p.width;
-  const uint32_t index = static_cast<uint32_t>((mantissa >> (w - 1 - p.k)) & ((uint64_t{1} << p.k) - 1));
-  const uint32_t entry = p.table ? p.table[index] : recip_table_entry(p.k, p.g, index);
+  const uint32_t entry = table_entry(p, mantissa);
   // m r < 2^(2W+1) and r c < 2^(2W+2): 64 bits hold every step for W <= 30.
   uint64_t r = uint64_t{entry} << (w - (p.k + p.g + 1));
   const uint64_t two = uint64_t{1} << (w + 1), half = uint64_t{1} << (w - 1);
@@ -109,8 +114,7 @@ uint64_t recip_mantissa_64(const RecipSetup& p, uint64_t mantissa) {
 uint64_t recip_mantissa(const RecipSetup& p, uint64_t mantissa) {
   const uint32_t w = p.width;
   if (w <= 30) return recip_mantissa_64(p, mantissa);
-  const uint32_t index = static_cast<uint32_t>((mantissa >> (w - 1 - p.k)) & ((uint64_t{1} << p.k) - 1));
-  const uint32_t entry = p.table ? p.table[index] : recip_table_entry(p.k, p.g, index);
+  const uint32_t entry = table_entry(p, mantissa);
   Int128 r = i128_shl(u128_from(entry), w - (p.k + p.g + 1));
   const Int128 two = i128_shl(Int128{1, 0}, w + 1);
   const Int128 half = i128_shl(Int128{1, 0}, w - 1);
@@ -172,9 +176,10 @@ PlaneSetup make_plane(const CoverageSetup& s, const Int128 values[3], RecipResul
   const Int128 nx = i128_sub(i128_mul(da1, dy2), i128_mul(da2, dy1));
   const Int128 ny = i128_sub(i128_mul(da2, dx1), i128_mul(da1, dx2));
   const int32_t shift = inv_det.shift - static_cast<int32_t>(frac_bits);
+  const Int128 r = u128_from(inv_det.value);
   p.base = i128_shl(values[0], frac_bits);
-  p.gx = i128_shift_round(i128_mul(nx, u128_from(inv_det.value)), shift);
-  p.gy = i128_shift_round(i128_mul(ny, u128_from(inv_det.value)), shift);
+  p.gx = i128_shift_round(i128_mul(nx, r), shift);
+  p.gy = i128_shift_round(i128_mul(ny, r), shift);
   p.x0 = v[0].x;
   p.y0 = v[0].y;
   return p;

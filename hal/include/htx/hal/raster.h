@@ -76,17 +76,24 @@ inline const fw::SetupParams& raster_fw_setup_params() {
   return params;
 }
 
-// Sets the triangle up for the screen in FB_SIZE and queues its plane record; a triangle that
-// draws nothing there is not sent. Returns the words queued.
-inline size_t raster_push_plane_record(uint32_t state_word, const fw::TriangleRecord& rec) {
-  const uint32_t size = HTX_RASTER->FB_SIZE;
+// The setup job of a triangle with this state word, from the unit's FB_SIZE and CAPS register
+// values (no register access: geombench times the same job without a unit).
+inline fw::PlaneJob raster_plane_job(uint32_t state_word, uint32_t fb_size, uint32_t caps) {
   fw::PlaneJob job;
   job.params = &raster_fw_setup_params();
-  job.width = static_cast<int32_t>((size & RASTER_FB_SIZE_WIDTH_Msk) >> RASTER_FB_SIZE_WIDTH_Pos);
-  job.height = static_cast<int32_t>((size & RASTER_FB_SIZE_HEIGHT_Msk) >> RASTER_FB_SIZE_HEIGHT_Pos);
+  job.width = static_cast<int32_t>((fb_size & RASTER_FB_SIZE_WIDTH_Msk) >> RASTER_FB_SIZE_WIDTH_Pos);
+  job.height = static_cast<int32_t>((fb_size & RASTER_FB_SIZE_HEIGHT_Msk) >> RASTER_FB_SIZE_HEIGHT_Pos);
   job.state_word = state_word;
   job.method = (state_word & RASTER_STATE_METHOD_Msk) >> RASTER_STATE_METHOD_Pos;
-  job.texture_planes = (HTX_RASTER->CAPS & RASTER_CAPS_METHODS_Msk) != 0;
+  job.texture_planes = (caps & RASTER_CAPS_METHODS_Msk) != 0;
+  return job;
+}
+
+// Sets the triangle up for the screen in FB_SIZE and queues its plane record; a triangle that
+// draws nothing there is not sent (kPlaneEmpty). caps: the unit's CAPS, as the caller read it.
+// (kPlaneTooWide cannot happen with these parameters: plane_record.h asserts it.)
+inline fw::PlaneStatus raster_push_plane_record(uint32_t state_word, const fw::TriangleRecord& rec, uint32_t caps) {
+  const fw::PlaneJob job = raster_plane_job(state_word, HTX_RASTER->FB_SIZE, caps);
   uint32_t words[fw::kPlaneRecordMaxWords];
   size_t n = 0;
   const fw::PlaneStatus status = fw::encode_plane_record(job, rec, words, &n);
@@ -96,10 +103,11 @@ inline size_t raster_push_plane_record(uint32_t state_word, const fw::TriangleRe
 
 // Queues a triangle: its state word and packed vertex record, or (CAPS.FW_SETUP) its plane record.
 inline void raster_push_triangle(uint32_t state_word, const uint32_t words[fw::kTriangleWords]) {
-  if (HTX_RASTER->CAPS & RASTER_CAPS_FW_SETUP_Msk) {
+  const uint32_t caps = HTX_RASTER->CAPS;
+  if (caps & RASTER_CAPS_FW_SETUP_Msk) {
     fw::TriangleRecord rec;
     fw::unpack_triangle(words, &rec);
-    raster_push_plane_record(state_word, rec);
+    raster_push_plane_record(state_word, rec, caps);
     return;
   }
   HTX_RASTER->FIFO = state_word;
