@@ -393,7 +393,7 @@ module htx_raster #(
   // and planes' values (in block RAM, on one adder; setup writes each triangle's edges and planes
   // straight into that RAM, so neither keeps them in registers).
   htx_raster_traverse #(.DW(DW), .EW(EW), .NP(NPT), .AW(AWP), .SideW(SideT), .AddrW(AddrW),
-                        .LookBehind(!Iterative), .SerialRowBase(Iterative),
+                        .LookBehind(!Iterative),
                         .SerialPlanes(Iterative)) u_traverse (
     .clk_i, .rst_ni,
     .abort_i         (abort),
@@ -442,7 +442,7 @@ module htx_raster #(
   logic [3*AccC-1:0] sh_c;
   logic [SideT-1:0]  sh_side;
   htx_raster_shade #(.ZBits(ZBits), .GF(GF), .NP(NP), .AW(AW), .SideW(SideT), .AccC(AccC),
-                     .AccQ(AccQ), .AccU(AccU), .LocW(LocW), .PerspColor(PerspColor),
+                     .AccQ(AccQ), .AccU(AccU), .LocW(LocW), .PerspColor(PerspColor), .Subdiv(Methods[1]),
                      .AddrW(AddrW), .Registered(!Iterative)) u_shade (
     .clk_i, .rst_ni,
     .abort_i        (abort),
@@ -572,7 +572,37 @@ module htx_raster #(
   logic [LocW-1:0]   dv_u, dv_v;
   logic [23:0]       dv_rgb;
   logic [PayD-1:0]   dv_pay;
-  if (Textured) begin : g_divider
+  // RECIP_LUT as the only method that divides per pixel, no perspective-correct colour and no
+  // setup client (the board's GPU): the divider without Newton steps (htx_raster_lut_divider).
+  localparam bit LutDivider = Textured && !PixelPipelined && !PerspColor && !(SharedRecip && !FwSetup) &&
+                              !Methods[1] && !Methods[3] && !Methods[4];
+  if (LutDivider) begin : g_lut_divider
+    htx_raster_lut_divider #(
+      .AccQ(AccQ), .AccU(AccU), .UvIntBits(UvIntBits), .W(RecipW), .K(RecipK), .G(RecipG), .TF(TF),
+      .LocW(LocW), .PayW(PayD)
+    ) u_divider (
+      .clk_i, .rst_ni,
+      .abort_i    (abort),
+      .in_valid_i (df_valid),
+      .in_ready_o (df_ready),
+      .in_need_i  (sh_need),
+      .in_q_i     (df_q),
+      .in_u_i     (df_u),
+      .in_v_i     (df_v),
+      .in_pay_i   ({df_side, df_addr, df_z, df_rgb, df_ua, df_va, df_q, df_exact, df_x, df_div_color}),
+      .out_valid_o(dv_valid),
+      .out_ready_i(dv_ready),
+      .out_u_o    (dv_u),
+      .out_v_o    (dv_v),
+      .out_pay_o  (dv_pay)
+    );
+    assign dv_rgb  = '0;
+    assign rq_done = 1'b0;
+    assign rq_r    = '0;
+    assign rq_msb  = '0;
+    logic unused_lut_div;
+    assign unused_lut_div = ^{df_c, rq_start, rq_x};
+  end else if (Textured) begin : g_divider
     htx_raster_divider #(
       .AccQ(AccQ), .AccU(AccU), .AccC(AccC), .UvIntBits(UvIntBits), .W(RecipW), .K(RecipK), .G(RecipG),
       .Steps(PixelSteps), .TF(TF), .LocW(LocW), .PayW(PayD), .Pipelined(PixelPipelined),

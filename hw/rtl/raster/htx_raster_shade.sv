@@ -3,7 +3,7 @@
 // clamp(round(C 2^-GF), 0, 255) when it is linear in screen space (or vertex 0's colour for flat
 // shading); AFFINE's coordinates round(U_a 2^-GF). It passes Q, U, V (and C q with PerspColor) on
 // to the divider, and marks SUBDIV's exact points: a span's first pixel, every n-th after it, and
-// its last pixel. Alpha has no plane: the framebuffer is RGB565, so alpha never reaches a pixel.
+// its last pixel (Subdiv = 0, a unit without SUBDIV: none). Alpha has no plane: the framebuffer is RGB565, so alpha never reaches a pixel.
 module htx_raster_shade #(
   parameter int unsigned ZBits      = 24,
   parameter int unsigned GF         = 24,
@@ -16,6 +16,7 @@ module htx_raster_shade #(
   parameter int unsigned AccU       = 48 + GF + 2,
   parameter int unsigned LocW       = 32,
   parameter bit          PerspColor = 1'b1,
+  parameter bit          Subdiv     = 1'b1,
   parameter int unsigned AddrW      = 24,
   // 1: the results are registered (a pipeline stage). 0: they are combinational from the input
   // and the stage only passes the hand-shake through: for a traversal that already holds its
@@ -103,8 +104,10 @@ module htx_raster_shade #(
 
   // SUBDIV: position in the span modulo n.
   logic [6:0] n, k_q, k;
+  logic       exact;
   assign n = st[htx_raster_reg_pkg::RASTER_STATE_SUBDIV_N_LSB +: 7];
   assign k = in_first_i ? 7'd0 : k_q;
+  assign exact = Subdiv && ((k == 7'd0) || in_last_i);
 
   logic unused;
   assign unused = ^{z_round_full[AccZ-1:ZR], flat[31:24], in_p_i};
@@ -114,7 +117,7 @@ module htx_raster_shade #(
                                3 * AccC + SideW;
   logic [RW-1:0] res_d, res;
   assign res_d = {in_addr_i, in_x_i, in_y_i, in_first_i, in_last_i, in_tfirst_i, z_clamped, rgb,
-                  gouraud && PerspColor, (k == 7'd0) || in_last_i, ua, va,
+                  gouraud && PerspColor, exact, ua, va,
                   in_p_i[AW*4 +: AccQ], in_p_i[AW*5 +: AccU], in_p_i[AW*6 +: AccU],
                   in_p_i[AW*3 +: AccC], in_p_i[AW*2 +: AccC], in_p_i[AW*1 +: AccC], in_side_i};
   assign {out_addr_o, out_x_o, out_y_o, out_first_o, out_last_o, out_tfirst_o, out_z_o, out_rgb_o,
@@ -150,7 +153,7 @@ module htx_raster_shade #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       k_q <= '0;
-    end else if (!abort_i && advance) begin
+    end else if (Subdiv && !abort_i && advance) begin
       k_q <= (k + 7'd1 >= n) ? 7'd0 : k + 7'd1;
     end
   end

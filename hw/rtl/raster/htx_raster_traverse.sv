@@ -6,12 +6,12 @@
 // same clock, so a row costs its span length plus how far its start moved; an empty row costs one.
 // LookBehind = 0 (`icebreaker`) leaves out the left look (three edge adders and their tests): a row
 // whose start is found by walking left steps one column past it and back, two clocks more.
-// Framebuffer addresses are AddrW bits (the subsystem sizes them to its memory): a row offset or
-// address that does not fit (a large stride x height) sets a sticky flag for the triangle, and the
-// fragment's address is then all ones, beyond any memory of fewer than 2^AddrW - 1 pixels, so the
-// fragment stage writes nothing there (rather than at the address modulo 2^AddrW).
-// SerialRowBase = 1 (`icebreaker`) forms the first row's framebuffer offset y_lo * stride by shift
-// and add, one bit of y_lo per clock (13 clocks per triangle), instead of with a multiplier (a DSP).
+// Framebuffer addresses are AddrW bits (the subsystem sizes them to its memory): each fragment's
+// y * stride + x is one multiply-add (an iCE40 DSP, 13 x 13 bits and a 13-bit addend), and an
+// address that does not fit (a large stride x height) is all ones, beyond any memory of fewer than
+// 2^AddrW - 1 pixels, so the fragment stage writes nothing there (rather than at the address
+// modulo 2^AddrW). (Until 2026-12-04 a row offset register stepped by the stride, formed for the
+// first row by a multiplier in `full` and by shift and add in `icebreaker`: about 100 LUT4 more.)
 // SerialPlanes = 1 (`icebreaker`) keeps the plane accumulators in one block RAM and steps them one
 // plane a clock on one adder: a step costs NP + 3 clocks (the edges are planes there too), not one.
 // The row's saved copy needs no copy: the RAM holds two banks, and the step that leaves a span's
@@ -33,7 +33,6 @@ module htx_raster_traverse #(
   parameter int unsigned SideW = 64,
   parameter int unsigned AddrW = 24,
   parameter bit          LookBehind = 1'b1,
-  parameter bit          SerialRowBase = 1'b0,
   parameter bit          SerialPlanes = 1'b0
 ) (
   input  logic              clk_i,
@@ -76,7 +75,8 @@ module htx_raster_traverse #(
   localparam int unsigned XCW = 15;  // signed column, the walk reaches x_lo - 1 .. x_hi + 1
 
   // StBack (LookBehind = 0): walking left over covered pixels to the first one of the span.
-  // StBase (SerialRowBase = 1): forming y_lo * stride before the first row.
+  // StBase (SerialPlanes = 1): the clock after the triangle is taken, in which the relations of x
+  // to the box reach their register (g_xrel_q).
   // StLoad (SerialPlanes = 1): the one clock in which the triangle is taken, once the last step's
   // planes are written and the last fragment has left.
   typedef enum logic [2:0] {StIdle, StSeek, StSeekL, StSeekR, StEmit, StBack, StBase, StLoad} state_e;
@@ -85,20 +85,6 @@ module htx_raster_traverse #(
   logic [SideW-1:0]        side_q;
   logic signed [XCW-1:0]   x_lo_q, x_hi_q, x_q, xs_q;
   logic [12:0]             y_q, y_hi_q;
-  logic [AddrW-1:0]        row_base_q;
-  logic                    row_over_q;  // row_base_q overflowed AddrW bits (sticky per triangle)
-  logic [12:0]             base_y_q;   // SerialRowBase: y_lo's bits not yet taken, MSB first
-  logic [3:0]              base_n_q;   // SerialRowBase: bits left
-  // Row offset sums one bit wider than the address, and than the 13-bit stride and 15-bit column.
-  localparam int unsigned RSW = ((AddrW > XCW) ? AddrW : XCW) + 1;
-  logic [RSW-1:0] base_dbl, base_add, row_next;
-  assign base_dbl = RSW'({row_base_q, 1'b0}) + (base_y_q[12] ? RSW'(stride_i) : '0);  // Horner's step
-  assign base_add = RSW'(row_base_q) + RSW'(stride_i);                          // the next row's
-  assign row_next = (state_q == StBase) ? base_dbl : base_add;
-  logic row_next_over;  // row_next does not fit AddrW bits
-  assign row_next_over = (row_next >> AddrW) != '0;
-  logic [25:0] row_first;  // SerialRowBase = 0: y_lo * stride by a multiplier (13 x 13 bits)
-  assign row_first = 26'(tri_y_lo_i) * 26'(stride_i);
   logic [2:0]              thr_q;
   logic                    dneg_q;
   logic                    sweep_q;   // SerialPlanes: the planes are being stepped (0 otherwise)
@@ -134,7 +120,7 @@ module htx_raster_traverse #(
   // few LUTs.
   logic cov, in_prev, in_next, left_of, right_of, empty_row, at_lo;
   logic below_lo, above_hi, on_lo, on_hi;
-  if (SerialPlanes && SerialRowBase) begin : g_xrel_q
+  if (SerialPlanes) begin : g_xrel_q
     // x moves only in a deciding clock that starts a pass (NP + 3 clocks without a decision), and
     // the first decision of a triangle comes after StBase: the relations can come from a register
     // a clock behind x, which takes their carry chains off the decision's path (docs/raster.md).
@@ -345,10 +331,6 @@ module htx_raster_traverse #(
       xs_q       <= '0;
       y_q        <= '0;
       y_hi_q     <= '0;
-      row_base_q <= '0;
-      row_over_q <= 1'b0;
-      base_y_q   <= '0;
-      base_n_q   <= '0;
       thr_q      <= '0;
       dneg_q     <= 1'b0;
       a_zero_q   <= '0;
@@ -368,27 +350,13 @@ module htx_raster_traverse #(
         x_q        <= XCW'(tri_x_lo_i);
         y_q        <= tri_y_lo_i;
         y_hi_q     <= tri_y_hi_i;
-        if (SerialRowBase) begin
-          row_base_q <= '0;
-          row_over_q <= 1'b0;
-          base_y_q   <= tri_y_lo_i;
-          base_n_q   <= 4'd13;
-        end else begin
-          row_base_q <= AddrW'(row_first);
-          row_over_q <= (row_first >> AddrW) != '0;
-        end
         thr_q      <= tri_thr_i;
         dneg_q     <= tri_dneg_i;
         a_zero_q   <= tri_a_zero_i;
-        state_q <= SerialRowBase ? StBase : StSeek;
+        state_q <= SerialPlanes ? StBase : StSeek;
       end
-    end else if (SerialRowBase && (state_q == StBase)) begin
-      // Horner's rule, MSB first: base = 2 base + bit * stride.
-      row_base_q <= AddrW'(row_next);
-      if (row_next_over) row_over_q <= 1'b1;
-      base_y_q   <= base_y_q << 1;
-      base_n_q   <= base_n_q - 4'd1;
-      if (base_n_q == 4'd1) state_q <= StSeek;
+    end else if (SerialPlanes && (state_q == StBase)) begin
+      state_q <= StSeek;
     end else begin
       if (emit) tnew_q <= 1'b0;
       if (save) xs_q <= x_q;
@@ -402,8 +370,6 @@ module htx_raster_traverse #(
             state_q <= StIdle;
           end else begin
             y_q        <= y_q + 1'b1;
-            row_base_q <= AddrW'(row_next);
-            if (row_next_over) row_over_q <= 1'b1;
             if (act == ActRowSaved) x_q <= xs_q;
             state_q <= StSeek;
           end
@@ -628,8 +594,10 @@ module htx_raster_traverse #(
   // ---- Output register -------------------------------------------------------------------------
   logic [12:0]       out_x_q, out_y_q;
   logic [AddrW-1:0]  out_addr_q;
-  logic [RSW-1:0]    addr_sum;
-  assign addr_sum = RSW'(row_base_q) + RSW'($unsigned(x_q));  // (x is on the screen when emitted)
+  // y * stride + x, wide enough not to wrap (x is on the screen when emitted: 0 <= x < 2^13).
+  localparam int unsigned AFW = (AddrW + 1 > 27) ? AddrW + 1 : 27;
+  logic [AFW-1:0]    addr_full;
+  assign addr_full = AFW'(y_q) * AFW'(stride_i) + AFW'(x_q[12:0]);
   logic              out_first_q, out_last_q, out_tfirst_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -651,7 +619,7 @@ module htx_raster_traverse #(
       if (emit) begin
         out_x_q     <= 13'(x_q);
         out_y_q     <= y_q;
-        out_addr_q  <= (row_over_q || ((addr_sum >> AddrW) != '0)) ? '1 : AddrW'(addr_sum);
+        out_addr_q  <= ((addr_full >> AddrW) != '0) ? '1 : AddrW'(addr_full);
         out_first_q <= first;
         out_tfirst_q <= tnew_q;
       end

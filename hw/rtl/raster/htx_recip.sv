@@ -62,19 +62,6 @@ module htx_recip #(
   typedef enum logic [2:0] {StIdle, StNorm, StTable, StMulE, StMulR, StDone} state_e;
   localparam bit Serial = SerialNorm && !Pipelined;
 
-  // Table entry i: round(2^(2k+g+2) / (2^(k+1) + 2i + 1)); the odd divisor never ties.
-  function automatic logic [EntryW-1:0] table_entry(input int unsigned i);
-    logic [63:0] num, den;
-    num = 64'd1 << (2 * K + G + 2);
-    den = (64'd1 << (K + 1)) + 64'(2 * i + 1);
-    table_entry = EntryW'((2 * num + den) / (2 * den));
-  endfunction
-
-  logic [EntryW-1:0] rom [2**K];
-  initial begin
-    for (int unsigned i = 0; i < 2**K; i++) rom[i] = table_entry(i);
-  end
-
   logic [MsbWidth-1:0] msb;
   logic [W-1:0]        mant;
   if (!Serial) begin : g_norm_comb
@@ -108,32 +95,45 @@ module htx_recip #(
     logic                v_p   [Lat];
     logic [W-1:0]        m_p   [Lat];
     logic [MsbWidth-1:0] msb_p [Lat];
-    logic [W:0]          r0_p  [1:Lat-1];
-    logic [W:0]          r1_q;
+    logic [EntryW-1:0]   t_entry;
+    logic [W:0]          r1;
     logic [(Steps+1)*(W+1)-1:0] r_chain;  // slice 0: the table value; slice t+1: after step t
-    assign r_chain[W:0] = r1_q;
+    htx_recip_table #(.K(K), .G(G)) u_table (
+      .clk_i, .en_i(en_i && !abort_i), .index_i(m_p[0][W-2 -: K]), .entry_o(t_entry)
+    );
+    assign r1 = (W + 1)'(t_entry) << (W - K - G - 1);
+    assign r_chain[W:0] = r1;
+    if (Lat > 2) begin : g_r0
+      logic [W:0] r0_p [2:Lat-1];
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          for (int i = 2; i < Lat; i++) r0_p[i] <= '0;
+        end else if (!abort_i && en_i) begin
+          r0_p[2] <= r1;
+          for (int i = 3; i < Lat; i++) r0_p[i] <= r0_p[i-1];
+        end
+      end
+      assign r0_o = r0_p[Lat-1];
+    end else begin : g_r0_now
+      assign r0_o = r1;
+    end
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         for (int i = 0; i < Lat; i++) begin
           v_p[i] <= 1'b0; m_p[i] <= '0; msb_p[i] <= '0;
         end
-        for (int i = 1; i < Lat; i++) r0_p[i] <= '0;
-        r1_q <= '0;
       end else if (abort_i) begin
         for (int i = 0; i < Lat; i++) v_p[i] <= 1'b0;
       end else if (en_i) begin
         v_p[0]   <= start_i;
         m_p[0]   <= mant;
         msb_p[0] <= msb;
-        r1_q     <= (W + 1)'(rom[m_p[0][W-2 -: K]]) << (W - K - G - 1);
-        r0_p[1]  <= (W + 1)'(rom[m_p[0][W-2 -: K]]) << (W - K - G - 1);
         for (int i = 1; i < Lat; i++) begin
           v_p[i]   <= v_p[i-1];
           m_p[i]   <= m_p[i-1];
           msb_p[i] <= msb_p[i-1];
         end
-        for (int i = 2; i < Lat; i++) r0_p[i] <= r0_p[i-1];
       end
     end
 
@@ -167,7 +167,6 @@ module htx_recip #(
     assign busy_o = 1'b0;
     assign done_o = v_p[Lat-1];
     assign r_o    = r_chain[Steps*(W+1) +: W+1];
-    assign r0_o   = r0_p[Lat-1];
     assign msb_o  = msb_p[Lat-1];
     logic unused_pipe;
     assign unused_pipe = ^{table_only_i, alt_i, m_p[Lat-1], mul_done_i, mul_p_i};
@@ -307,13 +306,13 @@ module htx_recip #(
     end
   end
 
-  // The table entry register has no reset, so the table read is synchronous and Yosys maps the
-  // table to one block RAM (with the asynchronous reset it was a LUT ROM, about 200 LUT4).
-  always_ff @(posedge clk_i) begin
-    if (!abort_i && (Serial ? ((state_q == StNorm) && norm_done) : ((state_q == StIdle) && start_i))) begin
-      entry_q <= rom[mant[W-2 -: K]];
-    end
-  end
+  // The table read is registered (htx_recip_table: one block RAM).
+  htx_recip_table #(.K(K), .G(G)) u_table (
+    .clk_i,
+    .en_i   (!abort_i && (Serial ? ((state_q == StNorm) && norm_done) : ((state_q == StIdle) && start_i))),
+    .index_i(mant[W-2 -: K]),
+    .entry_o(entry_q)
+  );
 
   assign busy_o = (state_q != StIdle);
   assign done_o = (state_q == StDone);
