@@ -562,10 +562,12 @@ module htx_raster #(
   logic       sh_need;
   assign sh_method = df_side[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
   // Untextured fragments need no texel coordinates (the iterative divider skips them).
+  // (Only built methods count: setup refuses the others, so their tests would be dead logic.)
   assign sh_need   = (df_side[htx_raster_reg_pkg::RASTER_STATE_TEXTURED_LSB] &&
-                      ((sh_method == htx_raster_pkg::MethodRecipLut) ||
-                       (sh_method == htx_raster_pkg::MethodRecipNr) ||
-                       ((sh_method == htx_raster_pkg::MethodSubdiv) && df_exact))) || df_div_color;
+                      ((Methods[2] && (sh_method == htx_raster_pkg::MethodRecipLut)) ||
+                       (Methods[3] && (sh_method == htx_raster_pkg::MethodRecipNr)) ||
+                       (Methods[1] && (sh_method == htx_raster_pkg::MethodSubdiv) && df_exact))) ||
+                     df_div_color;
   // Payload past the divider: {side, addr, z, rgb, ua, va, q, exact, x, div_color}.
   localparam int unsigned PayD = SideW + AddrW + ZBits + 24 + 2 * LocW + AccQ + 1 + 13 + 1;
   logic              dv_valid, dv_ready;
@@ -666,7 +668,7 @@ module htx_raster #(
   logic [PayS-1:0]  sd_pay;
   logic             dv_affine;
   // AFFINE's coordinates and DIVFREE's cell centres travel in ua, va.
-  assign dv_affine = (dv_method == htx_raster_pkg::MethodAffine) || (dv_method == htx_raster_pkg::MethodDivFree);
+  assign dv_affine = (dv_method == htx_raster_pkg::MethodAffine) || (HasDf && (dv_method == htx_raster_pkg::MethodDivFree));
   if (Methods[1]) begin : g_subdiv
     htx_raster_subdiv #(.LocW(LocW), .PayW(PayS), .Depth(SubdivDepth)) u_subdiv (
       .clk_i, .rst_ni,
@@ -708,19 +710,30 @@ module htx_raster #(
   // Level-0 coordinate u_l + (u_offset << TF); clamp saturates it to CoordW bits, repeat and
   // mirror keep its low CoordW bits (the period divides 2^CoordW; docs/texture.md).
   localparam int unsigned CWide = 32 + TF + 2;
+  // Where CoordW <= LocW (`icebreaker`) the sum is formed only as wide as u_l's integer part needs
+  // (LI bits, and the offset's low LI + 1): an offset beyond LI + 1 signed bits puts the sum
+  // beyond +-2^(LI-1) >= 2^(CoordW-TF-1), so clamp saturates it by the offset's sign, and repeat
+  // and mirror keep low bits, which the narrow sum has exactly (19 adder bits fewer an axis).
+  localparam int unsigned LI = LocW - TF;
+  localparam bit          NarrowSum = (CoordW <= LocW);
+  localparam int unsigned SumW = NarrowSum ? LI + 2 : CWide - TF;
   function automatic logic [CoordW-1:0] level0(input logic [LocW-1:0] loc, input logic [31:0] off,
                                                input logic clamp);
-    logic signed [CWide-1:0] c, hi;
-    logic signed [CWide-TF-1:0] c_hi;
+    logic signed [SumW+TF-1:0] c, hi;
+    logic signed [SumW-1:0] c_hi;
+    logic off_big, off_neg;
     // The offset's shifted low bits are zero: only the bits from TF up are added.
-    c_hi = ((CWide-TF)'($signed(loc)) >>> TF) + (CWide-TF)'($signed(off));
+    c_hi = SumW'($signed(loc[LocW-1:TF])) + SumW'($signed(off));
     c = {c_hi, loc[TF-1:0]};
     hi = c >>> (CoordW-1);  // (shifted on its own: in a comparison with '1 it would be unsigned)
-    if (CWide <= CoordW) level0 = CoordW'(c);
-    // c beyond +-2^(CoordW-1): its bits from CoordW - 1 up are not all copies of its sign
-    // (reductions, not comparisons with constants: Yosys 0.23 builds those as carry chains).
-    else if (clamp && !c[CWide-1] && (hi != '0)) level0 = {1'b0, {(CoordW-1){1'b1}}};
-    else if (clamp && c[CWide-1] && (hi != '1)) level0 = {1'b1, {(CoordW-1){1'b0}}};
+    // (reductions, not comparisons with constants: Yosys 0.23 builds those as carry chains)
+    off_neg = off[31];
+    off_big = NarrowSum && ((off >> (SumW - 2)) != '0) && ((off >> (SumW - 2)) != (32'hFFFF_FFFF >> (SumW - 2)));
+    if (SumW + TF <= CoordW) level0 = CoordW'(c);
+    else if (clamp && off_big) level0 = off_neg ? {1'b1, {(CoordW-1){1'b0}}} : {1'b0, {(CoordW-1){1'b1}}};
+    // c beyond +-2^(CoordW-1): its bits from CoordW - 1 up are not all copies of its sign.
+    else if (clamp && !c[SumW+TF-1] && (hi != '0)) level0 = {1'b0, {(CoordW-1){1'b1}}};
+    else if (clamp && c[SumW+TF-1] && (hi != '1)) level0 = {1'b1, {(CoordW-1){1'b0}}};
     else level0 = CoordW'(c);
   endfunction
 

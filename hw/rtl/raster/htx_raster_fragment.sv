@@ -93,13 +93,20 @@ module htx_raster_fragment #(
   end
 
   // ---- Clear ------------------------------------------------------------------------------------
-  // The clear walks pixels 0 .. height stride - 1 (and stops at the memory's end) counting columns
-  // and rows, so the end needs no height x stride product (a DSP).
+  // The clear walks pixels 0 .. height stride - 1 (and stops at the memory's end) row by row: the
+  // row's end (the next row's first address) moves on by the stride at each row's last pixel, and
+  // a count of the rows left says which row is the last. No height x stride product (a DSP), and
+  // no column counter beside the address (2026-12-04: about 30 LUT4 fewer than counting columns
+  // and rows against their maxima).
   logic             clr_q, clr_color_q, clr_depth_q, clr_last, clr_row_end;
   logic [AddrW-1:0] clr_addr_q;
-  logic [12:0]      clr_col_q, clr_row_q, clr_col_max_q, clr_row_max_q;
-  assign clr_row_end = (clr_col_q == clr_col_max_q);
-  assign clr_last    = (clr_row_end && (clr_row_q == clr_row_max_q)) ||
+  // A row's end is added to only while it is inside the memory (<= 2^AddrW), so EW bits hold it.
+  localparam int unsigned EW = ((AddrW > 13) ? AddrW : 13) + 1;
+  logic [EW-1:0]    clr_next, clr_end_q;
+  logic [12:0]      clr_rows_q;           // rows left, the current one included
+  assign clr_next    = EW'(clr_addr_q) + 1'b1;
+  assign clr_row_end = (clr_next == clr_end_q);
+  assign clr_last    = (clr_row_end && (clr_rows_q == 13'd1)) ||
                        (clr_addr_q == AddrW'(FbPixels - 1));  // (it counts up from 0 by one)
   assign clearing_o = clr_q;
 
@@ -118,10 +125,8 @@ module htx_raster_fragment #(
       clr_color_q     <= 1'b0;
       clr_depth_q     <= 1'b0;
       clr_addr_q      <= '0;
-      clr_col_q       <= '0;
-      clr_row_q       <= '0;
-      clr_col_max_q   <= '0;
-      clr_row_max_q   <= '0;
+      clr_end_q       <= '0;
+      clr_rows_q      <= '0;
     end else if (abort_i) begin
       f2_valid_q      <= 1'b0;
       last_wz_valid_q <= 1'b0;
@@ -141,19 +146,19 @@ module htx_raster_fragment #(
         last_wz_q      <= f2_z_q;
       end
       if (clr_q) begin
-        clr_addr_q <= clr_addr_q + 1'b1;
-        clr_col_q  <= clr_row_end ? 13'd0 : clr_col_q + 13'd1;
-        if (clr_row_end) clr_row_q <= clr_row_q + 13'd1;
+        clr_addr_q <= AddrW'(clr_next);
+        if (clr_row_end) begin
+          clr_end_q  <= clr_end_q + EW'(stride_i);
+          clr_rows_q <= clr_rows_q - 13'd1;
+        end
         if (clr_last) clr_q <= 1'b0;
       end else if (clear_start_i && (height_i != 13'd0) && (stride_i != 13'd0)) begin
         clr_q         <= 1'b1;
         clr_color_q   <= clear_color_i;
         clr_depth_q   <= clear_depth_i;
         clr_addr_q    <= '0;
-        clr_col_q     <= '0;
-        clr_row_q     <= '0;
-        clr_col_max_q <= stride_i - 13'd1;
-        clr_row_max_q <= height_i - 13'd1;
+        clr_end_q     <= EW'(stride_i);
+        clr_rows_q    <= height_i;
       end
     end
   end
