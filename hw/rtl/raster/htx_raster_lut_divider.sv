@@ -164,8 +164,4 @@ module htx_raster_lut_divider #(
   assign out_u_o     = u_q;
   assign out_v_o     = v_q;
   assign out_pay_o   = pay_q;
-
-  // Only the numerators' bits from NL - 1 up are read; the low ones carry into them as they shift.
-  logic unused_n;
-  assign unused_n = ^{nu_q[NL-2:0], nv_q[NL-2:0]};
 endmodule
