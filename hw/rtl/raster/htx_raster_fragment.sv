@@ -102,10 +102,11 @@ module htx_raster_fragment #(
   logic [AddrW-1:0] clr_addr_q;
   // A row's end is added to only while it is inside the memory (<= 2^AddrW), so EW bits hold it.
   localparam int unsigned EW = ((AddrW > 13) ? AddrW : 13) + 1;
-  logic [EW-1:0]    clr_next, clr_end_q;
+  // clr_next_q is the address after clr_addr_q, a register of its own, so that the row's end is
+  // compared with flip-flops and not behind the increment's carry chain.
+  logic [EW-1:0]    clr_next_q, clr_end_q;
   logic [12:0]      clr_rows_q;           // rows left, the current one included
-  assign clr_next    = EW'(clr_addr_q) + 1'b1;
-  assign clr_row_end = (clr_next == clr_end_q);
+  assign clr_row_end = (clr_next_q == clr_end_q);
   assign clr_last    = (clr_row_end && (clr_rows_q == 13'd1)) ||
                        (clr_addr_q == AddrW'(FbPixels - 1));  // (it counts up from 0 by one)
   assign clearing_o = clr_q;
@@ -125,6 +126,7 @@ module htx_raster_fragment #(
       clr_color_q     <= 1'b0;
       clr_depth_q     <= 1'b0;
       clr_addr_q      <= '0;
+      clr_next_q      <= '0;
       clr_end_q       <= '0;
       clr_rows_q      <= '0;
     end else if (abort_i) begin
@@ -146,7 +148,8 @@ module htx_raster_fragment #(
         last_wz_q      <= f2_z_q;
       end
       if (clr_q) begin
-        clr_addr_q <= AddrW'(clr_next);
+        clr_addr_q <= AddrW'(clr_next_q);
+        clr_next_q <= clr_next_q + 1'b1;
         if (clr_row_end) begin
           clr_end_q  <= clr_end_q + EW'(stride_i);
           clr_rows_q <= clr_rows_q - 13'd1;
@@ -157,6 +160,7 @@ module htx_raster_fragment #(
         clr_color_q   <= clear_color_i;
         clr_depth_q   <= clear_depth_i;
         clr_addr_q    <= '0;
+        clr_next_q    <= EW'(1);
         clr_end_q     <= EW'(stride_i);
         clr_rows_q    <= height_i;
       end
