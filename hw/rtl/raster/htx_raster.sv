@@ -442,7 +442,8 @@ module htx_raster #(
   logic [3*AccC-1:0] sh_c;
   logic [SideT-1:0]  sh_side;
   htx_raster_shade #(.ZBits(ZBits), .GF(GF), .NP(NP), .AW(AW), .SideW(SideT), .AccC(AccC),
-                     .AccQ(AccQ), .AccU(AccU), .LocW(LocW), .PerspColor(PerspColor), .Subdiv(Methods[1]),
+                     .AccQ(AccQ), .AccU(AccU), .LocW(LocW), .PerspColor(PerspColor),
+                     .Subdiv(Methods[1]),
                      .AddrW(AddrW), .Registered(!Iterative)) u_shade (
     .clk_i, .rst_ni,
     .abort_i        (abort),
@@ -576,8 +577,8 @@ module htx_raster #(
   logic [PayD-1:0]   dv_pay;
   // RECIP_LUT as the only method that divides per pixel, no perspective-correct colour and no
   // setup client (the board's GPU): the divider without Newton steps (htx_raster_lut_divider).
-  localparam bit LutDivider = Textured && !PixelPipelined && !PerspColor && !(SharedRecip && !FwSetup) &&
-                              !Methods[1] && !Methods[3] && !Methods[4];
+  localparam bit LutDivider = Textured && !PixelPipelined && !PerspColor &&
+                              !(SharedRecip && !FwSetup) && !Methods[1] && !Methods[3] && !Methods[4];
   if (LutDivider) begin : g_lut_divider
     htx_raster_lut_divider #(
       .AccQ(AccQ), .AccU(AccU), .UvIntBits(UvIntBits), .W(RecipW), .K(RecipK), .G(RecipG), .TF(TF),
@@ -668,7 +669,8 @@ module htx_raster #(
   logic [PayS-1:0]  sd_pay;
   logic             dv_affine;
   // AFFINE's coordinates and DIVFREE's cell centres travel in ua, va.
-  assign dv_affine = (dv_method == htx_raster_pkg::MethodAffine) || (HasDf && (dv_method == htx_raster_pkg::MethodDivFree));
+  assign dv_affine = (dv_method == htx_raster_pkg::MethodAffine) ||
+                     (HasDf && (dv_method == htx_raster_pkg::MethodDivFree));
   if (Methods[1]) begin : g_subdiv
     htx_raster_subdiv #(.LocW(LocW), .PayW(PayS), .Depth(SubdivDepth)) u_subdiv (
       .clk_i, .rst_ni,
@@ -728,9 +730,11 @@ module htx_raster #(
     hi = c >>> (CoordW-1);  // (shifted on its own: in a comparison with '1 it would be unsigned)
     // (reductions, not comparisons with constants: Yosys 0.23 builds those as carry chains)
     off_neg = off[31];
-    off_big = NarrowSum && ((off >> (SumW - 2)) != '0) && ((off >> (SumW - 2)) != (32'hFFFF_FFFF >> (SumW - 2)));
+    off_big = NarrowSum && ((off >> (SumW - 2)) != '0) &&
+              ((off >> (SumW - 2)) != (32'hFFFF_FFFF >> (SumW - 2)));
     if (SumW + TF <= CoordW) level0 = CoordW'(c);
-    else if (clamp && off_big) level0 = off_neg ? {1'b1, {(CoordW-1){1'b0}}} : {1'b0, {(CoordW-1){1'b1}}};
+    else if (clamp && off_big) level0 = off_neg ? {1'b1, {(CoordW-1){1'b0}}}
+                                                : {1'b0, {(CoordW-1){1'b1}}};
     // c beyond +-2^(CoordW-1): its bits from CoordW - 1 up are not all copies of its sign.
     else if (clamp && !c[SumW+TF-1] && (hi != '0)) level0 = {1'b0, {(CoordW-1){1'b1}}};
     else if (clamp && c[SumW+TF-1] && (hi != '1)) level0 = {1'b1, {(CoordW-1){1'b0}}};

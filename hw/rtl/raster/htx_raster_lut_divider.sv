@@ -1,16 +1,17 @@
 // The per-pixel divider when RECIP_LUT is the only perspective method that divides (the board's
-// `icebreaker` GPU: AFFINE and RECIP_LUT, docs/raster.md "Per-pixel divider"): no Newton step, no
-// perspective-correct colour, no second client. The model's divide_fixed with the table value
-// alone (docs/model.md §5.2), bit for bit:
+// `icebreaker` GPU: AFFINE and RECIP_LUT): no Newton step, no perspective-correct colour, no
+// second client. The model's divide_fixed with the table value alone (docs/model.md §5.2), bit
+// for bit:
 //   Q (raised to 1 when below) = M 2^s with M's top bit at W - 1, s = msb - (W - 1);
 //   N' = round(N 2^-s) (s > 0) or N 2^-s; u = round(N' R 2^(TF - 2W + 1)), R = e 2^(W - K - G - 1)
 // for the table entry e, i.e. u = floor((N' e + 2^(Sh - 1)) / 2^Sh) with Sh = W + K + G - TF.
 // One fragment at a time: Q shifts left a bit a clock until its top bit is set (no priority
 // encoder, no barrel shifter), the two numerators shift with it; then the table; then each
 // numerator's product N' e in three digits of N' on one DSP (digits of Sh / 2, Sh / 2 and the
-// rest, low first; 6 clocks and one to hand over), accumulated with the rounding term and the carry of N''s own rounding (N' =
-// T + rb: rb e is added, not rb to T, so no incrementer). Fragments whose need_i is clear pass in
-// one clock and leave out_u_o, out_v_o as they were. A payload travels with each fragment.
+// rest, low first; 6 clocks and one to hand over), accumulated with the rounding term and the
+// carry of N''s own rounding (N' = T + rb: rb e is added, not rb to T, so no incrementer).
+// Fragments whose need_i is clear pass in one clock and leave out_u_o, out_v_o as they were. A
+// payload travels with each fragment. docs/raster.md, "The board's divider".
 module htx_raster_lut_divider #(
   parameter int unsigned AccQ      = 42,
   parameter int unsigned AccU      = 55,

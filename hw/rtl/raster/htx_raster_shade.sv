@@ -3,7 +3,8 @@
 // clamp(round(C 2^-GF), 0, 255) when it is linear in screen space (or vertex 0's colour for flat
 // shading); AFFINE's coordinates round(U_a 2^-GF). It passes Q, U, V (and C q with PerspColor) on
 // to the divider, and marks SUBDIV's exact points: a span's first pixel, every n-th after it, and
-// its last pixel (Subdiv = 0, a unit without SUBDIV: none). Alpha has no plane: the framebuffer is RGB565, so alpha never reaches a pixel.
+// its last pixel (Subdiv = 0, a unit without SUBDIV: none). Alpha has no plane: the framebuffer
+// is RGB565, so alpha never reaches a pixel.
 module htx_raster_shade #(
   parameter int unsigned ZBits      = 24,
   parameter int unsigned GF         = 24,

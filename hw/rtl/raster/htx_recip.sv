@@ -309,7 +309,8 @@ module htx_recip #(
   // The table read is registered (htx_recip_table: one block RAM).
   htx_recip_table #(.K(K), .G(G)) u_table (
     .clk_i,
-    .en_i   (!abort_i && (Serial ? ((state_q == StNorm) && norm_done) : ((state_q == StIdle) && start_i))),
+    .en_i   (!abort_i && (Serial ? ((state_q == StNorm) && norm_done)
+                                     : ((state_q == StIdle) && start_i))),
     .index_i(mant[W-2 -: K]),
     .entry_o(entry_q)
   );

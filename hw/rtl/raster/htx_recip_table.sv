@@ -1,8 +1,8 @@
 // The reciprocal unit's seed table (docs/model.md §4): the DasSarma-Matula midpoint table with K
 // index bits and G guard bits, entry i = round(2^(2K+G+2) / (2^(K+1) + 2i + 1)) (the odd divisor
-// never ties), K + G + 1 bits. The read is registered without a reset (entry_o follows index_i one
-// clock after a clock with en_i set), so Yosys maps the table to one block RAM; with an asynchronous
-// reset it would be a LUT ROM (about 200 LUT4 for K = 8).
+// never ties), K + G + 1 bits. The read is registered without a reset (entry_o follows index_i
+// one clock after a clock with en_i set), so Yosys maps the table to one block RAM; with an
+// asynchronous reset it would be a LUT ROM (about 200 LUT4 for K = 8).
 module htx_recip_table #(
   parameter int unsigned K = 10,
   parameter int unsigned G = 2
