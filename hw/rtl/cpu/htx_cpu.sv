@@ -229,7 +229,7 @@ module htx_cpu #(
   // choice is made first (_early, kept as separate signals so synthesis does not fold the late
   // values deeper into the mux tree).
   (* keep *) logic [31:0] d_rs1_early, d_rs2_early, d_rs2_rest;
-  (* keep *) logic [31:0] d_a_early, d_a_rest, d_b_early, d_b_rest;
+  (* keep *) logic [31:0] d_a_early, d_a_rest;
   assign d_rs1_early = fl_a ? lw_data_q : rf_rdata_a;
   assign d_rs2_early = fl_b ? lw_data_q : rf_rdata_b;
   assign d_rs2_rest  = fw_b ? rf_wdata : d_rs2_early;
@@ -256,7 +256,7 @@ module htx_cpu #(
   // ALU operands, extended to 33 bits with the sign for a signed comparison (SLT, BLT, BGE) and
   // with zero otherwise; b is inverted for a subtraction.
   logic [31:0] d_a, d_b;
-  logic        signed_d, fe_a_op, fe_b_op;
+  logic        signed_d, fe_a_op;
   always_comb begin
     if (d_a_pc_q) begin
       d_a_early = {d_pc_q, 2'b00};
@@ -267,12 +267,12 @@ module htx_cpu #(
     end
   end
   assign d_a_rest  = (fw_a && !d_a_pc_q && !d_a_zero_q) ? rf_wdata : d_a_early;
-  assign d_b_early = d_b_rs2_q ? d_rs2_early : d_dec.imm;
-  assign d_b_rest  = (fw_b && d_b_rs2_q) ? rf_wdata : d_b_early;
   assign fe_a_op  = fe_a && !d_a_pc_q && !d_a_zero_q;
-  assign fe_b_op  = fe_b && d_b_rs2_q;
   assign d_a      = fe_a_op ? e_fast_result : d_a_rest;
-  assign d_b      = fe_b_op ? e_fast_result : d_b_rest;
+  // Operand b is the forwarded rs2 (the store data's multiplexer) or the immediate, one LUT level
+  // after it with the inversion for a subtraction: a forwarding multiplexer of its own with the
+  // late values at its last level cost 54 LUT4 more (2026-12-05).
+  assign d_b      = d_b_rs2_q ? d_rs2 : d_dec.imm;
   assign signed_d = d_signed_q;
 
   // Address bits [1:0] of a load, store or JALR target, for the misalignment checks. The two-bit
