@@ -56,8 +56,8 @@ module htx_cpu_fetch #(
   logic [31:0] rsp_instr;
 
   assign occupancy        = {1'b0, in_flight_q} + {1'b0, count_q};
-  assign bypass           = redirect_i && !stuck_q;
-  assign req_addr         = bypass ? redirect_pc_i : req_pc_q;
+  assign bypass           = flush && !stuck_q;
+  assign req_addr         = bypass ? flush_pc : req_pc_q;
   assign ibus_req_valid_o = (occupancy < 3'd2);
   assign ibus_req_addr_o  = {req_addr, 2'b00};
   assign req_accepted     = ibus_req_valid_o && ibus_req_ready_i;
@@ -107,7 +107,7 @@ module htx_cpu_fetch #(
         head_pc_q <= flush_pc;
         if (bypass) begin
           pend_q   <= 1'b0;
-          req_pc_q <= req_accepted ? (redirect_pc_i + 30'd1) : redirect_pc_i;
+          req_pc_q <= req_accepted ? (flush_pc + 30'd1) : flush_pc;
         end else if (ibus_req_valid_o && !ibus_req_ready_i) begin
           pend_q    <= 1'b1;
           pend_pc_q <= flush_pc;
