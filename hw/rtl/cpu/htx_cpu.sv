@@ -323,7 +323,8 @@ module htx_cpu #(
       d_cause = htx_cpu_pkg::ExcEcallM;
     end else if (d_dec.ebreak) begin
       d_cause = htx_cpu_pkg::ExcBreakpoint;
-    end else if ((d_dec.jal && d_dec.imm[1]) || (d_dec.jalr && d_lo[1])) begin
+    // (Bit 1 of a JAL's offset is instruction bit 21.)
+    end else if ((d_dec.jal && d_instr_q[21]) || (d_dec.jalr && d_lo[1])) begin
       d_cause = htx_cpu_pkg::ExcInstrMisaligned;
     end else if ((d_dec.load || d_dec.store) && d_misaligned) begin
       d_cause = d_dec.store ? htx_cpu_pkg::ExcStoreMisaligned : htx_cpu_pkg::ExcLoadMisaligned;

@@ -24,7 +24,7 @@ module htx_cpu_decoder (
   logic [2:0]  funct3;
   logic [6:0]  funct7;
   logic [11:0] csr_addr;
-  logic [31:0] imm_i, imm_s, imm_b, imm_u, imm_j;
+  logic [31:0] imm_i, imm_s, imm_u;
 
   assign opcode   = instr_i[6:0];
   assign funct3   = instr_i[14:12];
@@ -33,18 +33,16 @@ module htx_cpu_decoder (
 
   assign imm_i = {{20{instr_i[31]}}, instr_i[31:20]};
   assign imm_s = {{20{instr_i[31]}}, instr_i[31:25], instr_i[11:7]};
-  assign imm_b = {{19{instr_i[31]}}, instr_i[31], instr_i[7], instr_i[30:25], instr_i[11:8], 1'b0};
   assign imm_u = {instr_i[31:12], 12'b0};
-  assign imm_j = {{11{instr_i[31]}}, instr_i[31], instr_i[19:12], instr_i[20], instr_i[30:21], 1'b0};
 
   // The immediate straight from the opcode bits, so it does not wait for the rest of the decode.
   // SYSTEM gets 0: mtval of ECALL and EBREAK is the adder's 0 + 0 (CSR instructions use uimm).
+  // A JAL's or branch's immediate is not needed here: fetch adds their targets (htx_cpu), and
+  // their ALU operand b is unused (a branch compares rs2); they get the I-type value.
   logic [31:0] imm;
   always_comb begin
     unique case (instr_i[6:2])
       5'b01101, 5'b00101: imm = imm_u;   // LUI, AUIPC
-      5'b11011:           imm = imm_j;   // JAL
-      5'b11000:           imm = imm_b;   // BRANCH
       5'b01000:           imm = imm_s;   // STORE
       5'b11100:           imm = 32'b0;   // SYSTEM
       default:            imm = imm_i;
