@@ -283,6 +283,11 @@ module htx_cpu #(
   // after it with the inversion for a subtraction: a forwarding multiplexer of its own with the
   // late values at its last level cost 54 LUT4 more (2026-12-05).
   assign d_b      = d_b_rs2_q ? d_rs2 : d_dec.imm;
+  // Operand b's extension bit for either value of the forwarded rs2's sign, so that the late sign
+  // only selects (one LUT level after d_rs2, like the other bits).
+  (* keep *) logic b_ext_0, b_ext_1;
+  assign b_ext_0 = (d_b_rs2_q ? 1'b0 : (signed_d & d_dec.imm[31])) ^ sub_d;
+  assign b_ext_1 = (d_b_rs2_q ? signed_d : (signed_d & d_dec.imm[31])) ^ sub_d;
   assign signed_d = d_signed_q;
 
   // Address bits [1:0] of a load, store or JALR target, for the misalignment checks. The two-bit
@@ -674,7 +679,7 @@ module htx_cpu #(
     if (e_accept_nr) begin
       e_q       <= d_exec;
       e_a_q     <= {signed_d & d_a[31], d_a};
-      e_b_q     <= {signed_d & d_b[31], d_b} ^ {33{sub_d}};
+      e_b_q     <= {d_rs2[31] ? b_ext_1 : b_ext_0, d_b ^ {32{sub_d}}};
       e_br_eq_q <= !d_dec.funct3[2];
       e_br_inv_q <= d_dec.funct3[0];
       e_rs2_q   <= d_rs2;
