@@ -317,9 +317,10 @@ module htx_cpu #(
   // handler can read the instruction at mepc; this saves a 32-bit multiplexer).
   logic                    d_xtrap;
   htx_cpu_pkg::exc_cause_e d_cause;
+  // The cause matters only when the instruction traps, so it is chosen as if the misalignment
+  // checks fired: the late address bits (d_lo, behind D's forwarding) then reach only d_xtrap, not
+  // the cause's priority chain (which was the critical path of two placement seeds).
   always_comb begin
-    d_xtrap = 1'b1;
-    d_cause = htx_cpu_pkg::ExcIllegal;
     if (d_err_q) begin
       d_cause = htx_cpu_pkg::ExcInstrAccess;
     end else if (d_dec.illegal) begin
@@ -328,15 +329,18 @@ module htx_cpu #(
       d_cause = htx_cpu_pkg::ExcEcallM;
     end else if (d_dec.ebreak) begin
       d_cause = htx_cpu_pkg::ExcBreakpoint;
-    // (Bit 1 of a JAL's offset is instruction bit 21.)
-    end else if ((d_dec.jal && d_instr_q[21]) || (d_dec.jalr && d_lo[1])) begin
+    end else if (d_dec.jal || d_dec.jalr) begin
       d_cause = htx_cpu_pkg::ExcInstrMisaligned;
-    end else if ((d_dec.load || d_dec.store) && d_misaligned) begin
-      d_cause = d_dec.store ? htx_cpu_pkg::ExcStoreMisaligned : htx_cpu_pkg::ExcLoadMisaligned;
+    end else if (d_dec.store) begin
+      d_cause = htx_cpu_pkg::ExcStoreMisaligned;
     end else begin
-      d_xtrap = 1'b0;
+      d_cause = htx_cpu_pkg::ExcLoadMisaligned;
     end
   end
+  // (Bit 1 of a JAL's offset is instruction bit 21.)
+  assign d_xtrap = d_err_q || d_dec.illegal || d_dec.ecall || d_dec.ebreak ||
+                   (d_dec.jal && d_instr_q[21]) || (d_dec.jalr && d_lo[1]) ||
+                   ((d_dec.load || d_dec.store) && d_misaligned);
 
   htx_cpu_pkg::exec_t d_exec;
   always_comb begin
