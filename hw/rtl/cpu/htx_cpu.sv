@@ -248,12 +248,14 @@ module htx_cpu #(
 
   // A source written by the instruction in E whose result comes late (load, shift, link, CSR,
   // MUL/DIV) waits one cycle and then comes from W. W always completes when D moves on.
-  // hz_q is that register compare, computed a cycle early for whatever E's and D's registers will
-  // hold (it keeps the 5-bit compares off the stall chain): E's registers load on e_accept_nr
-  // (from D), D's on d_free_nr (from fetch). When E loads while D holds, E's new instruction is
-  // a bubble (D held because of a hazard), so the value does not matter then.
-  logic d_hazard, hz_q, hz_d;
-  assign d_hazard = e_live && hz_q;
+  // The compare uses registered fields only (E's destination, D's source fields and whether D
+  // reads them). It was computed a cycle early, for whatever E's and D's registers would hold,
+  // to keep it off the stall chain; compared in place it is 11 LUT4 smaller and the core placed
+  // faster at every seed (2026-12-05).
+  logic d_hazard, hz, d_rs1_used_q, d_rs2_used_q;
+  assign hz       = e_q.rd_we && e_late_q &&
+                    ((d_rs1_used_q && (e_q.rd == d_ra)) || (d_rs2_used_q && (e_q.rd == d_rb)));
+  assign d_hazard = e_live && hz;
 
   logic late_alu_d, late_d, sub_d;
   assign late_alu_d = (d_dec.alu_op == htx_cpu_pkg::AluSll) || (d_dec.alu_op == htx_cpu_pkg::AluSrl) ||
@@ -394,18 +396,7 @@ module htx_cpu #(
   assign acc_w       = !w_memwait_q || (dbus_rsp_valid_i && (!e_valid_q || !dbus_rsp_err_i));
   assign acc_e       = !e_valid_q || (!e_block && (!e_mem || dbus_req_ready_i));
   assign e_accept_nr = acc_w && acc_e;
-  assign d_free_nr   = !d_valid_q || (e_accept_nr && !(e_valid_q && hz_q));
-  always_comb begin
-    if (e_accept_nr) begin
-      hz_d = d_dec.rd_we && late_d &&
-             ((f_rs1_used && (d_dec.rd == f_instr[19:15])) || (f_rs2_used && (d_dec.rd == f_instr[24:20])));
-    end else if (d_free_nr) begin
-      hz_d = e_q.rd_we && e_late_q &&
-             ((f_rs1_used && (e_q.rd == f_instr[19:15])) || (f_rs2_used && (e_q.rd == f_instr[24:20])));
-    end else begin
-      hz_d = hz_q;
-    end
-  end
+  assign d_free_nr   = !d_valid_q || (e_accept_nr && !(e_valid_q && hz));
   assign f_take      = d_free_nr && !redirect_q && !d_jump_q;
 
 
@@ -666,11 +657,12 @@ module htx_cpu #(
   end
 
   always_ff @(posedge clk_i) begin
-    hz_q <= hz_d;
     if (d_free_nr) begin
       d_instr_q  <= f_instr;
       d_target_q <= f_target;
       d_sub_q      <= f_sub;
+      d_rs1_used_q <= f_rs1_used;
+      d_rs2_used_q <= f_rs2_used;
       d_a_pc_q     <= f_a_pc;
       d_a_zero_q   <= f_a_zero;
       d_b_rs2_q    <= f_b_rs2;
