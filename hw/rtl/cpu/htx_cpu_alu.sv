@@ -32,14 +32,21 @@ module htx_cpu_alu (
   assign eq_o  = (sum33[31:0] == 32'b0);
   assign lt_o  = sum33[32];
 
+  // The logic result is kept as a signal of its own (one LUT4 a bit from the operands, beside the
+  // carry chain), so that only its choice against the sum folds into the forwarding multiplexers
+  // that use fast_o: folding the whole operation into each of them cost 29 LUT4 more.
+  (* keep *) logic [31:0] logic_r;
+  logic                   is_logic;
   always_comb begin
     unique case (op_i)
-      htx_cpu_pkg::AluXor: fast_o = a_i[31:0] ^ b_i[31:0];
-      htx_cpu_pkg::AluOr:  fast_o = a_i[31:0] | b_i[31:0];
-      htx_cpu_pkg::AluAnd: fast_o = a_i[31:0] & b_i[31:0];
-      default:             fast_o = sum_o;
+      htx_cpu_pkg::AluXor: logic_r = a_i[31:0] ^ b_i[31:0];
+      htx_cpu_pkg::AluOr:  logic_r = a_i[31:0] | b_i[31:0];
+      default:             logic_r = a_i[31:0] & b_i[31:0];
     endcase
   end
+  assign is_logic = (op_i == htx_cpu_pkg::AluXor) || (op_i == htx_cpu_pkg::AluOr) ||
+                    (op_i == htx_cpu_pkg::AluAnd);
+  assign fast_o   = is_logic ? logic_r : sum_o;
 
   function automatic logic [31:0] reverse32(input logic [31:0] x);
     for (int i = 0; i < 32; i++) begin
