@@ -52,7 +52,7 @@ module htx_cpu #(
   // Fetch
   logic        redirect_q, d_redirect;
   logic [31:2] redirect_pc_q, redirect_npc_q;
-  logic [31:0] d_target;
+  logic [31:0] d_target_q;  // branch/JAL target, PC + immediate, added as D takes the instruction
   logic        redirect_seq_q;
   logic        f_valid, f_err;
   logic [31:0] f_instr;
@@ -72,7 +72,7 @@ module htx_cpu #(
     .redirect_i    (redirect_q),
     .redirect_pc_i (redirect_seq_q ? redirect_npc_q : redirect_pc_q),
     .predict_i     (d_redirect),
-    .predict_pc_i  (d_target[31:2]),
+    .predict_pc_i  (d_target_q[31:2]),
     .instr_valid_o (f_valid),
     .instr_o       (f_instr),
     .instr_err_o   (f_err),
@@ -86,8 +86,8 @@ module htx_cpu #(
   assign ibus_req_wdata_o = 32'b0;
 
   // Static prediction: JAL and backward branches are taken, unless the target would be misaligned
-  // (then E raises the trap). Decided as D takes the instruction (from a few instruction bits),
-  // acted on in D's first cycle with the target computed there from registered values.
+  // (then E raises the trap). Decided as D takes the instruction (from a few instruction bits) and
+  // acted on in D's first cycle, when the target is already a register (d_target_q).
   logic f_is_jal, f_is_branch, f_predict;
   logic [31:0] f_timm, f_target;
   assign f_is_jal    = (f_instr[6:0] == 7'b1101111);
@@ -108,7 +108,6 @@ module htx_cpu #(
   logic        d_jump_q;   // d_valid_q && d_pred_q && D's first cycle: redirect fetch now
   logic        d_sub_q, d_signed_q, d_a_pc_q, d_a_zero_q, d_b_rs2_q;
   logic [31:0] d_instr_q;
-  logic [31:0] d_target_q;  // branch/JAL target, PC + immediate, added as D takes the instruction
   logic [31:2] d_pc_q, d_npc_q;
 
   logic                    e_valid_q;
@@ -309,9 +308,6 @@ module htx_cpu #(
       default: d_misaligned = (d_lo != 2'b00);
     endcase
   end
-
-  // Branch and JAL target.
-  assign d_target = d_target_q;
 
   // Traps known before E (everything except a taken branch to a misaligned target). mtval comes
   // from E's adder (decode sets it up to produce the PC or 0 where that is the value), for a branch
@@ -679,7 +675,7 @@ module htx_cpu #(
       e_br_eq_q <= !d_dec.funct3[2];
       e_br_inv_q <= d_dec.funct3[0];
       e_rs2_q   <= d_rs2;
-      e_aux_q   <= d_target;
+      e_aux_q   <= d_target_q;
       e_pc_q    <= d_pc_q;
       e_npc_q   <= d_npc_q;
       e_pred_q  <= d_pred_q;

@@ -8,10 +8,10 @@
 // or the arriving response directly when the buffer is empty.
 //
 // Two kinds of redirect flush the buffer and mark every request still in flight as stale (stale
-// responses are dropped as they arrive): redirect_i comes from a register, so its address goes on
-// the bus in the same cycle; predict_i (decode's branch prediction) comes from an adder and takes
-// effect from the next cycle. If a redirect comes while a request waits for ready, that request
-// stays on the bus (the protocol forbids withdrawing it) and the new address follows it.
+// responses are dropped as they arrive): redirect_i (execute's or write-back's) and predict_i
+// (decode's branch prediction). Both addresses come from registers, so either goes on the bus in
+// the same cycle. If a redirect comes while a request waits for ready, that request stays on the
+// bus (the protocol forbids withdrawing it) and the new address follows it.
 module htx_cpu_fetch #(
   parameter logic [31:0] BootAddr = 32'h0000_0000
 ) (
@@ -27,8 +27,8 @@ module htx_cpu_fetch #(
 
   input  logic        redirect_i,      // registered redirect (has priority)
   input  logic [31:2] redirect_pc_i,
-  input  logic        predict_i,       // decode's predicted-taken jump or branch
-  input  logic [31:2] predict_pc_i,
+  input  logic        predict_i,       // decode's predicted-taken jump or branch, first cycle
+  input  logic [31:2] predict_pc_i,    // its target (registered)
 
   output logic        instr_valid_o,
   output logic [31:0] instr_o,         // an access fault reads as 0x00000017 (auipc x0, 0)
@@ -50,7 +50,7 @@ module htx_cpu_fetch #(
   logic [32:0] buf_q [2];      // {err, instr}
 
   logic [2:0]  occupancy;
-  logic        req_accepted, rsp_keep, rsp_drop, bypass, flush;
+  logic        req_accepted, req_waiting, rsp_keep, rsp_drop, bypass, flush;
   logic        buf_empty, consume, push, pop;
   logic [31:2] req_addr, flush_pc;
   logic [31:0] rsp_instr;
@@ -61,6 +61,7 @@ module htx_cpu_fetch #(
   assign ibus_req_valid_o = (occupancy < 3'd2);
   assign ibus_req_addr_o  = {req_addr, 2'b00};
   assign req_accepted     = ibus_req_valid_o && ibus_req_ready_i;
+  assign req_waiting      = ibus_req_valid_o && !ibus_req_ready_i;
   assign rsp_drop         = ibus_rsp_valid_i && (discard_q != 2'd0);
   assign rsp_keep         = ibus_rsp_valid_i && (discard_q == 2'd0);
   assign flush            = redirect_i || predict_i;
@@ -96,7 +97,7 @@ module htx_cpu_fetch #(
       wr_ptr_q    <= 1'b0;
     end else begin
       in_flight_q <= in_flight_d;
-      stuck_q     <= ibus_req_valid_o && !ibus_req_ready_i;
+      stuck_q     <= req_waiting;
       if (flush) begin
         // Every request in flight after this cycle is stale, except one for the new address.
         discard_q <= in_flight_d - {1'b0, bypass && req_accepted};
@@ -105,8 +106,8 @@ module htx_cpu_fetch #(
         wr_ptr_q  <= 1'b0;
         head_pc_q <= flush_pc;
         // A request waiting for ready keeps its address: the new one waits in pend_pc_q.
-        pend_q <= !bypass && ibus_req_valid_o && !ibus_req_ready_i;
-        if (!bypass && ibus_req_valid_o && !ibus_req_ready_i) begin
+        pend_q    <= !bypass && req_waiting;
+        if (!bypass && req_waiting) begin
           pend_pc_q <= flush_pc;
         end
       end else begin
@@ -138,7 +139,7 @@ module htx_cpu_fetch #(
   logic        req_inc, req_load;
   assign req_base = flush ? flush_pc : (pend_q ? pend_pc_q : req_pc_q);
   assign req_inc  = flush ? (bypass && req_accepted) : (!pend_q && req_accepted);
-  assign req_load = flush ? (bypass || !(ibus_req_valid_o && !ibus_req_ready_i)) : req_accepted;
+  assign req_load = flush ? (bypass || !req_waiting) : req_accepted;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       req_pc_q <= BootAddr[31:2];
