@@ -37,6 +37,7 @@ struct SimArgs {
   std::string trace;
   std::optional<uint32_t> stall_seed;
   bool json = false;
+  bool profile = false;
   bool no_gpu_gate = false;
   std::string frame;                // PNG of the colour window at exit
   std::string frame_size = "160x120";
@@ -52,6 +53,18 @@ std::pair<uint32_t, uint32_t> parse_frame_size(const std::string& s) {
 }
 
 #if HTX_HAVE_SOC_SIM
+// One line per cause, with its share of the clocks (stderr, beside the summary).
+void print_profile(const sim::CpuProfile& p) {
+  const uint64_t total = p.total();
+  std::fprintf(stderr, "htx sim: where the CPU's %llu clocks went (judged at execute):\n",
+               static_cast<unsigned long long>(total));
+  for (size_t i = 0; i < sim::CpuProfile::kCauses; ++i) {
+    const double share = total ? 100.0 * static_cast<double>(p.counts[i]) / static_cast<double>(total) : 0.0;
+    std::fprintf(stderr, "  %-12s %12llu  %5.1f %%\n", sim::CpuProfile::kNames[i],
+                 static_cast<unsigned long long>(p.counts[i]), share);
+  }
+}
+
 void write_signature(const sim::SocSim& soc, const sim::ElfImage& elf, const std::string& path) {
   const auto begin = elf.symbol("begin_signature");
   const auto end = elf.symbol("end_signature");
@@ -116,11 +129,17 @@ int run_sim(const SimArgs& a) {
                 sim::to_string(r.reason), r.exit_code, static_cast<unsigned long long>(r.cycles),
                 static_cast<unsigned long long>(r.instret), cpi, rate / 1e6);
   std::cerr << summary;
+  if (a.profile) print_profile(r.profile);
   if (a.json) {
     nlohmann::json j = {{"exit_code", status},       {"reason", sim::to_string(r.reason)},
                         {"cycles", r.cycles},        {"instret", r.instret},
                         {"cpi", cpi},                {"seconds", r.seconds},
                         {"cycles_per_second", rate}, {"frame_crc32", crc_hex}};
+    if (a.profile) {
+      nlohmann::json p = nlohmann::json::object();
+      for (size_t i = 0; i < sim::CpuProfile::kCauses; ++i) p[sim::CpuProfile::kNames[i]] = r.profile.counts[i];
+      j["profile"] = p;
+    }
     std::cout << j.dump() << std::endl;
   }
   return status;
@@ -151,6 +170,9 @@ void register_sim(CLI::App& app) {
                   "At exit, write the framebuffer's colour window (--frame-size pixels) as a PNG");
   cmd->add_option("--frame-size", args->frame_size,
                   "Size of the frame in the colour window, WIDTHxHEIGHT with stride WIDTH (default 160x120)");
+  cmd->add_flag("--profile", args->profile,
+                "Print where the CPU's clocks went: execute, data bus, mul/div, CSR order, load use, late "
+                "result, redirect, predicted jump, fetch (with --json, also as \"profile\")");
   cmd->add_flag("--json", args->json,
                 "Print one JSON object (exit_code, cycles, instret, cpi, ..., frame_crc32) as the last line of stdout");
   cmd->callback([args]() {

@@ -1,13 +1,16 @@
 // htx sim's contract beyond the firmware: every run ends (cycle limit: clear message, status 124),
 // bad input is refused with a clear message, the tohost convention sets the status, --signature
-// writes the words between begin_signature and end_signature, and --json prints one object.
+// writes the words between begin_signature and end_signature, --json prints one object, and
+// --profile charges every clock to one cause, each cause counted as the pipeline's rules say.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "subprocess.hpp"
 
@@ -79,6 +82,71 @@ TEST(SystemSimCli, SameResultWithRandomStalls) {
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_EQ(text.str(), "deadbeef\n00000000\n12345678\nfffffff9\n");
+}
+
+// The last line of stdout, the JSON object (it holds the nested "profile" object).
+nlohmann::json last_json_line(const std::string& out) {
+  const size_t line = out.rfind("\n{");
+  return nlohmann::json::parse(out.substr(line == std::string::npos ? out.find('{') : line + 1));
+}
+
+// The profile of sim_profile.S (LOOPS iterations) as a cause -> clocks map, checking that the
+// causes add up to the run's clocks.
+std::map<std::string, uint64_t> profile_of(const std::vector<std::string>& extra_args, unsigned loops) {
+  std::vector<std::string> argv = {HTX_BIN, "sim", "--elf",
+                                   std::string(HTX_SIM_PROFILE_ELF_DIR) + "/sim_profile_" + std::to_string(loops) + ".elf",
+                                   "--profile", "--json", "--max-cycles", "1000000"};
+  argv.insert(argv.end(), extra_args.begin(), extra_args.end());
+  const auto r = htx::test::run_program(argv, 60s);
+  EXPECT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("where the CPU's"), std::string::npos) << r.err;
+  const auto json = last_json_line(r.out);
+  std::map<std::string, uint64_t> out;
+  uint64_t sum = 0;
+  for (const auto& [cause, clocks] : json.at("profile").items()) {
+    out[cause] = clocks.get<uint64_t>();
+    sum += out[cause];
+  }
+  EXPECT_EQ(out.size(), 9u);
+  EXPECT_EQ(sum, json.at("cycles").get<uint64_t>()) << json.dump();
+  // Every instruction that retires left execute (the last ones may still be in write-back).
+  EXPECT_GE(out["execute"], json.at("instret").get<uint64_t>());
+  EXPECT_LE(out["execute"], json.at("instret").get<uint64_t>() + 2);
+  return out;
+}
+
+TEST(SystemSimCli, ProfileChargesEachLoopIterationItsKnownClocks) {
+  // 200 more iterations: each executes 9 instructions and loses one clock to a load's data used
+  // next, two to shift results used next (forwarded from write-back only), two to the multiplier
+  // and one to the predicted-taken branch's bubble; nothing else changes.
+  const auto short_run = profile_of({}, 100);
+  const auto long_run = profile_of({}, 300);
+  const std::map<std::string, uint64_t> per_iteration = {
+      {"execute", 9}, {"load_use", 1}, {"late_result", 2}, {"mul_div", 2}, {"jump", 1},
+      {"data_bus", 0}, {"csr_order", 0}, {"redirect", 0}, {"fetch", 0}};
+  for (const auto& [cause, clocks] : per_iteration) {
+    EXPECT_EQ(long_run.at(cause) - short_run.at(cause), 200 * clocks) << cause;
+  }
+}
+
+TEST(SystemSimCli, ProfileCountsWaitStates) {
+  // With random wait states on every slave the same program loses clocks to both buses.
+  const auto quiet = profile_of({}, 100);
+  const auto stalled = profile_of({"--stall-seed", "7"}, 100);
+  EXPECT_EQ(quiet.at("data_bus"), 0u);
+  EXPECT_GT(stalled.at("data_bus"), 0u);
+  // Instruction-bus wait states while fetch refills behind a predicted jump are the jump's.
+  EXPECT_GT(stalled.at("jump"), quiet.at("jump"));
+  EXPECT_GT(stalled.at("fetch") + stalled.at("redirect"), quiet.at("fetch") + quiet.at("redirect"));
+  EXPECT_GT(stalled.at("mul_div"), 0u);
+}
+
+TEST(SystemSimCli, NoProfileUnlessAsked) {
+  const auto r = htx::test::run_program({HTX_BIN, "sim", "--elf", HTX_SIM_TEST_ELF, "--json"}, 60s);
+  const auto json = nlohmann::json::parse(r.out.substr(r.out.rfind('{')));
+  EXPECT_FALSE(json.contains("profile"));
+  EXPECT_EQ(r.err.find("where the CPU's"), std::string::npos) << r.err;
 }
 
 }  // namespace

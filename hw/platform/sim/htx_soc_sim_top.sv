@@ -46,4 +46,25 @@ module htx_soc_sim_top #(
   );
 
   assign instret_o = u_soc.u_cpu.u_csr.instret_q;
+
+  // Where the CPU's clocks go (`htx sim --profile`); the harness reads the counts.
+  htx_cpu_profile u_cpu_profile (
+    .clk_i, .rst_ni,
+    .e_valid_i    (u_soc.u_cpu.e_valid_q),
+    .e_done_i     (u_soc.u_cpu.e_done),
+    .e_accept_i   (u_soc.u_cpu.e_accept),
+    .e_load_i     (u_soc.u_cpu.e_q.load),
+    .e_csr_wait_i (u_soc.u_cpu.e_q.csr && (u_soc.u_cpu.w_valid_q || u_soc.u_cpu.csr_counting)),
+    .unit_wait_i  (u_soc.u_cpu.unit_wait_q),
+    .w_ready_i    (u_soc.u_cpu.w_ready),
+    .w_trap_i     (u_soc.u_cpu.w_trap),
+    .redirect_i   (u_soc.u_cpu.redirect_q),
+    .d_valid_i    (u_soc.u_cpu.d_valid_q),
+    .d_go_i       (u_soc.u_cpu.d_go),
+    .d_hazard_i   (u_soc.u_cpu.d_hazard),
+    .d_free_i     (u_soc.u_cpu.d_free),
+    .d_jump_i     (u_soc.u_cpu.d_redirect),
+    .f_take_i     (u_soc.u_cpu.f_take),
+    .f_valid_i    (u_soc.u_cpu.f_valid)
+  );
 endmodule

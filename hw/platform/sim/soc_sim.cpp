@@ -109,6 +109,12 @@ SocSim::SocSim(const ElfImage& elf, const SimOptions& options, SerialEndpoint* u
   s.top->rst_ni = 1;
 }
 
+uint64_t CpuProfile::total() const {
+  uint64_t sum = 0;
+  for (uint64_t c : counts) sum += c;
+  return sum;
+}
+
 SocSim::~SocSim() {
   if (impl_ && impl_->trace) impl_->trace->close();
   if (impl_ && impl_->top) impl_->top->final();
@@ -159,6 +165,9 @@ SimResult SocSim::run() {
   s.console.flush();
   res.cycles = c;
   res.instret = s.top->instret_o;
+  for (size_t i = 0; i < CpuProfile::kCauses; ++i) {
+    res.profile.counts[i] = s.top->rootp->htx_soc_sim_top__DOT__u_cpu_profile__DOT__count_q[i];
+  }
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }

@@ -3,6 +3,7 @@
 // cycle limit. The UART's serial line is encoded/decoded bit by bit and connected to a host endpoint.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -27,12 +28,24 @@ struct SimOptions {
 
 enum class StopReason { Exit, ToHost, CycleLimit };
 
+// Where the CPU's clocks went (hw/platform/sim/htx_cpu_profile.sv): every clock after reset is
+// charged to one cause, judged at the execute stage, so the counts add up to the clocks run.
+struct CpuProfile {
+  static constexpr size_t kCauses = 9;
+  // In the RTL's order (htx_cpu_profile's cause_e).
+  static constexpr std::array<const char*, kCauses> kNames = {
+      "execute", "data_bus", "mul_div", "csr_order", "load_use", "late_result", "redirect", "jump", "fetch"};
+  std::array<uint64_t, kCauses> counts{};
+  uint64_t total() const;
+};
+
 struct SimResult {
   StopReason reason = StopReason::CycleLimit;
   int exit_code = 0;      // firmware's status (SIM_EXIT code, or tohost >> 1)
   uint64_t cycles = 0;    // clocks after reset was released
   uint64_t instret = 0;   // instructions retired (the CPU's minstret)
   double seconds = 0.0;   // host wall time of the run
+  CpuProfile profile;
 };
 
 const char* to_string(StopReason r);
