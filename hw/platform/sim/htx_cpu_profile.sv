@@ -52,6 +52,7 @@ module htx_cpu_profile (
   assign d_empty_cause = redirect_i ? CauseRedirect :
                          d_jump_i   ? CauseJump     :
                          refill_q   ? refill_cause_q : CauseFetch;
+  // (A live D without a hazard hands over whenever E accepts, so its CauseFetch is not reached.)
   assign e_empty_cause = redirect_i ? CauseRedirect :
                          d_valid_i  ? (d_hazard_i ? (e_load_i ? CauseLoadUse : CauseLateResult)
                                                   : CauseFetch) :
