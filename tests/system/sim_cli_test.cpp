@@ -144,7 +144,7 @@ TEST(SystemSimCli, ProfileCountsWaitStates) {
 
 TEST(SystemSimCli, NoProfileUnlessAsked) {
   const auto r = htx::test::run_program({HTX_BIN, "sim", "--elf", HTX_SIM_TEST_ELF, "--json"}, 60s);
-  const auto json = nlohmann::json::parse(r.out.substr(r.out.rfind('{')));
+  const auto json = last_json_line(r.out);
   EXPECT_FALSE(json.contains("profile"));
   EXPECT_EQ(r.err.find("where the CPU's"), std::string::npos) << r.err;
 }

@@ -13,7 +13,8 @@ module htx_cpu_profile (
   input  logic        e_done_i,       // E completes its instruction this clock
   input  logic        e_accept_i,     // E's register takes what D hands over (or a bubble)
   input  logic        e_load_i,       // E's instruction is a load (the producer of a D hazard)
-  input  logic        e_csr_wait_i,   // E's CSR instruction waits for W and the counters
+  input  logic        e_block_i,      // E waits for its multiply/divide, or its CSR instruction for W
+                                      // and the counters (the core's own e_block)
   input  logic        unit_wait_i,    // E's multiply or divide is still working
   input  logic        w_ready_i,      // W completes (no data response outstanding)
   input  logic        w_trap_i,       // W takes a trap (everything younger is squashed)
@@ -48,6 +49,9 @@ module htx_cpu_profile (
   cause_e refill_cause_q;
   logic   refill_q;                // fetch is refilling after a redirect or a predicted jump
 
+  logic   d_takes;                 // D takes an instruction from fetch this clock
+  assign d_takes = d_free_i && f_take_i && f_valid_i;
+
   cause_e d_empty_cause, e_empty_cause, now;
   assign d_empty_cause = redirect_i ? CauseRedirect :
                          d_jump_i   ? CauseJump     :
@@ -69,10 +73,10 @@ module htx_cpu_profile (
       now = CauseRedirect;
     end else if (!w_ready_i) begin
       now = CauseDataBus;
-    end else if (e_csr_wait_i) begin
-      now = CauseCsrOrder;
     end else if (unit_wait_i) begin
       now = CauseMulDiv;
+    end else if (e_block_i) begin
+      now = CauseCsrOrder;  // (a CSR instruction is never a multiply or divide)
     end else begin
       now = CauseDataBus;  // the request is not accepted yet
     end
@@ -89,7 +93,7 @@ module htx_cpu_profile (
       end
     end else begin
       count_q[now] <= count_q[now] + 64'd1;
-      if (d_free_i && !(f_take_i && f_valid_i)) begin
+      if (d_free_i && !d_takes) begin
         d_cause_q <= d_empty_cause;
       end
       if (e_accept_i && !d_go_i) begin
@@ -98,7 +102,7 @@ module htx_cpu_profile (
       if (redirect_i || d_jump_i) begin
         refill_q       <= 1'b1;
         refill_cause_q <= redirect_i ? CauseRedirect : CauseJump;
-      end else if (d_free_i && f_take_i && f_valid_i) begin
+      end else if (d_takes) begin
         refill_q <= 1'b0;
       end
     end

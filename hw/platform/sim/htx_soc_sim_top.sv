@@ -54,7 +54,7 @@ module htx_soc_sim_top #(
     .e_done_i     (u_soc.u_cpu.e_done),
     .e_accept_i   (u_soc.u_cpu.e_accept),
     .e_load_i     (u_soc.u_cpu.e_q.load),
-    .e_csr_wait_i (u_soc.u_cpu.e_q.csr && (u_soc.u_cpu.w_valid_q || u_soc.u_cpu.csr_counting)),
+    .e_block_i    (u_soc.u_cpu.e_block),
     .unit_wait_i  (u_soc.u_cpu.unit_wait_q),
     .w_ready_i    (u_soc.u_cpu.w_ready),
     .w_trap_i     (u_soc.u_cpu.w_trap),
