@@ -6,9 +6,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "htx/fw/console_packet.h"
+#include "htx/fw/crc32.h"
+#include "htx/model/image_io.hpp"
 #include "subprocess.hpp"
 
 namespace {
@@ -35,14 +39,20 @@ htx::fw::PacketStatus read_packet(int fd, htx::fw::Packet* p) {
   return htx::fw::kPacketNone;
 }
 
+// The pseudo-terminal `htx sim --uart pty` printed (empty if it did not).
+std::string pty_of(htx::test::Child& sim) {
+  const std::string marker = "htx sim: UART on ";
+  if (!sim.read_until("\n", 30s)) return "";
+  const size_t at = sim.output().find(marker);
+  if (at == std::string::npos) return "";
+  return sim.output().substr(at + marker.size(), sim.output().find('\n', at) - at - marker.size());
+}
+
 TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   htx::test::Child sim({HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--uart", "pty", "--max-cycles",
                         "2000000000"});
-  const std::string marker = "htx sim: UART on ";
-  ASSERT_TRUE(sim.read_until("\n", 30s)) << sim.output();
-  const size_t at = sim.output().find(marker);
-  ASSERT_NE(at, std::string::npos) << sim.output();
-  const std::string pty = sim.output().substr(at + marker.size(), sim.output().find('\n', at) - at - marker.size());
+  const std::string pty = pty_of(sim);
+  ASSERT_FALSE(pty.empty()) << sim.output();
 
   const auto console = [&pty](std::vector<std::string> commands) {
     std::vector<std::string> argv = {HTX_BIN, "console", "--port", pty, "--timeout", "60"};
@@ -142,6 +152,109 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   const auto cmp = htx::test::run_program({HTX_BIN, "compare", png, ref}, 60s);
   ASSERT_EQ(cmp.status, 0) << cmp.err;
   EXPECT_NE(cmp.out.find("differing_pixels 0"), std::string::npos) << cmp.out;
+}
+
+// An image whose bottom row is texel row 0, from f(x, v) -> RGBA.
+template <typename F>
+void write_texture_png(const std::string& path, int w, int h, F f) {
+  htx::Image img{w, h, std::vector<uint8_t>(static_cast<size_t>(w) * h * 4)};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::array<uint8_t, 4> c = f(x, h - 1 - y);
+      std::copy(c.begin(), c.end(), &img.rgba[4 * (static_cast<size_t>(y) * w + x)]);
+    }
+  htx::write_png(path, img);
+}
+
+// Texture upload: the render firmware's checkerboard sent as an image draws exactly the frame the
+// console's own checkerboard draws; another texture draws another frame; refused textures (too
+// large, not a power of two, damaged in the packed form) leave the texture as it was.
+TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
+  htx::test::Child sim({HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--uart", "pty", "--max-cycles",
+                        "2000000000"});
+  const std::string pty = pty_of(sim);
+  ASSERT_FALSE(pty.empty()) << sim.output();
+  const auto console = [&pty](std::vector<std::string> commands) {
+    std::vector<std::string> argv = {HTX_BIN, "console", "--port", pty, "--timeout", "60"};
+    for (const std::string& c : commands) argv.insert(argv.end(), {"-c", c});
+    return htx::test::run_program(argv, 180s);
+  };
+  const auto render_crc = [](const std::string& out) {
+    const size_t at = out.rfind("render cube method");
+    return at == std::string::npos ? std::string() : field_after(out.substr(at), "crc32 ");
+  };
+  const auto boot = console({"info", "render cube"});
+  ASSERT_EQ(boot.status, 0) << boot.err;
+  EXPECT_NE(boot.out.find("texture 32x32 rgb565 (checkerboard)"), std::string::npos) << boot.out;
+  const std::string checker_crc = render_crc(boot.out);
+  ASSERT_EQ(checker_crc.size(), 8u) << boot.out;
+
+  // soc_texture.cpp's checkerboard: white and the model's ink in 4-texel squares.
+  const std::string checker = ::testing::TempDir() + "htx_console_checker.png";
+  write_texture_png(checker, 32, 32, [](int x, int v) {
+    return ((x >> 2) ^ (v >> 2)) & 1 ? std::array<uint8_t, 4>{40, 60, 140, 255} : std::array<uint8_t, 4>{255, 255, 255, 255};
+  });
+  const auto same = console({"texture " + checker, "info", "render cube"});
+  ASSERT_EQ(same.status, 0) << same.err;
+  EXPECT_NE(same.out.find("texture ok: 32x32 rgb565, 6 levels"), std::string::npos) << same.out;
+  EXPECT_NE(same.out.find("texture 32x32 rgb565 (uploaded)"), std::string::npos) << same.out;
+  EXPECT_EQ(render_crc(same.out), checker_crc) << same.out;
+
+  // Another texture, another shape and format, through `htx upload --texture`.
+  const std::string ramp = ::testing::TempDir() + "htx_console_ramp.png";
+  write_texture_png(ramp, 16, 64, [](int x, int v) {
+    return std::array<uint8_t, 4>{static_cast<uint8_t>(x * 16), static_cast<uint8_t>(v * 4), 200, 255};
+  });
+  const auto up = htx::test::run_program(
+      {HTX_BIN, "upload", "--texture", ramp, "--format", "rgba4444", "--port", pty, "--timeout", "60"}, 180s);
+  ASSERT_EQ(up.status, 0) << up.err;
+  EXPECT_NE(up.out.find("texture ok: 16x64 rgba4444, 7 levels"), std::string::npos) << up.out;
+  const auto drawn = console({"render cube"});
+  ASSERT_EQ(drawn.status, 0) << drawn.err;
+  const std::string ramp_crc = render_crc(drawn.out);
+  ASSERT_EQ(ramp_crc.size(), 8u) << drawn.out;
+  EXPECT_NE(ramp_crc, checker_crc);
+
+  // Refused: too large for the store, sides not powers of two (before the port opens), and a
+  // packed texture damaged inside (its CRC-32 right) sent by hand.
+  const std::string big = ::testing::TempDir() + "htx_console_big.png";
+  write_texture_png(big, 64, 64, [](int, int) { return std::array<uint8_t, 4>{1, 2, 3, 255}; });
+  const auto too_big = htx::test::run_program({HTX_BIN, "upload", "--texture", big, "--port", pty, "--timeout", "60"}, 180s);
+  EXPECT_NE(too_big.status, 0);
+  EXPECT_NE(too_big.err.find("a texture of 8204 bytes does not fit the store (1..3072)"), std::string::npos)
+      << too_big.err;
+  const std::string odd = ::testing::TempDir() + "htx_console_odd.png";
+  write_texture_png(odd, 24, 16, [](int, int) { return std::array<uint8_t, 4>{1, 2, 3, 255}; });
+  const auto not_pow2 = htx::test::run_program({HTX_BIN, "upload", "--texture", odd, "--port", pty}, 60s);
+  EXPECT_NE(not_pow2.status, 0);
+  EXPECT_NE(not_pow2.err.find("is 24x16; sides must be powers of two in 8..256"), std::string::npos) << not_pow2.err;
+  {
+    std::vector<uint8_t> packed(12 + 2 * 64, 0);
+    const char header[] = {'H', 'T', 'X', 'T', 1, 0, 3, 3, 0};
+    std::copy(header, header + sizeof header, packed.begin());
+    packed[8] = 2;  // RGBA8888: not a 16-bit format
+    char crc[16];
+    std::snprintf(crc, sizeof crc, "%08x", htx::fw::crc32(packed.data(), packed.size()));
+    const int fd = htx::test::open_raw_terminal(pty);
+    ASSERT_GE(fd, 0) << "cannot open " << pty << " raw";
+    const std::string cmd = "texture " + std::to_string(packed.size()) + " " + crc + "\r";
+    ASSERT_EQ(write(fd, cmd.data(), cmd.size()), static_cast<ssize_t>(cmd.size()));
+    std::string got;
+    ASSERT_TRUE(htx::test::read_fd_until(fd, got, "ready\r\n", 60s)) << got;
+    uint8_t line[htx::fw::kPacketMaxLine];
+    const size_t n = htx::fw::packet_encode(htx::fw::kPacketSceneData, 0, packed.data(), packed.size(), line);
+    ASSERT_EQ(write(fd, line, n), static_cast<ssize_t>(n));
+    std::string verdict;
+    ASSERT_TRUE(htx::test::read_fd_until(fd, verdict, "htx> ", 60s)) << verdict;
+    EXPECT_NE(verdict.find("error: not a valid texture (the format is not RGB565 or RGBA4444); the texture is unchanged"),
+              std::string::npos)
+        << verdict;
+    close(fd);
+  }
+  const auto after = console({"info", "render cube", "quit"});
+  EXPECT_NE(after.out.find("texture 16x64 rgba4444 (uploaded)"), std::string::npos) << after.out;
+  EXPECT_EQ(render_crc(after.out), ramp_crc) << after.out;
+  EXPECT_EQ(sim.wait(60s), 0);
 }
 
 }  // namespace

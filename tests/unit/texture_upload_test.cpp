@@ -5,13 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 #include <vector>
 
+#include "htx/fw/console_packet.h"
 #include "htx/fw/mip_chain.h"
 #include "htx/fw/texel.h"
 #include "htx/hal/sim/fake_bus.hpp"
 #include "htx/hal/texture.h"
 #include "htx/model/texture.hpp"
+#include "htx/render/texture_pack.h"
 #include "htx/render/texture_upload.h"
 
 namespace {
@@ -209,6 +212,125 @@ TEST(TextureDriver, CapsStatusAndCounters) {
   EXPECT_EQ(bus.writes_to(HTX_TEXTURE_BASE + TEXTURE_CNT_RESET_Offset), std::vector<uint32_t>{1u});
   bus.poke(HTX_TEXTURE_BASE + TEXTURE_CNT_SAMPLES_Offset, 1234);
   EXPECT_EQ(htx::hal::texture_samples(), 1234u);
+}
+
+// The texel path (a console's texture upload) writes exactly what the image path writes for the
+// image its texels decode to, write for write, though it builds level 1 in place over its input.
+TEST(TextureDriver, Texels16UploadWritesWhatTheImageUploadWrites) {
+  std::mt19937 rng(17);
+  const unsigned sizes[][2] = {{3, 3}, {5, 5}, {7, 3}, {3, 7}, {5, 4}, {8, 3}};
+  for (const htx::TexFormat f : {htx::TexFormat::RGB565, htx::TexFormat::RGBA4444})
+    for (const auto& sz : sizes) {
+      const unsigned lw = sz[0], lh = sz[1];
+      const uint8_t fmt = static_cast<uint8_t>(f);
+      std::vector<uint32_t> texels(size_t{1} << (lw + lh)), rgba(texels.size());
+      for (size_t k = 0; k < texels.size(); ++k) {
+        texels[k] = rng() & 0xFFFFu;
+        rgba[k] = htx::fw::decode_texel(fmt, texels[k]);
+      }
+      FakeBus image_bus;
+      {
+        ScopedBus attach(image_bus);
+        std::vector<uint32_t> scratch(htx::render::texture_upload_scratch_words(lw, lh));
+        const htx::render::TextureImage tex{rgba.data(), static_cast<uint8_t>(lw), static_cast<uint8_t>(lh), fmt};
+        ASSERT_EQ(htx::render::upload_texture(1, 700, tex, scratch.data(), static_cast<uint32_t>(scratch.size()), 10),
+                  htx::render::kUploadOk);
+      }
+      // Two bytes a texel, little-endian, in word storage as the console's staging buffer.
+      std::vector<uint32_t> words((texels.size() + 1) / 2);
+      auto* bytes = reinterpret_cast<uint8_t*>(words.data());
+      for (size_t k = 0; k < texels.size(); ++k) {
+        bytes[2 * k] = static_cast<uint8_t>(texels[k]);
+        bytes[2 * k + 1] = static_cast<uint8_t>(texels[k] >> 8);
+      }
+      FakeBus texel_bus;
+      {
+        ScopedBus attach(texel_bus);
+        ASSERT_EQ(htx::render::upload_texture_texels16(1, 700, static_cast<uint8_t>(lw), static_cast<uint8_t>(lh), fmt,
+                                                       bytes, 10),
+                  htx::render::kUploadOk);
+      }
+      ASSERT_EQ(texel_bus.log().size(), image_bus.log().size()) << lw << "x" << lh;
+      for (size_t k = 0; k < image_bus.log().size(); ++k) {
+        ASSERT_EQ(texel_bus.log()[k].write, image_bus.log()[k].write) << k;
+        ASSERT_EQ(texel_bus.log()[k].addr, image_bus.log()[k].addr) << k;
+        if (image_bus.log()[k].write) {
+          ASSERT_EQ(texel_bus.log()[k].value, image_bus.log()[k].value) << k;
+        }
+      }
+    }
+}
+
+TEST(TextureDriver, Texels16RefusesOtherFormatsWithoutAWrite) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  std::vector<uint32_t> words(32);
+  auto* bytes = reinterpret_cast<uint8_t*>(words.data());
+  htx::hal::TextureStatus why = htx::hal::kTextureBadSlot;
+  EXPECT_EQ(htx::render::upload_texture_texels16(0, 0, 3, 3, 2, bytes, 10, &why), htx::render::kUploadBadTexture);
+  EXPECT_EQ(why, htx::hal::kTextureOk);  // the driver takes RGBA8888; this path does not
+  EXPECT_EQ(htx::render::upload_texture_texels16(0, 0, 2, 3, 0, bytes, 10, &why), htx::render::kUploadBadTexture);
+  EXPECT_EQ(why, htx::hal::kTextureBadSize);
+  EXPECT_EQ(htx::render::upload_texture_texels16(0, 0, 3, 3, 0, nullptr, 10), htx::render::kUploadBadTexture);
+  EXPECT_TRUE(bus.log().empty());
+}
+
+std::vector<uint8_t> packed_texture(uint8_t lw, uint8_t lh, uint8_t format, std::vector<uint16_t>* texels_out = nullptr) {
+  std::vector<uint16_t> texels(size_t{1} << (lw + lh));
+  for (size_t k = 0; k < texels.size(); ++k) texels[k] = static_cast<uint16_t>(k * 2654435761u >> 7);
+  std::vector<uint8_t> out(htx::render::packed_texture_size(lw, lh));
+  EXPECT_EQ(htx::render::pack_texture(lw, lh, format, texels.data(), out.data(), out.size()), out.size());
+  if (texels_out) *texels_out = texels;
+  return out;
+}
+
+TEST(TexturePack, RoundTripReadsTheTexelsInPlace) {
+  std::vector<uint16_t> texels;
+  std::vector<uint8_t> bytes = packed_texture(5, 4, 1, &texels);
+  EXPECT_EQ(bytes.size(), 12u + 2u * 512u);
+  EXPECT_EQ(std::string(bytes.begin(), bytes.begin() + 4), "HTXT");
+  htx::render::UnpackedTexture t;
+  ASSERT_EQ(htx::render::unpack_texture(bytes.data(), bytes.size(), 1024, &t), nullptr);
+  EXPECT_EQ(t.log2_width, 5);
+  EXPECT_EQ(t.log2_height, 4);
+  EXPECT_EQ(t.format, 1);
+  EXPECT_EQ(t.texels, bytes.data() + htx::render::kTexturePackHeader);
+  for (size_t k = 0; k < texels.size(); ++k) ASSERT_EQ(htx::fw::get_le16(t.texels + 2 * k), texels[k]) << k;
+}
+
+TEST(TexturePack, EveryBadFieldIsRefusedWithItsOwnMessage) {
+  const std::vector<uint8_t> good = packed_texture(3, 3, 0);
+  const auto why = [](std::vector<uint8_t> b, uint32_t max_texels = 1024) {
+    htx::render::UnpackedTexture t;
+    const char* w = htx::render::unpack_texture(b.data(), b.size(), max_texels, &t);
+    return std::string(w ? w : "ok");
+  };
+  EXPECT_EQ(why(good), "ok");
+  auto with = [&good](size_t at, uint8_t v) {
+    std::vector<uint8_t> b = good;
+    b[at] = v;
+    return b;
+  };
+  EXPECT_EQ(why(with(0, 'X')), "not a packed texture (no HTXT)");
+  EXPECT_EQ(why(with(4, 2)), "an unknown version");
+  EXPECT_EQ(why(with(6, 2)), "a side is not 8 to 256 texels");
+  EXPECT_EQ(why(with(7, 9)), "a side is not 8 to 256 texels");
+  EXPECT_EQ(why(with(8, 2)), "the format is not RGB565 or RGBA4444");
+  EXPECT_EQ(why(with(11, 1)), "reserved bytes are not zero");
+  EXPECT_EQ(why(good, 32), "more texels than the console takes");
+  EXPECT_EQ(why(with(6, 4)), "the size does not match its sides");  // 16 x 8 announced, 8 x 8 sent
+  for (size_t n = 0; n < good.size(); ++n) {
+    const std::vector<uint8_t> cut(good.begin(), good.begin() + static_cast<long>(n));
+    EXPECT_NE(why(cut), "ok") << n;
+  }
+  std::vector<uint8_t> longer = good;
+  longer.push_back(0);
+  EXPECT_EQ(why(longer), "the size does not match its sides");
+  std::vector<uint8_t> out(good.size());
+  std::vector<uint16_t> texels(64);
+  EXPECT_EQ(htx::render::pack_texture(3, 3, 0, texels.data(), out.data(), out.size() - 1), 0u);  // no room
+  EXPECT_EQ(htx::render::pack_texture(3, 3, 2, texels.data(), out.data(), out.size()), 0u);      // RGBA8888
+  EXPECT_EQ(htx::render::pack_texture(9, 3, 0, texels.data(), out.data(), out.size()), 0u);
 }
 
 }  // namespace

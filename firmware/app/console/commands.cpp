@@ -7,6 +7,7 @@
 #include "frame_download.hpp"
 #include "scene_store.hpp"
 #include "scene_upload.hpp"
+#include "texture_store.hpp"
 #include "htx_regs.h"
 #include "scene_render.hpp"
 #include "scenes.hpp"
@@ -65,6 +66,7 @@ void cmd_help() {
         "  set tolerance 1/N     AUTO's largest predicted texel error (N = 1..65536)\r\n"
         "  render SCENE          draw a scene; prints its figures and the frame's CRC-32\r\n"
         "  upload SIZE CRC32     receive a packed scene as packets (for `htx upload`); SCENE `upload`\r\n"
+        "  texture SIZE CRC32    receive a packed texture as packets (for `htx upload --texture`)\r\n"
         "  stats                 the raster unit's counters after the last render\r\n"
         "  grab                  send the frame as binary packets (for `htx grab`)\r\n"
         "  quit                  leave the console (the simulation ends)\r\n",
@@ -78,6 +80,9 @@ void cmd_info() {
          static_cast<long>(render_app::kWidth), static_cast<long>(render_app::kHeight));
   printf("method %s; tolerance 1/%lu texel\r\n", g_settings.method_text,
          static_cast<unsigned long>(g_settings.tolerance_denominator));
+  const TextureInfo t = current_texture();
+  printf("texture %ux%u %s (%s)\r\n", 1u << t.log2_width, 1u << t.log2_height, t.format == 0 ? "rgb565" : "rgba4444",
+         t.uploaded ? "uploaded" : "checkerboard");
 }
 
 void cmd_scenes() {
@@ -101,14 +106,26 @@ bool parse_hex(const char* s, uint32_t* out) {
   return true;
 }
 
-void cmd_upload(char* rest) {
+// `upload SIZE CRC32` and `texture SIZE CRC32`: the size and checksum of what the packets bring.
+bool parse_upload(char* rest, uint32_t* size, uint32_t* crc) {
   const char* size_text = next_word(&rest);
   const char* crc_text = next_word(&rest);
+  return size_text && crc_text && !next_word(&rest) && parse_uint(size_text, 0, 0x7FFFFFFF, size) &&
+         parse_hex(crc_text, crc);
+}
+
+void cmd_upload(char* rest) {
   uint32_t size = 0, crc = 0;
-  if (!size_text || !crc_text || next_word(&rest) || !parse_uint(size_text, 0, 0x7FFFFFFF, &size) ||
-      !parse_hex(crc_text, &crc))
+  if (!parse_upload(rest, &size, &crc))
     return error("usage: upload SIZE CRC32 (decimal bytes, hex checksum; `htx upload` sends them)");
   receive_scene(size, crc);
+}
+
+void cmd_texture(char* rest) {
+  uint32_t size = 0, crc = 0;
+  if (!parse_upload(rest, &size, &crc))
+    return error("usage: texture SIZE CRC32 (decimal bytes, hex checksum; `htx upload --texture` sends them)");
+  receive_texture(size, crc);
 }
 
 bool set_method(const char* name) {
@@ -163,6 +180,9 @@ void cmd_render(char* rest) {
   if (scene) {
     render_app::DrawSettings draw = g_settings.draw;
     draw.time_geometry = false;
+    const TextureInfo t = current_texture();
+    draw.texture_log2_width = t.log2_width;
+    draw.texture_log2_height = t.log2_height;
     g_last = render_app::draw_scene(*scene, draw);
     g_last_scene = scene->name;
     if (!g_last.ok) return error("render failed: ", g_last.error);
@@ -202,6 +222,8 @@ CommandResult run_command(char* line) {
     cmd_render(rest);
   } else if (strcmp(cmd, "upload") == 0) {
     cmd_upload(rest);
+  } else if (strcmp(cmd, "texture") == 0) {
+    cmd_texture(rest);
   } else if (next_word(&rest)) {
     error("this command takes no arguments: ", cmd);
   } else if (strcmp(cmd, "help") == 0) {

@@ -64,6 +64,7 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
       return r;
     }
     apply_soc_render_state(&sc.meshes[m]);
+    sc.meshes[m].tex = {settings.texture_log2_width, settings.texture_log2_height};
     sc.meshes[m].state.method = settings.method;
     sc.meshes[m].state.subdiv_n = settings.subdiv_n;
   }

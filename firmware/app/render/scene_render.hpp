@@ -7,6 +7,7 @@
 #include "htx/hal/raster.h"
 #include "htx/render/pipeline.h"
 #include "scenes.hpp"
+#include "soc_texture.hpp"
 
 namespace render_app {
 
@@ -15,6 +16,8 @@ struct DrawSettings {
   uint8_t subdiv_n = 16;                      // for SUBDIV
   int64_t auto_tolerance = 0;                 // AUTO's tolerance, Q16.16 texels (0: soc_config's)
   bool time_geometry = true;                  // also time the geometry stage alone (kGeometryRuns runs)
+  uint8_t texture_log2_width = kTextureLog2;  // the size of slot 0's texture (soc_texture.hpp's by default)
+  uint8_t texture_log2_height = kTextureLog2;
 };
 
 inline constexpr uint32_t kGeometryRuns = 4;

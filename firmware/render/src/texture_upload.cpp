@@ -1,9 +1,30 @@
 #include "htx/render/texture_upload.h"
 
+#include "htx/fw/console_packet.h"
 #include "htx/fw/mip_chain.h"
 #include "htx/fw/texel.h"
 
 namespace htx::render {
+
+namespace {
+
+// Levels 2 and below generated in place from level 1 in `level` and written, each level with
+// level 1 first; then the descriptor.
+UploadStatus finish_chain(uint32_t slot, uint32_t base_block, uint32_t lw, uint32_t lh, uint8_t format,
+                          uint32_t* level, uint32_t max_polls, hal::TextureStatus* hal_status) {
+  const unsigned levels = fw::mip_level_count(lw, lh);
+  for (unsigned l = 1; l < levels; ++l) {
+    if (l > 1)
+      fw::mip_next_level(format, level, fw::kMipSourceTexels, fw::mip_level_log2(lw, l - 1),
+                         fw::mip_level_log2(lh, l - 1), level);
+    hal::texture_write_level(base_block, lw, lh, l, level);
+  }
+  const hal::TextureStatus ds = hal::texture_set_descriptor(slot, base_block, lw, lh, format, max_polls);
+  if (hal_status) *hal_status = ds;
+  return ds == hal::kTextureOk ? kUploadOk : kUploadTimeout;
+}
+
+}  // namespace
 
 UploadStatus upload_texture(uint32_t slot, uint32_t base_block, const TextureImage& img, uint32_t* scratch,
                             uint32_t scratch_words, uint32_t max_polls, hal::TextureStatus* hal_status) {
@@ -18,17 +39,35 @@ UploadStatus upload_texture(uint32_t slot, uint32_t base_block, const TextureIma
   for (uint32_t j = 0; j < h; ++j)
     for (uint32_t i = 0; i < w; ++i)
       hal::texture_write_texel(base_block, lw, lh, 0, i, j, fw::encode_texel(img.format, img.rgba8[j * w + i]));
-  // Level 1 from the image, every further level in place in the scratch buffer.
-  const unsigned levels = fw::mip_level_count(lw, lh);
-  for (unsigned level = 1; level < levels; ++level) {
-    const unsigned above_w = fw::mip_level_log2(lw, level - 1), above_h = fw::mip_level_log2(lh, level - 1);
-    if (level == 1) fw::mip_next_level(img.format, img.rgba8, fw::kMipSourceRgba8, above_w, above_h, scratch);
-    else fw::mip_next_level(img.format, scratch, fw::kMipSourceTexels, above_w, above_h, scratch);
-    hal::texture_write_level(base_block, lw, lh, level, scratch);
-  }
-  const hal::TextureStatus ds = hal::texture_set_descriptor(slot, base_block, lw, lh, img.format, max_polls);
-  if (hal_status) *hal_status = ds;
-  return ds == hal::kTextureOk ? kUploadOk : kUploadTimeout;
+  // Level 1 from the image into the scratch buffer, every further level in place there.
+  fw::mip_next_level(img.format, img.rgba8, fw::kMipSourceRgba8, lw, lh, scratch);
+  return finish_chain(slot, base_block, lw, lh, img.format, scratch, max_polls, hal_status);
+}
+
+UploadStatus upload_texture_texels16(uint32_t slot, uint32_t base_block, uint8_t log2_w, uint8_t log2_h,
+                                     uint8_t format, uint8_t* texels, uint32_t max_polls,
+                                     hal::TextureStatus* hal_status) {
+  const hal::TextureStatus st = hal::texture_check(slot, base_block, log2_w, log2_h, format);
+  if (hal_status) *hal_status = st;
+  const bool sixteen_bits = format == fw::kTexelRgb565 || format == fw::kTexelRgba4444;
+  if (st != hal::kTextureOk || !sixteen_bits || !texels) return kUploadBadTexture;
+
+  const uint32_t w = 1u << log2_w, h = 1u << log2_h;
+  const auto texel = [texels, w](uint32_t i, uint32_t j) { return fw::get_le16(texels + 2u * (j * w + i)); };
+  for (uint32_t j = 0; j < h; ++j)
+    for (uint32_t i = 0; i < w; ++i) hal::texture_write_texel(base_block, log2_w, log2_h, 0, i, j, texel(i, j));
+  // Level 1, one 2x2 box at a time (both sides are at least 8, so every box is a full 2x2), each
+  // read completely before its word is written over the level-0 texels it read last.
+  uint32_t* level = reinterpret_cast<uint32_t*>(texels);
+  for (uint32_t j = 0; j < h / 2; ++j)
+    for (uint32_t i = 0; i < w / 2; ++i) {
+      const uint32_t box[4] = {texel(2 * i, 2 * j), texel(2 * i + 1, 2 * j), texel(2 * i, 2 * j + 1),
+                               texel(2 * i + 1, 2 * j + 1)};
+      uint32_t out = 0;
+      fw::mip_next_level(format, box, fw::kMipSourceTexels, 1, 1, &out);
+      level[j * (w / 2) + i] = out;
+    }
+  return finish_chain(slot, base_block, log2_w, log2_h, format, level, max_polls, hal_status);
 }
 
 }  // namespace htx::render

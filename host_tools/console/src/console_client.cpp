@@ -180,21 +180,23 @@ GrabbedFrame ConsoleClient::grab(const std::function<void(size_t)>& progress) {
   return f;
 }
 
-std::string ConsoleClient::upload(const std::vector<uint8_t>& scene, const std::function<void(size_t)>& progress) {
+std::string ConsoleClient::upload(const std::vector<uint8_t>& bytes, const std::function<void(size_t)>& progress,
+                                  Payload payload) {
+  const bool texture = payload == Payload::kTexture;
   char crc[16];
-  std::snprintf(crc, sizeof crc, "%08x", fw::crc32(scene.data(), scene.size()));
-  port_.write("upload " + std::to_string(scene.size()) + " " + crc + "\r");
+  std::snprintf(crc, sizeof crc, "%08x", fw::crc32(bytes.data(), bytes.size()));
+  port_.write((texture ? "texture " : "upload ") + std::to_string(bytes.size()) + " " + crc + "\r");
   // The console answers `ready`, or refuses with a message and a prompt.
   std::string text;
   if (!read_text_until("ready\r\n", &text))
     throw std::runtime_error("upload: the console refused: " + unix_lines(without_echo(text)));
   decoder_ = {};
   size_t sent = 0;
-  for (uint32_t seq = 0; sent < scene.size(); ++seq) {
-    const size_t len = std::min(fw::kPacketMaxPayload, scene.size() - sent);
+  for (uint32_t seq = 0; sent < bytes.size(); ++seq) {
+    const size_t len = std::min(fw::kPacketMaxPayload, bytes.size() - sent);
     bool taken = false;
     for (int attempt = 0; attempt < kUploadTries && !taken; ++attempt) {
-      send_packet(fw::kPacketSceneData, static_cast<uint8_t>(seq), scene.data() + sent, len);
+      send_packet(fw::kPacketSceneData, static_cast<uint8_t>(seq), bytes.data() + sent, len);
       fw::Packet answer;
       if (next_packet(&answer) != fw::kPacketReady || answer.len < 1) continue;  // a damaged answer: send again
       taken = answer.type == fw::kPacketAck && answer.payload[0] == static_cast<uint8_t>(seq);
@@ -204,7 +206,8 @@ std::string ConsoleClient::upload(const std::vector<uint8_t>& scene, const std::
       send_packet(fw::kPacketAbort, 0, &nothing, 1);
       read_until_prompt();
       throw std::runtime_error("upload: packet " + std::to_string(seq) + " was not taken after " +
-                               std::to_string(kUploadTries) + " tries; the console's scene is unchanged");
+                               std::to_string(kUploadTries) + " tries; the console's " + (texture ? "texture" : "scene") +
+                               " is unchanged");
     }
     sent += len;
     if (progress) progress(sent);

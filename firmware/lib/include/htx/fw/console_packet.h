@@ -27,7 +27,7 @@ enum PacketType : uint8_t {
   // A scene upload (`upload SIZE CRC32`): the host sends SceneData packets with sequence numbers
   // 0, 1, ... (mod 256) and waits for each to be answered: Ack (u8: the sequence number taken) or
   // Nak (u8: the sequence number wanted). Abort ends the upload with the scene unchanged.
-  kPacketSceneData = 'S',  // the next bytes of the packed scene (htx/render/scene_pack.h)
+  kPacketSceneData = 'S',  // the next bytes of a packed scene or texture (htx/render/scene_pack.h, texture_pack.h)
   kPacketAck = 'A',
   kPacketNak = 'N',
   kPacketAbort = 'X',

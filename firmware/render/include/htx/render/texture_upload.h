@@ -32,4 +32,14 @@ enum UploadStatus : int {
 UploadStatus upload_texture(uint32_t slot, uint32_t base_block, const TextureImage& img, uint32_t* scratch,
                             uint32_t scratch_words, uint32_t max_polls, hal::TextureStatus* hal_status = nullptr);
 
+// The same for a level 0 given as texels of a 16-bit format (RGB565 or RGBA4444; anything else is
+// kUploadBadTexture): 2^log2_w x 2^log2_h of them, two bytes each, little-endian, row-major, at
+// `texels` (4-byte aligned). Needs no scratch: the buffer is overwritten. Level 1 is generated in
+// place over level 0, level-1 texel k (one word) over level-0 texels 2k and 2k+1, which no level-1
+// texel after k reads; the further levels in place as upload_texture's. The chain equals
+// upload_texture's for the image these texels decode to.
+UploadStatus upload_texture_texels16(uint32_t slot, uint32_t base_block, uint8_t log2_w, uint8_t log2_h,
+                                     uint8_t format, uint8_t* texels, uint32_t max_polls,
+                                     hal::TextureStatus* hal_status = nullptr);
+
 }  // namespace htx::render

@@ -36,10 +36,14 @@ class ConsoleClient {
   // Sends `grab` and receives the frame. Throws std::runtime_error with the reason on any protocol
   // error (a bad packet, a gap in the sequence, a checksum or size that does not match).
   GrabbedFrame grab(const std::function<void(size_t coded_bytes)>& progress = {});
-  // Sends a packed scene (`upload SIZE CRC32`, then packets, each resent until acknowledged, at most
-  // kUploadTries times) and returns the console's verdict line. Throws std::runtime_error when the
-  // console refuses the scene or the transfer fails; the console's scene is then unchanged.
-  std::string upload(const std::vector<uint8_t>& scene, const std::function<void(size_t sent)>& progress = {});
+  // What an upload carries: a packed scene (`upload SIZE CRC32`) or a packed texture (`texture SIZE
+  // CRC32`); both then go as the same packets.
+  enum class Payload { kScene, kTexture };
+  // Sends a packed scene or texture (the command, then packets, each resent until acknowledged, at
+  // most kUploadTries times) and returns the console's verdict line. Throws std::runtime_error when
+  // the console refuses it or the transfer fails; the console's scene or texture is then unchanged.
+  std::string upload(const std::vector<uint8_t>& bytes, const std::function<void(size_t sent)>& progress = {},
+                     Payload payload = Payload::kScene);
   static constexpr int kUploadTries = 8;
 
  private:
