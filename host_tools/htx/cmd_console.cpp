@@ -12,13 +12,8 @@
 #include "commands.hpp"
 #include "htx/console/console_client.hpp"
 #include "htx/console/serial_port.hpp"
-#include "frame_size.hpp"
-#include "htx/host/render_scene.hpp"
+#include "console_payload.hpp"
 #include "htx/model/image_io.hpp"
-#include "htx/model/scenes.hpp"
-#include "htx/fw/texel.h"
-#include "htx/render/scene_pack.h"
-#include "htx/render/texture_pack.h"
 
 namespace htx {
 
@@ -39,53 +34,6 @@ void add_port_options(CLI::App* cmd, PortArgs* a) {
 std::chrono::milliseconds timeout_of(const PortArgs& a) {
   if (!(a.timeout_s > 0)) throw std::invalid_argument("--timeout must be > 0 seconds");
   return std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000));
-}
-
-// The packed form of a scene as the console takes it (htx/render/scene_pack.h).
-std::vector<uint8_t> packed_scene(const std::string& spec, const std::string& size) {
-  int width = 0, height = 0;
-  parse_size(size, width, height);
-  // The firmware's form of the scene (as the render firmware's compiled-in scenes are made), packed.
-  const host::RenderScene rs = host::to_render_scene(load_scene(spec), width, height);
-  std::vector<render::Mesh> meshes;
-  for (const host::RenderScene::MeshData& d : rs.meshes) meshes.push_back(d.mesh);
-  const uint32_t count = static_cast<uint32_t>(meshes.size());
-  std::vector<uint8_t> packed(render::packed_scene_size(meshes.data(), count));
-  if (render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(), count, packed.data(), packed.size()) == 0)
-    throw std::runtime_error("'" + spec + "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
-  return packed;
-}
-
-// The packed form of an image as the console takes it as its texture (htx/render/texture_pack.h):
-// sides powers of two in 8..256, each pixel encoded in `format`, the image's bottom row as texel
-// row 0 (v = 0), as the model reads an OBJ's texture.
-std::vector<uint8_t> packed_texture(const std::string& path, const std::string& format_name) {
-  uint8_t format = 0;
-  if (format_name == "rgb565") format = fw::kTexelRgb565;
-  else if (format_name == "rgba4444") format = fw::kTexelRgba4444;
-  else throw std::invalid_argument("--format must be rgb565 or rgba4444, not '" + format_name + "'");
-  const Image img = load_image(path);
-  const auto log2_of = [](int n) {
-    int l = 0;
-    while ((1 << l) < n) ++l;
-    return (1 << l) == n ? l : -1;
-  };
-  const int lw = log2_of(img.width), lh = log2_of(img.height);
-  if (lw < 3 || lw > 8 || lh < 3 || lh > 8)
-    throw std::invalid_argument("texture '" + path + "' is " + std::to_string(img.width) + "x" +
-                                std::to_string(img.height) + "; sides must be powers of two in 8..256");
-  std::vector<uint16_t> texels(img.rgba.size() / 4);
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) {
-      const uint8_t* p = &img.rgba[4 * (static_cast<size_t>(img.height - 1 - y) * img.width + x)];
-      const uint32_t rgba8 = p[0] | (p[1] << 8) | (p[2] << 16) | (uint32_t{p[3]} << 24);
-      texels[static_cast<size_t>(y) * img.width + x] = static_cast<uint16_t>(fw::encode_texel(format, rgba8));
-    }
-  std::vector<uint8_t> packed(render::packed_texture_size(lw, lh));
-  if (render::pack_texture(static_cast<uint8_t>(lw), static_cast<uint8_t>(lh), format, texels.data(), packed.data(),
-                           packed.size()) != packed.size())
-    throw std::logic_error("pack_texture refused a checked texture");
-  return packed;
 }
 
 // Downloads the frame into a PNG, showing progress on stderr.
@@ -115,6 +63,13 @@ void upload(console::ConsoleClient& client, const std::vector<uint8_t>& packed,
   std::cout << verdict;
 }
 
+// The scene, then its texture (only once the scene was taken: a refused scene changes nothing).
+void upload_scene(console::ConsoleClient& client, const ScenePayload& p) {
+  upload(client, p.scene);
+  if (!p.texture_note.empty()) std::cerr << "upload: " << p.texture_note << "\n";
+  if (!p.texture.empty()) upload(client, p.texture, console::ConsoleClient::Payload::kTexture);
+}
+
 struct ConsoleArgs : PortArgs {
   std::vector<std::string> commands;
 };
@@ -136,7 +91,7 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
                                   : verb == "upload" ? "usage: upload SCENE (built-in or FILE.obj)"
                                                      : "usage: texture IMAGE.png (RGB565)");
     if (verb == "grab") grab_to_png(client, arg);
-    else if (verb == "upload") upload(client, packed_scene(arg, "160x120"));
+    else if (verb == "upload") upload_scene(client, scene_payload(arg, "160x120", true));
     else upload(client, packed_texture(arg, "rgb565"), console::ConsoleClient::Payload::kTexture);
     return true;
   }
@@ -186,18 +141,20 @@ struct UploadArgs : PortArgs {
   std::string size = "160x120";
   std::string texture;
   std::string format = "rgb565";
+  bool no_texture = false;
 };
 
 void run_upload(const UploadArgs& a) {
   if (a.scene.empty() && a.texture.empty()) throw std::invalid_argument("upload: give a SCENE, --texture FILE, or both");
   // Bad scenes and images fail before the port opens.
-  const std::vector<uint8_t> scene = a.scene.empty() ? std::vector<uint8_t>{} : packed_scene(a.scene, a.size);
-  const std::vector<uint8_t> texture = a.texture.empty() ? std::vector<uint8_t>{} : packed_texture(a.texture, a.format);
+  ScenePayload scene;
+  if (!a.scene.empty()) scene = scene_payload(a.scene, a.size, a.texture.empty() && !a.no_texture);
+  if (!a.texture.empty()) scene.texture = packed_texture(a.texture, a.format);
   console::SerialPort port(a.port, a.baud);
   console::ConsoleClient client(port, timeout_of(a));
   client.sync();
-  if (!scene.empty()) upload(client, scene);
-  if (!texture.empty()) upload(client, texture, console::ConsoleClient::Payload::kTexture);
+  if (!scene.scene.empty()) upload_scene(client, scene);
+  else upload(client, scene.texture, console::ConsoleClient::Payload::kTexture);
 }
 
 }  // namespace
@@ -219,7 +176,9 @@ void register_console(CLI::App& app) {
 
   auto uargs = std::make_shared<UploadArgs>();
   auto* up = app.add_subcommand(
-      "upload", "Send a scene (built-in NAME[:k=v,...] or FILE.obj) and/or a texture (an image) to the console firmware");
+      "upload",
+      "Send a scene (built-in NAME[:k=v,...] or FILE.obj, with its texture) and/or a texture (an image) to the console "
+      "firmware");
   add_port_options(up, uargs.get());
   up->add_option("scene", uargs->scene, "built-in scene spec or an OBJ file");
   up->add_option("--size", uargs->size, "the console's screen, for the camera's aspect")->capture_default_str();
@@ -227,6 +186,9 @@ void register_console(CLI::App& app) {
                  "an image (PNG, ...) whose sides are powers of two in 8..256, at most 1,024 texels: every render "
                  "then draws with it");
   up->add_option("--format", uargs->format, "the texture's texel format: rgb565 or rgba4444")->capture_default_str();
+  up->add_flag("--no-texture", uargs->no_texture,
+               "send the scene without its texture (the console keeps the one it has)")
+      ->excludes(up->get_option("--texture"));
   up->callback([uargs] { run_upload(*uargs); });
 }
 

@@ -86,6 +86,7 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   const auto up = htx::test::run_program({HTX_BIN, "upload", "cube", "--port", pty, "--timeout", "60"}, 180s);
   ASSERT_EQ(up.status, 0) << up.err;
   EXPECT_NE(up.out.find("upload ok: 816 bytes, 1 meshes, 12 triangles"), std::string::npos) << up.out;
+  EXPECT_NE(up.out.find("texture ok: 32x32 rgb565, 6 levels"), std::string::npos) << up.out;
   // Refused scenes leave it as it was: one too large for the store, and one abandoned after a
   // damaged packet (sent by hand: the console asks for it again, then the host gives up).
   const auto big = htx::test::run_program({HTX_BIN, "upload", "tunnel", "--port", pty, "--timeout", "60"}, 180s);
@@ -251,9 +252,23 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
         << verdict;
     close(fd);
   }
-  const auto after = console({"info", "render cube", "quit"});
+  const auto after = console({"info", "render cube"});
   EXPECT_NE(after.out.find("texture 16x64 rgba4444 (uploaded)"), std::string::npos) << after.out;
   EXPECT_EQ(render_crc(after.out), ramp_crc) << after.out;
+
+  // A scene without its texture keeps the ramp: the uploaded cube draws the ramp's frame.
+  const auto bare = htx::test::run_program(
+      {HTX_BIN, "upload", "cube", "--no-texture", "--port", pty, "--timeout", "60"}, 180s);
+  ASSERT_EQ(bare.status, 0) << bare.err;
+  EXPECT_EQ(bare.out.find("texture ok"), std::string::npos) << bare.out;
+  const auto bare_drawn = console({"render upload"});
+  EXPECT_EQ(field_after(bare_drawn.out, "crc32 "), ramp_crc) << bare_drawn.out;
+  // With its texture (the model's 64 x 64 checkerboard, sent as its 32 x 32 mip level: the
+  // firmware's checkerboard), the cube draws the checkerboard's frame again.
+  const auto with = console({"upload cube", "render cube", "quit"});
+  EXPECT_NE(with.out.find("texture ok: 32x32 rgb565, 6 levels"), std::string::npos) << with.out;
+  EXPECT_NE(with.err.find("the scene's 64x64 texture sent as its 32x32 mip level"), std::string::npos) << with.err;
+  EXPECT_EQ(render_crc(with.out), checker_crc) << with.out;
   EXPECT_EQ(sim.wait(60s), 0);
 }
 

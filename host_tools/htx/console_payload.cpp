@@ -1,0 +1,108 @@
+#include "console_payload.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "frame_size.hpp"
+#include "htx/fw/texel.h"
+#include "htx/host/render_scene.hpp"
+#include "htx/model/image_io.hpp"
+#include "htx/model/scenes.hpp"
+#include "htx/render/scene_pack.h"
+#include "htx/render/texture_pack.h"
+
+namespace htx {
+
+namespace {
+
+// The largest mip level of `t` the console takes (at most kConsoleTexels texels, sides at least 8),
+// packed as 16-bit texels (RGBA8888 levels re-encoded as RGB565); empty with a note when none is.
+std::vector<uint8_t> packed_texture_level(const Texture& t, std::string* note) {
+  unsigned level = 0, lw = t.log2_width, lh = t.log2_height;
+  while ((1u << (lw + lh)) > kConsoleTexels && lw > 3 && lh > 3 && level + 1 < t.levels.size()) {
+    ++level;
+    --lw;
+    --lh;
+  }
+  const std::string size0 = std::to_string(1u << t.log2_width) + "x" + std::to_string(1u << t.log2_height);
+  if ((1u << (lw + lh)) > kConsoleTexels) {
+    *note = "the scene's " + size0 + " texture has no mip level of at most " + std::to_string(kConsoleTexels) +
+            " texels with sides of 8 or more; not sent";
+    return {};
+  }
+  const bool wide = t.format == TexFormat::RGBA8888;
+  const uint8_t format = static_cast<uint8_t>(wide ? TexFormat::RGB565 : t.format);
+  std::vector<uint16_t> texels(t.levels[level].size());
+  for (size_t k = 0; k < texels.size(); ++k)
+    texels[k] = static_cast<uint16_t>(
+        wide ? fw::encode_texel(format, fw::decode_texel(fw::kTexelRgba8888, t.levels[level][k])) : t.levels[level][k]);
+  std::vector<uint8_t> packed(render::packed_texture_size(lw, lh));
+  if (render::pack_texture(static_cast<uint8_t>(lw), static_cast<uint8_t>(lh), format, texels.data(), packed.data(),
+                           packed.size()) != packed.size())
+    throw std::logic_error("pack_texture refused a model texture level");
+  if (level > 0)
+    *note = "the scene's " + size0 + " texture sent as its " + std::to_string(1u << lw) + "x" + std::to_string(1u << lh) +
+            " mip level (the console takes at most " + std::to_string(kConsoleTexels) + " texels)";
+  if (wide) *note += std::string(note->empty() ? "" : "; ") + "RGBA8888 sent as RGB565";
+  return packed;
+}
+
+}  // namespace
+
+ScenePayload scene_payload(const std::string& spec, const std::string& size, bool with_texture) {
+  int width = 0, height = 0;
+  parse_size(size, width, height);
+  const Scene scene = load_scene(spec);
+  // The firmware's form of the scene (as the render firmware's compiled-in scenes are made), packed.
+  const host::RenderScene rs = host::to_render_scene(scene, width, height);
+  std::vector<render::Mesh> meshes;
+  for (const host::RenderScene::MeshData& d : rs.meshes) meshes.push_back(d.mesh);
+  const uint32_t count = static_cast<uint32_t>(meshes.size());
+  ScenePayload p;
+  p.scene.resize(render::packed_scene_size(meshes.data(), count));
+  if (render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(), count, p.scene.data(), p.scene.size()) == 0)
+    throw std::runtime_error("'" + spec + "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
+  if (!with_texture) return p;
+  // The console draws every mesh with one texture: the first textured mesh's.
+  std::vector<int> used;
+  for (const Mesh& m : scene.meshes)
+    if (m.state.textured && std::find(used.begin(), used.end(), m.state.texture) == used.end())
+      used.push_back(m.state.texture);
+  if (used.empty() || used[0] < 0 || static_cast<size_t>(used[0]) >= scene.textures.size()) return p;
+  p.texture = packed_texture_level(scene.textures[static_cast<size_t>(used[0])], &p.texture_note);
+  if (used.size() > 1)
+    p.texture_note += std::string(p.texture_note.empty() ? "" : "; ") + "the scene uses " +
+                      std::to_string(used.size()) + " textures and the console draws every mesh with the first";
+  return p;
+}
+
+std::vector<uint8_t> packed_texture(const std::string& path, const std::string& format_name) {
+  uint8_t format = 0;
+  if (format_name == "rgb565") format = fw::kTexelRgb565;
+  else if (format_name == "rgba4444") format = fw::kTexelRgba4444;
+  else throw std::invalid_argument("--format must be rgb565 or rgba4444, not '" + format_name + "'");
+  const Image img = load_image(path);
+  const auto log2_of = [](int n) {
+    int l = 0;
+    while ((1 << l) < n) ++l;
+    return (1 << l) == n ? l : -1;
+  };
+  const int lw = log2_of(img.width), lh = log2_of(img.height);
+  if (lw < 3 || lw > 8 || lh < 3 || lh > 8)
+    throw std::invalid_argument("texture '" + path + "' is " + std::to_string(img.width) + "x" +
+                                std::to_string(img.height) + "; sides must be powers of two in 8..256");
+  std::vector<uint16_t> texels(img.rgba.size() / 4);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const uint8_t* p = &img.rgba[4 * (static_cast<size_t>(img.height - 1 - y) * img.width + x)];
+      const uint32_t rgba8 = p[0] | (p[1] << 8) | (p[2] << 16) | (uint32_t{p[3]} << 24);
+      texels[static_cast<size_t>(y) * img.width + x] = static_cast<uint16_t>(fw::encode_texel(format, rgba8));
+    }
+  std::vector<uint8_t> packed(render::packed_texture_size(lw, lh));
+  if (render::pack_texture(static_cast<uint8_t>(lw), static_cast<uint8_t>(lh), format, texels.data(), packed.data(),
+                           packed.size()) != packed.size())
+    throw std::logic_error("pack_texture refused a checked texture");
+  return packed;
+}
+
+}  // namespace htx

@@ -1,0 +1,29 @@
+// What htx upload sends to the console firmware (docs/console.md, "Scene upload", "Texture
+// upload"): a scene in the firmware's packed form with its texture, or an image as a texture.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace htx {
+
+// The most texels of a texture the console takes (its staging buffer).
+inline constexpr uint32_t kConsoleTexels = 1024;
+
+// A scene's packed form (htx/render/scene_pack.h) and, unless with_texture is false, the scene has
+// no texture or none of its levels can be sent, its texture packed (htx/render/texture_pack.h): the
+// first textured mesh's, as its largest mip level of at most kConsoleTexels texels with sides of
+// 8 or more. `texture_note` says what was done with the texture when it is worth saying.
+struct ScenePayload {
+  std::vector<uint8_t> scene, texture;
+  std::string texture_note;
+};
+ScenePayload scene_payload(const std::string& spec, const std::string& size, bool with_texture);
+
+// An image as the console's texture: sides powers of two in 8..256, each pixel encoded in
+// `format_name` (rgb565 or rgba4444), the image's bottom row as texel row 0 (v = 0), as the model
+// reads an OBJ's texture. Throws std::invalid_argument on a bad size or format.
+std::vector<uint8_t> packed_texture(const std::string& path, const std::string& format_name);
+
+}  // namespace htx
