@@ -66,7 +66,7 @@ void upload(console::ConsoleClient& client, const std::vector<uint8_t>& packed,
 // The scene, then its texture (only once the scene was taken: a refused scene changes nothing).
 void upload_scene(console::ConsoleClient& client, const ScenePayload& p) {
   upload(client, p.scene);
-  if (!p.texture_note.empty()) std::cerr << "upload: " << p.texture_note << "\n";
+  if (!p.note.empty()) std::cerr << "upload: " << p.note << "\n";
   if (!p.texture.empty()) upload(client, p.texture, console::ConsoleClient::Payload::kTexture);
 }
 
@@ -142,13 +142,14 @@ struct UploadArgs : PortArgs {
   std::string texture;
   std::string format = "rgb565";
   bool no_texture = false;
+  uint32_t mesh_vertices = kConsoleMeshVertices;
 };
 
 void run_upload(const UploadArgs& a) {
   if (a.scene.empty() && a.texture.empty()) throw std::invalid_argument("upload: give a SCENE, --texture FILE, or both");
   // Bad scenes and images fail before the port opens.
   ScenePayload scene;
-  if (!a.scene.empty()) scene = scene_payload(a.scene, a.size, a.texture.empty() && !a.no_texture);
+  if (!a.scene.empty()) scene = scene_payload(a.scene, a.size, a.texture.empty() && !a.no_texture, a.mesh_vertices);
   if (!a.texture.empty()) scene.texture = packed_texture(a.texture, a.format);
   console::SerialPort port(a.port, a.baud);
   console::ConsoleClient client(port, timeout_of(a));
@@ -186,6 +187,10 @@ void register_console(CLI::App& app) {
                  "an image (PNG, ...) whose sides are powers of two in 8..256, at most 1,024 texels: every render "
                  "then draws with it");
   up->add_option("--format", uargs->format, "the texture's texel format: rgb565 or rgba4444")->capture_default_str();
+  up->add_option("--mesh-vertices", uargs->mesh_vertices,
+                 "split meshes into parts of at most this many vertices (the console's vertex cache)")
+      ->check(CLI::Range(4u, kConsoleMeshVertices))
+      ->capture_default_str();
   up->add_flag("--no-texture", uargs->no_texture,
                "send the scene without its texture (the console keeps the one it has)")
       ->excludes(up->get_option("--texture"));

@@ -49,16 +49,22 @@ std::vector<uint8_t> packed_texture_level(const Texture& t, std::string* note) {
 
 }  // namespace
 
-ScenePayload scene_payload(const std::string& spec, const std::string& size, bool with_texture) {
+ScenePayload scene_payload(const std::string& spec, const std::string& size, bool with_texture,
+                           uint32_t mesh_vertices) {
   int width = 0, height = 0;
   parse_size(size, width, height);
   const Scene scene = load_scene(spec);
   // The firmware's form of the scene (as the render firmware's compiled-in scenes are made), packed.
-  const host::RenderScene rs = host::to_render_scene(scene, width, height);
+  host::RenderScene rs = host::to_render_scene(scene, width, height);
+  const size_t whole_meshes = rs.meshes.size();
+  host::split_meshes(&rs, mesh_vertices);
+  ScenePayload p;
+  if (rs.meshes.size() != whole_meshes)
+    p.note = std::to_string(whole_meshes) + " meshes sent as " + std::to_string(rs.meshes.size()) + " of at most " +
+             std::to_string(mesh_vertices) + " vertices";
   std::vector<render::Mesh> meshes;
   for (const host::RenderScene::MeshData& d : rs.meshes) meshes.push_back(d.mesh);
   const uint32_t count = static_cast<uint32_t>(meshes.size());
-  ScenePayload p;
   p.scene.resize(render::packed_scene_size(meshes.data(), count));
   if (render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(), count, p.scene.data(), p.scene.size()) == 0)
     throw std::runtime_error("'" + spec + "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
@@ -69,10 +75,12 @@ ScenePayload scene_payload(const std::string& spec, const std::string& size, boo
     if (m.state.textured && std::find(used.begin(), used.end(), m.state.texture) == used.end())
       used.push_back(m.state.texture);
   if (used.empty() || used[0] < 0 || static_cast<size_t>(used[0]) >= scene.textures.size()) return p;
-  p.texture = packed_texture_level(scene.textures[static_cast<size_t>(used[0])], &p.texture_note);
+  std::string texture_note;
+  p.texture = packed_texture_level(scene.textures[static_cast<size_t>(used[0])], &texture_note);
   if (used.size() > 1)
-    p.texture_note += std::string(p.texture_note.empty() ? "" : "; ") + "the scene uses " +
-                      std::to_string(used.size()) + " textures and the console draws every mesh with the first";
+    texture_note += std::string(texture_note.empty() ? "" : "; ") + "the scene uses " + std::to_string(used.size()) +
+                    " textures and the console draws every mesh with the first";
+  if (!texture_note.empty()) p.note += (p.note.empty() ? "" : "; ") + texture_note;
   return p;
 }
 

@@ -3,7 +3,9 @@
 // with a message, at every truncation, without reading past the bytes it is given.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -124,6 +126,74 @@ TEST(ScenePack, OutOfRangeFieldsAreRefusedWithTheirReason) {
   EXPECT_STREQ(unpack(p.bytes, &meshes, &u, 8, 16), "a mesh has more vertices than the console's vertex cache");
   uint8_t small[100];
   EXPECT_EQ(htx::render::pack_scene(p.scene.view_proj, true, &p.scene.meshes[0].mesh, 1, small, sizeof small), 0u);
+}
+
+// The triangles of a scene as vertex values, mesh after mesh, with each mesh's model and state.
+struct DrawnTriangle {
+  htx::render::MeshVertex v[3];
+  int32_t model00;
+  uint8_t method;
+  int8_t position_bits;
+};
+std::vector<DrawnTriangle> drawn(const htx::host::RenderScene& rs) {
+  std::vector<DrawnTriangle> out;
+  for (const auto& d : rs.meshes)
+    for (uint32_t t = 0; t < d.mesh.triangle_count; ++t) {
+      DrawnTriangle tri{};
+      for (int k = 0; k < 3; ++k) tri.v[k] = d.mesh.vertices[d.mesh.indices[3 * t + k]];
+      tri.model00 = d.mesh.model.m[0][0];
+      tri.method = d.mesh.state.method;
+      tri.position_bits = d.mesh.position_bits;
+      out.push_back(tri);
+    }
+  return out;
+}
+bool same(const htx::render::MeshVertex& a, const htx::render::MeshVertex& b) {
+  return a.x == b.x && a.y == b.y && a.z == b.z && a.s == b.s && a.t == b.t && a.rgba == b.rgba;
+}
+
+// Split meshes draw the whole meshes' triangles in the same order, with the same matrix, state and
+// transform precision (position bits), in parts of at most the limit; they pack and unpack.
+TEST(SplitMeshes, PartsDrawTheWholeMeshesTrianglesWithTheirPrecision) {
+  for (const auto& [name, limit] : {std::pair<const char*, uint32_t>{"floor", 30}, {"floor", 4}, {"tunnel", 96},
+                                    {"randmesh", 20}, {"cube", 96}}) {
+    htx::host::RenderScene rs = htx::host::to_render_scene(htx::load_scene(name), 160, 120);
+    const std::vector<DrawnTriangle> before = drawn(rs);
+    const size_t meshes_before = rs.meshes.size();
+    uint32_t largest = 0;
+    for (const auto& d : rs.meshes) largest = std::max(largest, d.mesh.vertex_count);
+    htx::host::split_meshes(&rs, limit);
+    if (largest <= limit) EXPECT_EQ(rs.meshes.size(), meshes_before) << name;
+    else EXPECT_GT(rs.meshes.size(), meshes_before) << name << " " << limit;
+    for (const auto& d : rs.meshes) {
+      ASSERT_LE(d.mesh.vertex_count, limit) << name;
+      ASSERT_EQ(d.mesh.vertices, d.vertices.data());
+      ASSERT_EQ(d.mesh.position_bits,
+                htx::render::mesh_position_bits(d.vertices.data(), static_cast<uint32_t>(d.vertices.size())));
+    }
+    const std::vector<DrawnTriangle> after = drawn(rs);
+    ASSERT_EQ(after.size(), before.size()) << name;
+    for (size_t t = 0; t < before.size(); ++t) {
+      for (int k = 0; k < 3; ++k) ASSERT_TRUE(same(after[t].v[k], before[t].v[k])) << name << " triangle " << t;
+      ASSERT_EQ(after[t].model00, before[t].model00);
+      ASSERT_EQ(after[t].method, before[t].method);
+      ASSERT_EQ(after[t].position_bits, before[t].position_bits) << name << " triangle " << t << " limit " << limit;
+    }
+    // They pack, and the console takes them back (at most kStoreMeshes = 32 parts of 96 vertices).
+    std::vector<Mesh> meshes;
+    for (const auto& d : rs.meshes) meshes.push_back(d.mesh);
+    std::vector<uint8_t> bytes(htx::render::packed_scene_size(meshes.data(), static_cast<uint32_t>(meshes.size())));
+    ASSERT_EQ(htx::render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(),
+                                      static_cast<uint32_t>(meshes.size()), bytes.data(), bytes.size()),
+              bytes.size());
+    std::vector<Mesh> unpacked;
+    htx::render::UnpackedScene u;
+    const uint32_t parts = static_cast<uint32_t>(rs.meshes.size());
+    ASSERT_EQ(unpack(bytes, &unpacked, &u, parts, limit), nullptr) << name;
+    EXPECT_EQ(u.triangle_count, before.size());
+  }
+  htx::host::RenderScene rs = htx::host::to_render_scene(htx::load_scene("floor"), 160, 120);
+  EXPECT_THROW(htx::host::split_meshes(&rs, 3), std::invalid_argument);
 }
 
 }  // namespace

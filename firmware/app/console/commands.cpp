@@ -81,7 +81,7 @@ void cmd_info() {
   printf("method %s; tolerance 1/%lu texel\r\n", g_settings.method_text,
          static_cast<unsigned long>(g_settings.tolerance_denominator));
   const TextureInfo t = current_texture();
-  printf("texture %ux%u %s (%s)\r\n", 1u << t.log2_width, 1u << t.log2_height, t.format == 0 ? "rgb565" : "rgba4444",
+  printf("texture %ux%u %s (%s)\r\n", 1u << t.log2_width, 1u << t.log2_height, texture_format_name(t.format),
          t.uploaded ? "uploaded" : "checkerboard");
 }
 

@@ -10,8 +10,10 @@
 
 namespace console_app {
 
-inline constexpr uint32_t kStoreBytes = 3072;  // per buffer: floor's 2,880 bytes fit
-inline constexpr uint32_t kStoreMeshes = 8;
+// Per buffer: randmesh's 7,248 bytes fit (tunnel's 60,072 do not: two of those are half the RAM).
+inline constexpr uint32_t kStoreBytes = 16384;
+// Meshes of a scene: htx upload splits larger meshes into parts of at most kMaxMeshVertices.
+inline constexpr uint32_t kStoreMeshes = 32;
 
 // Where a scene is received (kStoreBytes, 4-byte aligned).
 uint8_t* staging_bytes();

@@ -14,22 +14,21 @@ namespace console_app {
 
 namespace {
 
-static_assert(htx::render::packed_texture_size(5, 5) <= kStoreBytes, "a 32 x 32 texture fits the staging buffer");
-static_assert(htx::render::packed_texture_size(6, 5) > kStoreBytes, "kMaxTextureTexels is the staging buffer's");
+// The largest packed texture taken: kMaxTextureTexels of them.
+constexpr uint32_t kMaxTextureBytes = htx::render::packed_texture_size(5, 5);
+static_assert(kMaxTextureBytes <= kStoreBytes, "the staging buffer holds the largest texture");
 
 constexpr uint32_t kMaxPolls = 20'000'000;
 
 TextureInfo g_texture{render_app::kTextureLog2, render_app::kTextureLog2, 0, false};
 uint32_t g_half = 0;  // the half of texture memory the texture is in (the boot texture: 0)
 
-const char* format_name(uint8_t f) { return f == 0 ? "rgb565" : "rgba4444"; }
-
 }  // namespace
 
 TextureInfo current_texture() { return g_texture; }
 
 void receive_texture(uint32_t size, uint32_t crc32) {
-  if (!receive_packets(size, crc32, kStoreBytes, "texture")) return;
+  if (!receive_packets(size, crc32, kMaxTextureBytes, "texture")) return;
   htx::render::UnpackedTexture t;
   const char* why = htx::render::unpack_texture(staging_bytes(), size, kMaxTextureTexels, &t);
   const htx::hal::TextureCaps caps = htx::hal::texture_caps();
@@ -54,7 +53,7 @@ void receive_texture(uint32_t size, uint32_t crc32) {
   g_half = half;
   g_texture = {t.log2_width, t.log2_height, t.format, true};
   printf("texture ok: %ux%u %s, %lu levels; every `render` draws with it\r\n", 1u << t.log2_width,
-         1u << t.log2_height, format_name(t.format),
+         1u << t.log2_height, texture_format_name(t.format),
          static_cast<unsigned long>(htx::fw::mip_level_count(t.log2_width, t.log2_height)));
 }
 

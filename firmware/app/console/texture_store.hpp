@@ -8,7 +8,8 @@
 
 namespace console_app {
 
-// The most texels an uploaded texture may have: its packed form fits the staging buffer.
+// The most texels an uploaded texture may have: half of the board's texture memory (512 of its
+// 1,024 blocks) holds the chain of any such texture (352 blocks at most, 128 x 8), not of 2,048.
 inline constexpr uint32_t kMaxTextureTexels = 1024;
 
 // `texture SIZE CRC32`: receives a packed texture (htx/render/texture_pack.h) and makes it the
@@ -20,5 +21,8 @@ struct TextureInfo {
   bool uploaded;  // false: the checkerboard of boot
 };
 TextureInfo current_texture();
+
+// "rgb565" or "rgba4444": the formats an upload may have.
+inline const char* texture_format_name(uint8_t format) { return format == 0 ? "rgb565" : "rgba4444"; }
 
 }  // namespace console_app

@@ -100,4 +100,59 @@ RenderScene to_render_scene(const Scene& scene, int width, int height) {
   return out;
 }
 
+void split_meshes(RenderScene* scene, uint32_t max_vertices) {
+  if (max_vertices < 4) throw std::invalid_argument("a mesh part needs room for a triangle and its anchor vertex");
+  std::vector<RenderScene::MeshData> out;
+  for (RenderScene::MeshData& whole : scene->meshes) {
+    if (whole.vertices.size() <= max_vertices) {
+      out.push_back(std::move(whole));
+      continue;
+    }
+    const int bits = render::mesh_position_bits(whole.vertices.data(), static_cast<uint32_t>(whole.vertices.size()));
+    // The vertex whose coordinates need the most integer bits: the anchor of parts that need fewer.
+    size_t anchor = 0;
+    for (size_t v = 0; v < whole.vertices.size(); ++v)
+      if (render::mesh_position_bits(&whole.vertices[v], 1) == bits) {
+        anchor = v;
+        break;
+      }
+    std::vector<int32_t> part_index(whole.vertices.size(), -1);  // whole -> part vertex index
+    RenderScene::MeshData part;
+    const auto finish = [&]() {
+      if (part.indices.empty()) return;
+      if (render::mesh_position_bits(part.vertices.data(), static_cast<uint32_t>(part.vertices.size())) < bits)
+        part.vertices.push_back(whole.vertices[anchor]);
+      part.mesh = whole.mesh;
+      out.push_back(std::move(part));
+      part = {};
+      std::fill(part_index.begin(), part_index.end(), -1);
+    };
+    for (size_t t = 0; t + 2 < whole.indices.size(); t += 3) {
+      uint32_t fresh = 0;
+      for (size_t k = 0; k < 3; ++k)
+        if (part_index[whole.indices[t + k]] < 0) ++fresh;
+      // One place stays free for the anchor (a repeated index counts twice: harmless).
+      if (part.vertices.size() + fresh > max_vertices - 1) finish();
+      for (size_t k = 0; k < 3; ++k) {
+        const uint16_t i = whole.indices[t + k];
+        if (part_index[i] < 0) {
+          part_index[i] = static_cast<int32_t>(part.vertices.size());
+          part.vertices.push_back(whole.vertices[i]);
+        }
+        part.indices.push_back(static_cast<uint16_t>(part_index[i]));
+      }
+    }
+    finish();
+  }
+  // The views point into the moved arrays only now.
+  for (RenderScene::MeshData& d : out) {
+    d.mesh.vertices = d.vertices.data();
+    d.mesh.vertex_count = static_cast<uint32_t>(d.vertices.size());
+    d.mesh.indices = d.indices.data();
+    d.mesh.triangle_count = static_cast<uint32_t>(d.indices.size() / 3);
+    d.mesh.position_bits = static_cast<int8_t>(render::mesh_position_bits(d.vertices.data(), d.mesh.vertex_count));
+  }
+  scene->meshes = std::move(out);
+}
+
 }  // namespace htx::host

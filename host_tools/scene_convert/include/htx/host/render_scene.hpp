@@ -34,4 +34,12 @@ RenderScene to_render_scene(const Scene& scene, int width, int height);
 
 render::TriState to_render_state(const TriState& s);
 
+// Splits every mesh of more than max_vertices vertices (at least 4) into meshes of at most that
+// many (the console's vertex cache), with the same matrix and state and the triangles in the same
+// order, so they draw what the whole mesh draws. Each part keeps the whole mesh's transform
+// precision: a part whose own coordinates need fewer integer bits (mesh_position_bits) also
+// carries the mesh's largest vertex, unreferenced, so that every copy of a shared vertex is
+// transformed alike and the parts meet without cracks. Throws std::invalid_argument below 4.
+void split_meshes(RenderScene* scene, uint32_t max_vertices);
+
 }  // namespace htx::host
