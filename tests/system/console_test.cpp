@@ -263,6 +263,20 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
   EXPECT_EQ(bare.out.find("texture ok"), std::string::npos) << bare.out;
   const auto bare_drawn = console({"render upload"});
   EXPECT_EQ(field_after(bare_drawn.out, "crc32 "), ramp_crc) << bare_drawn.out;
+  // An OBJ sends its MTL's texture (8 x 16, level 0) the way an image is sent: the same frame.
+  const auto obj = htx::test::run_program(
+      {HTX_BIN, "upload", HTX_TEST_DATA_DIR "/quad.obj", "--port", pty, "--timeout", "60"}, 180s);
+  ASSERT_EQ(obj.status, 0) << obj.err;
+  EXPECT_NE(obj.out.find("texture ok: 8x16 rgb565, 5 levels"), std::string::npos) << obj.out;
+  const auto obj_drawn = console({"render upload"});
+  const std::string obj_crc = field_after(obj_drawn.out, "crc32 ");
+  EXPECT_NE(field_after(obj_drawn.out, "fragments "), "0") << obj_drawn.out;
+  const auto png = htx::test::run_program(
+      {HTX_BIN, "upload", "--texture", HTX_TEST_DATA_DIR "/checker8x16.png", "--port", pty, "--timeout", "60"}, 180s);
+  ASSERT_EQ(png.status, 0) << png.err;
+  const auto png_drawn = console({"render upload"});
+  EXPECT_EQ(field_after(png_drawn.out, "crc32 "), obj_crc) << png_drawn.out;
+
   // With its texture (the model's 64 x 64 checkerboard, sent as its 32 x 32 mip level: the
   // firmware's checkerboard), the cube draws the checkerboard's frame again.
   const auto with = console({"upload cube", "render cube", "quit"});
