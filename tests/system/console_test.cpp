@@ -48,17 +48,20 @@ std::string pty_of(htx::test::Child& sim) {
   return sim.output().substr(at + marker.size(), sim.output().find('\n', at) - at - marker.size());
 }
 
+// `htx console --port PTY -c C ...` for each command.
+htx::test::RunResult run_console(const std::string& pty, const std::vector<std::string>& commands) {
+  std::vector<std::string> argv = {HTX_BIN, "console", "--port", pty, "--timeout", "60"};
+  for (const std::string& c : commands) argv.insert(argv.end(), {"-c", c});
+  return htx::test::run_program(argv, 180s);
+}
+
 TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   htx::test::Child sim({HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--uart", "pty", "--max-cycles",
                         "2000000000"});
   const std::string pty = pty_of(sim);
   ASSERT_FALSE(pty.empty()) << sim.output();
 
-  const auto console = [&pty](std::vector<std::string> commands) {
-    std::vector<std::string> argv = {HTX_BIN, "console", "--port", pty, "--timeout", "60"};
-    for (const std::string& c : commands) argv.insert(argv.end(), {"-c", c});
-    return htx::test::run_program(argv, 180s);
-  };
+  const auto console = [&pty](const std::vector<std::string>& commands) { return run_console(pty, commands); };
   const auto r = console({"info", "set method bogus", "set tolerance 1/0", "frobnicate", std::string(120, 'x'),
                           "render nosuch", "stats", "render cube", "stats"});
   ASSERT_FALSE(r.timed_out);
@@ -175,11 +178,7 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
                         "2000000000"});
   const std::string pty = pty_of(sim);
   ASSERT_FALSE(pty.empty()) << sim.output();
-  const auto console = [&pty](std::vector<std::string> commands) {
-    std::vector<std::string> argv = {HTX_BIN, "console", "--port", pty, "--timeout", "60"};
-    for (const std::string& c : commands) argv.insert(argv.end(), {"-c", c});
-    return htx::test::run_program(argv, 180s);
-  };
+  const auto console = [&pty](const std::vector<std::string>& commands) { return run_console(pty, commands); };
   const auto render_crc = [](const std::string& out) {
     const size_t at = out.rfind("render cube method");
     return at == std::string::npos ? std::string() : field_after(out.substr(at), "crc32 ");
@@ -294,11 +293,7 @@ TEST(SystemConsole, MeshesLargerThanTheVertexCacheGoInParts) {
                         "2000000000"});
   const std::string pty = pty_of(sim);
   ASSERT_FALSE(pty.empty()) << sim.output();
-  const auto console = [&pty](std::vector<std::string> commands) {
-    std::vector<std::string> argv = {HTX_BIN, "console", "--port", pty, "--timeout", "60"};
-    for (const std::string& c : commands) argv.insert(argv.end(), {"-c", c});
-    return htx::test::run_program(argv, 180s);
-  };
+  const auto console = [&pty](const std::vector<std::string>& commands) { return run_console(pty, commands); };
   const auto compiled = console({"render floor"});
   ASSERT_EQ(compiled.status, 0) << compiled.err;
   const std::string floor_crc = field_after(compiled.out, "crc32 ");

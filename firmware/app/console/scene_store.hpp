@@ -10,7 +10,8 @@
 
 namespace console_app {
 
-// Per buffer: randmesh's 7,248 bytes fit (tunnel's 60,072 do not: two of those are half the RAM).
+// Per buffer: randmesh's 7,248 bytes fit; tunnel's 62,520 (split into parts) do not: two buffers that
+// size would fill the 128 KiB RAM.
 inline constexpr uint32_t kStoreBytes = 16384;
 // Meshes of a scene: htx upload splits larger meshes into parts of at most kMaxMeshVertices.
 inline constexpr uint32_t kStoreMeshes = 32;
