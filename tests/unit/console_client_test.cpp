@@ -118,9 +118,11 @@ class FakeConsole {
         if (htx::fw::packet_feed(&decoder, static_cast<uint8_t>(c), &packet) == htx::fw::kPacketReady)
           upload_packet(packet);
       } else if (c == '\r') {
-        if (line.rfind("upload ", 0) == 0) {
+        if (line.rfind("upload ", 0) == 0 || line.rfind("texture ", 0) == 0) {
           put(line + "\r\n");
-          upload_size_ = std::stoul(line.substr(7));
+          upload_line_ = line;
+          upload_size_ = std::stoul(line.substr(line.find(' ') + 1));
+          received_ = 0;
           if (mode_ == GrabMode::kRefuse) {
             put("error: a scene of " + std::to_string(upload_size_) + " bytes does not fit the store (1..3072)\r\nhtx> ");
           } else {
@@ -140,10 +142,12 @@ class FakeConsole {
  public:
   int naks() const { return naks_; }
   size_t upload_packets() const { return upload_packets_; }
+  std::string upload_line() const { return upload_line_; }
 
  private:
   bool uploading_ = false;
   size_t upload_size_ = 0, received_ = 0, upload_packets_ = 0;
+  std::string upload_line_;
   int naks_ = 0;
 
   GrabMode mode_;
@@ -229,6 +233,31 @@ TEST(ConsoleClient, UploadResendsWhatWasNotTakenAndReportsTheVerdict) {
             "upload: the console refused: error: a scene of 600 bytes does not fit the store (1..3072)\n");
   EXPECT_EQ(upload_error(GrabMode::kNeverAck),
             "upload: packet 0 was not taken after 8 tries; the console's scene is unchanged");
+}
+
+// A texture goes the same way, announced as `texture SIZE CRC32` (zlib's CRC-32 of its bytes).
+TEST(ConsoleClient, TextureUploadIsAnnouncedAsTexture) {
+  const std::vector<uint8_t> texture = {'1', '2', '3', '4', '5', '6', '7', '8', '9'};  // CRC-32 cbf43926
+  {
+    FakeConsole fake(GrabMode::kGood);
+    SerialPort port(fake.path(), 115200);
+    ConsoleClient client(port, 2s);
+    client.sync();
+    EXPECT_EQ(client.upload(texture, {}, ConsoleClient::Payload::kTexture), "upload ok: 9 bytes\n");
+    EXPECT_EQ(fake.upload_line(), "texture 9 cbf43926");
+    EXPECT_EQ(client.upload(texture), "upload ok: 9 bytes\n");
+    EXPECT_EQ(fake.upload_line(), "upload 9 cbf43926");
+  }
+  FakeConsole fake(GrabMode::kNeverAck);
+  SerialPort port(fake.path(), 115200);
+  ConsoleClient client(port, 2s);
+  client.sync();
+  try {
+    client.upload(texture, {}, ConsoleClient::Payload::kTexture);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "upload: packet 0 was not taken after 8 tries; the console's texture is unchanged");
+  }
 }
 
 // The simulation ends (its side of the pseudo-terminal closes) while htx waits: an error at once,
