@@ -83,16 +83,19 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
     return false;
   }
   std::istringstream words(line);
-  std::string verb, arg, extra;
-  words >> verb >> arg >> extra;
+  std::string verb, arg, format, extra;
+  words >> verb >> arg >> format >> extra;
   if (verb == "grab" || verb == "upload" || verb == "texture") {
-    if (arg.empty() || !extra.empty())
+    // Only `texture` takes a third word: the format.
+    if (arg.empty() || !extra.empty() || (verb != "texture" && !format.empty()))
       throw std::invalid_argument(verb == "grab"     ? "usage: grab FRAME.png"
                                   : verb == "upload" ? "usage: upload SCENE (built-in or FILE.obj)"
-                                                     : "usage: texture IMAGE.png (RGB565)");
+                                                     : "usage: texture IMAGE.png [rgb565|rgba4444]");
     if (verb == "grab") grab_to_png(client, arg);
     else if (verb == "upload") upload_scene(client, scene_payload(arg, "160x120", true));
-    else upload(client, packed_texture(arg, "rgb565"), console::ConsoleClient::Payload::kTexture);
+    else
+      upload(client, packed_texture(arg, format.empty() ? "rgb565" : format),
+             console::ConsoleClient::Payload::kTexture);
     return true;
   }
   std::cout << client.command(line) << std::flush;
@@ -166,7 +169,7 @@ void register_console(CLI::App& app) {
   add_port_options(cmd, args.get());
   cmd->add_option("-c,--command", args->commands,
                   "run this command and print its output (repeatable; `grab FILE.png`, `upload SCENE` and "
-                  "`texture FILE.png` are carried out by htx); without any, read commands from stdin");
+                  "`texture FILE.png [rgb565|rgba4444]` are carried out by htx); without any, read commands from stdin");
   cmd->callback([args] { run_console(*args); });
 
   auto gargs = std::make_shared<GrabArgs>();

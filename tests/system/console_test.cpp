@@ -278,6 +278,11 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
 
   // With its texture (the model's 64 x 64 checkerboard, sent as its 32 x 32 mip level: the
   // firmware's checkerboard), the cube draws the checkerboard's frame again.
+  // `texture FILE FORMAT` in htx console: a format word, and a line with one word too many refused.
+  const auto line = console({"texture " + ramp + " rgba4444", "info", "texture " + ramp + " rgba4444 extra"});
+  EXPECT_NE(line.status, 0);
+  EXPECT_NE(line.out.find("texture ok: 16x64 rgba4444, 7 levels"), std::string::npos) << line.out;
+  EXPECT_NE(line.err.find("usage: texture IMAGE.png [rgb565|rgba4444]"), std::string::npos) << line.err;
   const auto with = console({"upload cube", "render cube", "quit"});
   EXPECT_NE(with.out.find("texture ok: 32x32 rgb565, 6 levels"), std::string::npos) << with.out;
   EXPECT_NE(with.err.find("the scene's 64x64 texture sent as its 32x32 mip level"), std::string::npos) << with.err;
