@@ -10,11 +10,12 @@
 namespace {
 constexpr uint32_t kMaxPolls = 20'000'000;
 constexpr const char* kPrompt = "htx> ";
-static_assert(2 * console_app::kStoreBytes >= 4 * render_app::kTextureTexels, "the store is the texture's scratch at boot");
+static_assert(console_app::kStoreBytes >= 4 * render_app::kTextureTexels, "the staging buffer is the texture's scratch at boot");
 }  // namespace
 
 int main() {
-  const htx::render::UploadStatus up = render_app::upload_scene_texture(kMaxPolls, console_app::boot_scratch_words());
+  const htx::render::UploadStatus up = render_app::upload_scene_texture(
+      kMaxPolls, reinterpret_cast<uint32_t*>(console_app::staging_bytes()));
   if (up != htx::render::kUploadOk) {
     printf("console: texture upload failed with status %d\r\n", up);
     return 1;

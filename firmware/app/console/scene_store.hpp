@@ -16,12 +16,9 @@ inline constexpr uint32_t kStoreBytes = 16384;
 // Meshes of a scene: htx upload splits larger meshes into parts of at most kMaxMeshVertices.
 inline constexpr uint32_t kStoreMeshes = 32;
 
-// Where a scene is received (kStoreBytes, 4-byte aligned).
+// Where a scene or texture is received (kStoreBytes, 4-byte aligned); at boot, before anything
+// arrives, the scratch image of the checkerboard's upload (soc_texture.hpp).
 uint8_t* staging_bytes();
-
-// Both buffers, contiguous (2 * kStoreBytes): at boot, before any scene arrives, the scratch image
-// of the texture upload (soc_texture.hpp).
-uint32_t* boot_scratch_words();
 
 // Checks the `size` received bytes and, if they are a valid scene, makes them the committed scene.
 // Returns nullptr, or what is wrong (the committed scene is then unchanged).
