@@ -279,6 +279,60 @@ TEST(RasterRobust, AddressBeyondTheMemoryWritesNothing) {
   }
 }
 
+// A stride below the width: the unit writes pixel (x, y) at y stride + x whatever the width, so rows
+// overlap in memory (docs/robustness.md). With one flat colour and no depth test the order of the
+// writes does not matter: the memory must hold that colour exactly at the addresses of the pixels
+// the triangle covers at the full stride, and the clear colour everywhere else.
+TEST(RasterRobust, StrideBelowTheWidthWritesEachPixelAtItsAddress) {
+  for (const char* name : {"full", "icebreaker"}) {
+    const ModelConfig cfg = rtl_config(name);
+    rtl::RasterSim sim(name);
+    ScreenScene s;
+    s.width = 64;
+    s.height = 16;
+    s.clear_color = 0x0841;
+    ScreenTri t = tri(3, 1, 61, 4, 20, 15, 0.4);
+    for (ScreenVertex& v : t.v) {
+      v.r = 0.8;
+      v.g = 0.5;
+      v.b = 0.25;
+    }
+    t.state.depth_func = DepthFunc::Always;
+    t.state.depth_write = false;
+    s.tris.push_back(t);
+    const uint32_t n = static_cast<uint32_t>(s.width * s.height);
+    // At the full stride: which pixels the triangle covers, and its colour.
+    setup_frame(sim, s);
+    sim.push_words(words_of(s, cfg, sim));
+    sim.wait_idle(1'000'000);
+    const std::vector<uint16_t> full = sim.read_color(n);
+    uint16_t colour = s.clear_color;
+    std::vector<bool> expected(n, false);
+    const uint32_t stride = 40;
+    for (uint32_t i = 0; i < n; ++i)
+      if (full[i] != s.clear_color) {
+        colour = full[i];
+        expected[(i / s.width) * stride + i % s.width] = true;
+      }
+    ASSERT_NE(colour, s.clear_color) << name;
+    // Every covered pixel has the one flat colour.
+    for (uint32_t i = 0; i < n; ++i) ASSERT_TRUE(full[i] == s.clear_color || full[i] == colour) << name << " " << i;
+    // Again at stride 40 into the cleared memory.
+    setup_frame(sim, s);
+    sim.write_reg(R(FB_STRIDE), stride);
+    sim.push_words(words_of(s, cfg, sim));
+    sim.wait_idle(1'000'000);
+    const std::vector<uint16_t> c = sim.read_color(n);
+    uint32_t bad = 0, written = 0;
+    for (uint32_t a = 0; a < n; ++a) {
+      bad += c[a] != (expected[a] ? colour : s.clear_color);
+      written += expected[a];
+    }
+    EXPECT_EQ(bad, 0u) << name;
+    EXPECT_GT(written, 200u) << name;
+  }
+}
+
 // Setup takes the box's bounds from the signs of the edge coefficients (no comparators): every
 // order of the vertices, with two of them sharing x or y or all three on a line, must give the
 // model's box. A box too small drops pixels, so the covered pixel counts and the frames are compared.
