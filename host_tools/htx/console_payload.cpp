@@ -4,9 +4,11 @@
 #include <stdexcept>
 
 #include "frame_size.hpp"
+#include "htx/fw/mip_chain.h"
 #include "htx/fw/texel.h"
 #include "htx/host/render_scene.hpp"
 #include "htx/model/image_io.hpp"
+#include "htx/model/obj_loader.hpp"
 #include "htx/model/scenes.hpp"
 #include "htx/render/scene_pack.h"
 #include "htx/render/texture_pack.h"
@@ -15,8 +17,24 @@ namespace htx {
 
 namespace {
 
+// Level `level` of `t` packed as 16-bit texels (RGBA8888 re-encoded as RGB565).
+std::vector<uint8_t> pack_level(const Texture& t, unsigned level) {
+  const unsigned lw = fw::mip_level_log2(t.log2_width, level), lh = fw::mip_level_log2(t.log2_height, level);
+  const bool wide = t.format == TexFormat::RGBA8888;
+  const uint8_t format = static_cast<uint8_t>(wide ? TexFormat::RGB565 : t.format);
+  std::vector<uint16_t> texels(t.levels[level].size());
+  for (size_t k = 0; k < texels.size(); ++k)
+    texels[k] = static_cast<uint16_t>(
+        wide ? fw::encode_texel(format, fw::decode_texel(fw::kTexelRgba8888, t.levels[level][k])) : t.levels[level][k]);
+  std::vector<uint8_t> packed(render::packed_texture_size(lw, lh));
+  if (render::pack_texture(static_cast<uint8_t>(lw), static_cast<uint8_t>(lh), format, texels.data(), packed.data(),
+                           packed.size()) != packed.size())
+    throw std::logic_error("pack_texture refused a model texture level");
+  return packed;
+}
+
 // The largest mip level of `t` the console takes (at most kConsoleTexels texels, sides at least 8),
-// packed as 16-bit texels (RGBA8888 levels re-encoded as RGB565); empty with a note when none is.
+// packed; empty with a note when none is.
 std::vector<uint8_t> packed_texture_level(const Texture& t, std::string* note) {
   unsigned level = 0, lw = t.log2_width, lh = t.log2_height;
   while ((1u << (lw + lh)) > kConsoleTexels && lw > 3 && lh > 3 && level + 1 < t.levels.size()) {
@@ -30,21 +48,11 @@ std::vector<uint8_t> packed_texture_level(const Texture& t, std::string* note) {
             " texels with sides of 8 or more; not sent";
     return {};
   }
-  const bool wide = t.format == TexFormat::RGBA8888;
-  const uint8_t format = static_cast<uint8_t>(wide ? TexFormat::RGB565 : t.format);
-  std::vector<uint16_t> texels(t.levels[level].size());
-  for (size_t k = 0; k < texels.size(); ++k)
-    texels[k] = static_cast<uint16_t>(
-        wide ? fw::encode_texel(format, fw::decode_texel(fw::kTexelRgba8888, t.levels[level][k])) : t.levels[level][k]);
-  std::vector<uint8_t> packed(render::packed_texture_size(lw, lh));
-  if (render::pack_texture(static_cast<uint8_t>(lw), static_cast<uint8_t>(lh), format, texels.data(), packed.data(),
-                           packed.size()) != packed.size())
-    throw std::logic_error("pack_texture refused a model texture level");
   if (level > 0)
     *note = "the scene's " + size0 + " texture sent as its " + std::to_string(1u << lw) + "x" + std::to_string(1u << lh) +
             " mip level (the console takes at most " + std::to_string(kConsoleTexels) + " texels)";
-  if (wide) *note += std::string(note->empty() ? "" : "; ") + "RGBA8888 sent as RGB565";
-  return packed;
+  if (t.format == TexFormat::RGBA8888) *note += std::string(note->empty() ? "" : "; ") + "RGBA8888 sent as RGB565";
+  return pack_level(t, level);
 }
 
 }  // namespace
@@ -85,32 +93,16 @@ ScenePayload scene_payload(const std::string& spec, const std::string& size, boo
 }
 
 std::vector<uint8_t> packed_texture(const std::string& path, const std::string& format_name) {
-  uint8_t format = 0;
-  if (format_name == "rgb565") format = fw::kTexelRgb565;
-  else if (format_name == "rgba4444") format = fw::kTexelRgba4444;
-  else throw std::invalid_argument("--format must be rgb565 or rgba4444, not '" + format_name + "'");
+  TexFormat format = TexFormat::RGB565;
+  if (format_name == "rgba4444") format = TexFormat::RGBA4444;
+  else if (format_name != "rgb565")
+    throw std::invalid_argument("--format must be rgb565 or rgba4444, not '" + format_name + "'");
   const Image img = load_image(path);
-  const auto log2_of = [](int n) {
-    int l = 0;
-    while ((1 << l) < n) ++l;
-    return (1 << l) == n ? l : -1;
-  };
-  const int lw = log2_of(img.width), lh = log2_of(img.height);
-  if (lw < 3 || lw > 8 || lh < 3 || lh > 8)
-    throw std::invalid_argument("texture '" + path + "' is " + std::to_string(img.width) + "x" +
-                                std::to_string(img.height) + "; sides must be powers of two in 8..256");
-  std::vector<uint16_t> texels(img.rgba.size() / 4);
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) {
-      const uint8_t* p = &img.rgba[4 * (static_cast<size_t>(img.height - 1 - y) * img.width + x)];
-      const uint32_t rgba8 = p[0] | (p[1] << 8) | (p[2] << 16) | (uint32_t{p[3]} << 24);
-      texels[static_cast<size_t>(y) * img.width + x] = static_cast<uint16_t>(fw::encode_texel(format, rgba8));
-    }
-  std::vector<uint8_t> packed(render::packed_texture_size(lw, lh));
-  if (render::pack_texture(static_cast<uint8_t>(lw), static_cast<uint8_t>(lh), format, texels.data(), packed.data(),
-                           packed.size()) != packed.size())
-    throw std::logic_error("pack_texture refused a checked texture");
-  return packed;
+  try {
+    return pack_level(texture_from_image(img, path, format), 0);
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(e.what());  // the sides: a usage error, as for the other arguments
+  }
 }
 
 }  // namespace htx

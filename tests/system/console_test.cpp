@@ -48,21 +48,26 @@ std::string pty_of(htx::test::Child& sim) {
   return sim.output().substr(at + marker.size(), sim.output().find('\n', at) - at - marker.size());
 }
 
-// `htx console --port PTY -c C ...` for each command.
-htx::test::RunResult run_console(const std::string& pty, const std::vector<std::string>& commands) {
-  std::vector<std::string> argv = {HTX_BIN, "console", "--port", pty, "--timeout", "60"};
-  for (const std::string& c : commands) argv.insert(argv.end(), {"-c", c});
-  return htx::test::run_program(argv, 180s);
-}
+// The console firmware on `htx sim --uart pty`, and `htx console --port PTY -c C ...` against it.
+struct ConsoleSim {
+  htx::test::Child sim{{HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--uart", "pty", "--max-cycles",
+                        "2000000000"}};
+  const std::string pty = pty_of(sim);  // empty if it printed none
+
+  htx::test::RunResult console(const std::vector<std::string>& commands) const {
+    std::vector<std::string> argv = {HTX_BIN, "console", "--port", pty, "--timeout", "60"};
+    for (const std::string& c : commands) argv.insert(argv.end(), {"-c", c});
+    return htx::test::run_program(argv, 180s);
+  }
+};
 
 TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
-  htx::test::Child sim({HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--uart", "pty", "--max-cycles",
-                        "2000000000"});
-  const std::string pty = pty_of(sim);
+  ConsoleSim cs;
+  htx::test::Child& sim = cs.sim;
+  const std::string& pty = cs.pty;
   ASSERT_FALSE(pty.empty()) << sim.output();
 
-  const auto console = [&pty](const std::vector<std::string>& commands) { return run_console(pty, commands); };
-  const auto r = console({"info", "set method bogus", "set tolerance 1/0", "frobnicate", std::string(120, 'x'),
+  const auto r = cs.console({"info", "set method bogus", "set tolerance 1/0", "frobnicate", std::string(120, 'x'),
                           "render nosuch", "stats", "render cube", "stats"});
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -135,14 +140,14 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
     close(fd);
   }
   const std::string png2 = ::testing::TempDir() + "htx_console_grab_upload.png";
-  const auto again = console({"scenes", "render upload", "grab " + png2, "grab"});
+  const auto again = cs.console({"scenes", "render upload", "grab " + png2, "grab"});
   EXPECT_NE(again.status, 0);  // the last line: grab without a file
   EXPECT_NE(again.err.find("usage: grab FRAME.png"), std::string::npos) << again.err;
   EXPECT_EQ(field_after(again.out, "packets, crc32 "), crc) << again.out;
   EXPECT_NE(again.out.find("upload (816 bytes)"), std::string::npos) << again.out;
   EXPECT_EQ(field_after(again.out.substr(again.out.find("render upload method")), "crc32 "), crc) << again.out;
 
-  const auto q = console({"quit"});
+  const auto q = cs.console({"quit"});
   EXPECT_EQ(q.status, 0) << q.err;
   EXPECT_EQ(sim.wait(60s), 0) << "htx sim should end with the console's status 0";
 
@@ -174,16 +179,15 @@ void write_texture_png(const std::string& path, int w, int h, F f) {
 // console's own checkerboard draws; another texture draws another frame; refused textures (too
 // large, not a power of two, damaged in the packed form) leave the texture as it was.
 TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
-  htx::test::Child sim({HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--uart", "pty", "--max-cycles",
-                        "2000000000"});
-  const std::string pty = pty_of(sim);
+  ConsoleSim cs;
+  htx::test::Child& sim = cs.sim;
+  const std::string& pty = cs.pty;
   ASSERT_FALSE(pty.empty()) << sim.output();
-  const auto console = [&pty](const std::vector<std::string>& commands) { return run_console(pty, commands); };
   const auto render_crc = [](const std::string& out) {
     const size_t at = out.rfind("render cube method");
     return at == std::string::npos ? std::string() : field_after(out.substr(at), "crc32 ");
   };
-  const auto boot = console({"info", "render cube"});
+  const auto boot = cs.console({"info", "render cube"});
   ASSERT_EQ(boot.status, 0) << boot.err;
   EXPECT_NE(boot.out.find("texture 32x32 rgb565 (checkerboard)"), std::string::npos) << boot.out;
   const std::string checker_crc = render_crc(boot.out);
@@ -194,7 +198,7 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
   write_texture_png(checker, 32, 32, [](int x, int v) {
     return ((x >> 2) ^ (v >> 2)) & 1 ? std::array<uint8_t, 4>{40, 60, 140, 255} : std::array<uint8_t, 4>{255, 255, 255, 255};
   });
-  const auto same = console({"texture " + checker, "info", "render cube"});
+  const auto same = cs.console({"texture " + checker, "info", "render cube"});
   ASSERT_EQ(same.status, 0) << same.err;
   EXPECT_NE(same.out.find("texture ok: 32x32 rgb565, 6 levels"), std::string::npos) << same.out;
   EXPECT_NE(same.out.find("texture 32x32 rgb565 (uploaded)"), std::string::npos) << same.out;
@@ -209,7 +213,7 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
       {HTX_BIN, "upload", "--texture", ramp, "--format", "rgba4444", "--port", pty, "--timeout", "60"}, 180s);
   ASSERT_EQ(up.status, 0) << up.err;
   EXPECT_NE(up.out.find("texture ok: 16x64 rgba4444, 7 levels"), std::string::npos) << up.out;
-  const auto drawn = console({"render cube"});
+  const auto drawn = cs.console({"render cube"});
   ASSERT_EQ(drawn.status, 0) << drawn.err;
   const std::string ramp_crc = render_crc(drawn.out);
   ASSERT_EQ(ramp_crc.size(), 8u) << drawn.out;
@@ -251,7 +255,7 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
         << verdict;
     close(fd);
   }
-  const auto after = console({"info", "render cube"});
+  const auto after = cs.console({"info", "render cube"});
   EXPECT_NE(after.out.find("texture 16x64 rgba4444 (uploaded)"), std::string::npos) << after.out;
   EXPECT_EQ(render_crc(after.out), ramp_crc) << after.out;
 
@@ -260,30 +264,30 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
       {HTX_BIN, "upload", "cube", "--no-texture", "--port", pty, "--timeout", "60"}, 180s);
   ASSERT_EQ(bare.status, 0) << bare.err;
   EXPECT_EQ(bare.out.find("texture ok"), std::string::npos) << bare.out;
-  const auto bare_drawn = console({"render upload"});
+  const auto bare_drawn = cs.console({"render upload"});
   EXPECT_EQ(field_after(bare_drawn.out, "crc32 "), ramp_crc) << bare_drawn.out;
   // An OBJ sends its MTL's texture (8 x 16, level 0) the way an image is sent: the same frame.
   const auto obj = htx::test::run_program(
       {HTX_BIN, "upload", HTX_TEST_DATA_DIR "/quad.obj", "--port", pty, "--timeout", "60"}, 180s);
   ASSERT_EQ(obj.status, 0) << obj.err;
   EXPECT_NE(obj.out.find("texture ok: 8x16 rgb565, 5 levels"), std::string::npos) << obj.out;
-  const auto obj_drawn = console({"render upload"});
+  const auto obj_drawn = cs.console({"render upload"});
   const std::string obj_crc = field_after(obj_drawn.out, "crc32 ");
   EXPECT_NE(field_after(obj_drawn.out, "fragments "), "0") << obj_drawn.out;
   const auto png = htx::test::run_program(
       {HTX_BIN, "upload", "--texture", HTX_TEST_DATA_DIR "/checker8x16.png", "--port", pty, "--timeout", "60"}, 180s);
   ASSERT_EQ(png.status, 0) << png.err;
-  const auto png_drawn = console({"render upload"});
+  const auto png_drawn = cs.console({"render upload"});
   EXPECT_EQ(field_after(png_drawn.out, "crc32 "), obj_crc) << png_drawn.out;
 
   // With its texture (the model's 64 x 64 checkerboard, sent as its 32 x 32 mip level: the
   // firmware's checkerboard), the cube draws the checkerboard's frame again.
   // `texture FILE FORMAT` in htx console: a format word, and a line with one word too many refused.
-  const auto line = console({"texture " + ramp + " rgba4444", "info", "texture " + ramp + " rgba4444 extra"});
+  const auto line = cs.console({"texture " + ramp + " rgba4444", "info", "texture " + ramp + " rgba4444 extra"});
   EXPECT_NE(line.status, 0);
   EXPECT_NE(line.out.find("texture ok: 16x64 rgba4444, 7 levels"), std::string::npos) << line.out;
   EXPECT_NE(line.err.find("usage: texture IMAGE.png [rgb565|rgba4444]"), std::string::npos) << line.err;
-  const auto with = console({"upload cube", "render cube", "quit"});
+  const auto with = cs.console({"upload cube", "render cube", "quit"});
   EXPECT_NE(with.out.find("texture ok: 32x32 rgb565, 6 levels"), std::string::npos) << with.out;
   EXPECT_NE(with.err.find("the scene's 64x64 texture sent as its 32x32 mip level"), std::string::npos) << with.err;
   EXPECT_EQ(render_crc(with.out), checker_crc) << with.out;
@@ -294,12 +298,11 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
 // vertices draws exactly the compiled-in floor's frame (the parts keep the whole mesh's transform
 // precision, so shared edges meet), and randmesh (7,248 bytes, four meshes) is taken and drawn.
 TEST(SystemConsole, MeshesLargerThanTheVertexCacheGoInParts) {
-  htx::test::Child sim({HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--uart", "pty", "--max-cycles",
-                        "2000000000"});
-  const std::string pty = pty_of(sim);
+  ConsoleSim cs;
+  htx::test::Child& sim = cs.sim;
+  const std::string& pty = cs.pty;
   ASSERT_FALSE(pty.empty()) << sim.output();
-  const auto console = [&pty](const std::vector<std::string>& commands) { return run_console(pty, commands); };
-  const auto compiled = console({"render floor"});
+  const auto compiled = cs.console({"render floor"});
   ASSERT_EQ(compiled.status, 0) << compiled.err;
   const std::string floor_crc = field_after(compiled.out, "crc32 ");
   ASSERT_EQ(floor_crc.size(), 8u) << compiled.out;
@@ -311,13 +314,13 @@ TEST(SystemConsole, MeshesLargerThanTheVertexCacheGoInParts) {
   EXPECT_NE(up.out.find("128 triangles"), std::string::npos) << up.out;
   const std::string parts = field_after(up.out, "bytes, ");
   EXPECT_GT(std::stoi(parts.empty() ? "0" : parts), 3) << up.out;
-  const auto split = console({"render upload"});
+  const auto split = cs.console({"render upload"});
   EXPECT_EQ(field_after(split.out, "crc32 "), floor_crc) << split.out;
 
   const auto rand = htx::test::run_program({HTX_BIN, "upload", "randmesh", "--port", pty, "--timeout", "60"}, 180s);
   ASSERT_EQ(rand.status, 0) << rand.err;
   EXPECT_NE(rand.out.find("upload ok: 7248 bytes, 4 meshes"), std::string::npos) << rand.out;
-  const auto drawn = console({"render upload", "quit"});
+  const auto drawn = cs.console({"render upload", "quit"});
   EXPECT_NE(drawn.out.find("render upload method auto triangles"), std::string::npos) << drawn.out;
   EXPECT_EQ(drawn.out.find("error"), std::string::npos) << drawn.out;
   EXPECT_EQ(sim.wait(60s), 0);

@@ -106,26 +106,16 @@ bool parse_hex(const char* s, uint32_t* out) {
   return true;
 }
 
-// `upload SIZE CRC32` and `texture SIZE CRC32`: the size and checksum of what the packets bring.
-bool parse_upload(char* rest, uint32_t* size, uint32_t* crc) {
+// `upload SIZE CRC32` and `texture SIZE CRC32`: the size and checksum of what the packets bring,
+// handed to `receive`.
+void cmd_receive(char* rest, const char* usage, void (*receive)(uint32_t size, uint32_t crc32)) {
   const char* size_text = next_word(&rest);
   const char* crc_text = next_word(&rest);
-  return size_text && crc_text && !next_word(&rest) && parse_uint(size_text, 0, 0x7FFFFFFF, size) &&
-         parse_hex(crc_text, crc);
-}
-
-void cmd_upload(char* rest) {
   uint32_t size = 0, crc = 0;
-  if (!parse_upload(rest, &size, &crc))
-    return error("usage: upload SIZE CRC32 (decimal bytes, hex checksum; `htx upload` sends them)");
-  receive_scene(size, crc);
-}
-
-void cmd_texture(char* rest) {
-  uint32_t size = 0, crc = 0;
-  if (!parse_upload(rest, &size, &crc))
-    return error("usage: texture SIZE CRC32 (decimal bytes, hex checksum; `htx upload --texture` sends them)");
-  receive_texture(size, crc);
+  if (!size_text || !crc_text || next_word(&rest) || !parse_uint(size_text, 0, 0x7FFFFFFF, &size) ||
+      !parse_hex(crc_text, &crc))
+    return error(usage);
+  receive(size, crc);
 }
 
 bool set_method(const char* name) {
@@ -221,9 +211,11 @@ CommandResult run_command(char* line) {
   } else if (strcmp(cmd, "render") == 0) {
     cmd_render(rest);
   } else if (strcmp(cmd, "upload") == 0) {
-    cmd_upload(rest);
+    cmd_receive(rest, "usage: upload SIZE CRC32 (decimal bytes, hex checksum; `htx upload` sends them)",
+                receive_scene);
   } else if (strcmp(cmd, "texture") == 0) {
-    cmd_texture(rest);
+    cmd_receive(rest, "usage: texture SIZE CRC32 (decimal bytes, hex checksum; `htx upload --texture` sends them)",
+                receive_texture);
   } else if (next_word(&rest)) {
     error("this command takes no arguments: ", cmd);
   } else if (strcmp(cmd, "help") == 0) {

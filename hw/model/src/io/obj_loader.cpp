@@ -23,8 +23,9 @@ unsigned log2_exact(int n) {
   return (1 << l) == n ? l : 0;
 }
 
-Texture texture_from_file(const std::string& path) {
-  const Image img = load_image(path);
+}  // namespace
+
+Texture texture_from_image(const Image& img, const std::string& path, TexFormat format) {
   const unsigned lw = log2_exact(img.width), lh = log2_exact(img.height);
   if (lw < kMinTexLog2 || lw > kMaxTexLog2 || lh < kMinTexLog2 || lh > kMaxTexLog2)
     throw std::runtime_error("texture '" + path + "' is " + std::to_string(img.width) + "x" +
@@ -34,10 +35,8 @@ Texture texture_from_file(const std::string& path) {
   const size_t stride = static_cast<size_t>(img.width) * 4;
   for (int y = 0; y < img.height; ++y)
     std::copy_n(&img.rgba[static_cast<size_t>(img.height - 1 - y) * stride], stride, &rows[y * stride]);
-  return make_texture(TexFormat::RGB565, lw, lh, rows);
+  return make_texture(format, lw, lh, rows);
 }
-
-}  // namespace
 
 Scene load_obj_scene(const std::string& path) {
   tinyobj::ObjReaderConfig config;
@@ -60,7 +59,7 @@ Scene load_obj_scene(const std::string& path) {
     const std::string full = (std::filesystem::path(config.mtl_search_path) / tex).string();
     auto it = texture_index.find(full);
     if (it == texture_index.end()) {
-      scene.textures.push_back(texture_from_file(full));
+      scene.textures.push_back(texture_from_image(load_image(full), full));
       it = texture_index.emplace(full, static_cast<int>(scene.textures.size()) - 1).first;
     }
     material_texture[m] = it->second;

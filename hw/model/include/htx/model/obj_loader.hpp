@@ -9,11 +9,17 @@
 
 #include <string>
 
+#include "htx/model/image_io.hpp"
 #include "htx/model/scene.hpp"
 
 namespace htx {
 
 // Throws std::runtime_error naming the file on any load or validation failure.
 Scene load_obj_scene(const std::string& path);
+
+// An image as a texture the way an OBJ's map_Kd is read (sides powers of two in 8..256, texel
+// row 0 = the image's bottom row), encoded in `format` with its whole mip chain. Throws
+// std::runtime_error naming `name` when its sides do not fit.
+Texture texture_from_image(const Image& image, const std::string& name, TexFormat format = TexFormat::RGB565);
 
 }  // namespace htx
