@@ -1,5 +1,5 @@
-/* Reset entry for hypertex firmware: trap vector, global pointer, stack, .data copy (when it has a
- * separate load address), .bss and .tbss clear, thread pointer for picolibc's TLS, the target
+/* Reset entry for hypertex firmware: trap vector, global pointer, stack, .data and .tdata copied
+ * from their load image (linker/hypertex.ld), .bss and .tbss clear, thread pointer for picolibc's TLS, the target
  * set-up (UART divisor), C++ constructors (init_array), main, then exit with main's status. */
     .section .text.init, "ax"
     .globl _start
@@ -13,10 +13,11 @@ _start:
     .option pop
     la      sp, __stack_top
 
-    /* .data: copy only if the loader left it elsewhere (a ROM image); in RAM images it is in place. */
+    /* .data and .tdata (adjacent) from their load image, at every start: a warm reset (a board's
+       reset button) must not run with the values the last run left. */
     la      a0, __data_start
     la      a1, __data_source
-    la      a2, __data_end
+    la      a2, __data_copy_end
     beq     a0, a1, 2f
 1:  bgeu    a0, a2, 2f
     lw      t0, 0(a1)
