@@ -1,6 +1,7 @@
 // ELF32 reader written from the System V ABI / ELF specification field layouts.
 #include "htx/sim/elf_image.hpp"
 
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -121,6 +122,36 @@ ElfImage parse_elf(std::span<const uint8_t> data, const std::string& what) {
     }
   }
   return img;
+}
+
+std::vector<uint32_t> ram_words(const ElfImage& image, uint32_t ram_bytes) {
+  if (ram_bytes % 4 != 0) throw std::runtime_error("RAM size " + std::to_string(ram_bytes) + " is not whole words");
+  std::vector<uint32_t> words(ram_bytes / 4, 0);
+  for (const ElfSegment& seg : image.segments) {
+    if (seg.addr >= ram_bytes || seg.mem_size > ram_bytes - seg.addr) {
+      char addr[16];
+      std::snprintf(addr, sizeof addr, "0x%08x", seg.addr);
+      throw std::runtime_error("ELF segment at " + std::string(addr) + " (" + std::to_string(seg.mem_size) +
+                               " bytes) does not fit in the " + std::to_string(ram_bytes) + "-byte RAM at 0");
+    }
+    for (size_t b = 0; b < seg.bytes.size(); ++b) {
+      const uint32_t a = seg.addr + static_cast<uint32_t>(b);
+      uint32_t& w = words[a / 4];
+      w = (w & ~(0xFFu << (8 * (a % 4)))) | (static_cast<uint32_t>(seg.bytes[b]) << (8 * (a % 4)));
+    }
+  }
+  return words;
+}
+
+std::string readmemh_text(std::span<const uint32_t> words) {
+  std::string text;
+  text.reserve(words.size() * 9);
+  char line[10];
+  for (uint32_t w : words) {
+    std::snprintf(line, sizeof line, "%08x\n", w);
+    text += line;
+  }
+  return text;
 }
 
 ElfImage load_elf(const std::string& path) {

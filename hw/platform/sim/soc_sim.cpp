@@ -81,19 +81,8 @@ SocSim::SocSim(const ElfImage& elf, const SimOptions& options, SerialEndpoint* u
   }
 
   auto& ram = s.ram();
-  for (uint32_t i = 0; i < kRamBytes / 4; ++i) ram[i] = 0;
-  for (const ElfSegment& seg : elf.segments) {
-    if (seg.addr >= kRamBytes || seg.mem_size > kRamBytes - seg.addr) {
-      throw std::runtime_error("ELF segment at " + hex(seg.addr) + " (" +
-                               std::to_string(seg.mem_size) + " bytes) does not fit in the " +
-                               std::to_string(kRamBytes) + "-byte RAM at 0");
-    }
-    for (size_t b = 0; b < seg.bytes.size(); ++b) {
-      const uint32_t a = seg.addr + static_cast<uint32_t>(b);
-      uint32_t& w = ram[a / 4];
-      w = (w & ~(0xFFu << (8 * (a % 4)))) | (static_cast<uint32_t>(seg.bytes[b]) << (8 * (a % 4)));
-    }
-  }
+  const std::vector<uint32_t> words = ram_words(elf, kRamBytes);
+  for (uint32_t i = 0; i < kRamBytes / 4; ++i) ram[i] = words[i];
   if (auto t = elf.symbol("tohost")) {
     if (*t % 4 != 0 || *t >= kRamBytes) throw std::runtime_error("symbol tohost is not a RAM word");
     s.tohost_word = *t / 4;

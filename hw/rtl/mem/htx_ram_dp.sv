@@ -33,7 +33,12 @@ module htx_ram_dp #(
   localparam int unsigned Words     = Bytes / 4;
   localparam int unsigned WordWidth = $clog2(Words);
 
-  logic [31:0] mem_q [Words] /* verilator public_flat_rw */;
+  // no_rw_check: a fetch from the word that port B writes in the same clock may read anything on a
+  // board (the block RAMs' collision behaviour) and reads the old word in simulation. Only code
+  // that stores into the instruction stream without FENCE.I does that (FENCE.I refetches after the
+  // store has completed). Without it Yosys emulates read-before-write: on the ECP5 two copies of
+  // the RAM (128 block RAMs instead of 64) and collision logic (docs/boards.md).
+  (* no_rw_check *) logic [31:0] mem_q [Words] /* verilator public_flat_rw */;
   logic [WordWidth-1:0] a_word, b_word;
   logic [31:0] a_rdata_q;
   logic a_valid_q, a_err_q, b_valid_q;

@@ -31,4 +31,13 @@ ElfImage parse_elf(std::span<const uint8_t> data, const std::string& what);
 // Reads and parses a file; errors name the path.
 ElfImage load_elf(const std::string& path);
 
+// The RAM's contents once the image is loaded at address 0: ram_bytes / 4 little-endian words, zero
+// wherever no segment's file bytes land (.bss and the rest). Throws std::runtime_error for a segment
+// that does not fit in [0, ram_bytes). ram_bytes must be a multiple of 4. The simulated SoC loads
+// its RAM from this; `htx image` writes it for a board's RAM initialisation.
+std::vector<uint32_t> ram_words(const ElfImage& image, uint32_t ram_bytes);
+
+// The words as a $readmemh file: one word a line, 8 lower-case hex digits.
+std::string readmemh_text(std::span<const uint32_t> words);
+
 }  // namespace htx::sim
