@@ -16,6 +16,7 @@
 #include "htx/model/config.hpp"
 #include "htx/model/geometry.hpp"
 #include "htx/model/lod.hpp"
+#include "htx/model/model.hpp"
 #include "htx/model/perspective.hpp"
 #include "htx/model/proc_textures.hpp"
 #include "htx/model/sampler.hpp"
@@ -355,21 +356,6 @@ TEST_P(TextureUnit, DescriptorReadsWhileSampling) {
 
 INSTANTIATE_TEST_SUITE_P(Configs, TextureUnit, ::testing::Values("full", "icebreaker"),
                          [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
-
-fw::VertexIn to_vertex_in(const ScreenVertex& v) {
-  fw::VertexIn in;
-  in.x = v.x;
-  in.y = v.y;
-  in.z = v.z;
-  in.w = v.w;
-  in.u = v.u;
-  in.v = v.v;
-  in.r = v.r;
-  in.g = v.g;
-  in.b = v.b;
-  in.a = v.a;
-  return in;
-}
 
 // LOD selection across a minified plane: the `floor` scene's per-pixel LOD inputs (the model's
 // planes, RECIP_NR coordinates) through the unit's LOD stage and trilinear filter.

@@ -46,21 +46,6 @@ uint16_t to_rgb565(Rgba8 c) {
                                quantise_channel(c.b, 5));
 }
 
-fw::VertexIn to_vertex_in(const ScreenVertex& v) {
-  fw::VertexIn in;
-  in.x = v.x;
-  in.y = v.y;
-  in.z = v.z;
-  in.w = v.w;
-  in.u = v.u;
-  in.v = v.v;
-  in.r = v.r;
-  in.g = v.g;
-  in.b = v.b;
-  in.a = v.a;
-  return in;
-}
-
 void check_state(const std::vector<Texture>& textures, const TriState& st, const ModelConfig& cfg, Method method) {
   if (!cfg.has_method(method))
     throw std::invalid_argument("method " + method_name(method, st.subdiv_n) + " is not built in configuration " +
@@ -214,6 +199,21 @@ Frame render_model_records(const RecordScene& scene, const ModelConfig& cfg) {
     draw_record(tri.record, tri.state, tri.state.method, fc);
   }
   return frame;
+}
+
+fw::VertexIn to_vertex_in(const ScreenVertex& v) {
+  fw::VertexIn in;
+  in.x = v.x;
+  in.y = v.y;
+  in.z = v.z;
+  in.w = v.w;
+  in.u = v.u;
+  in.v = v.v;
+  in.r = v.r;
+  in.g = v.g;
+  in.b = v.b;
+  in.a = v.a;
+  return in;
 }
 
 }  // namespace htx

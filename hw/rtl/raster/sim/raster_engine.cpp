@@ -10,6 +10,7 @@
 #include <string>
 
 #include "htx/fw/vertex_record.h"
+#include "htx/model/model.hpp"
 #include "htx/model/names.hpp"
 #include "htx/model/perspective.hpp"
 #include "htx/model/texture.hpp"
@@ -113,21 +114,6 @@ void upload_textures(rtl::GpuSim& sim, const ScreenScene& scene) {
   if (sim.mem_write_burst(words) != 0)
     throw std::logic_error("rtl engine: the texture memory refused a texel write inside its range");
   for (const auto& [addr, value] : descriptors) sim.write_reg(addr, value);
-}
-
-fw::VertexIn to_vertex_in(const ScreenVertex& v) {
-  fw::VertexIn in;
-  in.x = v.x;
-  in.y = v.y;
-  in.z = v.z;
-  in.w = v.w;
-  in.u = v.u;
-  in.v = v.v;
-  in.r = v.r;
-  in.g = v.g;
-  in.b = v.b;
-  in.a = v.a;
-  return in;
 }
 
 uint32_t field(uint32_t value, uint32_t pos, uint32_t msk) { return (value << pos) & msk; }

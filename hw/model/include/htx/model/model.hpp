@@ -19,6 +19,9 @@
 
 namespace htx {
 
+// A screen vertex as the vertex-record encoder takes it (the firmware's VertexIn, in doubles).
+fw::VertexIn to_vertex_in(const ScreenVertex& v);
+
 // Renders a screen scene. Per-triangle TriState selects method, filter, wrap, depth and combine.
 // Throws std::invalid_argument when a triangle asks for a method, filter or texture format the
 // configuration does not build, names a missing texture, or the scene size is outside 1..4096.
