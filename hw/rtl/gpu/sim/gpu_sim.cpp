@@ -6,6 +6,7 @@
 #include "Vhtx_gpu_full.h"
 #include "Vhtx_gpu_board.h"
 #include "Vhtx_gpu_icebreaker.h"
+#include "htx/rtl/two_port_pins.hpp"
 #include "htx_regs.h"
 #include "verilated.h"
 
@@ -13,15 +14,8 @@ namespace htx::rtl {
 
 namespace {
 
-struct BusIn {
-  bool valid = false, we = false;
-  uint32_t addr = 0, wdata = 0;
-  uint8_t be = 0xF;
-};
-struct BusOut {
-  bool rsp_valid = false, rsp_err = false;
-  uint32_t rdata = 0;
-};
+using BusIn = PortRequest;
+using BusOut = PortResponse;
 
 }  // namespace
 
@@ -45,46 +39,10 @@ class VerilatedGpu final : public GpuPort {
   ~VerilatedGpu() override { top_->final(); }
 
   void settle(const BusIn& r, const BusIn& m, bool* reg_ready, bool* mem_ready) override {
-    top_->reg_req_valid_i = r.valid;
-    top_->reg_req_addr_i = r.addr;
-    top_->reg_req_we_i = r.we;
-    top_->reg_req_be_i = r.be;
-    top_->reg_req_wdata_i = r.wdata;
-    top_->mem_req_valid_i = m.valid;
-    top_->mem_req_addr_i = m.addr;
-    top_->mem_req_we_i = m.we;
-    top_->mem_req_be_i = m.be;
-    top_->mem_req_wdata_i = m.wdata;
-    top_->clk_i = 0;
-    top_->eval();
-    *reg_ready = top_->reg_req_ready_o;
-    *mem_ready = top_->mem_req_ready_o;
+    settle_ports(*top_, r, m, reg_ready, mem_ready);
   }
-  void rise(BusOut* r, BusOut* m) override {
-    top_->clk_i = 1;
-    top_->eval();
-    r->rsp_valid = top_->reg_rsp_valid_o;
-    r->rsp_err = top_->reg_rsp_err_o;
-    r->rdata = top_->reg_rsp_rdata_o;
-    m->rsp_valid = top_->mem_rsp_valid_o;
-    m->rsp_err = top_->mem_rsp_err_o;
-    m->rdata = top_->mem_rsp_rdata_o;
-  }
-  void reset() override {
-    top_->reg_req_valid_i = 0;
-    top_->mem_req_valid_i = 0;
-    top_->rst_ni = 0;
-    top_->clk_i = 0;
-    top_->eval();
-    for (int i = 0; i < 2; ++i) {
-      top_->clk_i = 1;
-      top_->eval();
-      top_->clk_i = 0;
-      top_->eval();
-    }
-    top_->rst_ni = 1;
-    top_->eval();
-  }
+  void rise(BusOut* r, BusOut* m) override { rise_ports(*top_, r, m); }
+  void reset() override { reset_ports(*top_); }
 
  private:
   std::unique_ptr<VerilatedContext> ctx_;
