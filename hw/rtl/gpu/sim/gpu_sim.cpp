@@ -100,40 +100,27 @@ void GpuSim::idle(uint64_t n) {
 }
 
 uint32_t GpuSim::read_reg(uint32_t addr) {
-  BusIn q;
-  q.valid = true;
-  q.addr = addr;
+  const BusIn q = read_at(addr);
   const BusOut o = run_one(*port_, q, false, cycles_);
   if (o.rsp_err) throw std::runtime_error("rtl engine: register read at " + std::to_string(addr) + " failed");
   return o.rdata;
 }
 
 void GpuSim::write_reg(uint32_t addr, uint32_t value) {
-  BusIn q;
-  q.valid = true;
-  q.we = true;
-  q.addr = addr;
-  q.wdata = value;
+  const BusIn q = write_at(addr, value);
   if (run_one(*port_, q, false, cycles_).rsp_err)
     throw std::runtime_error("rtl engine: register write at " + std::to_string(addr) + " failed");
 }
 
 bool GpuSim::mem_read(uint32_t addr, uint32_t* data) {
-  BusIn q;
-  q.valid = true;
-  q.addr = addr;
+  const BusIn q = read_at(addr);
   const BusOut o = run_one(*port_, q, true, cycles_);
   *data = o.rdata;
   return o.rsp_err;
 }
 
 bool GpuSim::mem_write(uint32_t addr, uint32_t data, uint8_t be) {
-  BusIn q;
-  q.valid = true;
-  q.we = true;
-  q.addr = addr;
-  q.wdata = data;
-  q.be = be;
+  const BusIn q = write_at(addr, data, be);
   return run_one(*port_, q, true, cycles_).rsp_err;
 }
 

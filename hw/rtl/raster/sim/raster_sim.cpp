@@ -156,37 +156,24 @@ static BusOut run_one(RasterPort& port, const BusIn& req, bool on_mem, uint64_t&
 }
 
 uint32_t RasterSim::read_reg(uint32_t offset) {
-  BusIn q;
-  q.valid = true;
-  q.addr = HTX_RASTER_BASE + offset;
+  const BusIn q = read_at(HTX_RASTER_BASE + offset);
   return run_one(*port_, q, false, cycles_).rdata;
 }
 
 void RasterSim::write_reg(uint32_t offset, uint32_t value) {
-  BusIn q;
-  q.valid = true;
-  q.we = true;
-  q.addr = HTX_RASTER_BASE + offset;
-  q.wdata = value;
+  const BusIn q = write_at(HTX_RASTER_BASE + offset, value);
   run_one(*port_, q, false, cycles_);
 }
 
 bool RasterSim::mem_read(uint32_t addr, uint32_t* data) {
-  BusIn q;
-  q.valid = true;
-  q.addr = addr;
+  const BusIn q = read_at(addr);
   const BusOut o = run_one(*port_, q, true, cycles_);
   *data = o.rdata;
   return o.rsp_err;
 }
 
 bool RasterSim::mem_write(uint32_t addr, uint32_t data, uint8_t be) {
-  BusIn q;
-  q.valid = true;
-  q.we = true;
-  q.addr = addr;
-  q.wdata = data;
-  q.be = be;
+  const BusIn q = write_at(addr, data, be);
   return run_one(*port_, q, true, cycles_).rsp_err;
 }
 

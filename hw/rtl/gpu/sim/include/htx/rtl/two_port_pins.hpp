@@ -13,6 +13,20 @@ struct PortRequest {
   uint32_t addr = 0, wdata = 0;
   uint8_t be = 0xF;
 };
+inline PortRequest read_at(uint32_t addr) {
+  PortRequest q;
+  q.valid = true;
+  q.addr = addr;
+  return q;
+}
+inline PortRequest write_at(uint32_t addr, uint32_t data, uint8_t be = 0xF) {
+  PortRequest q = read_at(addr);
+  q.we = true;
+  q.wdata = data;
+  q.be = be;
+  return q;
+}
+
 struct PortResponse {
   bool rsp_valid = false, rsp_err = false;
   uint32_t rdata = 0;
