@@ -2,6 +2,7 @@
 // renders built-in scenes through the Verilated raster subsystem (RasterSimBus: every register and
 // framebuffer access a bus transaction). The vertex records it streamed, rendered by the model
 // (render_model_records), give the same frame bit for bit.
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <ostream>
@@ -11,6 +12,7 @@
 #include "htx/hal/framebuffer.h"
 #include "htx/hal/raster.h"
 #include "htx/hal/sim/raster_sim_bus.hpp"
+#include "htx/model/metrics.hpp"
 #include "htx/model/geometry.hpp"
 #include "htx/model/model.hpp"
 #include "htx/model/scenes.hpp"
@@ -102,19 +104,11 @@ TEST_P(RenderCosim, FirmwareFrameEqualsModelFrameForTheSameRecords) {
   for (const test::CapturedTriangle& t : streamed) records.tris.push_back({t.record, test::from_state_word(t.state_word)});
   const Frame model = render_model_records(records, cfg);
 
-  uint64_t bad = 0, drawn = 0;
-  size_t first = 0;
-  for (size_t i = 0; i < model.color.size(); ++i) {
-    drawn += model.color[i] != kClear;
-    if (rtl.color[i] != model.color[i] || rtl.depth[i] != model.depth[i]) {
-      if (!bad) first = i;
-      ++bad;
-    }
-  }
+  const uint64_t drawn = static_cast<uint64_t>(
+      std::count_if(model.color.begin(), model.color.end(), [](uint16_t colour) { return colour != kClear; }));
   EXPECT_GT(drawn, 1000u);
-  EXPECT_EQ(bad, 0u) << "first mismatch at pixel (" << first % kW << ", " << first / kW << "): rtl colour "
-                     << rtl.color[first] << " depth " << rtl.depth[first] << ", model colour " << model.color[first]
-                     << " depth " << model.depth[first];
+  const FrameMismatch mismatch = exact_mismatch(rtl, model);
+  EXPECT_EQ(mismatch.pixels, 0u) << "first mismatch (rtl against model) at " << mismatch.first;
   EXPECT_EQ(counters.fragments, model.counters.fragments);
   // And the firmware's fixed-point geometry draws nearly what the double-precision stage does:
   // differences only along edges (vertices within 1/8 pixel, tests/unit/render_geometry_test).

@@ -9,6 +9,7 @@
 // cover a pixel differently. The DIVFREE cases draw every mesh with DIVFREE instead of AUTO (the
 // firmware packs the texture's last level into the state word); CNT_DIVFREE_STEPS equals the
 // model's total.
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -175,19 +176,11 @@ TEST_P(TexturedCosim, FirmwareFrameEqualsModelFrameBitForBit) {
   EXPECT_EQ(textured, stats.sent);
   const Frame model = render_model_records(records, cfg);
 
-  uint64_t bad = 0, drawn = 0;
-  size_t first = 0;
-  for (size_t i = 0; i < model.color.size(); ++i) {
-    drawn += model.color[i] != kClear;
-    if (rtl.color[i] != model.color[i] || rtl.depth[i] != model.depth[i]) {
-      if (!bad) first = i;
-      ++bad;
-    }
-  }
+  const uint64_t drawn = static_cast<uint64_t>(
+      std::count_if(model.color.begin(), model.color.end(), [](uint16_t colour) { return colour != kClear; }));
   EXPECT_GT(drawn, 1000u);
-  EXPECT_EQ(bad, 0u) << "first mismatch at pixel (" << first % kW << ", " << first / kW << "): rtl colour "
-                     << rtl.color[first] << " depth " << rtl.depth[first] << ", model colour " << model.color[first]
-                     << " depth " << model.depth[first];
+  const FrameMismatch mismatch = exact_mismatch(rtl, model);
+  EXPECT_EQ(mismatch.pixels, 0u) << "first mismatch (rtl against model) at " << mismatch.first;
   EXPECT_EQ(counters.fragments, model.counters.fragments);
   EXPECT_EQ(counters.pixels, model.counters.pixels_written);
   EXPECT_EQ(counters.divfree_steps, model.counters.divfree_steps_total);
@@ -228,7 +221,7 @@ TEST_P(TexturedCosim, FirmwareFrameEqualsModelFrameBitForBit) {
               c.config.c_str(), c.scene.c_str(), c.trilinear ? " trilinear" : "", stats.sent, per_method[0],
               per_method[1], per_method[2], per_method[3], per_method[4],
               static_cast<unsigned long long>(bus.texture_writes()), static_cast<unsigned long long>(frame_cycles),
-              counters.busy, static_cast<unsigned long long>(bad));
+              counters.busy, static_cast<unsigned long long>(mismatch.pixels));
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, TexturedCosim,

@@ -109,6 +109,25 @@ TEST(RefIo, CompareImagesByHand) {
   EXPECT_THROW(compare_images(a, image_from_rgb565(2, 2, {0, 0, 0, 0})), std::invalid_argument);
 }
 
+TEST(RefIo, ExactMismatchCountsColourAndDepthAndNamesTheFirst) {
+  Frame a;
+  a.width = 3;
+  a.height = 2;
+  a.color.assign(6, 7);
+  a.depth.assign(6, 100);
+  Frame b = a;
+  EXPECT_EQ(exact_mismatch(a, b).pixels, 0u);
+  EXPECT_EQ(exact_mismatch(a, b).first, "");
+  b.depth[4] = 101;  // (1, 1)
+  b.color[5] = 8;    // (2, 1)
+  const FrameMismatch m = exact_mismatch(a, b);
+  EXPECT_EQ(m.pixels, 2u);
+  EXPECT_EQ(m.first, "(1, 1): colour 7 depth 100 against colour 7 depth 101");
+  b.width = 6;
+  b.height = 1;
+  EXPECT_THROW(exact_mismatch(a, b), std::invalid_argument);
+}
+
 TEST(RefIo, MetricsAndJsonKeys) {
   Frame ref, eng;
   for (Frame* f : {&ref, &eng}) {

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "htx/model/metrics.hpp"
 #include "htx/model/geometry.hpp"
 #include "htx/model/model.hpp"
 #include "htx/model/scenes.hpp"
@@ -35,17 +36,8 @@ TEST_P(RasterScenes, MatchesModelBitForBit) {
   RtlStats stats;
   const Frame rtl = render_rtl(screen, cfg, &stats);
   ASSERT_EQ(rtl.color.size(), model.color.size());
-  uint64_t bad = 0;
-  size_t first = 0;
-  for (size_t i = 0; i < model.color.size(); ++i) {
-    if (rtl.color[i] != model.color[i] || rtl.depth[i] != model.depth[i]) {
-      if (!bad) first = i;
-      ++bad;
-    }
-  }
-  EXPECT_EQ(bad, 0u) << "first mismatch at pixel (" << first % 160 << ", " << first / 160 << "): rtl colour "
-                     << rtl.color[first] << " depth " << rtl.depth[first] << ", model colour " << model.color[first]
-                     << " depth " << model.depth[first];
+  const FrameMismatch mismatch = exact_mismatch(rtl, model);
+  EXPECT_EQ(mismatch.pixels, 0u) << "first mismatch (rtl against model) at " << mismatch.first;
   EXPECT_EQ(stats.covered_pixels, model.counters.fragments);
   EXPECT_EQ(stats.pixels_written, model.counters.pixels_written);
   EXPECT_EQ(stats.triangles, stats.triangles_sent);

@@ -32,4 +32,21 @@ ImageDiff compare_images(const Image& a, const Image& b) {
   return d;
 }
 
+FrameMismatch exact_mismatch(const Frame& a, const Frame& b) {
+  const size_t n = static_cast<size_t>(a.width) * a.height;
+  if (a.width != b.width || a.height != b.height || a.color.size() != n || b.color.size() != n ||
+      a.depth.size() != n || b.depth.size() != n)
+    throw std::invalid_argument("exact_mismatch: the frames' sizes differ");
+  FrameMismatch m;
+  for (size_t i = 0; i < n; ++i) {
+    if (a.color[i] == b.color[i] && a.depth[i] == b.depth[i]) continue;
+    if (m.pixels++ == 0) {
+      m.first = "(" + std::to_string(i % a.width) + ", " + std::to_string(i / a.width) + "): colour " +
+                std::to_string(a.color[i]) + " depth " + std::to_string(a.depth[i]) + " against colour " +
+                std::to_string(b.color[i]) + " depth " + std::to_string(b.depth[i]);
+    }
+  }
+  return m;
+}
+
 }  // namespace htx

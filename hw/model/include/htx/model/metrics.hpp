@@ -20,6 +20,15 @@ struct ImageDiff {
 // Throws std::invalid_argument when the sizes differ.
 ImageDiff compare_images(const Image& a, const Image& b);
 
+// Bit-exactness of two frames of the same size (the RTL against the model): the pixels whose RGB565
+// word or depth differ, and the first of them in row-major order as text, "(x, y): colour C depth D
+// against colour C' depth D'". Throws std::invalid_argument when the sizes differ.
+struct FrameMismatch {
+  uint64_t pixels = 0;
+  std::string first;  // empty when pixels == 0
+};
+FrameMismatch exact_mismatch(const Frame& a, const Frame& b);
+
 // Labels copied into the JSON as they are.
 struct MetricsLabels {
   std::string engine, scene, method, filter, config;
