@@ -23,18 +23,6 @@ using model::i128;
 
 constexpr int kMaxScreen = 4096;
 
-bool depth_pass(DepthFunc f, uint32_t z, uint32_t stored) {
-  switch (f) {
-    case DepthFunc::Never: return false;
-    case DepthFunc::Less: return z < stored;
-    case DepthFunc::LEqual: return z <= stored;
-    case DepthFunc::Equal: return z == stored;
-    case DepthFunc::Greater: return z > stored;
-    case DepthFunc::Always: return true;
-  }
-  return false;
-}
-
 // round(a * b / 255) for 8-bit a, b, as the combiner computes it.
 uint8_t modulate8(unsigned a, unsigned b) {
   const unsigned x = a * b + 128;
@@ -111,7 +99,7 @@ void draw_record(const fw::TriangleRecord& rec, const TriState& st, Method metho
       }
       const int64_t px = 256 * int64_t{x} + 128, py = 256 * int64_t{y} + 128;
       const uint32_t z = unit.depth_at(px, py);
-      if (!depth_pass(st.depth_func, z, frame.depth[idx])) continue;
+      if (!depth_passes(st.depth_func, z, frame.depth[idx])) continue;
       if (st.depth_write) frame.depth[idx] = z;
       Rgba8 c = st.gouraud ? unit.color_at(px, py) : flat;
       if (tex) {

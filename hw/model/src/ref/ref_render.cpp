@@ -10,18 +10,6 @@ namespace htx {
 
 namespace {
 
-bool depth_passes(DepthFunc f, double z, double stored) {
-  switch (f) {
-    case DepthFunc::Never: return false;
-    case DepthFunc::Less: return z < stored;
-    case DepthFunc::LEqual: return z <= stored;
-    case DepthFunc::Equal: return z == stored;
-    case DepthFunc::Greater: return z > stored;
-    case DepthFunc::Always: return true;
-  }
-  return false;
-}
-
 uint16_t to_rgb565(const ref::Rgba& c) {
   auto q = [](double x, int max) {
     const double v = std::nearbyint(std::clamp(x, 0.0, 1.0) * max);

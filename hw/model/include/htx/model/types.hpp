@@ -16,6 +16,21 @@ enum class Filter : uint8_t { Nearest, Bilinear, Trilinear };
 // Perspective method, chosen per triangle. Quadratic exists in the model only (for the study).
 enum class Method : uint8_t { Affine, Subdiv, RecipLut, RecipNr, DivFree, Quadratic, Auto };
 enum class DepthFunc : uint8_t { Never, Less, LEqual, Equal, Greater, Always };
+
+// Whether a fragment at depth z passes against the stored depth (both engines: the reference's
+// doubles, the model's fixed-point words).
+template <class T>
+constexpr bool depth_passes(DepthFunc f, T z, T stored) {
+  switch (f) {
+    case DepthFunc::Never: return false;
+    case DepthFunc::Less: return z < stored;
+    case DepthFunc::LEqual: return z <= stored;
+    case DepthFunc::Equal: return z == stored;
+    case DepthFunc::Greater: return z > stored;
+    case DepthFunc::Always: return true;
+  }
+  return false;
+}
 enum class Combine : uint8_t { Replace, Modulate };
 
 // A texture with its whole mip chain. Texels are stored packed in their format (RGB565 and RGBA4444
