@@ -32,6 +32,7 @@
 #include "htx/render/texture_upload.h"
 #include "htx/rtl/raster_engine.hpp"
 #include "frame_records.hpp"
+#include "hal_frame.hpp"
 #include "render_scene.hpp"
 
 namespace htx {
@@ -140,16 +141,7 @@ TEST_P(TexturedCosim, FirmwareFrameEqualsModelFrameBitForBit) {
   hal::RasterCounters counters;
   hal::raster_read_counters(&counters);
 
-  Frame rtl;
-  rtl.width = kW;
-  rtl.height = kH;
-  rtl.color.resize(static_cast<size_t>(kW) * kH);
-  for (int y = 0; y < kH; ++y)
-    hal::fb_read_row(kW, static_cast<uint32_t>(y), 0, kW, &rtl.color[static_cast<size_t>(y) * kW]);
-  const uint32_t z_max = (uint32_t{1} << cfg.z_bits) - 1;
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x)
-      rtl.depth.push_back(hal::fb_read_depth(kW, static_cast<uint32_t>(x), static_cast<uint32_t>(y)) & z_max);
+  const Frame rtl = test::read_frame_through_hal(kW, kH, cfg.z_bits);
 
   // The model: the streamed records, the model's own texture chains.
   const test::FrameRecords fr =

@@ -24,6 +24,7 @@
 #include "htx/model/texture.hpp"
 #include "htx/render/frame.h"
 #include "frame_records.hpp"
+#include "hal_frame.hpp"
 #include "htx/rtl/raster_engine.hpp"
 #include "render_scene.hpp"
 #include "render_state.hpp"
@@ -114,9 +115,7 @@ CosimFrame cosim_frame(const std::string& scene_name) {
                            static_cast<uint32_t>(meshes.size()), &cache, 20'000'000, &stats, &mesh_status);
   if (st != render::kFrameOk) throw std::runtime_error("cosim render_frame failed: " + std::to_string(st));
   CosimFrame out;
-  out.color.resize(static_cast<size_t>(kW) * kH);
-  for (int y = 0; y < kH; ++y)
-    hal::fb_read_row(kW, static_cast<uint32_t>(y), 0, kW, &out.color[static_cast<size_t>(y) * kW]);
+  out.color = test::read_frame_through_hal(kW, kH, 0).color;
   hal::RasterCounters counters;
   hal::raster_read_counters(&counters);
   out.raster_busy = counters.busy;
