@@ -137,29 +137,34 @@ void TextureHarness::tick() {
   port_->rise();
 }
 
-void TextureHarness::reg_write(uint32_t offset, uint32_t value) {
-  TexturePort& p = *port_;
-  p.reg = {true, true, kRegBase + offset, value, 0xF};
-  for (int i = 0; i < 100; ++i) {
+namespace {
+
+// Holds the request just placed on one of the port's channels (reg or mem) until the unit accepts it,
+// for at most `limit` clocks, then drops its valid.
+void hold_until_accepted(TexturePort& p, TexturePort::Bus TexturePort::*channel, bool TexturePort::*ready,
+                         int limit) {
+  for (int i = 0; i < limit; ++i) {
     p.settle();
-    const bool done = p.reg_ready;
+    const bool done = p.*ready;
     p.rise();
     if (done) break;
   }
-  p.reg.valid = false;
+  (p.*channel).valid = false;
+}
+
+}  // namespace
+
+void TextureHarness::reg_write(uint32_t offset, uint32_t value) {
+  TexturePort& p = *port_;
+  p.reg = {true, true, kRegBase + offset, value, 0xF};
+  hold_until_accepted(p, &TexturePort::reg, &TexturePort::reg_ready, 100);
   tick();
 }
 
 uint32_t TextureHarness::reg_read(uint32_t offset) {
   TexturePort& p = *port_;
   p.reg = {true, false, kRegBase + offset, 0, 0xF};
-  for (int i = 0; i < 100; ++i) {
-    p.settle();
-    const bool done = p.reg_ready;
-    p.rise();
-    if (done) break;
-  }
-  p.reg.valid = false;
+  hold_until_accepted(p, &TexturePort::reg, &TexturePort::reg_ready, 100);
   for (int i = 0; i < 100; ++i) {
     p.settle();
     if (p.reg_rsp_valid) {
@@ -175,13 +180,7 @@ uint32_t TextureHarness::reg_read(uint32_t offset) {
 bool TextureHarness::mem_write(uint32_t offset, uint32_t value, uint8_t be) {
   TexturePort& p = *port_;
   p.mem = {true, true, kMemBase + offset, value, be};
-  for (int i = 0; i < 1000; ++i) {
-    p.settle();
-    const bool done = p.mem_ready;
-    p.rise();
-    if (done) break;
-  }
-  p.mem.valid = false;
+  hold_until_accepted(p, &TexturePort::mem, &TexturePort::mem_ready, 1000);
   p.settle();
   const bool err = p.mem_rsp_err;
   if (!p.mem_rsp_valid) throw std::runtime_error("mem_write: no response");
@@ -192,13 +191,7 @@ bool TextureHarness::mem_write(uint32_t offset, uint32_t value, uint8_t be) {
 bool TextureHarness::mem_read(uint32_t offset, uint32_t* value) {
   TexturePort& p = *port_;
   p.mem = {true, false, kMemBase + offset, 0, 0xF};
-  for (int i = 0; i < 1000; ++i) {
-    p.settle();
-    const bool done = p.mem_ready;
-    p.rise();
-    if (done) break;
-  }
-  p.mem.valid = false;
+  hold_until_accepted(p, &TexturePort::mem, &TexturePort::mem_ready, 1000);
   p.settle();
   if (!p.mem_rsp_valid) throw std::runtime_error("mem_read: no response");
   *value = p.mem_rdata;
