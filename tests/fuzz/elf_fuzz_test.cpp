@@ -97,6 +97,14 @@ bool try_parse(const std::vector<uint8_t>& file, const std::string& what) {
     const htx::sim::ElfImage img = htx::sim::parse_elf(file, "input");
     EXPECT_FALSE(img.segments.empty()) << what;
     for (const auto& s : img.segments) EXPECT_LE(s.bytes.size(), s.mem_size) << what;
+    // Loaded into a RAM as the simulator and `htx image` load it: it fits, or is refused in words.
+    try {
+      const std::vector<uint32_t> ram = htx::sim::ram_words(img, 64 * 1024);
+      EXPECT_EQ(ram.size(), 16u * 1024u) << what;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("does not fit in the 65536-byte RAM at 0"), std::string::npos)
+          << what << ": " << e.what();
+    }
     return true;
   } catch (const std::runtime_error& e) {
     const std::string msg = e.what();
