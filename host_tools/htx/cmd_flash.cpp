@@ -1,4 +1,5 @@
-// htx flash: load a board's bitstream with openFPGALoader (into the FPGA, or into the board's flash).
+// htx flash: load a board's bitstream into the FPGA, or into the board's flash: openFPGALoader for
+// the ULX3S, iceprog for the iCEBreaker.
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -23,21 +24,36 @@ struct FlashArgs {
   std::string bitstream;
   std::string board = "ulx3s";
   bool to_flash = false;
-  std::string loader = "openFPGALoader";
+  std::string loader;  // empty: the board's loader from PATH
   bool dry_run = false;
 };
 
-// openFPGALoader's name for each board htx builds a bitstream for (docs/boards.md).
-std::string loader_board(const std::string& board) {
-  if (board == "ulx3s") return "ulx3s";
-  throw std::runtime_error("no bitstream flow for board " + board);
+// The loader's command line for each board htx builds a bitstream for (docs/boards.md), and the
+// Debian package that has it.
+struct LoaderCommand {
+  std::vector<std::string> argv;
+  const char* package;
+};
+LoaderCommand loader_command(const FlashArgs& a) {
+  if (a.board == "ulx3s") {
+    LoaderCommand c{{a.loader.empty() ? "openFPGALoader" : a.loader, "-b", "ulx3s"}, "openfpgaloader"};
+    if (a.to_flash) c.argv.push_back("-f");
+    c.argv.push_back(a.bitstream);
+    return c;
+  }
+  if (a.board == "icebreaker") {  // iceprog writes the flash unless told -S (the FPGA's SRAM)
+    LoaderCommand c{{a.loader.empty() ? "iceprog" : a.loader}, "fpga-icestorm"};
+    if (!a.to_flash) c.argv.push_back("-S");
+    c.argv.push_back(a.bitstream);
+    return c;
+  }
+  throw std::runtime_error("no bitstream flow for board " + a.board);
 }
 
 int run_flash(const FlashArgs& a) {
   if (std::filesystem::file_size(a.bitstream) == 0) throw std::runtime_error(a.bitstream + " is empty");
-  std::vector<std::string> argv = {a.loader, "-b", loader_board(a.board)};
-  if (a.to_flash) argv.push_back("-f");
-  argv.push_back(a.bitstream);
+  const LoaderCommand command = loader_command(a);
+  const std::vector<std::string>& argv = command.argv;
   std::string shown;
   for (const std::string& s : argv) shown += (shown.empty() ? "" : " ") + s;
   std::cout << "htx flash: " << shown << "\n" << std::flush;
@@ -47,10 +63,10 @@ int run_flash(const FlashArgs& a) {
   for (const std::string& s : argv) cargv.push_back(const_cast<char*>(s.c_str()));
   cargv.push_back(nullptr);
   pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, a.loader.c_str(), nullptr, nullptr, cargv.data(), environ);
+  const int rc = posix_spawnp(&pid, argv[0].c_str(), nullptr, nullptr, cargv.data(), environ);
   if (rc != 0) {
-    throw std::runtime_error("cannot run " + a.loader + " (" + std::strerror(rc) +
-                             "); install it with: apt-get install openfpgaloader");
+    throw std::runtime_error("cannot run " + argv[0] + " (" + std::strerror(rc) +
+                             "); install it with: apt-get install " + command.package);
   }
   int status = 0;
   while (waitpid(pid, &status, 0) < 0) {
@@ -61,7 +77,7 @@ int run_flash(const FlashArgs& a) {
               << "\n";
     return 0;
   }
-  std::cerr << "htx flash: " << a.loader << " failed ("
+  std::cerr << "htx flash: " << argv[0] << " failed ("
             << (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status)) : std::string("killed"))
             << "); is the board connected, and may this user open its USB device?\n";
   return 1;
@@ -72,13 +88,15 @@ int run_flash(const FlashArgs& a) {
 void register_flash(CLI::App& app) {
   auto args = std::make_shared<FlashArgs>();
   auto* cmd = app.add_subcommand(
-      "flash", "Load a board's bitstream (BUILD/boards/ulx3s/htx_ulx3s.bit) with openFPGALoader");
+      "flash", "Load a board's bitstream (BUILD/boards/BOARD/...): openFPGALoader for ulx3s, iceprog for icebreaker");
   cmd->add_option("bitstream", args->bitstream, "The bitstream file")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--board", args->board, "The board (default ulx3s)")->check(CLI::IsMember({"ulx3s"}));
+  cmd->add_option("--board", args->board, "The board: ulx3s (default) or icebreaker")
+      ->check(CLI::IsMember({"ulx3s", "icebreaker"}));
   cmd->add_flag("--flash", args->to_flash,
                 "Write the board's SPI flash, so the design loads at every power-on (default: the FPGA only, "
                 "until power-off)");
-  cmd->add_option("--loader", args->loader, "The openFPGALoader program to run (default: openFPGALoader from PATH)");
+  cmd->add_option("--loader", args->loader,
+                  "The loader program to run (default: openFPGALoader or iceprog, as the board needs, from PATH)");
   cmd->add_flag("--dry-run", args->dry_run, "Print the loader's command line and stop");
   cmd->callback([args]() {
     int status = 1;

@@ -1,6 +1,6 @@
 // The board commands of htx: `htx image` (a firmware ELF as a board's RAM initialisation) against
 // the toolchain's own flat binary of the ELF, and `htx flash` against a stand-in loader that records
-// its command line.
+// its command line (openFPGALoader's for the ULX3S, iceprog's for the iCEBreaker).
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -78,7 +78,7 @@ std::string fake_loader(const std::string& name, int status) {
   return path;
 }
 
-TEST(HtxFlash, RunsTheLoaderForTheBoardIntoTheFpgaOrItsFlash) {
+TEST(HtxFlash, RunsEachBoardsLoaderIntoTheFpgaOrItsFlash) {
   const std::string bit = ::testing::TempDir() + "htx_flash_test.bit";
   std::ofstream(bit) << "bitstream bytes";
   const std::string loader = fake_loader("htx_fake_loader_ok", 0);
@@ -92,6 +92,17 @@ TEST(HtxFlash, RunsTheLoaderForTheBoardIntoTheFpgaOrItsFlash) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(read_file(loader + ".args"), "-b\nulx3s\n-f\n" + bit + "\n");
   EXPECT_NE(r.out.find("into the board's flash"), std::string::npos) << r.out;
+
+  // The iCEBreaker's loader is iceprog: -S for the FPGA's SRAM, nothing for the flash.
+  r = htx::test::run_program({HTX_BIN, "flash", bit, "--board", "icebreaker", "--loader", loader}, 60s);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_file(loader + ".args"), "-S\n" + bit + "\n");
+  r = htx::test::run_program({HTX_BIN, "flash", bit, "--board", "icebreaker", "--flash", "--loader", loader}, 60s);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_file(loader + ".args"), bit + "\n");
+  r = htx::test::run_program({HTX_BIN, "flash", bit, "--board", "icebreaker", "--dry-run"}, 60s);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("htx flash: iceprog -S " + bit), std::string::npos) << r.out;
 }
 
 TEST(HtxFlash, ReportsALoaderThatFailsOrIsMissingAndAnEmptyFile) {
@@ -111,7 +122,7 @@ TEST(HtxFlash, ReportsALoaderThatFailsOrIsMissingAndAnEmptyFile) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("is empty"), std::string::npos) << r.err;
 
-  r = htx::test::run_program({HTX_BIN, "flash", bit, "--board", "icebreaker", "--dry-run"}, 60s);
+  r = htx::test::run_program({HTX_BIN, "flash", bit, "--board", "tangnano", "--dry-run"}, 60s);
   EXPECT_NE(r.status, 0);
 }
 

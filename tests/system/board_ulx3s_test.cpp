@@ -4,97 +4,33 @@
 // starts, as synthesis reads it into the bitstream), the SoC comes out of reset by itself, and the
 // firmware's UART runs at the divisor it computes from SYSCTRL.CLOCK_HZ.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
-#include <memory>
 #include <string>
 
 #include "Vhtx_ulx3s_top.h"
 #include "Vhtx_ulx3s_top___024root.h"
-#include "htx/sim/elf_image.hpp"
-#include "htx/sim/uart_line.hpp"
+#include "board_pins.hpp"
 #include "subprocess.hpp"
-#include "verilated.h"
 
 namespace {
 
 using namespace std::chrono_literals;
 
-constexpr uint32_t kClockHz = 25'000'000;
-constexpr uint32_t kClocksPerBit = (kClockHz + 115'200 / 2) / 115'200;  // as hal/target/target_init.c
+struct Ulx3sPins {
+  static void clock(Vhtx_ulx3s_top& t, bool level) { t.clk_25mhz = level; }
+  static void button(Vhtx_ulx3s_top& t, bool pressed) { t.btn_pwr_n = !pressed; }
+  static void host_tx(Vhtx_ulx3s_top& t, bool level) { t.ftdi_txd = level; }
+  static bool board_tx(const Vhtx_ulx3s_top& t) { return t.ftdi_rxd != 0; }
+};
 
-// The board with a firmware image: writes the image where the model reads it (board_ram.hex in the
-// working directory, a directory of this test's own) and starts the model there.
-class Board {
+// The ULX3S with a firmware image in its 128 KiB of RAM, at its 25 MHz.
+class Board : public htx::test::BoardPins<Vhtx_ulx3s_top, Ulx3sPins> {
  public:
-  explicit Board(const std::string& elf) {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("htx_board_ulx3s_" + std::to_string(getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
-    image_ = htx::sim::load_elf(elf);
-    const htx::sim::ElfImage& image = image_;
-    std::ofstream(dir_ / "board_ram.hex") << htx::sim::readmemh_text(htx::sim::ram_words(image, 131072));
-    const auto back = std::filesystem::current_path();
-    std::filesystem::current_path(dir_);
-    ctx_ = std::make_unique<VerilatedContext>();
-    top_ = std::make_unique<Vhtx_ulx3s_top>(ctx_.get(), "board");
-    top_->clk_25mhz = 0;
-    top_->btn_pwr_n = 1;
-    top_->ftdi_txd = 1;
-    top_->eval();  // initial blocks: the RAM reads its image here
-    std::filesystem::current_path(back);
-  }
-  ~Board() {
-    top_->final();
-    std::error_code ec;
-    std::filesystem::remove_all(dir_, ec);
-  }
-
-  // One clock: the host's line and the button are set before the rising edge, the board's line is
-  // sampled after it.
-  void clock() {
-    top_->ftdi_txd = to_board_.step() ? 1 : 0;
-    top_->clk_25mhz = 1;
-    top_->eval();
-    top_->clk_25mhz = 0;
-    top_->eval();
-    if (auto byte = from_board_.step(top_->ftdi_rxd != 0)) received_ += static_cast<char>(*byte);
-    ++cycles_;
-  }
-  // Runs until `text` has been received (true), or `max_cycles` more clocks have passed (false).
-  bool run_until(const std::string& text, uint64_t max_cycles) {
-    for (uint64_t i = 0; i < max_cycles; ++i) {
-      if (received_.find(text) != std::string::npos) return true;
-      clock();
-    }
-    return received_.find(text) != std::string::npos;
-  }
-  void type(const std::string& s) {
-    for (char c : s) to_board_.push(static_cast<uint8_t>(c));
-  }
-  void press_button(bool pressed) { top_->btn_pwr_n = pressed ? 0 : 1; }
-
-  Vhtx_ulx3s_top& pins() { return *top_; }
-  const htx::sim::ElfImage& image() const { return image_; }
+  explicit Board(const std::string& elf) : BoardPins(elf, 131072, 25'000'000) {}
   // A RAM word, through the model's hierarchy (what a run leaves in memory, seen from outside).
   uint32_t& ram_word(uint32_t addr) {
-    return top_->rootp->htx_ulx3s_top__DOT__u_soc__DOT__u_fabric__DOT__u_ram__DOT__mem_q[addr / 4];
+    return pins().rootp->htx_ulx3s_top__DOT__u_soc__DOT__u_fabric__DOT__u_ram__DOT__mem_q[addr / 4];
   }
-  std::string& received() { return received_; }
-  uint64_t framing_errors() const { return from_board_.framing_errors(); }
-
- private:
-  std::filesystem::path dir_;
-  htx::sim::ElfImage image_;
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<Vhtx_ulx3s_top> top_;
-  htx::sim::UartLineDecoder from_board_{kClocksPerBit};
-  htx::sim::UartLineEncoder to_board_{kClocksPerBit};
-  std::string received_;
-  uint64_t cycles_ = 0;
 };
 
 constexpr uint8_t kLedReset = 1u << 1;

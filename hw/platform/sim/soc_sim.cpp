@@ -52,7 +52,7 @@ struct SocSim::Impl {
   // The framebuffer's colour memory, two pixels a word (the lower pixel in bits 15:0).
   auto& fb_color() {
     return top->rootp
-        ->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_gpu__DOT__u_subsys__DOT__u_fb__DOT__u_color__DOT__g_behav__DOT__mem_q;
+        ->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__g_gpu__DOT__u_gpu__DOT__u_subsys__DOT__u_fb__DOT__u_color__DOT__g_behav__DOT__mem_q;
   }
 
   void half_cycle(bool clk) {
@@ -92,7 +92,7 @@ SocSim::SocSim(const ElfImage& elf, const SimOptions& options, SerialEndpoint* u
   s.top->uart_rx_i = 1;
   s.top->rootp->htx_soc_sim_top__DOT__stall_en = options.stall_seed.has_value();
   s.top->rootp->htx_soc_sim_top__DOT__stall_seed = options.stall_seed.value_or(0);
-  s.top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__g_sim_gpu_gate__DOT__gate_allow =
+  s.top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__g_gpu__DOT__g_sim_gpu_gate__DOT__gate_allow =
       options.gpu_clock_gate ? 1 : 0;
   for (int i = 0; i < 4; ++i) s.cycle();
   s.top->rst_ni = 1;

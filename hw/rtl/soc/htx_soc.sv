@@ -17,7 +17,8 @@ module htx_soc #(
   // Reads of the texture memory window: built in simulation, left out of the board's build (the
   // firmware only writes texture memory; TEXTURE CAPS.WINDOW_READ tells software).
   parameter bit          GpuTexRead  = 1'b1,
-  parameter bit          GpuFbSpram  = 1'b0   // framebuffer and depth in SPRAM (the board's builds)
+  parameter bit          GpuFbSpram  = 1'b0,  // framebuffer and depth in SPRAM (the board's builds)
+  parameter bit          Gpu         = 1'b1   // 0: no GPU (its addresses answer errors; htx_soc_fabric)
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -58,7 +59,7 @@ module htx_soc #(
   htx_soc_fabric #(
     .RamBytes(RamBytes), .RamInitFile(RamInitFile), .ClockHz(ClockHz), .Sim(Sim),
     .StallInject(StallInject), .FbPixels(FbPixels), .GpuMethods(GpuMethods),
-    .GpuCounters(GpuCounters), .GpuTexRead(GpuTexRead), .GpuFbSpram(GpuFbSpram)
+    .GpuCounters(GpuCounters), .GpuTexRead(GpuTexRead), .GpuFbSpram(GpuFbSpram), .Gpu(Gpu)
   ) u_fabric (
     .clk_i, .rst_ni,
     .ibus_req_valid_i(ibus_req_valid), .ibus_req_ready_o(ibus_req_ready),

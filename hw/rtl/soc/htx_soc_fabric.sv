@@ -30,7 +30,10 @@ module htx_soc_fabric #(
   parameter logic [4:0]  GpuMethods  = 5'b11111, // bit m: htx::Method m built (htx_soc)
   parameter bit          GpuCounters = 1'b1,     // the raster unit's CNT_* (CAPS.COUNTERS)
   parameter bit          GpuTexRead  = 1'b1,     // texture window reads (TEXTURE CAPS.WINDOW_READ)
-  parameter bit          GpuFbSpram  = 1'b0      // framebuffer and depth in SPRAM (the board's builds)
+  parameter bit          GpuFbSpram  = 1'b0,     // framebuffer and depth in SPRAM (the board's builds)
+  // 0: no GPU (a board the SoC does not fit whole: the iCEBreaker's bring-up build). Its register
+  // blocks and memory windows then answer every access with rsp_err, like unmapped addresses.
+  parameter bit          Gpu         = 1'b1
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -238,7 +241,6 @@ module htx_soc_fabric #(
     .irq_o(timer_irq_o)
   );
 
-  // ---- GPU: register port behind the IO demux, memory port on the data bus ----
   // The framebuffer/depth and texture windows join onto the GPU's memory link (see the header).
   logic        dg_valid, dg_ready, dg_rsp_valid, dg_rsp_err;
   logic [31:0] dg_rsp_rdata;
@@ -248,67 +250,93 @@ module htx_soc_fabric #(
   assign d_rsp_err[3:2]          = {2{dg_rsp_err}};
   assign d_rsp_rdata[64 +: 64]   = {2{dg_rsp_rdata}};
 
-  logic        g_valid, g_ready, g_we, g_rsp_valid, g_rsp_err;
-  logic [31:0] g_addr, g_wdata, g_rsp_rdata;
-  logic [3:0]  g_be;
+  // ---- GPU: register port behind the IO demux, memory port on the data bus ----
+  if (Gpu) begin : g_gpu
+    logic        g_valid, g_ready, g_we, g_rsp_valid, g_rsp_err;
+    logic [31:0] g_addr, g_wdata, g_rsp_rdata;
+    logic [3:0]  g_be;
 
-  htx_bus_stall #(.Present(StallInject), .Salt(32'h1234_5603)) u_stall_gpu_mem (
-    .clk_i, .rst_ni, .en_i(stall_en_i), .seed_i(stall_seed_i),
-    .m_req_valid_i(dg_valid), .m_req_ready_o(dg_ready), .m_req_addr_i(d_addr),
-    .m_req_we_i(d_we), .m_req_be_i(d_be), .m_req_wdata_i(d_wdata),
-    .m_rsp_valid_o(dg_rsp_valid), .m_rsp_rdata_o(dg_rsp_rdata), .m_rsp_err_o(dg_rsp_err),
-    .s_req_valid_o(g_valid), .s_req_ready_i(g_ready), .s_req_addr_o(g_addr),
-    .s_req_we_o(g_we), .s_req_be_o(g_be), .s_req_wdata_o(g_wdata),
-    .s_rsp_valid_i(g_rsp_valid), .s_rsp_rdata_i(g_rsp_rdata), .s_rsp_err_i(g_rsp_err)
-  );
+    htx_bus_stall #(.Present(StallInject), .Salt(32'h1234_5603)) u_stall_gpu_mem (
+      .clk_i, .rst_ni, .en_i(stall_en_i), .seed_i(stall_seed_i),
+      .m_req_valid_i(dg_valid), .m_req_ready_o(dg_ready), .m_req_addr_i(d_addr),
+      .m_req_we_i(d_we), .m_req_be_i(d_be), .m_req_wdata_i(d_wdata),
+      .m_rsp_valid_o(dg_rsp_valid), .m_rsp_rdata_o(dg_rsp_rdata), .m_rsp_err_o(dg_rsp_err),
+      .s_req_valid_o(g_valid), .s_req_ready_i(g_ready), .s_req_addr_o(g_addr),
+      .s_req_we_o(g_we), .s_req_be_o(g_be), .s_req_wdata_o(g_wdata),
+      .s_rsp_valid_i(g_rsp_valid), .s_rsp_rdata_i(g_rsp_rdata), .s_rsp_err_i(g_rsp_err)
+    );
 
-  // Simulation speed (Sim only): the GPU is most of the SoC model, and Verilator evaluates its
-  // logic on every clock it gets, so its clock runs only while it has work: a request on either of
-  // its ports, the raster or the texture unit busy, or fewer than GateHold cycles after any of
-  // these (responses, pipelines draining). The enable changes at the falling edge, so the gated
-  // clock has no glitch. Every GPU flip-flop would hold its value on the cycles left out, so the
-  // results are those of the free-running clock; the harness can run it free (`htx sim
-  // --no-gpu-gate`) and the system tests compare the two (docs/soc.md, "Simulation speed").
-  // Synthesis (Sim = 0) always gets clk_i.
-  logic gpu_clk;
-  if (Sim) begin : g_sim_gpu_gate
-    localparam int unsigned GateHold = 127;
-    // Written by the harness: 1 = stop the GPU's clock while it is idle, 0 = let it run free.
-    logic       gate_allow /* verilator public_flat_rw */;
-    logic       active, en_q;
-    logic [6:0] hold_q;
-    assign active = q_valid[3] || g_valid || u_gpu.u_subsys.u_raster.busy ||
-                    u_gpu.u_subsys.tex_busy;
+    // Simulation speed (Sim only): the GPU is most of the SoC model, and Verilator evaluates its
+    // logic on every clock it gets, so its clock runs only while it has work: a request on either of
+    // its ports, the raster or the texture unit busy, or fewer than GateHold cycles after any of
+    // these (responses, pipelines draining). The enable changes at the falling edge, so the gated
+    // clock has no glitch. Every GPU flip-flop would hold its value on the cycles left out, so the
+    // results are those of the free-running clock; the harness can run it free (`htx sim
+    // --no-gpu-gate`) and the system tests compare the two (docs/soc.md, "Simulation speed").
+    // Synthesis (Sim = 0) always gets clk_i.
+    logic gpu_clk;
+    if (Sim) begin : g_sim_gpu_gate
+      localparam int unsigned GateHold = 127;
+      // Written by the harness: 1 = stop the GPU's clock while it is idle, 0 = let it run free.
+      logic       gate_allow /* verilator public_flat_rw */;
+      logic       active, en_q;
+      logic [6:0] hold_q;
+      assign active = q_valid[3] || g_valid || u_gpu.u_subsys.u_raster.busy ||
+                      u_gpu.u_subsys.tex_busy;
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          hold_q <= 7'(GateHold);
+        end else if (active) begin
+          hold_q <= 7'(GateHold);
+        end else if (hold_q != 7'd0) begin
+          hold_q <= hold_q - 7'd1;
+        end
+      end
+      always_ff @(negedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          en_q <= 1'b1;
+        end else begin
+          en_q <= !gate_allow || active || (hold_q != 7'd0);
+        end
+      end
+      assign gpu_clk = clk_i & en_q;
+    end else begin : g_gpu_clk
+      assign gpu_clk = clk_i;
+    end
+
+    htx_gpu_icebreaker #(.FbPixels(FbPixels), .Methods(GpuMethods), .RasterCounters(GpuCounters),
+                         .TexWindowRead(GpuTexRead), .FbSpram(GpuFbSpram)) u_gpu (
+      .clk_i(gpu_clk), .rst_ni,
+      .reg_req_valid_i(q_valid[3]), .reg_req_ready_o(q_ready[3]), .reg_req_addr_i(q_addr[96 +: 32]),
+      .reg_req_we_i(q_we[3]), .reg_req_be_i(q_be[12 +: 4]), .reg_req_wdata_i(q_wdata[96 +: 32]),
+      .reg_rsp_valid_o(q_rsp_valid[3]), .reg_rsp_rdata_o(q_rsp_rdata[96 +: 32]),
+      .reg_rsp_err_o(q_rsp_err[3]),
+      .mem_req_valid_i(g_valid), .mem_req_ready_o(g_ready), .mem_req_addr_i(g_addr),
+      .mem_req_we_i(g_we), .mem_req_be_i(g_be), .mem_req_wdata_i(g_wdata),
+      .mem_rsp_valid_o(g_rsp_valid), .mem_rsp_rdata_o(g_rsp_rdata), .mem_rsp_err_o(g_rsp_err)
+    );
+  end else begin : g_no_gpu
+    // Every access to the GPU's register blocks or memory windows is taken at once and answered in
+    // the next clock with rsp_err and rdata 0.
+    logic reg_err_q, mem_err_q;
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
-        hold_q <= 7'(GateHold);
-      end else if (active) begin
-        hold_q <= 7'(GateHold);
-      end else if (hold_q != 7'd0) begin
-        hold_q <= hold_q - 7'd1;
-      end
-    end
-    always_ff @(negedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        en_q <= 1'b1;
+        reg_err_q <= 1'b0;
+        mem_err_q <= 1'b0;
       end else begin
-        en_q <= !gate_allow || active || (hold_q != 7'd0);
+        reg_err_q <= q_valid[3];
+        mem_err_q <= dg_valid;
       end
     end
-    assign gpu_clk = clk_i & en_q;
-  end else begin : g_gpu_clk
-    assign gpu_clk = clk_i;
+    assign q_ready[3]            = 1'b1;
+    assign q_rsp_valid[3]        = reg_err_q;
+    assign q_rsp_err[3]          = reg_err_q;
+    assign q_rsp_rdata[96 +: 32] = '0;
+    assign dg_ready              = 1'b1;
+    assign dg_rsp_valid          = mem_err_q;
+    assign dg_rsp_err            = mem_err_q;
+    assign dg_rsp_rdata          = '0;
+    logic unused_gpu_link;
+    assign unused_gpu_link = ^{q_addr[96 +: 32], q_we[3], q_be[12 +: 4], q_wdata[96 +: 32]};
   end
-
-  htx_gpu_icebreaker #(.FbPixels(FbPixels), .Methods(GpuMethods), .RasterCounters(GpuCounters),
-                       .TexWindowRead(GpuTexRead), .FbSpram(GpuFbSpram)) u_gpu (
-    .clk_i(gpu_clk), .rst_ni,
-    .reg_req_valid_i(q_valid[3]), .reg_req_ready_o(q_ready[3]), .reg_req_addr_i(q_addr[96 +: 32]),
-    .reg_req_we_i(q_we[3]), .reg_req_be_i(q_be[12 +: 4]), .reg_req_wdata_i(q_wdata[96 +: 32]),
-    .reg_rsp_valid_o(q_rsp_valid[3]), .reg_rsp_rdata_o(q_rsp_rdata[96 +: 32]),
-    .reg_rsp_err_o(q_rsp_err[3]),
-    .mem_req_valid_i(g_valid), .mem_req_ready_o(g_ready), .mem_req_addr_i(g_addr),
-    .mem_req_we_i(g_we), .mem_req_be_i(g_be), .mem_req_wdata_i(g_wdata),
-    .mem_rsp_valid_o(g_rsp_valid), .mem_rsp_rdata_o(g_rsp_rdata), .mem_rsp_err_o(g_rsp_err)
-  );
 endmodule
