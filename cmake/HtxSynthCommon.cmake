@@ -1,4 +1,5 @@
-# Helpers of the synthesis scripts that run with cmake -P (HtxSynthBreakdown, HtxSynthAttribution).
+# Helpers of the synthesis scripts that run with cmake -P (HtxSynthRun, HtxSynthBreakdown,
+# HtxSynthAttribution, and the boards' builds in hw/platform/*/board_build.cmake).
 
 # Every variable named after SCRIPT is set and not empty.
 function(htx_synth_require script)
@@ -15,5 +16,27 @@ function(htx_synth_yosys what log commands)
   execute_process(COMMAND ${YOSYS} -q -l ${log} -p "${commands}" RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "${what}: yosys failed; see ${log}")
+  endif()
+endfunction()
+
+# The number of cells of type CELL in a Yosys `stat -json` file (0 when there are none) into OUT.
+function(htx_synth_cell_count stat_json cell out)
+  file(READ ${stat_json} text)
+  string(JSON n ERROR_VARIABLE err GET "${text}" design num_cells_by_type ${cell})
+  if(err)
+    set(n 0)
+  endif()
+  set(${out} ${n} PARENT_SCOPE)
+endfunction()
+
+# A board's RAM initialisation: `htx image` (the program HTX) writes ELF as the $readmemh file HEX
+# for a RAM of RAM_BYTES; WHAT names the job in the error.
+function(htx_board_image what elf hex ram_bytes)
+  if(NOT EXISTS ${elf})
+    message(FATAL_ERROR "${what}: ${elf} does not exist (build the firmware first)")
+  endif()
+  execute_process(COMMAND ${HTX} image ${elf} -o ${hex} --ram-bytes ${ram_bytes} RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${what}: htx image failed for ${elf}")
   endif()
 endfunction()

@@ -4,11 +4,8 @@
 # the one that reached it. A design nextpnr cannot place or route gets "fmax_mhz": null,
 # "placed": false and "pnr_error" (its first error line).
 # Logs and netlists stay in WORK.
-foreach(v NAME AREA_TOP PNR_TOP FREQ AREA_SOURCES PNR_SOURCES WORK YOSYS YOSYS_DEFINES NEXTPNR OUT)
-  if(NOT DEFINED ${v} OR "${${v}}" STREQUAL "")
-    message(FATAL_ERROR "HtxSynthRun: ${v} is not set (is yosys / nextpnr-ice40 installed?)")
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/HtxSynthCommon.cmake)
+htx_synth_require(HtxSynthRun NAME AREA_TOP PNR_TOP FREQ AREA_SOURCES PNR_SOURCES WORK YOSYS YOSYS_DEFINES NEXTPNR OUT)
 file(MAKE_DIRECTORY ${WORK})
 string(REPLACE "|" " " area_files "${AREA_SOURCES}")
 string(REPLACE "|" " " pnr_files "${PNR_SOURCES}")
@@ -26,27 +23,19 @@ function(run_yosys top files stat_json netlist log)
   endif()
 endfunction()
 
-function(cell_count stat_json cell out)
-  file(READ ${stat_json} text)
-  string(JSON n ERROR_VARIABLE err GET "${text}" design num_cells_by_type ${cell})
-  if(err)
-    set(n 0)
-  endif()
-  set(${out} ${n} PARENT_SCOPE)
-endfunction()
 
 set(area_stat ${WORK}/${NAME}.area.stat.json)
 run_yosys(${AREA_TOP} "${area_files}" ${area_stat} "" ${WORK}/${NAME}.area.yosys.log)
-cell_count(${area_stat} SB_LUT4 lut4)
-cell_count(${area_stat} SB_MAC16 dsp)
+htx_synth_cell_count(${area_stat} SB_LUT4 lut4)
+htx_synth_cell_count(${area_stat} SB_MAC16 dsp)
 # Block RAMs in every clock-polarity form (Yosys maps a memory written or read on a falling edge
 # to SB_RAM40_4KNW, NR or NRNW).
 set(ebr 0)
 foreach(kind SB_RAM40_4K SB_RAM40_4KNR SB_RAM40_4KNW SB_RAM40_4KNRNW)
-  cell_count(${area_stat} ${kind} n)
+  htx_synth_cell_count(${area_stat} ${kind} n)
   math(EXPR ebr "${ebr} + ${n}")
 endforeach()
-cell_count(${area_stat} SB_SPRAM256KA spram)
+htx_synth_cell_count(${area_stat} SB_SPRAM256KA spram)
 
 set(netlist ${WORK}/${NAME}.pnr.netlist.json)
 run_yosys(${PNR_TOP} "${pnr_files}" ${WORK}/${NAME}.pnr.stat.json ${netlist} ${WORK}/${NAME}.pnr.yosys.log)

@@ -2,8 +2,8 @@
 // SYSCTRL, without the GPU, which does not fit beside it (the whole SoC is 5,920 LUT4 of the
 // UP5K's 5,280 and 48 of its 30 block RAMs). The RAM is 4 KiB of block RAM holding the firmware
 // image RamInitFile ($readmemh: `htx image --ram-bytes 4096`); the GPU's addresses answer errors.
-// The flip-flops start at zero after configuration, so a counter holds the SoC in reset for its
-// first 16 clocks; the user button (active low) resets it too.
+// htx_board_reset holds the SoC in reset for its first clocks after configuration and while the
+// user button (active low) is pressed.
 module htx_icebreaker_top #(
   parameter              RamInitFile = "",
   parameter int unsigned ClockHz     = 12_000_000   // the board's oscillator
@@ -15,23 +15,9 @@ module htx_icebreaker_top #(
   output logic LEDR_N,   // red LED, lit = 0: the SoC is in reset
   output logic LEDG_N    // green LED, lit = 0: blinks at about 0.7 Hz while the clock runs
 );
-  // Power-on reset: 16 clocks after configuration or after the button is released; the button is
-  // synchronised first (two flip-flops), the reset is released synchronously.
-  logic [1:0] btn_sync_q = 2'b00;
-  logic [3:0] por_count_q = 4'd0;
-  logic       rst_n_q = 1'b0;
-  always_ff @(posedge CLK) begin
-    btn_sync_q <= {btn_sync_q[0], BTN_N};
-    if (!btn_sync_q[1]) begin
-      por_count_q <= 4'd0;
-      rst_n_q     <= 1'b0;
-    end else if (por_count_q != 4'hF) begin
-      por_count_q <= por_count_q + 4'd1;
-      rst_n_q     <= 1'b0;
-    end else begin
-      rst_n_q     <= 1'b1;
-    end
-  end
+  // Reset: 16 clocks after configuration or after the button is released.
+  logic rst_n;
+  htx_board_reset u_reset (.clk_i(CLK), .button_ni(BTN_N), .rst_no(rst_n));
 
   logic       timer_irq_unused;
   logic       sim_exit_unused, sim_putchar_unused;
@@ -41,7 +27,7 @@ module htx_icebreaker_top #(
     .RamBytes(4096), .RamInitFile(RamInitFile), .ClockHz(ClockHz), .Sim(1'b0), .StallInject(1'b0),
     .Gpu(1'b0)
   ) u_soc (
-    .clk_i(CLK), .rst_ni(rst_n_q),
+    .clk_i(CLK), .rst_ni(rst_n),
     .uart_rx_i(RX), .uart_tx_o(TX),
     .timer_irq_o(timer_irq_unused),
     .sim_exit_o(sim_exit_unused), .sim_exit_code_o(sim_code_unused),
@@ -51,6 +37,6 @@ module htx_icebreaker_top #(
 
   logic [23:0] blink_q = '0;
   always_ff @(posedge CLK) blink_q <= blink_q + 24'd1;
-  assign LEDR_N = rst_n_q;
+  assign LEDR_N = rst_n;
   assign LEDG_N = !blink_q[23];
 endmodule

@@ -4,21 +4,12 @@
 #   htx_ulx3s.report.json cell counts against the LFE5U-85F's, and how far the flow went
 #   htx_ulx3s.config, htx_ulx3s.bit, htx_ulx3s.nextpnr.log   where nextpnr-ecp5 and ecppack exist
 # nextpnr-ecp5 runs without --timing-allow-fail: a design that misses 25 MHz gets no bitstream.
-foreach(v HTX ELF SOURCES LPF WORK YOSYS)
-  if(NOT DEFINED ${v} OR "${${v}}" STREQUAL "")
-    message(FATAL_ERROR "board-ulx3s: ${v} is not set")
-  endif()
-endforeach()
-if(NOT EXISTS ${ELF})
-  message(FATAL_ERROR "board-ulx3s: ${ELF} does not exist (build the firmware first)")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/../../../cmake/HtxSynthCommon.cmake)
+htx_synth_require(board-ulx3s HTX ELF SOURCES LPF WORK YOSYS)
 file(MAKE_DIRECTORY ${WORK})
 string(REPLACE "|" " " files "${SOURCES}")
 set(hex ${WORK}/firmware.hex)
-execute_process(COMMAND ${HTX} image ${ELF} -o ${hex} RESULT_VARIABLE rc)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "board-ulx3s: htx image failed for ${ELF}")
-endif()
+htx_board_image(board-ulx3s ${ELF} ${hex} 131072)
 
 # The LFE5U-85F's resources (Lattice's ECP5 family data sheet): LUT4s, 18x18 multipliers, 18-kbit
 # block RAMs (DP16KD).
@@ -31,26 +22,14 @@ set(stat ${WORK}/htx_ulx3s.stat.json)
 set(log ${WORK}/htx_ulx3s.yosys.log)
 # No HTX_ICE40: the modules with iCE40 cells take their behavioural code here.
 set(script "read_verilog -sv ${files}; chparam -set RamInitFile \"${hex}\" htx_ulx3s_top; synth_ecp5 -top htx_ulx3s_top -json ${netlist}; tee -q -o ${stat} stat -json")
-message(STATUS "board-ulx3s: yosys synth_ecp5 (about 5 minutes; log ${log})")
-execute_process(COMMAND ${YOSYS} -q -l ${log} -p "${script}" RESULT_VARIABLE rc)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "board-ulx3s: yosys failed; see ${log}")
-endif()
-
-file(READ ${stat} text)
-function(cells type out)
-  string(JSON n ERROR_VARIABLE err GET "${text}" design num_cells_by_type ${type})
-  if(err)
-    set(n 0)
-  endif()
-  set(${out} ${n} PARENT_SCOPE)
-endfunction()
-cells(LUT4 lut4)
-cells(TRELLIS_DPR16X4 dpram)  # 16x4 distributed RAMs, which take slices of their own
-cells(MULT18X18D mult18)
-cells(DP16KD ebr)
-cells(TRELLIS_FF ff)
-cells(CCU2C carry)
+message(STATUS "board-ulx3s: yosys synth_ecp5 (about 4 minutes; log ${log})")
+htx_synth_yosys(board-ulx3s ${log} "${script}")
+htx_synth_cell_count(${stat} LUT4 lut4)
+htx_synth_cell_count(${stat} TRELLIS_DPR16X4 dpram)  # 16x4 distributed RAMs, in slices of their own
+htx_synth_cell_count(${stat} MULT18X18D mult18)
+htx_synth_cell_count(${stat} DP16KD ebr)
+htx_synth_cell_count(${stat} TRELLIS_FF ff)
+htx_synth_cell_count(${stat} CCU2C carry)
 
 set(placed false)
 set(bitstream "")

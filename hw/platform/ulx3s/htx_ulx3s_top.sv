@@ -1,9 +1,8 @@
 // Board top for the ULX3S (ECP5-85F, docs/boards.md): the SoC exactly as the simulated SoC builds it
 // (128 KiB RAM, every perspective method, the raster counters, texture window reads), so a frame
 // on the board is the frame `htx sim` draws. The RAM starts with the firmware image RamInitFile
-// ($readmemh, one 32-bit word a line: `htx image`). The FPGA's flip-flops start at zero after
-// configuration, so a small counter holds the SoC in reset for its first clocks; the PWR button
-// (active low) resets it too.
+// ($readmemh, one 32-bit word a line: `htx image`). htx_board_reset holds the SoC in reset for its
+// first clocks after configuration and while the PWR button (active low) is pressed.
 module htx_ulx3s_top #(
   parameter int unsigned RamBytes    = 131072,
   parameter              RamInitFile = "",
@@ -18,23 +17,9 @@ module htx_ulx3s_top #(
   logic clk;
   assign clk = clk_25mhz;
 
-  // Power-on reset: 16 clocks after configuration or after the button is released; the button is
-  // synchronised first (two flip-flops), the reset is released synchronously.
-  logic [1:0] btn_sync_q = 2'b00;
-  logic [3:0] por_count_q = 4'd0;
-  logic       rst_n_q = 1'b0;
-  always_ff @(posedge clk) begin
-    btn_sync_q <= {btn_sync_q[0], btn_pwr_n};
-    if (!btn_sync_q[1]) begin
-      por_count_q <= 4'd0;
-      rst_n_q     <= 1'b0;
-    end else if (por_count_q != 4'hF) begin
-      por_count_q <= por_count_q + 4'd1;
-      rst_n_q     <= 1'b0;
-    end else begin
-      rst_n_q     <= 1'b1;
-    end
-  end
+  // Reset: 16 clocks after configuration or after the button is released.
+  logic rst_n;
+  htx_board_reset u_reset (.clk_i(clk), .button_ni(btn_pwr_n), .rst_no(rst_n));
 
   logic       timer_irq;
   logic       sim_exit_unused, sim_putchar_unused;
@@ -44,7 +29,7 @@ module htx_ulx3s_top #(
     .RamBytes(RamBytes), .RamInitFile(RamInitFile), .ClockHz(ClockHz), .Sim(1'b0),
     .StallInject(1'b0)
   ) u_soc (
-    .clk_i(clk), .rst_ni(rst_n_q),
+    .clk_i(clk), .rst_ni(rst_n),
     .uart_rx_i(ftdi_txd), .uart_tx_o(ftdi_rxd),
     .timer_irq_o(timer_irq),
     .sim_exit_o(sim_exit_unused), .sim_exit_code_o(sim_code_unused),
@@ -56,5 +41,5 @@ module htx_ulx3s_top #(
   // 1 is the reset, 2 the serial line from the host (lit while idle), 3 the timer's compare.
   logic [23:0] blink_q = '0;
   always_ff @(posedge clk) blink_q <= blink_q + 24'd1;
-  assign led = {4'b0000, timer_irq, ftdi_txd, !rst_n_q, blink_q[23]};
+  assign led = {4'b0000, timer_irq, ftdi_txd, !rst_n, blink_q[23]};
 endmodule
