@@ -16,9 +16,8 @@ _start:
     /* .data and .tdata (adjacent) from their load image, at every start: a warm reset (a board's
        reset button) must not run with the values the last run left. */
     la      a0, __data_start
-    la      a1, __data_source
+    la      a1, __data_image
     la      a2, __data_copy_end
-    beq     a0, a1, 2f
 1:  bgeu    a0, a2, 2f
     lw      t0, 0(a1)
     sw      t0, 0(a0)

@@ -145,7 +145,7 @@ struct UploadArgs : PortArgs {
   std::string texture;
   std::string format = "rgb565";
   bool no_texture = false;
-  uint32_t mesh_vertices = kConsoleMeshVertices;
+  uint32_t mesh_vertices = render::kMaxPackedMeshVertices;
 };
 
 void run_upload(const UploadArgs& a) {
@@ -192,7 +192,7 @@ void register_console(CLI::App& app) {
   up->add_option("--format", uargs->format, "the texture's texel format: rgb565 or rgba4444")->capture_default_str();
   up->add_option("--mesh-vertices", uargs->mesh_vertices,
                  "split meshes into parts of at most this many vertices (the console's vertex cache)")
-      ->check(CLI::Range(4u, kConsoleMeshVertices))
+      ->check(CLI::Range(4u, render::kMaxPackedMeshVertices))
       ->capture_default_str();
   up->add_flag("--no-texture", uargs->no_texture,
                "send the scene without its texture (the console keeps the one it has)")

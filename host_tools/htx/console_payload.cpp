@@ -33,24 +33,26 @@ std::vector<uint8_t> pack_level(const Texture& t, unsigned level) {
   return packed;
 }
 
-// The largest mip level of `t` the console takes (at most kConsoleTexels texels, sides at least 8),
-// packed; empty with a note when none is.
+// The largest mip level of `t` the console takes (at most render::kConsoleTextureTexels texels,
+// sides at least 8), packed; empty with a note when none is.
 std::vector<uint8_t> packed_texture_level(const Texture& t, std::string* note) {
+  const uint32_t max_texels = render::kConsoleTextureTexels;
   unsigned level = 0, lw = t.log2_width, lh = t.log2_height;
-  while ((1u << (lw + lh)) > kConsoleTexels && lw > 3 && lh > 3 && level + 1 < t.levels.size()) {
+  while ((1u << (lw + lh)) > max_texels && lw > 3 && lh > 3 && level + 1 < t.levels.size()) {
     ++level;
     --lw;
     --lh;
   }
   const std::string size0 = std::to_string(1u << t.log2_width) + "x" + std::to_string(1u << t.log2_height);
-  if ((1u << (lw + lh)) > kConsoleTexels) {
-    *note = "the scene's " + size0 + " texture has no mip level of at most " + std::to_string(kConsoleTexels) +
+  if ((1u << (lw + lh)) > max_texels) {
+    *note = "the scene's " + size0 + " texture has no mip level of at most " + std::to_string(max_texels) +
             " texels with sides of 8 or more; not sent";
     return {};
   }
   if (level > 0)
-    *note = "the scene's " + size0 + " texture sent as its " + std::to_string(1u << lw) + "x" + std::to_string(1u << lh) +
-            " mip level (the console takes at most " + std::to_string(kConsoleTexels) + " texels)";
+    *note = "the scene's " + size0 + " texture sent as its " + std::to_string(1u << lw) + "x" +
+            std::to_string(1u << lh) + " mip level (the console takes at most " + std::to_string(max_texels) +
+            " texels)";
   if (t.format == TexFormat::RGBA8888) *note += std::string(note->empty() ? "" : "; ") + "RGBA8888 sent as RGB565";
   return pack_level(t, level);
 }
@@ -75,7 +77,8 @@ ScenePayload scene_payload(const std::string& spec, const std::string& size, boo
   const uint32_t count = static_cast<uint32_t>(meshes.size());
   p.scene.resize(render::packed_scene_size(meshes.data(), count));
   if (render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(), count, p.scene.data(), p.scene.size()) == 0)
-    throw std::runtime_error("'" + spec + "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
+    throw std::runtime_error("'" + spec +
+                             "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
   if (!with_texture) return p;
   // The console draws every mesh with one texture: the first textured mesh's.
   std::vector<int> used;
@@ -94,7 +97,8 @@ ScenePayload scene_payload(const std::string& spec, const std::string& size, boo
 
 std::vector<uint8_t> packed_texture(const std::string& path, const std::string& format_name) {
   TexFormat format = TexFormat::RGB565;
-  if (format_name == "rgba4444") format = TexFormat::RGBA4444;
+  if (format_name == "rgba4444")
+    format = TexFormat::RGBA4444;
   else if (format_name != "rgb565")
     throw std::invalid_argument("--format must be rgb565 or rgba4444, not '" + format_name + "'");
   const Image img = load_image(path);

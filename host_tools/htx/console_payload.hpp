@@ -6,24 +6,23 @@
 #include <string>
 #include <vector>
 
-namespace htx {
+#include "htx/render/scene_pack.h"
+#include "htx/render/texture_pack.h"
 
-// The most texels of a texture the console takes (half of the board's texture memory).
-inline constexpr uint32_t kConsoleTexels = 1024;
-// The most vertices of a mesh the console takes (its vertex cache): larger meshes go in parts.
-inline constexpr uint32_t kConsoleMeshVertices = 96;
+namespace htx {
 
 // A scene's packed form (htx/render/scene_pack.h), its meshes split into parts of at most
 // mesh_vertices vertices (host::split_meshes), and, unless with_texture is false, the scene has no
 // texture or none of its levels can be sent, its texture packed (htx/render/texture_pack.h): the
-// first textured mesh's, as its largest mip level of at most kConsoleTexels texels with sides of
-// 8 or more. `note` says what was done with the meshes and the texture when it is worth saying.
+// first textured mesh's, as its largest mip level of at most render::kConsoleTextureTexels texels
+// with sides of 8 or more. `note` says what was done with the meshes and the texture when it is
+// worth saying.
 struct ScenePayload {
   std::vector<uint8_t> scene, texture;
   std::string note;
 };
 ScenePayload scene_payload(const std::string& spec, const std::string& size, bool with_texture,
-                           uint32_t mesh_vertices = kConsoleMeshVertices);
+                           uint32_t mesh_vertices = render::kMaxPackedMeshVertices);
 
 // An image as the console's texture: sides powers of two in 8..256, each pixel encoded in
 // `format_name` (rgb565 or rgba4444), the image's bottom row as texel row 0 (v = 0), as the model

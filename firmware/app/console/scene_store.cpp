@@ -20,7 +20,6 @@ int staging_index() { return g_committed == 0 ? 1 : 0; }
 
 uint8_t* staging_bytes() { return reinterpret_cast<uint8_t*>(g_bytes[staging_index()]); }
 
-
 const char* commit_staged(uint32_t size) {
   const int s = staging_index();
   if (size > kStoreBytes) return "larger than the scene store";

@@ -14,9 +14,7 @@ namespace console_app {
 
 namespace {
 
-// The largest packed texture taken: kMaxTextureTexels of them.
-constexpr uint32_t kMaxTextureBytes = htx::render::packed_texture_size(5, 5);
-static_assert(kMaxTextureBytes <= kStoreBytes, "the staging buffer holds the largest texture");
+static_assert(htx::render::kConsoleTextureBytes <= kStoreBytes, "the staging buffer holds the largest texture");
 
 constexpr uint32_t kMaxPolls = 20'000'000;
 
@@ -28,9 +26,9 @@ uint32_t g_half = 0;  // the half of texture memory the texture is in (the boot 
 TextureInfo current_texture() { return g_texture; }
 
 void receive_texture(uint32_t size, uint32_t crc32) {
-  if (!receive_packets(size, crc32, kMaxTextureBytes, "texture")) return;
+  if (!receive_packets(size, crc32, htx::render::kConsoleTextureBytes, "texture")) return;
   htx::render::UnpackedTexture t;
-  const char* why = htx::render::unpack_texture(staging_bytes(), size, kMaxTextureTexels, &t);
+  const char* why = htx::render::unpack_texture(staging_bytes(), size, htx::render::kConsoleTextureTexels, &t);
   const htx::hal::TextureCaps caps = htx::hal::texture_caps();
   const uint32_t half_blocks = (1u << caps.block_bits) / 2;
   if (!why && !((caps.formats >> t.format) & 1u)) why = "this GPU does not build its format (CAPS.FORMATS)";

@@ -8,10 +8,6 @@
 
 namespace console_app {
 
-// The most texels an uploaded texture may have: half of the board's texture memory (512 of its
-// 1,024 blocks) holds the chain of any such texture (352 blocks at most, 128 x 8), not of 2,048.
-inline constexpr uint32_t kMaxTextureTexels = 1024;
-
 // `texture SIZE CRC32`: receives a packed texture (htx/render/texture_pack.h) and makes it the
 // texture, printing `texture ok: ...` or `error: ...; the texture is unchanged`.
 void receive_texture(uint32_t size, uint32_t crc32);

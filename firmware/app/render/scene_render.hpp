@@ -6,6 +6,7 @@
 
 #include "htx/hal/raster.h"
 #include "htx/render/pipeline.h"
+#include "htx/render/scene_pack.h"
 #include "scenes.hpp"
 #include "soc_texture.hpp"
 
@@ -22,7 +23,7 @@ struct DrawSettings {
 
 inline constexpr uint32_t kGeometryRuns = 4;
 // The vertex cache's size: the most vertices a mesh may have (floor has 81).
-inline constexpr uint32_t kMaxMeshVertices = 96;
+inline constexpr uint32_t kMaxMeshVertices = htx::render::kMaxPackedMeshVertices;
 
 struct DrawResult {
   bool ok = false;

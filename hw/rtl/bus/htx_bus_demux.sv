@@ -12,6 +12,9 @@ module htx_bus_demux #(
   // Slave i claims addresses with (addr & SlaveMask[i]) == SlaveBase[i]; the lowest i wins.
   parameter logic [NumSlaves*32-1:0] SlaveBase = '0,
   parameter logic [NumSlaves*32-1:0] SlaveMask = '0,
+  // Slave i claims nothing while SlaveEnable[i] is 0 (a slave a build leaves out): its addresses go
+  // to the error responder like every unclaimed address.
+  parameter logic [NumSlaves-1:0]    SlaveEnable = '1,
   // Responses that may be outstanding at once (at most 2**CntWidth - 1).
   parameter int unsigned CntWidth = 2
 ) (
@@ -53,7 +56,7 @@ module htx_bus_demux #(
   always_comb begin
     target = ErrSel;
     for (int i = NumSlaves - 1; i >= 0; i--) begin
-      if ((m_req_addr_i & SlaveMask[i*32 +: 32]) == SlaveBase[i*32 +: 32]) begin
+      if (SlaveEnable[i] && (m_req_addr_i & SlaveMask[i*32 +: 32]) == SlaveBase[i*32 +: 32]) begin
         target = SelWidth'(i);
       end
     end

@@ -31,8 +31,8 @@ module htx_soc_fabric #(
   parameter bit          GpuCounters = 1'b1,     // the raster unit's CNT_* (CAPS.COUNTERS)
   parameter bit          GpuTexRead  = 1'b1,     // texture window reads (TEXTURE CAPS.WINDOW_READ)
   parameter bit          GpuFbSpram  = 1'b0,     // framebuffer and depth in SPRAM (the board's builds)
-  // 0: no GPU (a board the SoC does not fit whole: the iCEBreaker's bring-up build). Its register
-  // blocks and memory windows then answer every access with rsp_err, like unmapped addresses.
+  // 0: no GPU (a board the SoC does not fit whole: the iCEBreaker's bring-up build). The demuxes then
+  // claim none of its register blocks and memory windows, which answer rsp_err like unmapped addresses.
   parameter bit          Gpu         = 1'b1
 ) (
   input  logic        clk_i,
@@ -114,7 +114,8 @@ module htx_soc_fabric #(
   htx_bus_demux #(
     .NumSlaves(4),
     .SlaveBase({TexBase, FbBase, IoBase, RamBase}),
-    .SlaveMask({TexMask, FbMask, IoMask, RamMask})
+    .SlaveMask({TexMask, FbMask, IoMask, RamMask}),
+    .SlaveEnable({Gpu, Gpu, 1'b1, 1'b1})
   ) u_dbus_demux (
     .clk_i, .rst_ni,
     .m_req_valid_i(dbus_req_valid_i), .m_req_ready_o(dbus_req_ready_o),
@@ -177,7 +178,8 @@ module htx_soc_fabric #(
     .SlaveBase({htx_texture_reg_pkg::TEXTURE_BASE_ADDR, htx_raster_reg_pkg::RASTER_BASE_ADDR,
                 htx_timer_reg_pkg::TIMER_BASE_ADDR, htx_uart_reg_pkg::UART_BASE_ADDR,
                 htx_sysctrl_reg_pkg::SYSCTRL_BASE_ADDR}),
-    .SlaveMask({RegMask, RegMask, RegMask, RegMask, RegMask})
+    .SlaveMask({RegMask, RegMask, RegMask, RegMask, RegMask}),
+    .SlaveEnable({Gpu, Gpu, 1'b1, 1'b1, 1'b1})
   ) u_io_demux (
     .clk_i, .rst_ni,
     .m_req_valid_i(d_valid[1]), .m_req_ready_o(d_ready[1]), .m_req_addr_i(d_addr),
@@ -316,27 +318,16 @@ module htx_soc_fabric #(
       .mem_rsp_valid_o(g_rsp_valid), .mem_rsp_rdata_o(g_rsp_rdata), .mem_rsp_err_o(g_rsp_err)
     );
   end else begin : g_no_gpu
-    // Every access to the GPU's register blocks or memory windows is taken at once and answered in
-    // the next clock with rsp_err and rdata 0.
-    logic reg_err_q, mem_err_q;
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        reg_err_q <= 1'b0;
-        mem_err_q <= 1'b0;
-      end else begin
-        reg_err_q <= q_valid[3];
-        mem_err_q <= dg_valid;
-      end
-    end
+    // The demuxes never select the GPU's links (SlaveEnable above): they only need defined outputs.
     assign q_ready[3]            = 1'b1;
-    assign q_rsp_valid[3]        = reg_err_q;
-    assign q_rsp_err[3]          = reg_err_q;
+    assign q_rsp_valid[3]        = 1'b0;
+    assign q_rsp_err[3]          = 1'b0;
     assign q_rsp_rdata[96 +: 32] = '0;
     assign dg_ready              = 1'b1;
-    assign dg_rsp_valid          = mem_err_q;
-    assign dg_rsp_err            = mem_err_q;
+    assign dg_rsp_valid          = 1'b0;
+    assign dg_rsp_err            = 1'b0;
     assign dg_rsp_rdata          = '0;
     logic unused_gpu_link;
-    assign unused_gpu_link = ^{q_addr[96 +: 32], q_we[3], q_be[12 +: 4], q_wdata[96 +: 32]};
+    assign unused_gpu_link = ^{q_valid[3], q_addr[96 +: 32], q_we[3], q_be[12 +: 4], q_wdata[96 +: 32], dg_valid};
   end
 endmodule

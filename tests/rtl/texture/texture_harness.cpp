@@ -6,6 +6,7 @@
 #include "Vhtx_texture_full.h"
 #include "Vhtx_texture_icebreaker.h"
 #include "htx/model/texture.hpp"
+#include "htx/rtl/two_port_pins.hpp"
 #include "verilated.h"
 
 namespace htx::rtl {
@@ -22,11 +23,7 @@ uint64_t mask_bits(int64_t v, unsigned bits) {
 class TexturePort {
  public:
   virtual ~TexturePort() = default;
-  struct Bus {
-    bool valid = false, we = false;
-    uint32_t addr = 0, wdata = 0;
-    uint8_t be = 0xF;
-  };
+  using Bus = htx::rtl::PortRequest;
   Bus reg, mem;
   bool req_valid = false, out_ready = true;
   TexRequest req;
@@ -60,16 +57,7 @@ class Port final : public TexturePort {
   ~Port() override { top_->final(); }
 
   void settle() override {
-    top_->reg_req_valid_i = reg.valid;
-    top_->reg_req_addr_i = reg.addr;
-    top_->reg_req_we_i = reg.we;
-    top_->reg_req_be_i = reg.be;
-    top_->reg_req_wdata_i = reg.wdata;
-    top_->mem_req_valid_i = mem.valid;
-    top_->mem_req_addr_i = mem.addr;
-    top_->mem_req_we_i = mem.we;
-    top_->mem_req_be_i = mem.be;
-    top_->mem_req_wdata_i = mem.wdata;
+    htx::rtl::drive_requests(*top_, reg, mem);
     top_->req_valid_i = req_valid;
     top_->req_u_i = mask_bits(req.u, coord_bits);
     top_->req_v_i = mask_bits(req.v, coord_bits);
@@ -156,14 +144,14 @@ void hold_until_accepted(TexturePort& p, TexturePort::Bus TexturePort::*channel,
 
 void TextureHarness::reg_write(uint32_t offset, uint32_t value) {
   TexturePort& p = *port_;
-  p.reg = {true, true, kRegBase + offset, value, 0xF};
+  p.reg = htx::rtl::write_at(kRegBase + offset, value);
   hold_until_accepted(p, &TexturePort::reg, &TexturePort::reg_ready, 100);
   tick();
 }
 
 uint32_t TextureHarness::reg_read(uint32_t offset) {
   TexturePort& p = *port_;
-  p.reg = {true, false, kRegBase + offset, 0, 0xF};
+  p.reg = htx::rtl::read_at(kRegBase + offset);
   hold_until_accepted(p, &TexturePort::reg, &TexturePort::reg_ready, 100);
   for (int i = 0; i < 100; ++i) {
     p.settle();
@@ -179,7 +167,7 @@ uint32_t TextureHarness::reg_read(uint32_t offset) {
 
 bool TextureHarness::mem_write(uint32_t offset, uint32_t value, uint8_t be) {
   TexturePort& p = *port_;
-  p.mem = {true, true, kMemBase + offset, value, be};
+  p.mem = htx::rtl::write_at(kMemBase + offset, value, be);
   hold_until_accepted(p, &TexturePort::mem, &TexturePort::mem_ready, 1000);
   p.settle();
   const bool err = p.mem_rsp_err;
@@ -190,7 +178,7 @@ bool TextureHarness::mem_write(uint32_t offset, uint32_t value, uint8_t be) {
 
 bool TextureHarness::mem_read(uint32_t offset, uint32_t* value) {
   TexturePort& p = *port_;
-  p.mem = {true, false, kMemBase + offset, 0, 0xF};
+  p.mem = htx::rtl::read_at(kMemBase + offset);
   hold_until_accepted(p, &TexturePort::mem, &TexturePort::mem_ready, 1000);
   p.settle();
   if (!p.mem_rsp_valid) throw std::runtime_error("mem_read: no response");
@@ -249,7 +237,7 @@ std::vector<TexResult> TextureHarness::run(const std::vector<TexRequest>& reqs, 
       p.req_tag = static_cast<uint32_t>(next);
     }
     p.out_ready = stall_permille == 0 || (rng() % 1000) >= stall_permille;
-    if (reading) p.reg = {true, false, kRegBase + reads->offsets[read_next % reads->offsets.size()], 0, 0xF};
+    if (reading) p.reg = htx::rtl::read_at(kRegBase + reads->offsets[read_next % reads->offsets.size()]);
     p.settle();
     const bool in_fire = p.req_valid && p.req_ready;
     if (reading) {

@@ -12,21 +12,14 @@
 
 namespace htx::rtl {
 
-namespace {
-
-using BusIn = PortRequest;
-using BusOut = PortResponse;
-
-}  // namespace
-
 // Both configurations share every port name; this hides which one runs.
 class GpuPort {
  public:
   virtual ~GpuPort() = default;
   // Drives both request ports, settles the logic with the clock low and returns the ready flags.
-  virtual void settle(const BusIn& reg, const BusIn& mem, bool* reg_ready, bool* mem_ready) = 0;
+  virtual void settle(const PortRequest& reg, const PortRequest& mem, bool* reg_ready, bool* mem_ready) = 0;
   // Rising edge; the responses visible after it.
-  virtual void rise(BusOut* reg, BusOut* mem) = 0;
+  virtual void rise(PortResponse* reg, PortResponse* mem) = 0;
   virtual void reset() = 0;
 };
 
@@ -38,10 +31,10 @@ class VerilatedGpu final : public GpuPort {
   VerilatedGpu() : ctx_(std::make_unique<VerilatedContext>()), top_(std::make_unique<V>(ctx_.get())) {}
   ~VerilatedGpu() override { top_->final(); }
 
-  void settle(const BusIn& r, const BusIn& m, bool* reg_ready, bool* mem_ready) override {
+  void settle(const PortRequest& r, const PortRequest& m, bool* reg_ready, bool* mem_ready) override {
     settle_ports(*top_, r, m, reg_ready, mem_ready);
   }
-  void rise(BusOut* r, BusOut* m) override { rise_ports(*top_, r, m); }
+  void rise(PortResponse* r, PortResponse* m) override { rise_ports(*top_, r, m); }
   void reset() override { reset_ports(*top_); }
 
  private:
@@ -52,19 +45,19 @@ class VerilatedGpu final : public GpuPort {
 constexpr uint64_t kRequestLimit = 1u << 20;  // clocks a single request may wait before we give up
 
 // One request on one port, held until accepted, then clocked until its response.
-BusOut run_one(GpuPort& port, const BusIn& req, bool on_mem, uint64_t& cycles) {
-  BusOut r, m;
+PortResponse run_one(GpuPort& port, const PortRequest& req, bool on_mem, uint64_t& cycles) {
+  PortResponse r, m;
   bool accepted = false;
   for (uint64_t waited = 0;; ++waited) {
     if (waited > kRequestLimit) throw std::runtime_error("rtl engine: a GPU bus request got no response");
     bool rr = false, mr = false;
-    const BusIn none;
+    const PortRequest none;
     port.settle(on_mem || accepted ? none : req, on_mem && !accepted ? req : none, &rr, &mr);
     const bool take = !accepted && (on_mem ? mr : rr);
     port.rise(&r, &m);
     ++cycles;
     accepted = accepted || take;
-    const BusOut& o = on_mem ? m : r;
+    const PortResponse& o = on_mem ? m : r;
     if (accepted && o.rsp_valid) return o;
   }
 }
@@ -92,35 +85,35 @@ GpuSim::~GpuSim() = default;
 void GpuSim::idle(uint64_t n) {
   for (uint64_t i = 0; i < n; ++i) {
     bool rr = false, mr = false;
-    port_->settle(BusIn{}, BusIn{}, &rr, &mr);
-    BusOut r, m;
+    port_->settle(PortRequest{}, PortRequest{}, &rr, &mr);
+    PortResponse r, m;
     port_->rise(&r, &m);
     ++cycles_;
   }
 }
 
 uint32_t GpuSim::read_reg(uint32_t addr) {
-  const BusIn q = read_at(addr);
-  const BusOut o = run_one(*port_, q, false, cycles_);
+  const PortRequest q = read_at(addr);
+  const PortResponse o = run_one(*port_, q, false, cycles_);
   if (o.rsp_err) throw std::runtime_error("rtl engine: register read at " + std::to_string(addr) + " failed");
   return o.rdata;
 }
 
 void GpuSim::write_reg(uint32_t addr, uint32_t value) {
-  const BusIn q = write_at(addr, value);
+  const PortRequest q = write_at(addr, value);
   if (run_one(*port_, q, false, cycles_).rsp_err)
     throw std::runtime_error("rtl engine: register write at " + std::to_string(addr) + " failed");
 }
 
 bool GpuSim::mem_read(uint32_t addr, uint32_t* data) {
-  const BusIn q = read_at(addr);
-  const BusOut o = run_one(*port_, q, true, cycles_);
+  const PortRequest q = read_at(addr);
+  const PortResponse o = run_one(*port_, q, true, cycles_);
   *data = o.rdata;
   return o.rsp_err;
 }
 
 bool GpuSim::mem_write(uint32_t addr, uint32_t data, uint8_t be) {
-  const BusIn q = write_at(addr, data, be);
+  const PortRequest q = write_at(addr, data, be);
   return run_one(*port_, q, true, cycles_).rsp_err;
 }
 
@@ -128,7 +121,7 @@ uint64_t GpuSim::mem_write_burst(const std::vector<std::pair<uint32_t, uint32_t>
   size_t issued = 0, answered = 0;
   uint64_t errors = 0, waited = 0;
   while (answered < addr_data.size()) {
-    BusIn q;
+    PortRequest q;
     q.valid = issued < addr_data.size();
     q.we = true;
     if (q.valid) {
@@ -136,8 +129,8 @@ uint64_t GpuSim::mem_write_burst(const std::vector<std::pair<uint32_t, uint32_t>
       q.wdata = addr_data[issued].second;
     }
     bool rr = false, mr = false;
-    port_->settle(BusIn{}, q, &rr, &mr);
-    BusOut r, m;
+    port_->settle(PortRequest{}, q, &rr, &mr);
+    PortResponse r, m;
     port_->rise(&r, &m);
     ++cycles_;
     if (q.valid && mr) ++issued;
@@ -153,7 +146,7 @@ uint64_t GpuSim::mem_write_burst(const std::vector<std::pair<uint32_t, uint32_t>
 }
 
 void GpuSim::push_words(const std::vector<uint32_t>& words) {
-  BusIn q;
+  PortRequest q;
   q.valid = true;
   q.we = true;
   q.addr = HTX_RASTER_BASE + offsetof(HTX_RASTER_Type, FIFO);
@@ -163,8 +156,8 @@ void GpuSim::push_words(const std::vector<uint32_t>& words) {
     q.valid = i < words.size();
     if (q.valid) q.wdata = words[i];
     bool rr = false, mr = false;
-    port_->settle(q, BusIn{}, &rr, &mr);
-    BusOut r, m;
+    port_->settle(q, PortRequest{}, &rr, &mr);
+    PortResponse r, m;
     port_->rise(&r, &m);
     ++cycles_;
     if (q.valid && rr) ++i;
@@ -195,12 +188,12 @@ std::vector<uint32_t> GpuSim::read_words(uint32_t base, uint32_t n) {
   uint32_t issued = 0;
   uint64_t waited = 0;
   while (out.size() < n) {
-    BusIn q;
+    PortRequest q;
     q.valid = issued < n;
     q.addr = base + 4 * issued;
     bool rr = false, mr = false;
-    port_->settle(BusIn{}, q, &rr, &mr);
-    BusOut r, m;
+    port_->settle(PortRequest{}, q, &rr, &mr);
+    PortResponse r, m;
     port_->rise(&r, &m);
     ++cycles_;
     if (m.rsp_valid) {

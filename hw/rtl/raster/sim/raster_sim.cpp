@@ -18,17 +18,14 @@
 
 namespace htx::rtl {
 
-using BusIn = PortRequest;
-using BusOut = PortResponse;
-
 // The Verilated configurations share every port name; this hides which one runs.
 class RasterPort {
  public:
   virtual ~RasterPort() = default;
   // Drives both request ports, settles the logic with the clock low and returns the ready flags.
-  virtual void settle(const BusIn& reg, const BusIn& mem, bool* reg_ready, bool* mem_ready) = 0;
+  virtual void settle(const PortRequest& reg, const PortRequest& mem, bool* reg_ready, bool* mem_ready) = 0;
   // Rising edge; returns the responses visible after it.
-  virtual void rise(BusOut* reg, BusOut* mem) = 0;
+  virtual void rise(PortResponse* reg, PortResponse* mem) = 0;
   virtual void reset() = 0;
   std::vector<TexRequest>* record = nullptr;
 };
@@ -89,12 +86,12 @@ class VerilatedPort final : public RasterPort {
   VerilatedPort() : ctx_(std::make_unique<VerilatedContext>()), top_(std::make_unique<V>(ctx_.get())) {}
   ~VerilatedPort() override { top_->final(); }
 
-  void settle(const BusIn& r, const BusIn& m, bool* reg_ready, bool* mem_ready) override {
+  void settle(const PortRequest& r, const PortRequest& m, bool* reg_ready, bool* mem_ready) override {
     settle_ports(*top_, r, m, reg_ready, mem_ready);
     TexRequest t;
     if (record && read_request(*top_, &t)) record->push_back(t);
   }
-  void rise(BusOut* r, BusOut* m) override { rise_ports(*top_, r, m); }
+  void rise(PortResponse* r, PortResponse* m) override { rise_ports(*top_, r, m); }
   void reset() override { reset_ports(*top_); }
 
  private:
@@ -129,8 +126,8 @@ void RasterSim::record_requests(std::vector<TexRequest>* out) { port_->record = 
 
 void RasterSim::tick() {
   bool rr = false, mr = false;
-  port_->settle(BusIn{}, BusIn{}, &rr, &mr);
-  BusOut r, m;
+  port_->settle(PortRequest{}, PortRequest{}, &rr, &mr);
+  PortResponse r, m;
   port_->rise(&r, &m);
   ++cycles_;
 }
@@ -141,11 +138,11 @@ void RasterSim::idle(uint64_t n) {
 
 // One request on one port, held until accepted; its response is registered, so it is visible
 // right after the accepting edge.
-static BusOut run_one(RasterPort& port, const BusIn& req, bool on_mem, uint64_t& cycles) {
-  BusOut r, m;
+static PortResponse run_one(RasterPort& port, const PortRequest& req, bool on_mem, uint64_t& cycles) {
+  PortResponse r, m;
   for (;;) {
     bool rr = false, mr = false;
-    port.settle(on_mem ? BusIn{} : req, on_mem ? req : BusIn{}, &rr, &mr);
+    port.settle(on_mem ? PortRequest{} : req, on_mem ? req : PortRequest{}, &rr, &mr);
     const bool accepted = on_mem ? mr : rr;
     port.rise(&r, &m);
     ++cycles;
@@ -156,29 +153,29 @@ static BusOut run_one(RasterPort& port, const BusIn& req, bool on_mem, uint64_t&
 }
 
 uint32_t RasterSim::read_reg(uint32_t offset) {
-  const BusIn q = read_at(HTX_RASTER_BASE + offset);
+  const PortRequest q = read_at(HTX_RASTER_BASE + offset);
   return run_one(*port_, q, false, cycles_).rdata;
 }
 
 void RasterSim::write_reg(uint32_t offset, uint32_t value) {
-  const BusIn q = write_at(HTX_RASTER_BASE + offset, value);
+  const PortRequest q = write_at(HTX_RASTER_BASE + offset, value);
   run_one(*port_, q, false, cycles_);
 }
 
 bool RasterSim::mem_read(uint32_t addr, uint32_t* data) {
-  const BusIn q = read_at(addr);
-  const BusOut o = run_one(*port_, q, true, cycles_);
+  const PortRequest q = read_at(addr);
+  const PortResponse o = run_one(*port_, q, true, cycles_);
   *data = o.rdata;
   return o.rsp_err;
 }
 
 bool RasterSim::mem_write(uint32_t addr, uint32_t data, uint8_t be) {
-  const BusIn q = write_at(addr, data, be);
+  const PortRequest q = write_at(addr, data, be);
   return run_one(*port_, q, true, cycles_).rsp_err;
 }
 
 void RasterSim::push_words(const std::vector<uint32_t>& words, unsigned gap_every, unsigned gap_cycles) {
-  BusIn q;
+  PortRequest q;
   q.valid = true;
   q.we = true;
   q.addr = HTX_RASTER_BASE + offsetof(HTX_RASTER_Type, FIFO);
@@ -191,8 +188,8 @@ void RasterSim::push_words(const std::vector<uint32_t>& words, unsigned gap_ever
   while (i < words.size()) {
     q.wdata = words[i];
     bool rr = false, mr = false;
-    port_->settle(q, BusIn{}, &rr, &mr);
-    BusOut r, m;
+    port_->settle(q, PortRequest{}, &rr, &mr);
+    PortResponse r, m;
     port_->rise(&r, &m);
     ++cycles_;
     if (!rr) {
@@ -228,12 +225,12 @@ std::vector<uint32_t> read_words(RasterPort& port, uint32_t base, uint32_t n, ui
   out.reserve(n);
   uint32_t issued = 0;
   while (out.size() < n) {
-    BusIn q;
+    PortRequest q;
     q.valid = issued < n;
     q.addr = base + 4 * issued;
     bool rr = false, mr = false;
-    port.settle(BusIn{}, q, &rr, &mr);
-    BusOut r, m;
+    port.settle(PortRequest{}, q, &rr, &mr);
+    PortResponse r, m;
     port.rise(&r, &m);
     ++cycles;
     if (m.rsp_valid) {

@@ -21,6 +21,9 @@
 namespace htx::render {
 
 inline constexpr uint16_t kScenePackVersion = 1;
+// The most vertices of a mesh the firmware takes: its applications' vertex caches hold a mesh whole
+// (render_app::kMaxMeshVertices); the console refuses larger meshes and htx upload splits them.
+inline constexpr uint32_t kMaxPackedMeshVertices = 96;
 inline constexpr size_t kScenePackHeader = 80;
 inline constexpr size_t kScenePackMeshHeader = 88;
 

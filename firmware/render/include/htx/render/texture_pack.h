@@ -15,10 +15,17 @@ namespace htx::render {
 inline constexpr uint16_t kTexturePackVersion = 1;
 inline constexpr size_t kTexturePackHeader = 12;
 
+// The most texels of a texture the console takes: half of the board's texture memory (512 of its
+// 1,024 blocks) holds the chain of any such texture (352 blocks at most, 128 x 8), not of 2,048.
+// htx upload sends a scene's texture as its largest mip level within it.
+inline constexpr uint32_t kConsoleTextureTexels = 1024;
+
 // The bytes of a packed 2^log2_w x 2^log2_h texture.
 inline constexpr size_t packed_texture_size(uint32_t log2_w, uint32_t log2_h) {
   return kTexturePackHeader + (size_t{2} << (log2_w + log2_h));
 }
+// The bytes of the largest packed texture the console takes.
+inline constexpr size_t kConsoleTextureBytes = kTexturePackHeader + 2 * size_t{kConsoleTextureTexels};
 
 // Writes the packed texture into out; returns its size, or 0 when `capacity` is too small or a
 // field is out of range (as unpack_texture checks it, without its texel limit).

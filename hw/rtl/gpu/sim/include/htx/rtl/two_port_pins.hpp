@@ -1,7 +1,8 @@
 // The two slave ports every Verilated GPU, raster and texture top has under the same names
 // (reg_req_* and mem_req_* in, reg_rsp_* and mem_rsp_* out, clk_i, rst_ni): one request each,
 // settled with the clock low; a rising edge and the responses after it; reset. Used by the GPU's
-// and the raster unit's simulators (gpu_sim.cpp, raster_sim.cpp) for any of their tops.
+// and the raster unit's simulators (gpu_sim.cpp, raster_sim.cpp) for any of their tops, and by the
+// texture unit's test harness for its request pins.
 #pragma once
 
 #include <cstdint>
@@ -32,9 +33,9 @@ struct PortResponse {
   uint32_t rdata = 0;
 };
 
-// Drives both request ports, settles the logic with the clock low and returns the ready flags.
+// Sets both request ports' pins (no evaluation).
 template <class V>
-void settle_ports(V& top, const PortRequest& r, const PortRequest& m, bool* reg_ready, bool* mem_ready) {
+void drive_requests(V& top, const PortRequest& r, const PortRequest& m) {
   top.reg_req_valid_i = r.valid;
   top.reg_req_addr_i = r.addr;
   top.reg_req_we_i = r.we;
@@ -45,6 +46,12 @@ void settle_ports(V& top, const PortRequest& r, const PortRequest& m, bool* reg_
   top.mem_req_we_i = m.we;
   top.mem_req_be_i = m.be;
   top.mem_req_wdata_i = m.wdata;
+}
+
+// Drives both request ports, settles the logic with the clock low and returns the ready flags.
+template <class V>
+void settle_ports(V& top, const PortRequest& r, const PortRequest& m, bool* reg_ready, bool* mem_ready) {
+  drive_requests(top, r, m);
   top.clk_i = 0;
   top.eval();
   *reg_ready = top.reg_req_ready_o;
