@@ -133,14 +133,14 @@ function(htx_verilate lib)
   target_compile_options(${lib} PRIVATE -O2 -w)
 endfunction()
 
-# htx_board_top(<board> <top> <sv file>): a board's top over the whole SoC (hw/platform/<board>,
+# htx_board_top(<board> <top> <sv file>...): a board's top over the whole SoC (hw/platform/<board>,
 # docs/boards.md). Registers it with htx_rtl_top (lint; the SoC's sources and the boards' reset),
 # Verilates it as htx_<board>_model when HTX_BUILD_RTL is on (its RAM image is board_ram.hex in the
 # working directory, read when the model starts, so each test chooses its firmware by writing it),
 # and sets <top>_SOURCES_ARG, its sources joined with |, for the board's build script (cmake -P).
-function(htx_board_top board top file)
+function(htx_board_top board top)
   htx_rtl_top(NAME ${top} REGS ${HTX_SOC_REGS}
-    SOURCES ${HTX_SOC_SOURCES} ${CMAKE_SOURCE_DIR}/hw/rtl/lib/htx_board_reset.sv ${file} YOSYS_ELABORATE)
+    SOURCES ${HTX_SOC_SOURCES} ${CMAKE_SOURCE_DIR}/hw/rtl/lib/htx_board_reset.sv ${ARGN} YOSYS_ELABORATE)
   if(HTX_BUILD_RTL)
     htx_verilate(htx_${board}_model TOP ${top} PREFIX V${top} ARGS "-GRamInitFile=\"board_ram.hex\"")
   endif()

@@ -5,12 +5,16 @@
 // firmware's UART runs at the divisor it computes from SYSCTRL.CLOCK_HZ.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "Vhtx_ulx3s_top.h"
 #include "Vhtx_ulx3s_top___024root.h"
 #include "board_pins.hpp"
+#include "htx/sim/frame_crc.hpp"
 #include "subprocess.hpp"
+#include "tmds_reference.hpp"
 
 namespace {
 
@@ -34,6 +38,35 @@ class Board : public htx::test::BoardPins<Vhtx_ulx3s_top, Ulx3sPins> {
 };
 
 constexpr uint8_t kLedReset = 1u << 1;
+
+// One frame off the GPDI connector, read as a DVI monitor reads it: the four channels' symbols of
+// each pixel clock (the board top's `dvi_symbols`, in front of the DDR serialisers, which only the
+// board's build has), the frame found by the vertical sync on the blue channel's control symbols,
+// then 640 x 480 data symbols. Every symbol must decode, the channels must agree on what is data,
+// and the clock channel must send five ones and five zeros each pixel.
+std::vector<uint32_t> capture_screen(Board& board, std::string* problem) {
+  using htx::video_test::tmds_decode;
+  constexpr uint64_t kLimit = 3 * 800 * 525;
+  std::vector<uint32_t> px;
+  bool in_vsync = false, frame = false;
+  for (uint64_t i = 0; i < kLimit && px.size() < 640u * 480u; ++i) {
+    board.clock();
+    const uint64_t s = board.pins().rootp->htx_ulx3s_top__DOT__dvi_symbols;
+    const auto blue = tmds_decode(static_cast<uint16_t>(s & 0x3FF));
+    const auto green = tmds_decode(static_cast<uint16_t>((s >> 10) & 0x3FF));
+    const auto red = tmds_decode(static_cast<uint16_t>((s >> 20) & 0x3FF));
+    if (((s >> 30) & 0x3FF) != 0b0000011111) *problem = "the clock channel sent something else";
+    if (blue.de != green.de || blue.de != red.de) *problem = "the channels disagree on the data period";
+    if (!blue.de) {
+      const bool vsync_low = (blue.ctrl & 2) == 0;  // {C1, C0} = {VSYNC, HSYNC} levels
+      if (vsync_low) in_vsync = true;
+      if (in_vsync && !vsync_low) frame = true;
+    } else if (frame) {
+      px.push_back((uint32_t{red.data} << 16) | (uint32_t{green.data} << 8) | blue.data);
+    }
+  }
+  return px;
+}
 
 TEST(BoardUlx3s, EchoFirmwareGreetsAtTheBoardsClockAndEchoes) {
   Board board(HTX_FIRMWARE_DIR "/echo.elf");
@@ -97,6 +130,25 @@ TEST(BoardUlx3s, ConsoleDrawsTheFrameOfTheSimulatedSoc) {
   EXPECT_NE(board.received().find(" crc32 " + sim_crc + "\r\n"), std::string::npos)
       << "the simulated SoC's cube is " << sim_crc << "; the board said: " << board.received();
   EXPECT_EQ(board.framing_errors(), 0u);
+
+  // The screen (the console turns the video on at boot) shows the same frame, each pixel 4 x 4.
+  std::string problem;
+  const std::vector<uint32_t> screen = capture_screen(board, &problem);
+  EXPECT_EQ(problem, "");
+  ASSERT_EQ(screen.size(), 640u * 480u);
+  std::vector<uint16_t> frame;
+  for (uint32_t y = 0; y < 120; ++y) {
+    for (uint32_t x = 0; x < 160; ++x) {
+      const uint32_t p = screen[(4 * y) * 640 + 4 * x];
+      for (uint32_t k = 0; k < 16; ++k) {
+        ASSERT_EQ(screen[(4 * y + k / 4) * 640 + 4 * x + k % 4], p) << "block " << x << "," << y;
+      }
+      frame.push_back(static_cast<uint16_t>(((p >> 19) << 11) | (((p >> 10) & 63) << 5) | ((p >> 3) & 31)));
+    }
+  }
+  char crc[9];
+  std::snprintf(crc, sizeof crc, "%08x", htx::sim::frame_crc32(frame));
+  EXPECT_EQ(std::string(crc), sim_crc) << "the screen's frame against the simulated SoC's";
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "scene_store.hpp"
 #include "scene_upload.hpp"
 #include "texture_store.hpp"
+#include "htx/hal/video.h"
 #include "htx_regs.h"
 #include "scene_render.hpp"
 #include "scenes.hpp"
@@ -68,6 +69,7 @@ void cmd_help() {
         "  upload SIZE CRC32     receive a packed scene as packets (for `htx upload`); SCENE `upload`\r\n"
         "  texture SIZE CRC32    receive a packed texture as packets (for `htx upload --texture`)\r\n"
         "  stats                 the raster unit's counters after the last render\r\n"
+        "  video on|off          show the framebuffer on the board's screen (640x480, 60 Hz), or black\r\n"
         "  grab                  send the frame as binary packets (for `htx grab`)\r\n"
         "  quit                  leave the console (the simulation ends)\r\n",
         stdout);
@@ -83,6 +85,20 @@ void cmd_info() {
   const TextureInfo t = current_texture();
   printf("texture %ux%u %s (%s)\r\n", 1u << t.log2_width, 1u << t.log2_height, texture_format_name(t.format),
          t.uploaded ? "uploaded" : "checkerboard");
+  const htx::hal::VideoMode m = htx::hal::video_mode();
+  printf("video 640x480 60 Hz showing %lux%lu x%lu: %s, frame %lu%s\r\n", static_cast<unsigned long>(m.src_width),
+         static_cast<unsigned long>(m.src_height), static_cast<unsigned long>(m.scale),
+         htx::hal::video_enabled() ? "on" : "off", static_cast<unsigned long>(htx::hal::video_frames()),
+         htx::hal::video_underrun() ? " (a line came late since video on)" : "");
+}
+
+void cmd_video(char* rest) {
+  const char* what = next_word(&rest);
+  if (!what || next_word(&rest) || (strcmp(what, "on") != 0 && strcmp(what, "off") != 0))
+    return error("usage: video on|off");
+  htx::hal::video_enable(strcmp(what, "on") == 0);
+  htx::hal::video_clear_underrun();
+  printf("video %s\r\n", what);
 }
 
 void cmd_scenes() {
@@ -210,6 +226,8 @@ CommandResult run_command(char* line) {
     cmd_set(rest);
   } else if (strcmp(cmd, "render") == 0) {
     cmd_render(rest);
+  } else if (strcmp(cmd, "video") == 0) {
+    cmd_video(rest);
   } else if (strcmp(cmd, "upload") == 0) {
     cmd_receive(rest, "usage: upload SIZE CRC32 (decimal bytes, hex checksum; `htx upload` sends them)",
                 receive_scene);

@@ -3,6 +3,7 @@
 #include <stdio.h>
 
 #include "commands.hpp"
+#include "htx/hal/video.h"
 #include "line_reader.hpp"
 #include "scene_store.hpp"
 #include "soc_texture.hpp"
@@ -20,6 +21,7 @@ int main() {
     printf("console: texture upload failed with status %d\r\n", up);
     return 1;
   }
+  htx::hal::video_enable(true);  // a board's screen shows the framebuffer from the start
   fputs("hypertex console. Type help.\r\n", stdout);
   char line[console_app::kMaxLine + 1];
   for (;;) {

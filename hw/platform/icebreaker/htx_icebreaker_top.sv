@@ -22,6 +22,8 @@ module htx_icebreaker_top #(
   logic       timer_irq_unused;
   logic       sim_exit_unused, sim_putchar_unused;
   logic [7:0] sim_code_unused, sim_char_unused;
+  logic        video_de_unused, video_hs_unused, video_vs_unused;  // (no GPU, so no picture)
+  logic [23:0] video_rgb_unused;
 
   htx_soc #(
     .RamBytes(4096), .RamInitFile(RamInitFile), .ClockHz(ClockHz), .Sim(1'b0), .StallInject(1'b0),
@@ -32,6 +34,8 @@ module htx_icebreaker_top #(
     .timer_irq_o(timer_irq_unused),
     .sim_exit_o(sim_exit_unused), .sim_exit_code_o(sim_code_unused),
     .sim_putchar_o(sim_putchar_unused), .sim_char_o(sim_char_unused),
+    .video_de_o(video_de_unused), .video_hsync_no(video_hs_unused),
+    .video_vsync_no(video_vs_unused), .video_rgb_o(video_rgb_unused),
     .stall_en_i(1'b0), .stall_seed_i(32'b0)
   );
 

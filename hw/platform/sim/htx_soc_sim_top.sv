@@ -16,6 +16,11 @@ module htx_soc_sim_top #(
   output logic        sim_putchar_o,
   output logic [7:0]  sim_char_o,
 
+  output logic        video_de_o,      // the scan-out (htx_video), for a harness that watches it
+  output logic        video_hsync_no,
+  output logic        video_vsync_no,
+  output logic [23:0] video_rgb_o,
+
   output logic [63:0] instret_o
 );
   logic timer_irq_unused;
@@ -42,6 +47,7 @@ module htx_soc_sim_top #(
     .uart_rx_i, .uart_tx_o,
     .timer_irq_o(timer_irq_unused),
     .sim_exit_o, .sim_exit_code_o, .sim_putchar_o, .sim_char_o,
+    .video_de_o, .video_hsync_no, .video_vsync_no, .video_rgb_o,
     .stall_en_i(stall_en_q), .stall_seed_i(stall_seed_q)
   );
 

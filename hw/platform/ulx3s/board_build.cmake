@@ -20,8 +20,9 @@ set(device_ebr 208)
 set(netlist ${WORK}/htx_ulx3s.json)
 set(stat ${WORK}/htx_ulx3s.stat.json)
 set(log ${WORK}/htx_ulx3s.yosys.log)
-# No HTX_ICE40: the modules with iCE40 cells take their behavioural code here.
-set(script "read_verilog -sv ${files}; chparam -set RamInitFile \"${hex}\" htx_ulx3s_top; synth_ecp5 -top htx_ulx3s_top -json ${netlist}; tee -q -o ${stat} stat -json")
+# No HTX_ICE40: the modules with iCE40 cells take their behavioural code here; HTX_ECP5 selects
+# the board's PLL and DDR outputs (htx_ulx3s_clocks, htx_ulx3s_dvi).
+set(script "read_verilog -sv -DHTX_ECP5 ${files}; chparam -set RamInitFile \"${hex}\" htx_ulx3s_top; synth_ecp5 -top htx_ulx3s_top -json ${netlist}; tee -q -o ${stat} stat -json")
 message(STATUS "board-ulx3s: yosys synth_ecp5 (about 4 minutes; log ${log})")
 htx_synth_yosys(board-ulx3s ${log} "${script}")
 htx_synth_cell_count(${stat} LUT4 lut4)

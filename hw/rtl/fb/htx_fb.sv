@@ -6,6 +6,8 @@
 // SinglePort = 1 (`icebreaker`, whose fragment stage never reads and writes depth in one clock): a
 // bus access waits while the raster uses its memory at all, so each memory sees one access a clock
 // and may be single-ported; Spram = 1 builds them from the UP5K's SPRAM (htx_fb_ram; ZBits = 16).
+// A third user, the video scan-out (htx_video), reads colour words through vr_*: it waits only for
+// the raster's colour writes (SinglePort) and goes before the bus, whose colour reads then wait.
 module htx_fb #(
   parameter int unsigned ZBits      = 24,
   parameter int unsigned AddrW      = 24,
@@ -24,6 +26,11 @@ module htx_fb #(
   input  logic [AddrW-1:0]  w_addr_i,
   input  logic [15:0]       wc_data_i,
   input  logic [ZBits-1:0]  wz_data_i,
+
+  input  logic              vr_req_i,     // video: read colour word vr_addr_i (two pixels)
+  input  logic [AddrW-1:0]  vr_addr_i,
+  output logic              vr_gnt_o,     // read in this clock; the word is on vr_data_o next clock
+  output logic [31:0]       vr_data_o,
 
   input  logic              req_valid_i,
   output logic              req_ready_o,
@@ -49,10 +56,14 @@ module htx_fb #(
                              : (is_depth && htx_raster_pkg::below_const(32'(bus_word), FbPixels));
   // The raster's ports come first: a bus read of depth needs the depth read port, a bus write the
   // write port of its memory (SinglePort: any access needs the memory's one port).
+  // The video port's read needs the colour read port (SinglePort: the colour memory).
   if (SinglePort) begin : g_conflict_1p
-    assign conflict = in_range && (is_color ? wc_en_i : (zr_en_i || wz_en_i));
+    assign vr_gnt_o = vr_req_i && !wc_en_i;
+    assign conflict = in_range && (is_color ? (wc_en_i || vr_req_i) : (zr_en_i || wz_en_i));
   end else begin : g_conflict_2p
-    assign conflict = in_range && (req_we_i ? (is_color ? wc_en_i : wz_en_i) : (is_depth && zr_en_i));
+    assign vr_gnt_o = vr_req_i;
+    assign conflict = in_range && (req_we_i ? (is_color ? wc_en_i : wz_en_i)
+                                            : (is_depth ? zr_en_i : vr_req_i));
   end
   assign req_ready_o = !conflict;
   assign accept = req_valid_i && req_ready_o;
@@ -74,17 +85,17 @@ module htx_fb #(
       c_wdata = {wc_data_i, wc_data_i};
     end else begin
       c_we    = bus_wr_c ? {&req_be_i[3:2], &req_be_i[1:0]} : 2'b00;
-      c_waddr = CAW'(bus_word);
+      c_waddr = (SinglePort && vr_gnt_o) ? CAW'(vr_addr_i) : CAW'(bus_word);
       c_wdata = req_wdata_i;
     end
   end
-  // SinglePort: one address for both ports (the raster's write, else the bus's), so the memory
-  // needs no read/write address multiplexer of its own.
+  // SinglePort: one address for both ports (the raster's write, else the video's read, else the
+  // bus's), so the memory needs no read/write address multiplexer of its own.
   logic [CAW-1:0] c_raddr;
-  assign c_raddr = SinglePort ? c_waddr : CAW'(bus_word);
+  assign c_raddr = SinglePort ? c_waddr : (vr_gnt_o ? CAW'(vr_addr_i) : CAW'(bus_word));
   htx_fb_ram #(.LaneW(16), .Lanes(2), .Words(CWords), .Spram(Spram)) u_color (
     .clk_i,
-    .re_i   (bus_rd_c),
+    .re_i   (bus_rd_c || vr_gnt_o),
     .raddr_i(c_raddr),
     .rdata_o(c_rdata),
     .we_i   (c_we),
@@ -123,7 +134,7 @@ module htx_fb #(
   if (SinglePort) begin : g_check_1p
     always_ff @(posedge clk_i) begin
       if (z_re && z_we) $error("htx_fb: depth read and write in one clock on a single port");
-      if (bus_rd_c && (|c_we)) $error("htx_fb: colour read and write in one clock on a single port");
+      if ((bus_rd_c || vr_gnt_o) && (|c_we)) $error("htx_fb: colour read and write in one clock on a single port");
     end
   end
 `endif
@@ -146,7 +157,8 @@ module htx_fb #(
   assign rsp_valid_o = rsp_valid_q;
   assign rsp_err_o   = rsp_err_q;
   assign rsp_rdata_o = rsp_c_q ? c_rdata : (rsp_z_q ? 32'(z_rdata) : 32'd0);
+  assign vr_data_o   = c_rdata;
 
   logic unused;
-  assign unused = ^{zr_addr_i, w_addr_i, req_addr_i[1:0], req_wdata_i};
+  assign unused = ^{zr_addr_i, w_addr_i, req_addr_i[1:0], req_wdata_i, vr_addr_i};
 endmodule

@@ -25,7 +25,11 @@ module htx_gpu_full #(
   input  logic [31:0] mem_req_wdata_i,
   output logic        mem_rsp_valid_o,
   output logic [31:0] mem_rsp_rdata_o,
-  output logic        mem_rsp_err_o
+  output logic        mem_rsp_err_o,
+  input  logic        fbv_req_i,      // the video scan-out's colour reads (htx_gpu_subsys)
+  input  logic [23:0] fbv_addr_i,
+  output logic        fbv_gnt_o,
+  output logic [31:0] fbv_data_o
 );
   htx_gpu_subsys #(
     .XyIntBits(16), .ZBits(24), .GF(24), .RecipW(32), .RecipK(10), .RecipG(2), .SetupSteps(2),

@@ -69,7 +69,13 @@ module htx_gpu_subsys #(
   input  logic [31:0] mem_req_wdata_i,
   output logic        mem_rsp_valid_o,
   output logic [31:0] mem_rsp_rdata_o,
-  output logic        mem_rsp_err_o
+  output logic        mem_rsp_err_o,
+
+  // The video scan-out's colour reads (htx_fb's vr_* port): word index, data a clock after gnt.
+  input  logic        fbv_req_i,
+  input  logic [23:0] fbv_addr_i,
+  output logic        fbv_gnt_o,
+  output logic [31:0] fbv_data_o
 );
   // Pixel addresses as wide as the memory needs, with one value beyond it: the traversal makes
   // an address that does not fit all ones, which the fragment stage does not write.
@@ -150,6 +156,7 @@ module htx_gpu_subsys #(
     .req_valid_i(rs_valid[0]), .req_ready_o(rs_ready[0]), .req_addr_i(rs_addr),
     .req_we_i(rs_we), .req_be_i(rs_be), .req_wdata_i(rs_wdata),
     .rsp_valid_o(rs_rsp_valid[0]), .rsp_rdata_o(rs_rsp_rdata[31:0]), .rsp_err_o(rs_rsp_err[0]),
+    .clear_hold_i(fbv_req_i),
     .zr_en_o(zr_en), .zr_addr_o(zr_addr), .zr_data_i(zr_data),
     .wc_en_o(wc_en), .wz_en_o(wz_en), .w_addr_o(w_addr), .wc_data_o(wc_data), .wz_data_o(wz_data),
     .tex_req_valid_o(tq_valid), .tex_req_ready_i(tq_ready),
@@ -210,6 +217,7 @@ module htx_gpu_subsys #(
     .clk_i, .rst_ni,
     .zr_en_i(zr_en), .zr_addr_i(zr_addr), .zr_data_o(zr_data),
     .wc_en_i(wc_en), .wz_en_i(wz_en), .w_addr_i(w_addr), .wc_data_i(wc_data), .wz_data_i(wz_data),
+    .vr_req_i(fbv_req_i), .vr_addr_i(AddrW'(fbv_addr_i)), .vr_gnt_o(fbv_gnt_o), .vr_data_o(fbv_data_o),
     .req_valid_i(ms_valid[0]), .req_ready_o(ms_ready[0]), .req_addr_i(ms_addr),
     .req_we_i(ms_we), .req_be_i(ms_be), .req_wdata_i(ms_wdata),
     .rsp_valid_o(ms_rsp_valid[0]), .rsp_rdata_o(ms_rsp_rdata[31:0]), .rsp_err_o(ms_rsp_err[0])
@@ -218,5 +226,5 @@ module htx_gpu_subsys #(
   // The raster's STATUS.BUSY covers fragments inside the texture unit (they are in flight on its
   // port); the texture unit's own busy and level/LOD outputs are for its registers and tests.
   logic unused;
-  assign unused = ^{to_level, to_lod, tex_busy};
+  assign unused = ^{to_level, to_lod, tex_busy, fbv_addr_i};
 endmodule

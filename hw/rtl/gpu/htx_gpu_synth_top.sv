@@ -25,6 +25,10 @@ module htx_gpu_synth_top #(
 
   logic        reg_ready, reg_rsp_valid, reg_rsp_err, mem_ready, mem_rsp_valid, mem_rsp_err;
   logic [31:0] reg_rdata, mem_rdata;
+  logic        fbv_gnt_unused;     // (no video scan-out here)
+  logic [31:0] fbv_data_unused;
+  logic        unused_fbv;
+  assign unused_fbv = ^{fbv_gnt_unused, fbv_data_unused};
   if (Full) begin : g_full
     htx_gpu_full #(.FbPixels(4)) u_gpu (
       .clk_i, .rst_ni,
@@ -33,7 +37,9 @@ module htx_gpu_synth_top #(
       .reg_rsp_valid_o(reg_rsp_valid), .reg_rsp_rdata_o(reg_rdata), .reg_rsp_err_o(reg_rsp_err),
       .mem_req_valid_i(mem_valid), .mem_req_ready_o(mem_ready), .mem_req_addr_i(mem_addr),
       .mem_req_we_i(mem_we), .mem_req_be_i(mem_be), .mem_req_wdata_i(mem_wdata),
-      .mem_rsp_valid_o(mem_rsp_valid), .mem_rsp_rdata_o(mem_rdata), .mem_rsp_err_o(mem_rsp_err));
+      .mem_rsp_valid_o(mem_rsp_valid), .mem_rsp_rdata_o(mem_rdata), .mem_rsp_err_o(mem_rsp_err),
+      .fbv_req_i(1'b0), .fbv_addr_i(24'd0), .fbv_gnt_o(fbv_gnt_unused),
+      .fbv_data_o(fbv_data_unused));
   end else begin : g_icebreaker
     // One perspective method besides AFFINE on the board: RECIP_LUT (table reciprocal, no Newton
     // step); no raster event counters and a texture memory written only, as the board's SoC
@@ -46,7 +52,9 @@ module htx_gpu_synth_top #(
       .reg_rsp_valid_o(reg_rsp_valid), .reg_rsp_rdata_o(reg_rdata), .reg_rsp_err_o(reg_rsp_err),
       .mem_req_valid_i(mem_valid), .mem_req_ready_o(mem_ready), .mem_req_addr_i(mem_addr),
       .mem_req_we_i(mem_we), .mem_req_be_i(mem_be), .mem_req_wdata_i(mem_wdata),
-      .mem_rsp_valid_o(mem_rsp_valid), .mem_rsp_rdata_o(mem_rdata), .mem_rsp_err_o(mem_rsp_err));
+      .mem_rsp_valid_o(mem_rsp_valid), .mem_rsp_rdata_o(mem_rdata), .mem_rsp_err_o(mem_rsp_err),
+      .fbv_req_i(1'b0), .fbv_addr_i(24'd0), .fbv_gnt_o(fbv_gnt_unused),
+      .fbv_data_o(fbv_data_unused));
   end
 
   always_ff @(posedge clk_i) begin

@@ -63,6 +63,7 @@ module htx_raster #(
   output logic              rsp_err_o,
 
   // Memory ports to htx_fb.
+  input  logic              clear_hold_i,   // the fast clear waits (the video scan-out reads)
   output logic              zr_en_o,
   output logic [AddrW-1:0]  zr_addr_o,
   input  logic [ZBits-1:0]  zr_data_i,
@@ -956,6 +957,7 @@ module htx_raster #(
     .clear_z_i     (clear_depth_q),
     .height_i      (height_q),
     .stride_i      (stride_q),
+    .clear_hold_i,
     .clearing_o    (clearing),
     .zr_en_o, .zr_addr_o, .zr_data_i,
     .wc_en_o, .wz_en_o, .w_addr_o, .wc_data_o, .wz_data_o,

@@ -8,7 +8,9 @@
 // the stage takes no fragment in the clock after one it reads for, so every read comes after the
 // last write (a stall of one clock, instead of an address comparison and a depth multiplexer).
 // The clear fills pixels 0 .. height * stride - 1 one per clock and only starts while no fragment
-// is in flight (the top holds setup meanwhile).
+// is in flight (the top holds setup meanwhile). It writes nothing and waits in a clock with
+// clear_hold_i (the video scan-out reading the colour memory, which a clear would otherwise keep
+// busy for whole picture lines; docs/video.md).
 // InRgb565 = 1 (`icebreaker` with texture mapping): in_rgb_i[15:0] is the colour already quantised
 // to RGB565 (the serial combine stage quantises a channel a clock on one quantiser,
 // htx_tex_combine_serial); otherwise this stage quantises the three channels itself.
@@ -37,6 +39,7 @@ module htx_raster_fragment #(
   input  logic [23:0]       clear_z_i,
   input  logic [12:0]       height_i,
   input  logic [12:0]       stride_i,
+  input  logic              clear_hold_i,
   output logic              clearing_o,
 
   // Memory ports (hw/rtl/fb/htx_fb.sv).
@@ -147,7 +150,7 @@ module htx_raster_fragment #(
         last_wz_addr_q <= f2_addr_q;
         last_wz_q      <= f2_z_q;
       end
-      if (clr_q) begin
+      if (clr_q && !clear_hold_i) begin
         clr_addr_q <= AddrW'(clr_next_q);
         clr_next_q <= clr_next_q + 1'b1;
         if (clr_row_end) begin
@@ -155,7 +158,7 @@ module htx_raster_fragment #(
           clr_rows_q <= clr_rows_q - 13'd1;
         end
         if (clr_last) clr_q <= 1'b0;
-      end else if (clear_start_i && (height_i != 13'd0) && (stride_i != 13'd0)) begin
+      end else if (!clr_q && clear_start_i && (height_i != 13'd0) && (stride_i != 13'd0)) begin
         clr_q         <= 1'b1;
         clr_color_q   <= clear_color_i;
         clr_depth_q   <= clear_depth_i;
@@ -170,8 +173,8 @@ module htx_raster_fragment #(
   logic [ZBits-1:0] clear_z;
   assign clear_z = ((clear_z_i >> ZBits) != '0) ? ZMax : ZBits'(clear_z_i);
 
-  assign wc_en_o   = clr_q ? clr_color_q : (f2_valid_q && pass);
-  assign wz_en_o   = clr_q ? clr_depth_q : (f2_valid_q && pass && f2_zwrite_q);
+  assign wc_en_o   = clr_q ? (clr_color_q && !clear_hold_i) : (f2_valid_q && pass);
+  assign wz_en_o   = clr_q ? (clr_depth_q && !clear_hold_i) : (f2_valid_q && pass && f2_zwrite_q);
   assign w_addr_o  = clr_q ? clr_addr_q : f2_addr_q;
   assign wc_data_o = clr_q ? clear_rgb565_i : f2_rgb565_q;
   assign wz_data_o = clr_q ? clear_z : f2_z_q;

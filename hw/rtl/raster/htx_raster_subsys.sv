@@ -99,6 +99,7 @@ module htx_raster_subsys #(
     .req_valid_i(reg_req_valid_i), .req_ready_o(reg_req_ready_o), .req_addr_i(reg_req_addr_i),
     .req_we_i(reg_req_we_i), .req_be_i(reg_req_be_i), .req_wdata_i(reg_req_wdata_i),
     .rsp_valid_o(reg_rsp_valid_o), .rsp_rdata_o(reg_rsp_rdata_o), .rsp_err_o(reg_rsp_err_o),
+    .clear_hold_i(1'b0),
     .zr_en_o(zr_en), .zr_addr_o(zr_addr), .zr_data_i(zr_data),
     .wc_en_o(wc_en), .wz_en_o(wz_en), .w_addr_o(w_addr), .wc_data_o(wc_data), .wz_data_o(wz_data),
     .tex_req_valid_o(tex_req_valid), .tex_req_ready_i(tex_req_ready),
@@ -139,10 +140,15 @@ module htx_raster_subsys #(
     for (int i = 0; i < 6; i++) unused_tex = unused_tex ^ (^tex_req_lod_g[i]);
   end
 
+  logic        vr_gnt_unused;      // (no video scan-out on the raster unit's own tests)
+  logic [31:0] vr_data_unused;
+  logic        unused_vr;
+  assign unused_vr = ^{vr_gnt_unused, vr_data_unused};
   htx_fb #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels)) u_fb (
     .clk_i, .rst_ni,
     .zr_en_i(zr_en), .zr_addr_i(zr_addr), .zr_data_o(zr_data),
     .wc_en_i(wc_en), .wz_en_i(wz_en), .w_addr_i(w_addr), .wc_data_i(wc_data), .wz_data_i(wz_data),
+    .vr_req_i(1'b0), .vr_addr_i('0), .vr_gnt_o(vr_gnt_unused), .vr_data_o(vr_data_unused),
     .req_valid_i(mem_req_valid_i), .req_ready_o(mem_req_ready_o), .req_addr_i(mem_req_addr_i),
     .req_we_i(mem_req_we_i), .req_be_i(mem_req_be_i), .req_wdata_i(mem_req_wdata_i),
     .rsp_valid_o(mem_rsp_valid_o), .rsp_rdata_o(mem_rsp_rdata_o), .rsp_err_o(mem_rsp_err_o)

@@ -59,6 +59,7 @@ module htx_raster_synth_wrapper #(
     .rsp_valid_o(rsp_valid),
     .rsp_rdata_o(rsp_rdata),
     .rsp_err_o  (rsp_err),
+    .clear_hold_i(1'b0),
     .zr_en_o    (zr_en),
     .zr_addr_o  (zr_addr),
     .zr_data_i  (in_q[70 +: ZBits]),

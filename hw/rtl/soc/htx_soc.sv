@@ -32,6 +32,12 @@ module htx_soc #(
   output logic        sim_putchar_o,
   output logic [7:0]  sim_char_o,
 
+  // The video scan-out, 640x480 at 60 Hz on this clock (htx_video; docs/video.md).
+  output logic        video_de_o,
+  output logic        video_hsync_no,
+  output logic        video_vsync_no,
+  output logic [23:0] video_rgb_o,
+
   input  logic        stall_en_i,
   input  logic [31:0] stall_seed_i
 );
@@ -74,6 +80,7 @@ module htx_soc #(
     .dbus_rsp_err_o  (dbus_rsp_err),
     .uart_rx_i, .uart_tx_o, .timer_irq_o,
     .sim_exit_o, .sim_exit_code_o, .sim_putchar_o, .sim_char_o,
+    .video_de_o, .video_hsync_no, .video_vsync_no, .video_rgb_o,
     .stall_en_i, .stall_seed_i
   );
 endmodule

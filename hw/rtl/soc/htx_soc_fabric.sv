@@ -4,7 +4,7 @@
 //
 //   ibus -> demux --RAM port A
 //   dbus -> demux --RAM port B
-//                 |-IO demux -> SYSCTRL, UART, TIMER, RASTER + TEXTURE -> GPU reg
+//                 |-IO demux -> SYSCTRL, UART, TIMER, RASTER + TEXTURE -> GPU reg, VIDEO
 //                 \-framebuffer/depth window + texture window ---------> GPU mem
 //
 // Code runs from RAM only: the register blocks (0x2xxx_xxxx) and the GPU's memory windows are on the
@@ -67,6 +67,12 @@ module htx_soc_fabric #(
   output logic        sim_putchar_o,
   output logic [7:0]  sim_char_o,
 
+  // The video scan-out (htx_video; with Gpu = 0 there is none: de 0, syncs idle).
+  output logic        video_de_o,
+  output logic        video_hsync_no,
+  output logic        video_vsync_no,
+  output logic [23:0] video_rgb_o,
+
   input  logic        stall_en_i,
   input  logic [31:0] stall_seed_i
 );
@@ -75,8 +81,8 @@ module htx_soc_fabric #(
   localparam logic [31:0] IoBase  = 32'h2000_0000;
   localparam logic [31:0] IoMask  = 32'hF000_0000;
   localparam logic [31:0] RegMask = 32'hFFFF_F000;  // 4 KiB register blocks
-  localparam int unsigned NumIo   = 5;          // SYSCTRL, UART, TIMER, RASTER, TEXTURE
-  localparam int unsigned NumLink = 4;          // SYSCTRL, UART, TIMER, GPU registers
+  localparam int unsigned NumIo   = 6;          // SYSCTRL, UART, TIMER, RASTER, TEXTURE, VIDEO
+  localparam int unsigned NumLink = 5;          // SYSCTRL, UART, TIMER, GPU registers, VIDEO
   localparam logic [31:0] FbBase  = 32'h3000_0000;  // colour 0x3000_0000, depth 0x3010_0000
   localparam logic [31:0] FbMask  = 32'hFFE0_0000;
   localparam logic [31:0] TexBase = 32'h4000_0000;  // texture memory, 1 MiB
@@ -175,11 +181,12 @@ module htx_soc_fabric #(
 
   htx_bus_demux #(
     .NumSlaves(NumIo),
-    .SlaveBase({htx_texture_reg_pkg::TEXTURE_BASE_ADDR, htx_raster_reg_pkg::RASTER_BASE_ADDR,
+    .SlaveBase({htx_video_reg_pkg::VIDEO_BASE_ADDR,
+                htx_texture_reg_pkg::TEXTURE_BASE_ADDR, htx_raster_reg_pkg::RASTER_BASE_ADDR,
                 htx_timer_reg_pkg::TIMER_BASE_ADDR, htx_uart_reg_pkg::UART_BASE_ADDR,
                 htx_sysctrl_reg_pkg::SYSCTRL_BASE_ADDR}),
-    .SlaveMask({RegMask, RegMask, RegMask, RegMask, RegMask}),
-    .SlaveEnable({Gpu, Gpu, 1'b1, 1'b1, 1'b1})
+    .SlaveMask({RegMask, RegMask, RegMask, RegMask, RegMask, RegMask}),
+    .SlaveEnable({Gpu, Gpu, Gpu, 1'b1, 1'b1, 1'b1})
   ) u_io_demux (
     .clk_i, .rst_ni,
     .m_req_valid_i(d_valid[1]), .m_req_ready_o(d_ready[1]), .m_req_addr_i(d_addr),
@@ -190,15 +197,15 @@ module htx_soc_fabric #(
     .s_rsp_valid_i(p_rsp_valid), .s_rsp_rdata_i(p_rsp_rdata), .s_rsp_err_i(p_rsp_err)
   );
 
-  // RASTER and TEXTURE join onto the GPU's register link (see the header).
+  // RASTER and TEXTURE (demux slaves 3 and 4) join onto the GPU's register link 3 (see the
+  // header); VIDEO (slave 5) is link 4.
   logic [NumLink-1:0]    l_valid, l_ready, l_rsp_valid, l_rsp_err;
   logic [NumLink*32-1:0] l_rsp_rdata;
-  assign l_valid[2:0]             = p_valid[2:0];
-  assign l_valid[3]               = p_valid[3] | p_valid[4];
-  assign p_ready                  = {l_ready[3], l_ready};
-  assign p_rsp_valid              = {l_rsp_valid[3], l_rsp_valid};
-  assign p_rsp_err                = {l_rsp_err[3], l_rsp_err};
-  assign p_rsp_rdata              = {l_rsp_rdata[96 +: 32], l_rsp_rdata};
+  assign l_valid     = {p_valid[5], p_valid[3] | p_valid[4], p_valid[2:0]};
+  assign p_ready     = {l_ready[4], l_ready[3], l_ready[3:0]};
+  assign p_rsp_valid = {l_rsp_valid[4], l_rsp_valid[3], l_rsp_valid[3:0]};
+  assign p_rsp_err   = {l_rsp_err[4], l_rsp_err[3], l_rsp_err[3:0]};
+  assign p_rsp_rdata = {l_rsp_rdata[128 +: 32], l_rsp_rdata[96 +: 32], l_rsp_rdata[127:0]};
 
   // Peripheral-side links after the stall injectors.
   logic [NumLink-1:0]    q_valid, q_ready, q_we, q_rsp_valid, q_rsp_err;
@@ -277,6 +284,9 @@ module htx_soc_fabric #(
     // --no-gpu-gate`) and the system tests compare the two (docs/soc.md, "Simulation speed").
     // Synthesis (Sim = 0) always gets clk_i.
     logic gpu_clk;
+    logic        fbv_req, fbv_gnt, video_busy;
+    logic [23:0] fbv_addr;
+    logic [31:0] fbv_data;
     if (Sim) begin : g_sim_gpu_gate
       localparam int unsigned GateHold = 127;
       // Written by the harness: 1 = stop the GPU's clock while it is idle, 0 = let it run free.
@@ -284,7 +294,7 @@ module htx_soc_fabric #(
       logic       active, en_q;
       logic [6:0] hold_q;
       assign active = q_valid[3] || g_valid || u_gpu.u_subsys.u_raster.busy ||
-                      u_gpu.u_subsys.tex_busy;
+                      u_gpu.u_subsys.tex_busy || video_busy;
       always_ff @(posedge clk_i or negedge rst_ni) begin
         if (!rst_ni) begin
           hold_q <= 7'(GateHold);
@@ -304,6 +314,8 @@ module htx_soc_fabric #(
       assign gpu_clk = clk_i & en_q;
     end else begin : g_gpu_clk
       assign gpu_clk = clk_i;
+      logic unused_video_busy;
+      assign unused_video_busy = video_busy;
     end
 
     htx_gpu_icebreaker #(.FbPixels(FbPixels), .Methods(GpuMethods), .RasterCounters(GpuCounters),
@@ -315,7 +327,20 @@ module htx_soc_fabric #(
       .reg_rsp_err_o(q_rsp_err[3]),
       .mem_req_valid_i(g_valid), .mem_req_ready_o(g_ready), .mem_req_addr_i(g_addr),
       .mem_req_we_i(g_we), .mem_req_be_i(g_be), .mem_req_wdata_i(g_wdata),
-      .mem_rsp_valid_o(g_rsp_valid), .mem_rsp_rdata_o(g_rsp_rdata), .mem_rsp_err_o(g_rsp_err)
+      .mem_rsp_valid_o(g_rsp_valid), .mem_rsp_rdata_o(g_rsp_rdata), .mem_rsp_err_o(g_rsp_err),
+      .fbv_req_i(fbv_req), .fbv_addr_i(fbv_addr), .fbv_gnt_o(fbv_gnt), .fbv_data_o(fbv_data)
+    );
+
+    // VIDEO on the SoC's clock (the pixel clock), reading the GPU's colour memory; its reads keep
+    // the simulation's GPU clock running (busy_o above).
+    htx_video #(.SrcW(160), .SrcH(FbPixels / 160), .AddrW(24)) u_video (
+      .clk_i, .rst_ni,
+      .req_valid_i(q_valid[4]), .req_ready_o(q_ready[4]), .req_addr_i(q_addr[128 +: 32]),
+      .req_we_i(q_we[4]), .req_be_i(q_be[16 +: 4]), .req_wdata_i(q_wdata[128 +: 32]),
+      .rsp_valid_o(q_rsp_valid[4]), .rsp_rdata_o(q_rsp_rdata[128 +: 32]), .rsp_err_o(q_rsp_err[4]),
+      .fb_req_o(fbv_req), .fb_addr_o(fbv_addr), .fb_gnt_i(fbv_gnt), .fb_data_i(fbv_data),
+      .de_o(video_de_o), .hsync_no(video_hsync_no), .vsync_no(video_vsync_no), .rgb_o(video_rgb_o),
+      .busy_o(video_busy)
     );
   end else begin : g_no_gpu
     // The demuxes never select the GPU's links (SlaveEnable above): they only need defined outputs.
@@ -323,11 +348,20 @@ module htx_soc_fabric #(
     assign q_rsp_valid[3]        = 1'b0;
     assign q_rsp_err[3]          = 1'b0;
     assign q_rsp_rdata[96 +: 32] = '0;
+    assign q_ready[4]             = 1'b1;
+    assign q_rsp_valid[4]         = 1'b0;
+    assign q_rsp_err[4]           = 1'b0;
+    assign q_rsp_rdata[128 +: 32] = '0;
+    assign video_de_o             = 1'b0;
+    assign video_hsync_no         = 1'b1;
+    assign video_vsync_no         = 1'b1;
+    assign video_rgb_o            = '0;
     assign dg_ready              = 1'b1;
     assign dg_rsp_valid          = 1'b0;
     assign dg_rsp_err            = 1'b0;
     assign dg_rsp_rdata          = '0;
     logic unused_gpu_link;
-    assign unused_gpu_link = ^{q_valid[3], q_addr[96 +: 32], q_we[3], q_be[12 +: 4], q_wdata[96 +: 32], dg_valid};
+    assign unused_gpu_link = ^{q_valid[4:3], q_addr[96 +: 64], q_we[4:3], q_be[12 +: 8],
+                               q_wdata[96 +: 64], dg_valid};
   end
 endmodule

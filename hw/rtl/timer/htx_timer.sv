@@ -5,10 +5,10 @@
 // of a low half being replaced is dropped) and the counter resumes counting from the written value.
 //
 // A request is registered as it is accepted and acts in the next clock, with its response in the
-// clock after (two clocks' latency, one request a clock). So the counter's write enables come from
-// flip-flops and can enter its carry chains (htx_counter64: one LUT4 a bit with the write, where a
-// write multiplexer after an incrementer costs two), and responses stay in request order: a read
-// accepted right after a write acts after it.
+// clock after (htx_reg_port: two clocks' latency, one request a clock). So the counter's write
+// enables come from flip-flops and can enter its carry chains (htx_counter64: one LUT4 a bit with
+// the write, where a write multiplexer after an incrementer costs two), and responses stay in
+// request order: a read accepted right after a write acts after it.
 module htx_timer (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -27,17 +27,20 @@ module htx_timer (
 );
   logic [63:0] mtime, cmp_q;  // (mtime resets to 0 in htx_counter64, as hw/regs/timer.json says)
   logic        enable_q, irq_en_q, match;
-  logic [31:0] rdata_d, rsp_rdata_q;
-  logic        rsp_valid_q;
+  logic [31:0] rdata_d;
 
   // The request, registered as it is accepted.
   logic        act_q, act_write_q;
   logic [11:0] act_offset_q;
   logic [31:0] act_wdata_q;
-
-  logic unused_addr;
-  assign unused_addr = ^req_addr_i[31:12];
-  assign req_ready_o = 1'b1;
+  htx_reg_port u_port (
+    .clk_i, .rst_ni, .req_valid_i, .req_ready_o, .req_addr_i, .req_we_i, .req_be_i, .req_wdata_i,
+    .rsp_valid_o, .rsp_rdata_o, .rsp_err_o,
+    .act_o(act_q), .act_write_o(act_write_q), .act_offset_o(act_offset_q), .act_wdata_o(act_wdata_q),
+    .rdata_i(rdata_d)
+  );
+  logic unused_act;
+  assign unused_act = act_q;  // (reads need no action here: rdata_d is what the port answers)
 
   logic wr_time_lo, wr_time_hi;
   assign wr_time_lo = act_write_q && (act_offset_q == htx_timer_reg_pkg::TIMER_MTIME_LO_OFFSET);
@@ -76,41 +79,21 @@ module htx_timer (
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      act_q        <= 1'b0;
-      act_write_q  <= 1'b0;
-      act_offset_q <= '0;
-      act_wdata_q  <= '0;
       cmp_q        <= {htx_timer_reg_pkg::TIMER_MTIMECMP_HI_RESET,
                        htx_timer_reg_pkg::TIMER_MTIMECMP_LO_RESET};
       enable_q     <= htx_timer_reg_pkg::TIMER_CTRL_ENABLE_RESET[htx_timer_reg_pkg::TIMER_CTRL_ENABLE_LSB];
       irq_en_q     <= htx_timer_reg_pkg::TIMER_CTRL_IRQ_ENABLE_RESET[
                         htx_timer_reg_pkg::TIMER_CTRL_IRQ_ENABLE_LSB];
-      rsp_valid_q  <= 1'b0;
-      rsp_rdata_q  <= '0;
-    end else begin
-      act_q       <= req_valid_i;
-      act_write_q <= req_valid_i && req_we_i && (req_be_i == 4'b1111);
-      if (req_valid_i) begin
-        act_offset_q <= req_addr_i[11:0];
-        act_wdata_q  <= req_wdata_i;
-      end
-      rsp_valid_q <= act_q;
-      if (act_q && !act_write_q) rsp_rdata_q <= rdata_d;
-      if (act_write_q) begin
-        unique case (act_offset_q)
-          htx_timer_reg_pkg::TIMER_MTIMECMP_LO_OFFSET: cmp_q[31:0]  <= act_wdata_q;
-          htx_timer_reg_pkg::TIMER_MTIMECMP_HI_OFFSET: cmp_q[63:32] <= act_wdata_q;
-          htx_timer_reg_pkg::TIMER_CTRL_OFFSET: begin
-            enable_q <= act_wdata_q[htx_timer_reg_pkg::TIMER_CTRL_ENABLE_LSB];
-            irq_en_q <= act_wdata_q[htx_timer_reg_pkg::TIMER_CTRL_IRQ_ENABLE_LSB];
-          end
-          default: ;
-        endcase
-      end
+    end else if (act_write_q) begin
+      unique case (act_offset_q)
+        htx_timer_reg_pkg::TIMER_MTIMECMP_LO_OFFSET: cmp_q[31:0]  <= act_wdata_q;
+        htx_timer_reg_pkg::TIMER_MTIMECMP_HI_OFFSET: cmp_q[63:32] <= act_wdata_q;
+        htx_timer_reg_pkg::TIMER_CTRL_OFFSET: begin
+          enable_q <= act_wdata_q[htx_timer_reg_pkg::TIMER_CTRL_ENABLE_LSB];
+          irq_en_q <= act_wdata_q[htx_timer_reg_pkg::TIMER_CTRL_IRQ_ENABLE_LSB];
+        end
+        default: ;
+      endcase
     end
   end
-
-  assign rsp_valid_o = rsp_valid_q;
-  assign rsp_rdata_o = rsp_rdata_q;
-  assign rsp_err_o   = 1'b0;
 endmodule

@@ -24,6 +24,9 @@ FabricHarness::~FabricHarness() { top_->final(); }
 
 bool FabricHarness::uart_tx() const { return top_->uart_tx_o; }
 bool FabricHarness::timer_irq() const { return top_->timer_irq_o; }
+VideoPins FabricHarness::video() const {
+  return {top_->video_de_o != 0, top_->video_hsync_no != 0, top_->video_vsync_no != 0, top_->video_rgb_o};
+}
 bool FabricHarness::sim_exit_strobe() const { return top_->sim_exit_o; }
 uint8_t FabricHarness::sim_exit_code() const { return top_->sim_exit_code_o; }
 

@@ -24,6 +24,12 @@ struct BusRsp {
   uint64_t cycle = 0;  // clock in which the response was seen
 };
 
+// The video scan-out's pins after a clock (htx_video: two clocks behind its counters).
+struct VideoPins {
+  bool de = false, hsync_n = true, vsync_n = true;
+  uint32_t rgb = 0;  // RGB888
+};
+
 struct BusMaster {
   std::deque<BusReq> pending;      // not yet accepted
   std::deque<BusReq> outstanding;  // accepted, response due
@@ -43,6 +49,7 @@ class FabricHarness {
   bool timer_irq() const;
   bool sim_exit_strobe() const;
   uint8_t sim_exit_code() const;
+  VideoPins video() const;
   uint64_t cycle() const { return cycle_; }
 
   void step();  // one clock

@@ -28,7 +28,10 @@ namespace {
 template <class V>
 class VerilatedGpu final : public GpuPort {
  public:
-  VerilatedGpu() : ctx_(std::make_unique<VerilatedContext>()), top_(std::make_unique<V>(ctx_.get())) {}
+  VerilatedGpu() : ctx_(std::make_unique<VerilatedContext>()), top_(std::make_unique<V>(ctx_.get())) {
+    top_->fbv_req_i = 0;  // (no video scan-out here)
+    top_->fbv_addr_i = 0;
+  }
   ~VerilatedGpu() override { top_->final(); }
 
   void settle(const PortRequest& r, const PortRequest& m, bool* reg_ready, bool* mem_ready) override {

@@ -1,0 +1,221 @@
+// htx_video (docs/video.md) on its own: the 640x480 at 60 Hz timing on its output pins, the
+// framebuffer shown scaled x4 while its port refuses reads at random (as the raster's colour writes
+// make htx_fb's port do), the registers, the frame taken at its start, and an underrun when the
+// port refuses every read (label `rtl`).
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "Vhtx_video.h"
+#include "htx_regs.h"
+#include "vmodel_clock.hpp"
+
+namespace {
+
+constexpr uint32_t kSrcW = 160, kSrcH = 120, kScale = 4;
+constexpr uint32_t kW = 640, kH = 480, kHTotal = 800, kVTotal = 525;
+
+struct Bench {
+  Vhtx_video v;
+  std::vector<uint32_t> fb = std::vector<uint32_t>(kSrcW * kSrcH / 2);
+  std::mt19937 rng{20261205};
+  unsigned refuse_percent = 0;  // a read is refused in this share of the clocks it is asked in
+  uint32_t word_read = 0;       // the word of the last granted read, on fb_data_i until the next
+  uint64_t reads = 0;
+
+  Bench() {
+    v.req_valid_i = 0;
+    v.fb_gnt_i = 0;
+    htx::raster_test::reset_model(v);
+  }
+
+  // One clock, with a register request (offset in VIDEO's block) presented in it if `req`.
+  void clock(bool req = false, uint32_t offset = 0, bool we = false, uint32_t wdata = 0, unsigned be = 0xF) {
+    v.req_valid_i = req;
+    v.req_addr_i = HTX_VIDEO_BASE + offset;
+    v.req_we_i = we;
+    v.req_be_i = be;
+    v.req_wdata_i = wdata;
+    v.fb_data_i = word_read;
+    v.fb_gnt_i = 0;
+    v.eval();
+    const bool gnt = v.fb_req_o && (rng() % 100) >= refuse_percent;
+    const uint32_t addr = v.fb_addr_o;
+    v.fb_gnt_i = gnt;
+    htx::raster_test::clock_edge(v);
+    if (gnt) {
+      word_read = fb.at(addr);
+      ++reads;
+    }
+  }
+  void write(uint32_t offset, uint32_t value) {
+    clock(true, offset, true, value);
+    clock();
+    clock();
+  }
+  uint32_t read(uint32_t offset) {
+    clock(true, offset);
+    clock();
+    EXPECT_TRUE(v.rsp_valid_o);
+    const uint32_t r = v.rsp_rdata_o;
+    clock();
+    return r;
+  }
+  // Clocks until the vertical sync pulse begins (at most two frames).
+  void to_vsync() {
+    bool was_high = v.vsync_no;
+    for (uint32_t i = 0; i < 2 * kHTotal * kVTotal; ++i) {
+      clock();
+      if (was_high && !v.vsync_no) return;
+      was_high = v.vsync_no;
+    }
+    FAIL() << "no vertical sync in two frames";
+  }
+  // The next frame's 640 x 480 visible pixels (RGB888), from the next vertical sync on.
+  std::vector<uint32_t> capture() {
+    to_vsync();
+    std::vector<uint32_t> px;
+    px.reserve(kW * kH);
+    for (uint32_t i = 0; i < kHTotal * kVTotal && px.size() < kW * kH; ++i) {
+      clock();
+      if (v.de_o) px.push_back(v.rgb_o);
+    }
+    return px;
+  }
+};
+
+uint32_t expand565(uint16_t p) {
+  const uint32_t r = p >> 11, g = (p >> 5) & 63, b = p & 31;
+  return (((r << 3) | (r >> 2)) << 16) | (((g << 2) | (g >> 4)) << 8) | ((b << 3) | (b >> 2));
+}
+
+uint16_t pixel(const std::vector<uint32_t>& fb, uint32_t x, uint32_t y) {
+  const uint32_t i = y * kSrcW + x;
+  return static_cast<uint16_t>(fb[i / 2] >> (16 * (i % 2)));
+}
+
+TEST(Video, TimingIsVesa640x480At60Hz) {
+  Bench b;
+  b.to_vsync();
+  // Two frames from the start of a vertical sync, one clock at a time.
+  std::vector<uint8_t> de, hs, vs;
+  for (uint32_t i = 0; i < 2 * kHTotal * kVTotal; ++i) {
+    de.push_back(b.v.de_o);
+    hs.push_back(b.v.hsync_no);
+    vs.push_back(b.v.vsync_no);
+    EXPECT_EQ(b.v.rgb_o, 0u) << "disabled, the picture is black";
+    b.clock();
+  }
+  EXPECT_EQ(b.reads, 0u) << "disabled, the unit reads no memory";
+  // Vertical sync: low for 2 lines, once a frame of 525 lines.
+  for (uint32_t f = 0; f < 2; ++f) {
+    for (uint32_t i = 0; i < kHTotal * kVTotal; ++i) {
+      ASSERT_EQ(vs[f * kHTotal * kVTotal + i], i < 2 * kHTotal ? 0 : 1) << "clock " << i << " of frame " << f;
+    }
+  }
+  // From the sync's start: 33 + 2 - 2 lines of blanking (back porch), then 480 lines of 640 visible
+  // pixels starting with the line, each line's horizontal sync 656 clocks after its start for 96.
+  const uint32_t first_visible = (2 + 33) * kHTotal;
+  for (uint32_t i = 0; i < kHTotal * kVTotal; ++i) {
+    const uint32_t line = i / kHTotal, h = i % kHTotal;
+    const uint32_t vline = (line + kVTotal - (first_visible / kHTotal)) % kVTotal;  // 0 = first visible
+    const bool visible = vline < kH && h < kW;
+    ASSERT_EQ(de[i], visible ? 1 : 0) << "line " << vline << " clock " << h;
+    ASSERT_EQ(hs[i], (h >= 656 && h < 752) ? 0 : 1) << "line " << vline << " clock " << h;
+  }
+}
+
+TEST(Video, ShowsTheFramebufferScaledWhileItsPortRefusesHalfTheReads) {
+  Bench b;
+  for (auto& w : b.fb) w = b.rng();
+  b.refuse_percent = 50;
+  b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk);
+  const std::vector<uint32_t> px = b.capture();
+  ASSERT_EQ(px.size(), kW * kH);
+  for (uint32_t y = 0; y < kH; ++y) {
+    for (uint32_t x = 0; x < kW; ++x) {
+      ASSERT_EQ(px[y * kW + x], expand565(pixel(b.fb, x / kScale, y / kScale))) << "x " << x << " y " << y;
+    }
+  }
+  const uint32_t status = b.read(VIDEO_STATUS_Offset);
+  EXPECT_EQ(status & VIDEO_STATUS_UNDERRUN_Msk, 0u);
+  EXPECT_NE(status & VIDEO_STATUS_SHOWING_Msk, 0u);
+  // Each framebuffer line is read once a frame: 9,600 words (and at most the next frame's first).
+  EXPECT_GE(b.reads, kSrcW * kSrcH / 2);
+  EXPECT_LE(b.reads, kSrcW * kSrcH / 2 + 2 * kSrcW);
+}
+
+TEST(Video, RegistersCountFramesAndLinesAndDescribeTheMode) {
+  Bench b;
+  EXPECT_EQ(b.read(VIDEO_MODE_Offset), kSrcW | (kSrcH << 12) | (kScale << 24));
+  EXPECT_EQ(b.read(VIDEO_CTRL_Offset), 0u);
+  b.write(VIDEO_CTRL_Offset, 1);
+  EXPECT_EQ(b.read(VIDEO_CTRL_Offset), 1u);
+  b.to_vsync();
+  const uint32_t line = b.read(VIDEO_LINE_Offset);
+  EXPECT_EQ(line, 490u) << "the sync pulse is lines 490 and 491";
+  EXPECT_NE(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_VBLANK_Msk, 0u);
+  const uint32_t frames = b.read(VIDEO_FRAME_Offset);
+  b.to_vsync();
+  b.to_vsync();
+  EXPECT_EQ(b.read(VIDEO_FRAME_Offset), frames + 2);
+  // Mid-frame (line 100 or so), not in blanking.
+  for (uint32_t i = 0; i < 135 * kHTotal; ++i) b.clock();
+  EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_VBLANK_Msk, 0u);
+  // A partial write is ignored.
+  b.clock(true, VIDEO_CTRL_Offset, true, 0, 0x1);
+  b.clock();
+  b.clock();
+  EXPECT_EQ(b.read(VIDEO_CTRL_Offset), 1u);
+}
+
+TEST(Video, EnableTakesEffectAtTheFrameStartAndStopsTheReads) {
+  Bench b;
+  for (auto& w : b.fb) w = 0xFFFFFFFFu;
+  b.write(VIDEO_CTRL_Offset, 1);
+  std::vector<uint32_t> px = b.capture();
+  ASSERT_EQ(px.size(), kW * kH);
+  EXPECT_EQ(px[0], 0xFFFFFFu);
+  // Cleared in the middle of a shown frame (line 40): that frame stays whole, the next is black,
+  // unread.
+  b.to_vsync();
+  for (uint32_t i = 0; i < (35 + 40) * kHTotal; ++i) b.clock();
+  b.write(VIDEO_CTRL_Offset, 0);
+  EXPECT_NE(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_SHOWING_Msk, 0u);
+  uint32_t white_after_clear = 0;
+  for (uint32_t i = 0; i < kHTotal * 400; ++i) {
+    b.clock();
+    if (b.v.de_o && b.v.rgb_o == 0xFFFFFFu) ++white_after_clear;
+  }
+  EXPECT_EQ(white_after_clear, kW * 400) << "the rest of the frame is shown";
+  b.to_vsync();
+  const uint64_t reads_before = b.reads;
+  px = b.capture();
+  ASSERT_EQ(px.size(), kW * kH);
+  for (uint32_t p : px) ASSERT_EQ(p, 0u);
+  EXPECT_EQ(b.reads, reads_before);
+  EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_SHOWING_Msk, 0u);
+}
+
+TEST(Video, APortThatRefusesEveryReadSetsUnderrunWhichAWriteOfOneClears) {
+  Bench b;
+  b.write(VIDEO_CTRL_Offset, 1);
+  b.refuse_percent = 100;
+  b.capture();
+  EXPECT_EQ(b.reads, 0u);
+  EXPECT_NE(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_UNDERRUN_Msk, 0u);
+  // The port serves again: the flag stays until cleared, then stays clear.
+  b.refuse_percent = 0;
+  b.capture();
+  EXPECT_NE(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_UNDERRUN_Msk, 0u);
+  b.write(VIDEO_STATUS_Offset, 0);
+  EXPECT_NE(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_UNDERRUN_Msk, 0u) << "writing 0 leaves it";
+  b.write(VIDEO_STATUS_Offset, VIDEO_STATUS_UNDERRUN_Msk);
+  EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_UNDERRUN_Msk, 0u);
+  b.capture();
+  EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_UNDERRUN_Msk, 0u);
+}
+
+}  // namespace
