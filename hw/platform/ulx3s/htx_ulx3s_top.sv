@@ -14,8 +14,11 @@ module htx_ulx3s_top #(
   input  logic       ftdi_txd,    // serial from the host (the FTDI's TX)
   output logic       ftdi_rxd,    // serial to the host (the FTDI's RX)
   output logic [7:0] led,
-  output logic [3:0] gpdi_dp      // DVI: blue, green, red, clock (LVCMOS33D pairs)
+  output logic [3:0] gpdi_dp,     // DVI: blue, green, red, clock (LVCMOS33D pairs)
+  output logic       wifi_gpio0   // the ESP32's GPIO0, held high (low at its reset: its bootloader)
 );
+  assign wifi_gpio0 = 1'b1;
+
   logic clk, clk_shift, locked;
   htx_ulx3s_clocks u_clocks (
     .clk_25mhz_i(clk_25mhz), .clk_sys_o(clk), .clk_shift_o(clk_shift), .locked_o(locked)
