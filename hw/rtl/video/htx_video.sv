@@ -135,16 +135,18 @@ module htx_video #(
 
   // ---- Line fetch ------------------------------------------------------------------------------
   // Line 0 is read during the last Scale lines of blanking, where the frame's enable is taken;
-  // line L + 1 while line L is shown, from the end of the line before L's first.
-  logic             start_frame, start_next, start;
+  // line L + 1 while line L is shown, from the end of the line before L's first (line_due: a
+  // source line's first picture line comes next, so its read must be over).
+  logic             start_frame, line_due, start_next, start;
   logic             f_busy_q, f_bank_q, next_bank_q, w_pend_q, w_bank_q;
   logic [FAW-1:0]   f_addr_q, next_base_q;
   logic [LbAW-1:0]  f_idx_q, w_idx_q;
   logic             f_last;
   assign start_frame = line_end && (v == 10'(VTotal - Scale - 1));
-  assign start_next  = show_q && (SrcH > 1) &&
-                       (frame_end || (line_end && v_active && (ysub_q == SW'(Scale - 1)) &&
-                                      (32'(ys_q) < 32'(SrcH) - 32'd2)));
+  // (comparisons with constants, SrcH - 1 and SrcH - 2, so no adder: SrcH > 1 guards the second)
+  assign line_due    = show_q && (frame_end || (line_end && v_active && (ysub_q == SW'(Scale - 1)) &&
+                                                 (32'(ys_q) < 32'(SrcH - 1))));
+  assign start_next  = line_due && (SrcH > 1) && (frame_end || (32'(ys_q) < 32'(SrcH - 2)));
   assign start  = (start_frame && enable_q) || start_next;
   assign f_last = (f_idx_q == LbAW'(Wpl - 1));
 
@@ -193,8 +195,8 @@ module htx_video #(
       if (act_write_q && (act_offset_q == htx_video_reg_pkg::VIDEO_CTRL_OFFSET)) begin
         enable_q <= act_wdata_q[htx_video_reg_pkg::VIDEO_CTRL_ENABLE_LSB];
       end
-      // A new read while the last is unfinished: that line was due (it wins over a clear).
-      if (start && f_busy_q) begin
+      // A line due while its read is unfinished (this wins over a clear).
+      if (line_due && f_busy_q) begin
         underrun_q <= 1'b1;
       end else if (clear_underrun) begin
         underrun_q <= 1'b0;
