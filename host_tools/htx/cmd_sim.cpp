@@ -41,6 +41,7 @@ struct SimArgs {
   bool no_gpu_gate = false;
   std::string frame;                // PNG of the colour window at exit
   std::string frame_size = "160x120";
+  std::string screen;               // PNG of the last whole frame the video scan-out showed
 };
 
 // "WxH" -> (W, H); both 1..4096.
@@ -83,6 +84,22 @@ void write_signature(const sim::SocSim& soc, const sim::ElfImage& elf, const std
 #endif
 
 #if HTX_HAVE_SOC_SIM
+// The last whole frame the video scan-out showed, as a monitor would show it.
+void write_screen(const sim::VideoCapture& screen, const std::string& path) {
+  if (screen.frames() == 0) {
+    throw std::runtime_error(path +
+                             ": the run ended before the video scan-out had shown a whole frame (the first ends "
+                             "after 420,000 clocks); not written");
+  }
+  Image img{static_cast<int>(screen.width()), static_cast<int>(screen.height()), {}};
+  img.rgba.reserve(screen.last_frame().size() * 4);
+  for (uint32_t p : screen.last_frame()) {
+    img.rgba.insert(img.rgba.end(), {static_cast<uint8_t>(p >> 16), static_cast<uint8_t>(p >> 8),
+                                     static_cast<uint8_t>(p), 255});
+  }
+  write_png(path, img);
+}
+
 int run_sim(const SimArgs& a) {
   const auto [frame_w, frame_h] = parse_frame_size(a.frame_size);
   if (uint64_t{frame_w} * frame_h > sim::SocSim::kFbPixels)
@@ -94,6 +111,7 @@ int run_sim(const SimArgs& a) {
   opt.stall_seed = a.stall_seed;
   opt.trace_path = a.trace;
   opt.gpu_clock_gate = !a.no_gpu_gate;
+  opt.capture_screen = !a.screen.empty();
 
   std::unique_ptr<sim::SerialEndpoint> uart;
   if (a.uart == "pty") {
@@ -109,6 +127,7 @@ int run_sim(const SimArgs& a) {
   const sim::SimResult r = soc.run();
   uart.reset();  // flushes the UART's last bytes before the summary
   if (!a.signature.empty()) write_signature(soc, elf, a.signature);
+  if (!a.screen.empty()) write_screen(*soc.screen(), a.screen);
   const std::vector<uint16_t> frame = soc.read_frame(frame_w, frame_h);
   if (!a.frame.empty())
     write_png(a.frame, image_from_rgb565(static_cast<int>(frame_w), static_cast<int>(frame_h), frame));
@@ -168,6 +187,9 @@ void register_sim(CLI::App& app) {
                 "Clock the GPU on every cycle, even while it is idle (same results, several times slower)");
   cmd->add_option("--frame", args->frame,
                   "At exit, write the framebuffer's colour window (--frame-size pixels) as a PNG");
+  cmd->add_option("--screen", args->screen,
+                  "At exit, write the last whole frame the video scan-out showed (640x480, what a board's "
+                  "screen shows; black while the firmware has not turned the video on) as a PNG");
   cmd->add_option("--frame-size", args->frame_size,
                   "Size of the frame in the colour window, WIDTHxHEIGHT with stride WIDTH (default 160x120)");
   cmd->add_flag("--profile", args->profile,

@@ -13,6 +13,7 @@
 #include "Vhtx_ulx3s_top___024root.h"
 #include "board_pins.hpp"
 #include "htx/sim/frame_crc.hpp"
+#include "htx/sim/video_capture.hpp"
 #include "subprocess.hpp"
 #include "tmds_reference.hpp"
 
@@ -47,9 +48,8 @@ constexpr uint8_t kLedReset = 1u << 1;
 std::vector<uint32_t> capture_screen(Board& board, std::string* problem) {
   using htx::video_test::tmds_decode;
   constexpr uint64_t kLimit = 3 * 800 * 525;
-  std::vector<uint32_t> px;
-  bool in_vsync = false, frame = false;
-  for (uint64_t i = 0; i < kLimit && px.size() < 640u * 480u; ++i) {
+  htx::sim::VideoCapture monitor;
+  for (uint64_t i = 0; i < kLimit && monitor.frames() == 0; ++i) {
     board.clock();
     const uint64_t s = board.pins().rootp->htx_ulx3s_top__DOT__dvi_symbols;
     const auto blue = tmds_decode(static_cast<uint16_t>(s & 0x3FF));
@@ -57,15 +57,11 @@ std::vector<uint32_t> capture_screen(Board& board, std::string* problem) {
     const auto red = tmds_decode(static_cast<uint16_t>((s >> 20) & 0x3FF));
     if (((s >> 30) & 0x3FF) != 0b0000011111) *problem = "the clock channel sent something else";
     if (blue.de != green.de || blue.de != red.de) *problem = "the channels disagree on the data period";
-    if (!blue.de) {
-      const bool vsync_low = (blue.ctrl & 2) == 0;  // {C1, C0} = {VSYNC, HSYNC} levels
-      if (vsync_low) in_vsync = true;
-      if (in_vsync && !vsync_low) frame = true;
-    } else if (frame) {
-      px.push_back((uint32_t{red.data} << 16) | (uint32_t{green.data} << 8) | blue.data);
-    }
+    // {C1, C0} = {VSYNC, HSYNC} levels in blanking; the sync lines are high in the data period.
+    const bool vsync_n = blue.de || (blue.ctrl & 2) != 0;
+    monitor.clock(blue.de, vsync_n, (uint32_t{red.data} << 16) | (uint32_t{green.data} << 8) | blue.data);
   }
-  return px;
+  return monitor.last_frame();
 }
 
 TEST(BoardUlx3s, EchoFirmwareGreetsAtTheBoardsClockAndEchoes) {

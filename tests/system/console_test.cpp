@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -50,9 +51,16 @@ std::string pty_of(htx::test::Child& sim) {
 
 // The console firmware on `htx sim --uart pty`, and `htx console --port PTY -c C ...` against it.
 struct ConsoleSim {
-  htx::test::Child sim{{HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--uart", "pty", "--max-cycles",
-                        "2000000000"}};
-  const std::string pty = pty_of(sim);  // empty if it printed none
+  // `extra`: more options for htx sim.
+  explicit ConsoleSim(const std::vector<std::string>& extra = {}) : sim(sim_argv(extra)), pty(pty_of(sim)) {}
+  static std::vector<std::string> sim_argv(const std::vector<std::string>& extra) {
+    std::vector<std::string> argv = {HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--uart", "pty",
+                                     "--max-cycles", "2000000000"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    return argv;
+  }
+  htx::test::Child sim;
+  const std::string pty;  // empty if it printed none
 
   htx::test::RunResult console(const std::vector<std::string>& commands) const {
     std::vector<std::string> argv = {HTX_BIN, "console", "--port", pty, "--timeout", "60"};
@@ -161,6 +169,38 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   const auto cmp = htx::test::run_program({HTX_BIN, "compare", png, ref}, 60s);
   ASSERT_EQ(cmp.status, 0) << cmp.err;
   EXPECT_NE(cmp.out.find("differing_pixels 0"), std::string::npos) << cmp.out;
+}
+
+// The screen: the console turns the video on at boot, so after a render and enough serial output
+// for two frames (each `info` is some 300,000 clocks of UART at 115,200 baud), `htx sim --screen`
+// holds the frame the render left, each framebuffer pixel a 4 x 4 block (the framebuffer itself
+// from --frame).
+TEST(SystemConsole, ScreenShowsTheRenderedFrameScaled) {
+  const std::string screen = ::testing::TempDir() + "htx_console_screen.png";
+  const std::string frame = ::testing::TempDir() + "htx_console_screen_frame.png";
+  ConsoleSim cs({"--screen", screen, "--frame", frame});
+  ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
+  const auto r = cs.console({"render cube", "info", "info", "info", "quit"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("video 640x480 60 Hz showing 160x120 x4: on"), std::string::npos) << r.out;
+  ASSERT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
+  const htx::Image s = htx::load_image(screen);
+  const htx::Image f = htx::load_image(frame);
+  ASSERT_EQ(s.width, 640);
+  ASSERT_EQ(s.height, 480);
+  ASSERT_EQ(f.width, 160);
+  ASSERT_EQ(f.height, 120);
+  int differing = 0, lit = 0;
+  for (int y = 0; y < 480; ++y) {
+    for (int x = 0; x < 640; ++x) {
+      const size_t si = 4 * (static_cast<size_t>(y) * 640 + x);
+      const size_t fi = 4 * (static_cast<size_t>(y / 4) * 160 + x / 4);
+      differing += !std::equal(&s.rgba[si], &s.rgba[si] + 4, &f.rgba[fi]);
+      lit += s.rgba[si] | s.rgba[si + 1] | s.rgba[si + 2] ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(differing, 0);
+  EXPECT_GT(lit, 7082 * 16 / 2) << "the cube's fragments are on the screen";
 }
 
 // An image whose bottom row is texel row 0, from f(x, v) -> RGBA.

@@ -42,6 +42,7 @@ struct SocSim::Impl {
   UartLineDecoder rx_decoder;   // the SoC's TX pin
   UartLineEncoder tx_encoder;   // drives the SoC's RX pin
   std::optional<uint32_t> tohost_word;
+  std::optional<VideoCapture> screen;
   uint64_t time = 0;
 
   Impl(const SimOptions& o, SerialEndpoint* u, std::ostream& c)
@@ -73,6 +74,7 @@ SocSim::SocSim(const ElfImage& elf, const SimOptions& options, SerialEndpoint* u
   Impl& s = *impl_;
   if (!options.trace_path.empty()) s.ctx->traceEverOn(true);
   s.top = std::make_unique<Vhtx_soc_sim_top>(s.ctx.get(), "soc");
+  if (options.capture_screen) s.screen.emplace();
   if (!options.trace_path.empty()) {
     s.trace = std::make_unique<VerilatedFstC>();
     s.top->trace(s.trace.get(), 99);
@@ -126,6 +128,7 @@ SimResult SocSim::run() {
       if (s.uart) s.uart->write(&*byte, 1);
     }
     if (s.top->sim_putchar_o) s.console.put(static_cast<char>(s.top->sim_char_o));
+    if (s.screen) s.screen->clock(s.top->video_de_o, s.top->video_vsync_no, s.top->video_rgb_o);
     if (s.top->sim_exit_o) {
       res.reason = StopReason::Exit;
       res.exit_code = s.top->sim_exit_code_o;
@@ -182,5 +185,7 @@ std::vector<uint16_t> SocSim::read_frame(uint32_t width, uint32_t height) const 
   for (size_t i = 0; i < out.size(); ++i) out[i] = static_cast<uint16_t>(mem[i / 2] >> (16 * (i % 2)));
   return out;
 }
+
+const VideoCapture* SocSim::screen() const { return impl_->screen ? &*impl_->screen : nullptr; }
 
 }  // namespace htx::sim

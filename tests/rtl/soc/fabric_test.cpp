@@ -4,6 +4,7 @@
 // and random wait states on every slave.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iterator>
 
 #include <cstdint>
@@ -15,6 +16,7 @@
 #include "htx/fw/vertex_record.h"
 #include "htx/model/config.hpp"
 #include "htx/sim/uart_line.hpp"
+#include "htx/sim/video_capture.hpp"
 #include "htx_regs.h"
 
 namespace {
@@ -507,9 +509,8 @@ TEST_P(FabricTest, VideoShowsTheColourWindowWhileTheBusReadsIt) {
   // To the next vertical sync, then one frame's visible pixels, with a colour read every 97 clocks.
   const size_t first_read = soc.dbus.responses.size();
   std::vector<uint32_t> read_index;
-  bool was_high = true, frame = false;
-  std::vector<uint32_t> px;
-  for (uint64_t i = 0; i < 3ull * 800 * 525 && px.size() < 640u * 480u; ++i) {
+  htx::sim::VideoCapture monitor;
+  for (uint64_t i = 0; i < 3ull * 800 * 525 && monitor.frames() == 0; ++i) {
     if (i % 97 == 0) {
       const uint32_t w = lcg(seed) % words.size();
       read_index.push_back(w);
@@ -517,11 +518,10 @@ TEST_P(FabricTest, VideoShowsTheColourWindowWhileTheBusReadsIt) {
     }
     soc.step();
     const htx::test::VideoPins v = soc.video();
-    if (was_high && !v.vsync_n) frame = true;
-    was_high = v.vsync_n;
-    if (frame && v.de) px.push_back(v.rgb);
+    monitor.clock(v.de, v.vsync_n, v.rgb);
   }
   ASSERT_TRUE(soc.drain());
+  const std::vector<uint32_t>& px = monitor.last_frame();
   ASSERT_EQ(px.size(), 640u * 480u);
   for (uint32_t y = 0; y < 480; ++y) {
     for (uint32_t x = 0; x < 640; ++x) {
@@ -554,20 +554,14 @@ TEST_P(FabricTest, FastClearsYieldToTheVideoReads) {
     for (int k = 0; k < 16000; ++k) soc.step();
   }
   EXPECT_EQ(soc.read(kVideo + VIDEO_STATUS_Offset).rdata & VIDEO_STATUS_UNDERRUN_Msk, 0u);
-  bool was_high = true, frame = false;
-  uint32_t shown = 0, magenta = 0;
-  for (uint64_t i = 0; i < 3ull * 800 * 525 && shown < 640u * 480u; ++i) {
+  htx::sim::VideoCapture monitor;
+  for (uint64_t i = 0; i < 3ull * 800 * 525 && monitor.frames() == 0; ++i) {
     soc.step();
     const htx::test::VideoPins v = soc.video();
-    if (was_high && !v.vsync_n) frame = true;
-    was_high = v.vsync_n;
-    if (frame && v.de) {
-      ++shown;
-      magenta += v.rgb == 0xFF00FFu;
-    }
+    monitor.clock(v.de, v.vsync_n, v.rgb);
   }
-  EXPECT_EQ(shown, 640u * 480u);
-  EXPECT_EQ(magenta, 640u * 480u);
+  ASSERT_EQ(monitor.last_frame().size(), 640u * 480u);
+  EXPECT_EQ(std::count(monitor.last_frame().begin(), monitor.last_frame().end(), 0xFF00FFu), 640 * 480);
 }
 
 INSTANTIATE_TEST_SUITE_P(Stalls, FabricTest, ::testing::Values(0, 1, 7, 1234),

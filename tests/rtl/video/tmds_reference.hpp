@@ -51,8 +51,8 @@ class TmdsEncoder {
 
 struct TmdsSymbol {
   bool de = false;
-  uint8_t data = 0;    // when de
-  unsigned ctrl = 0;   // when !de: {C1, C0}
+  uint8_t data = 0;   // when de
+  unsigned ctrl = 0;  // when !de: {C1, C0}
 };
 
 // What a symbol carries: one of the control symbols, else data (any other 10-bit word decodes as
@@ -73,6 +73,8 @@ inline TmdsSymbol tmds_decode(uint16_t sym) {
 }
 
 // Ones minus zeros of a 10-bit symbol.
-inline int tmds_balance(uint16_t sym) { return 2 * std::popcount(static_cast<unsigned>(sym & 0x3FFu)) - 10; }
+inline int tmds_balance(uint16_t sym) {
+  return 2 * std::popcount(static_cast<unsigned>(sym & 0x3FFu)) - 10;
+}
 
 }  // namespace htx::video_test

@@ -57,7 +57,9 @@ TEST(Tmds, RandomStreamsDecodeAndStayBalanced) {
     const uint8_t base = static_cast<uint8_t>(rng());
     if (!de) line_disparity = 0;
     for (int i = 0; i < length; ++i) {
-      const uint8_t data = style == 0 ? static_cast<uint8_t>(rng()) : style == 1 ? static_cast<uint8_t>(base + i) : base;
+      const uint8_t data = style == 0   ? static_cast<uint8_t>(rng())
+                           : style == 1 ? static_cast<uint8_t>(base + i)
+                                        : base;
       const unsigned ctrl = rng() & 3;
       const uint16_t sym = ch.clock(de, data, ctrl);
       ASSERT_EQ(sym, ref.encode(de, data, ctrl)) << "run " << run << " symbol " << i;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "Vhtx_video.h"
+#include "htx/sim/video_capture.hpp"
 #include "htx_regs.h"
 #include "vmodel_clock.hpp"
 
@@ -73,16 +74,14 @@ struct Bench {
     }
     FAIL() << "no vertical sync in two frames";
   }
-  // The next frame's 640 x 480 visible pixels (RGB888), from the next vertical sync on.
+  // The next whole frame's 640 x 480 visible pixels (RGB888), as a monitor sees them.
   std::vector<uint32_t> capture() {
-    to_vsync();
-    std::vector<uint32_t> px;
-    px.reserve(kW * kH);
-    for (uint32_t i = 0; i < kHTotal * kVTotal && px.size() < kW * kH; ++i) {
+    htx::sim::VideoCapture monitor;
+    for (uint32_t i = 0; i < 2 * kHTotal * kVTotal && monitor.frames() == 0; ++i) {
       clock();
-      if (v.de_o) px.push_back(v.rgb_o);
+      monitor.clock(v.de_o, v.vsync_no, v.rgb_o);
     }
-    return px;
+    return monitor.last_frame();
   }
 };
 
@@ -216,6 +215,35 @@ TEST(Video, APortThatRefusesEveryReadSetsUnderrunWhichAWriteOfOneClears) {
   EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_UNDERRUN_Msk, 0u);
   b.capture();
   EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_UNDERRUN_Msk, 0u);
+}
+
+}  // namespace
+
+namespace {
+
+// The harness's monitor (hw/platform/sim/video_capture.hpp) on made-up pins: a frame cut short by
+// the next sync pulse is dropped and counted, a whole one kept.
+TEST(VideoCapture, KeepsWholeFramesAndDropsCutOnes) {
+  htx::sim::VideoCapture m(4, 2);
+  auto sync = [&] {
+    m.clock(false, true, 0);
+    m.clock(false, false, 0);
+    m.clock(false, true, 0);
+  };
+  for (uint32_t i = 0; i < 8; ++i) m.clock(true, true, 100 + i);  // before any sync: not a frame
+  EXPECT_EQ(m.frames(), 0u);
+  sync();
+  for (uint32_t i = 0; i < 5; ++i) m.clock(true, true, i);  // 5 of 8, then a sync: cut
+  sync();
+  EXPECT_EQ(m.frames(), 0u);
+  EXPECT_EQ(m.cut_frames(), 1u);
+  for (uint32_t i = 0; i < 10; ++i) m.clock(i % 5 != 4, true, 10 + i);  // 8 with de among 10
+  EXPECT_EQ(m.frames(), 1u);
+  EXPECT_EQ(m.last_frame(), (std::vector<uint32_t>{10, 11, 12, 13, 15, 16, 17, 18}));
+  m.clock(true, true, 99);  // after a whole frame, nothing until the next sync
+  sync();
+  EXPECT_EQ(m.cut_frames(), 1u);
+  EXPECT_EQ(m.last_frame().size(), 8u);
 }
 
 }  // namespace

@@ -23,15 +23,25 @@ inline VideoMode video_mode() {
 }
 
 // Shows the framebuffer (or a black picture) from the next frame on.
-inline void video_enable(bool on) { HTX_VIDEO->CTRL = on ? VIDEO_CTRL_ENABLE_Msk : 0u; }
-inline bool video_enabled() { return (HTX_VIDEO->CTRL & VIDEO_CTRL_ENABLE_Msk) != 0; }
+inline void video_enable(bool on) {
+  HTX_VIDEO->CTRL = on ? VIDEO_CTRL_ENABLE_Msk : 0u;
+}
+inline bool video_enabled() {
+  return (HTX_VIDEO->CTRL & VIDEO_CTRL_ENABLE_Msk) != 0;
+}
 
 // Frames scanned since reset (each counted as its vertical blanking begins).
-inline uint32_t video_frames() { return HTX_VIDEO->FRAME; }
+inline uint32_t video_frames() {
+  return HTX_VIDEO->FRAME;
+}
 
 // Whether a line was shown before it had been read whole since the last clear, and the clear.
-inline bool video_underrun() { return (HTX_VIDEO->STATUS & VIDEO_STATUS_UNDERRUN_Msk) != 0; }
-inline void video_clear_underrun() { HTX_VIDEO->STATUS = VIDEO_STATUS_UNDERRUN_Msk; }
+inline bool video_underrun() {
+  return (HTX_VIDEO->STATUS & VIDEO_STATUS_UNDERRUN_Msk) != 0;
+}
+inline void video_clear_underrun() {
+  HTX_VIDEO->STATUS = VIDEO_STATUS_UNDERRUN_Msk;
+}
 
 // Waits for the next vertical blanking (the frame counter moving on), polling at most max_polls
 // times; false if it did not come (no video unit clocking, or too few polls: a frame is 420,000

@@ -13,6 +13,7 @@
 
 #include "htx/sim/elf_image.hpp"
 #include "htx/sim/serial_endpoint.hpp"
+#include "htx/sim/video_capture.hpp"
 
 namespace htx::sim {
 
@@ -24,6 +25,8 @@ struct SimOptions {
   // Stop the GPU's clock while it is idle (htx_soc_fabric, Sim only): the same results, several
   // times faster. false runs it free, to check that claim.
   bool gpu_clock_gate = true;
+  // Watch the video scan-out's pins and keep the last whole frame it showed (screen()).
+  bool capture_screen = false;
 };
 
 enum class StopReason { Exit, ToHost, CycleLimit };
@@ -69,6 +72,8 @@ class SocSim {
   // The colour window as the raster unit wrote it: width x height RGB565 pixels with stride `width`,
   // pixel i at window half-word i (docs/contracts.md). Throws if width * height exceeds kFbPixels.
   std::vector<uint16_t> read_frame(uint32_t width, uint32_t height) const;
+  // The video scan-out as a monitor saw it (SimOptions::capture_screen; null without it).
+  const VideoCapture* screen() const;
 
  private:
   struct Impl;

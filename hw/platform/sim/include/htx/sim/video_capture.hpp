@@ -1,0 +1,35 @@
+// A monitor for the video scan-out's pins (htx_video, docs/video.md): fed one pixel clock at a
+// time, it keeps the last whole frame shown. A frame starts at a vertical sync pulse's start and is
+// whole when its width x height visible pixels (display enable high) have come; a frame cut short
+// by the next sync pulse is dropped.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace htx::sim {
+
+class VideoCapture {
+ public:
+  explicit VideoCapture(uint32_t width = 640, uint32_t height = 480);
+
+  // One pixel clock: display enable, the vertical sync line (low = pulse) and the pixel (RGB888,
+  // red in bits 23:16).
+  void clock(bool de, bool vsync_n, uint32_t rgb);
+
+  uint32_t width() const { return width_; }
+  uint32_t height() const { return height_; }
+  uint64_t frames() const { return frames_; }          // whole frames seen
+  uint64_t cut_frames() const { return cut_frames_; }  // frames dropped short
+  // The last whole frame, row by row (empty before the first).
+  const std::vector<uint32_t>& last_frame() const { return last_; }
+
+ private:
+  uint32_t width_, height_;
+  bool vsync_was_high_ = true;
+  bool collecting_ = false;
+  std::vector<uint32_t> current_, last_;
+  uint64_t frames_ = 0, cut_frames_ = 0;
+};
+
+}  // namespace htx::sim
