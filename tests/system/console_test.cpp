@@ -180,8 +180,13 @@ TEST(SystemConsole, ScreenShowsTheRenderedFrameScaled) {
   const std::string frame = ::testing::TempDir() + "htx_console_screen_frame.png";
   ConsoleSim cs({"--screen", screen, "--frame", frame});
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
-  const auto r = cs.console({"render cube", "info", "info", "info", "quit"});
+  const auto r = cs.console({"video", "video dim", "video off", "info", "video on", "render cube", "info", "info",
+                             "info", "quit"});
   ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("htx> video\nerror: usage: video on|off\nhtx> video dim\nerror: usage: video on|off"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("video 640x480 60 Hz showing 160x120 x4: off"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("video 640x480 60 Hz showing 160x120 x4: on"), std::string::npos) << r.out;
   ASSERT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
   const htx::Image s = htx::load_image(screen);
