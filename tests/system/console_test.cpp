@@ -54,8 +54,8 @@ struct ConsoleSim {
   // `extra`: more options for htx sim.
   explicit ConsoleSim(const std::vector<std::string>& extra = {}) : sim(sim_argv(extra)), pty(pty_of(sim)) {}
   static std::vector<std::string> sim_argv(const std::vector<std::string>& extra) {
-    std::vector<std::string> argv = {HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--uart", "pty",
-                                     "--max-cycles", "2000000000"};
+    std::vector<std::string> argv = {HTX_BIN,  "sim", "--elf",        HTX_FIRMWARE_DIR "/console.elf",
+                                     "--uart", "pty", "--max-cycles", "2000000000"};
     argv.insert(argv.end(), extra.begin(), extra.end());
     return argv;
   }
@@ -180,8 +180,8 @@ TEST(SystemConsole, ScreenShowsTheRenderedFrameScaled) {
   const std::string frame = ::testing::TempDir() + "htx_console_screen_frame.png";
   ConsoleSim cs({"--screen", screen, "--frame", frame});
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
-  const auto r = cs.console({"video", "video dim", "video off", "info", "video on", "render cube", "info", "info",
-                             "info", "quit"});
+  const auto r = cs.console(
+      {"video", "video dim", "video off", "info", "video on", "render cube", "info", "info", "info", "quit"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("htx> video\nerror: usage: video on|off\nhtx> video dim\nerror: usage: video on|off"),
             std::string::npos)
