@@ -91,13 +91,8 @@ void write_screen(const sim::VideoCapture& screen, const std::string& path) {
                              ": the run ended before the video scan-out had shown a whole frame (the first ends "
                              "after 420,000 clocks); not written");
   }
-  Image img{static_cast<int>(screen.width()), static_cast<int>(screen.height()), {}};
-  img.rgba.reserve(screen.last_frame().size() * 4);
-  for (uint32_t p : screen.last_frame()) {
-    img.rgba.insert(img.rgba.end(), {static_cast<uint8_t>(p >> 16), static_cast<uint8_t>(p >> 8),
-                                     static_cast<uint8_t>(p), 255});
-  }
-  write_png(path, img);
+  write_png(path, image_from_rgb888(static_cast<int>(screen.width()), static_cast<int>(screen.height()),
+                                    screen.last_frame()));
 }
 
 int run_sim(const SimArgs& a) {

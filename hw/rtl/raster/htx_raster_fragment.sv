@@ -150,15 +150,17 @@ module htx_raster_fragment #(
         last_wz_addr_q <= f2_addr_q;
         last_wz_q      <= f2_z_q;
       end
-      if (clr_q && !clear_hold_i) begin
-        clr_addr_q <= AddrW'(clr_next_q);
-        clr_next_q <= clr_next_q + 1'b1;
-        if (clr_row_end) begin
-          clr_end_q  <= clr_end_q + EW'(stride_i);
-          clr_rows_q <= clr_rows_q - 13'd1;
+      if (clr_q) begin
+        if (!clear_hold_i) begin
+          clr_addr_q <= AddrW'(clr_next_q);
+          clr_next_q <= clr_next_q + 1'b1;
+          if (clr_row_end) begin
+            clr_end_q  <= clr_end_q + EW'(stride_i);
+            clr_rows_q <= clr_rows_q - 13'd1;
+          end
+          if (clr_last) clr_q <= 1'b0;
         end
-        if (clr_last) clr_q <= 1'b0;
-      end else if (!clr_q && clear_start_i && (height_i != 13'd0) && (stride_i != 13'd0)) begin
+      end else if (clear_start_i && (height_i != 13'd0) && (stride_i != 13'd0)) begin
         clr_q         <= 1'b1;
         clr_color_q   <= clear_color_i;
         clr_depth_q   <= clear_depth_i;

@@ -138,7 +138,7 @@ module htx_video #(
   // line L + 1 while line L is shown, from the end of the line before L's first (line_due: a
   // source line's first picture line comes next, so its read must be over).
   logic             start_frame, line_due, start_next, start;
-  logic             f_busy_q, f_bank_q, next_bank_q, w_pend_q, w_bank_q;
+  logic             f_busy_q, f_bank_q, w_pend_q, w_bank_q;
   logic [FAW-1:0]   f_addr_q, next_base_q;
   logic [LbAW-1:0]  f_idx_q, w_idx_q;
   logic             f_last;
@@ -154,7 +154,6 @@ module htx_video #(
     if (!rst_ni) begin
       f_busy_q    <= 1'b0;
       f_bank_q    <= 1'b0;
-      next_bank_q <= 1'b0;
       f_addr_q    <= '0;
       next_base_q <= '0;
       f_idx_q     <= '0;
@@ -175,8 +174,9 @@ module htx_video #(
       if (start) begin
         f_busy_q    <= 1'b1;
         f_idx_q     <= '0;
-        f_bank_q    <= start_frame ? 1'b0 : next_bank_q;
-        next_bank_q <= start_frame ? 1'b1 : !next_bank_q;
+        // The half a line goes to is its parity, as the scan reads it (ys_q[0]): line 0, line 1
+        // at the frame's end, else line ys_q + 2.
+        f_bank_q    <= start_frame ? 1'b0 : (frame_end ? 1'b1 : ys_q[0]);
         f_addr_q    <= start_frame ? '0 : next_base_q;
         next_base_q <= (start_frame ? '0 : next_base_q) + FAW'(Wpl);
       end

@@ -15,6 +15,7 @@
 #include "htx/fw/plane_record.h"
 #include "htx/fw/vertex_record.h"
 #include "htx/model/config.hpp"
+#include "htx/model/image_io.hpp"
 #include "htx/sim/uart_line.hpp"
 #include "htx/sim/video_capture.hpp"
 #include "htx_regs.h"
@@ -526,10 +527,8 @@ TEST_P(FabricTest, VideoShowsTheColourWindowWhileTheBusReadsIt) {
   for (uint32_t y = 0; y < 480; ++y) {
     for (uint32_t x = 0; x < 640; ++x) {
       const uint32_t i = (y / 4) * 160 + x / 4;
-      const uint32_t p = (words[i / 2] >> (16 * (i % 2))) & 0xFFFF;
-      const uint32_t r = p >> 11, g = (p >> 5) & 63, b = p & 31;
-      const uint32_t rgb = (((r << 3) | (r >> 2)) << 16) | (((g << 2) | (g >> 4)) << 8) | ((b << 3) | (b >> 2));
-      ASSERT_EQ(px[y * 640 + x], rgb) << "x " << x << " y " << y;
+      const auto p = static_cast<uint16_t>(words[i / 2] >> (16 * (i % 2)));
+      ASSERT_EQ(px[y * 640 + x], htx::rgb888_from_rgb565(p)) << "x " << x << " y " << y;
     }
   }
   ASSERT_EQ(soc.dbus.responses.size(), first_read + read_index.size());

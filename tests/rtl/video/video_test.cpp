@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "Vhtx_video.h"
+#include "htx/model/image_io.hpp"
 #include "htx/sim/video_capture.hpp"
 #include "htx_regs.h"
 #include "vmodel_clock.hpp"
@@ -85,11 +86,6 @@ struct Bench {
   }
 };
 
-uint32_t expand565(uint16_t p) {
-  const uint32_t r = p >> 11, g = (p >> 5) & 63, b = p & 31;
-  return (((r << 3) | (r >> 2)) << 16) | (((g << 2) | (g >> 4)) << 8) | ((b << 3) | (b >> 2));
-}
-
 uint16_t pixel(const std::vector<uint32_t>& fb, uint32_t x, uint32_t y) {
   const uint32_t i = y * kSrcW + x;
   return static_cast<uint16_t>(fb[i / 2] >> (16 * (i % 2)));
@@ -135,7 +131,8 @@ TEST(Video, ShowsTheFramebufferScaledWhileItsPortRefusesHalfTheReads) {
   ASSERT_EQ(px.size(), kW * kH);
   for (uint32_t y = 0; y < kH; ++y) {
     for (uint32_t x = 0; x < kW; ++x) {
-      ASSERT_EQ(px[y * kW + x], expand565(pixel(b.fb, x / kScale, y / kScale))) << "x " << x << " y " << y;
+      ASSERT_EQ(px[y * kW + x], htx::rgb888_from_rgb565(pixel(b.fb, x / kScale, y / kScale)))
+          << "x " << x << " y " << y;
     }
   }
   const uint32_t status = b.read(VIDEO_STATUS_Offset);

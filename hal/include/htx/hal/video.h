@@ -43,15 +43,4 @@ inline void video_clear_underrun() {
   HTX_VIDEO->STATUS = VIDEO_STATUS_UNDERRUN_Msk;
 }
 
-// Waits for the next vertical blanking (the frame counter moving on), polling at most max_polls
-// times; false if it did not come (no video unit clocking, or too few polls: a frame is 420,000
-// clocks).
-inline bool video_wait_frame(uint32_t max_polls) {
-  const uint32_t start = video_frames();
-  for (uint32_t i = 0; i < max_polls; ++i) {
-    if (video_frames() != start) return true;
-  }
-  return false;
-}
-
 }  // namespace htx::hal

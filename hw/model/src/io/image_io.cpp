@@ -30,20 +30,29 @@ void write_png(const std::string& path, const Image& image) {
     throw std::runtime_error("cannot write PNG '" + path + "'");
 }
 
-Image image_from_rgb565(int width, int height, const std::vector<uint16_t>& pixels) {
+uint32_t rgb888_from_rgb565(uint16_t pixel) {
+  const uint32_t r = pixel >> 11 & 31, g = pixel >> 5 & 63, b = pixel & 31;
+  return (r << 3 | r >> 2) << 16 | (g << 2 | g >> 4) << 8 | (b << 3 | b >> 2);
+}
+
+Image image_from_rgb888(int width, int height, const std::vector<uint32_t>& pixels) {
   Image img;
   img.width = width;
   img.height = height;
   img.rgba.resize(pixels.size() * 4);
   for (size_t i = 0; i < pixels.size(); ++i) {
-    const unsigned p = pixels[i];
-    const unsigned r = p >> 11 & 31, g = p >> 5 & 63, b = p & 31;
-    img.rgba[i * 4 + 0] = static_cast<uint8_t>(r << 3 | r >> 2);
-    img.rgba[i * 4 + 1] = static_cast<uint8_t>(g << 2 | g >> 4);
-    img.rgba[i * 4 + 2] = static_cast<uint8_t>(b << 3 | b >> 2);
+    img.rgba[i * 4 + 0] = static_cast<uint8_t>(pixels[i] >> 16);
+    img.rgba[i * 4 + 1] = static_cast<uint8_t>(pixels[i] >> 8);
+    img.rgba[i * 4 + 2] = static_cast<uint8_t>(pixels[i]);
     img.rgba[i * 4 + 3] = 255;
   }
   return img;
+}
+
+Image image_from_rgb565(int width, int height, const std::vector<uint16_t>& pixels) {
+  std::vector<uint32_t> rgb(pixels.size());
+  for (size_t i = 0; i < pixels.size(); ++i) rgb[i] = rgb888_from_rgb565(pixels[i]);
+  return image_from_rgb888(width, height, rgb);
 }
 
 }  // namespace htx

@@ -20,6 +20,13 @@ Image load_image(const std::string& path);
 // Writes a PNG. Throws std::runtime_error on failure.
 void write_png(const std::string& path, const Image& image);
 
+// One RGB565 pixel widened to RGB888 by bit replication (0x1F -> 0xFF): red in bits 23:16, green
+// 15:8, blue 7:0, as the video scan-out's pins carry it (docs/video.md).
+uint32_t rgb888_from_rgb565(uint16_t pixel);
+
+// Pixels of RGB888 (red in bits 23:16) as an image, alpha 255.
+Image image_from_rgb888(int width, int height, const std::vector<uint32_t>& pixels);
+
 // Expands RGB565 to RGB8 by bit replication (0x1F -> 0xFF), alpha 255.
 Image image_from_rgb565(int width, int height, const std::vector<uint16_t>& pixels);
 
