@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "htx/hal/framebuffer.h"
+#include "htx/hal/video.h"
 #include "htx/hal/raster.h"
 #include "htx/hal/sim/fake_bus.hpp"
 #include "htx/hal/sim/system_devices.hpp"
@@ -143,6 +144,44 @@ TEST(HalFramebuffer, ReadsPixelsAndRowsFromHalfWords) {
   EXPECT_EQ(row[3], 8);
   bus.poke(htx::hal::kFbDepthBase + 4 * 6, 0xABCDEF);
   EXPECT_EQ(htx::hal::fb_read_depth(5, 1, 1), 0xABCDEFu);
+}
+
+// With two colour pages the reads are of the page the raster unit draws into: page 1 starts at
+// pixel FB_MEM.PIXELS of the colour window.
+TEST(HalFramebuffer, ReadsThePageTheRasterDrawsInto) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  bus.poke(HTX_RASTER_BASE + RASTER_FB_MEM_Offset, 10u | (2u << RASTER_FB_MEM_PAGES_Pos));
+  EXPECT_EQ(htx::hal::fb_pages(), 2u);
+  EXPECT_EQ(htx::hal::fb_page_pixels(), 10u);
+  for (uint32_t w = 0; w < 10; ++w) bus.poke(htx::hal::kFbColorBase + 4 * w, ((2 * w + 1) << 16) | (2 * w));
+  EXPECT_EQ(htx::hal::fb_read_pixel(4, 1, 1), 5);  // page 0
+  bus.poke(HTX_RASTER_BASE + RASTER_FB_PAGE_Offset, RASTER_FB_PAGE_DRAW_Msk);
+  EXPECT_EQ(htx::hal::fb_draw_page(), 1u);
+  EXPECT_EQ(htx::hal::fb_read_pixel(4, 1, 1), 15);  // pixel 5 of page 1: window pixel 15
+  uint16_t row[3] = {};
+  htx::hal::fb_read_row(4, 0, 1, 3, row);  // page 1's pixels 1..3: window pixels 11..13
+  EXPECT_EQ(row[0], 11);
+  EXPECT_EQ(row[1], 12);
+  EXPECT_EQ(row[2], 13);
+  htx::hal::fb_set_draw_page(0);
+  EXPECT_EQ(bus.writes_to(HTX_RASTER_BASE + RASTER_FB_PAGE_Offset), (std::vector<uint32_t>{0u}));
+}
+
+// The video's page is taken with its enable: each keeps the other when written.
+TEST(HalVideo, PageAndEnableKeepEachOther) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  bus.poke(HTX_VIDEO_BASE + VIDEO_CTRL_Offset, VIDEO_CTRL_PAGE_Msk);
+  htx::hal::video_enable(true);
+  bus.poke(HTX_VIDEO_BASE + VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk);
+  htx::hal::video_show_page(1);
+  EXPECT_EQ(bus.writes_to(HTX_VIDEO_BASE + VIDEO_CTRL_Offset),
+            (std::vector<uint32_t>{VIDEO_CTRL_ENABLE_Msk | VIDEO_CTRL_PAGE_Msk, VIDEO_CTRL_ENABLE_Msk | VIDEO_CTRL_PAGE_Msk}));
+  bus.poke(HTX_VIDEO_BASE + VIDEO_STATUS_Offset, VIDEO_STATUS_PAGE_Msk);
+  EXPECT_EQ(htx::hal::video_shown_page(), 1u);
+  bus.poke(HTX_VIDEO_BASE + VIDEO_MODE_Offset, 2u << VIDEO_MODE_PAGES_Pos);
+  EXPECT_EQ(htx::hal::video_pages(), 2u);
 }
 
 TEST(HalSystemDevices, TimerFollowsTheClockUartCollectsBytes) {

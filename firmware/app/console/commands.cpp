@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "frame_download.hpp"
+#include "frame_pages.hpp"
 #include "scene_store.hpp"
 #include "scene_upload.hpp"
 #include "texture_store.hpp"
@@ -19,6 +20,8 @@ namespace console_app {
 namespace {
 
 constexpr const char* kVersion = "0.1";
+// Status reads to wait for the video's last flip: a frame is 420,000 clocks, a read takes a few.
+constexpr uint32_t kFlipPolls = 1'000'000;
 
 struct Settings {
   render_app::DrawSettings draw;
@@ -86,10 +89,11 @@ void cmd_info() {
   printf("texture %ux%u %s (%s)\r\n", 1u << t.log2_width, 1u << t.log2_height, texture_format_name(t.format),
          t.uploaded ? "uploaded" : "checkerboard");
   const htx::hal::VideoMode m = htx::hal::video_mode();
-  printf("video 640x480 60 Hz showing %lux%lu x%lu: %s, frame %lu%s\r\n", static_cast<unsigned long>(m.src_width),
-         static_cast<unsigned long>(m.src_height), static_cast<unsigned long>(m.scale),
-         htx::hal::video_enabled() ? "on" : "off", static_cast<unsigned long>(htx::hal::video_frames()),
-         htx::hal::video_underrun() ? " (a line came late since video on)" : "");
+  printf("video 640x480 60 Hz showing %lux%lu x%lu: %s, frame %lu, page %lu of %lu%s\r\n",
+         static_cast<unsigned long>(m.src_width), static_cast<unsigned long>(m.src_height),
+         static_cast<unsigned long>(m.scale), htx::hal::video_enabled() ? "on" : "off",
+         static_cast<unsigned long>(htx::hal::video_frames()), static_cast<unsigned long>(shown_frame_page()),
+         static_cast<unsigned long>(frame_pages()), htx::hal::video_underrun() ? " (a line came late since video on)" : "");
 }
 
 void cmd_video(char* rest) {
@@ -189,9 +193,13 @@ void cmd_render(char* rest) {
     const TextureInfo t = current_texture();
     draw.texture_log2_width = t.log2_width;
     draw.texture_log2_height = t.log2_height;
+    // Drawn into the page not shown and shown from the next frame on (frame_pages.hpp); a failed
+    // render stays off the screen (`grab` still sends it: it reads the page drawn last).
+    begin_frame_page(kFlipPolls);
     g_last = render_app::draw_scene(*scene, draw);
     g_last_scene = scene->name;
     if (!g_last.ok) return error("render failed: ", g_last.error);
+    present_frame_page();
     printf("render %s method %s triangles %lu sent %lu frame_cycles %lu ", name,
            g_settings.method_text, static_cast<unsigned long>(g_last.stats.triangles), static_cast<unsigned long>(g_last.stats.sent),
            static_cast<unsigned long>(g_last.frame_cycles));

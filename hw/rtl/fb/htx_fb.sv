@@ -8,12 +8,16 @@
 // and may be single-ported; Spram = 1 builds them from the UP5K's SPRAM (htx_fb_ram; ZBits = 16).
 // A third user, the video scan-out (htx_video), reads colour words through vr_*: it waits only for
 // the raster's colour writes (SinglePort) and goes before the bus, whose colour reads then wait.
+// ColorPages = 2 (double buffering, docs/video.md): the colour memory holds two pages of FbPixels,
+// page 1 from word FbPixels / 2 of the window; the raster's colour writes go to page c_page_i (its
+// FB_PAGE.DRAW), the video and the bus address both pages directly. Depth has one page.
 module htx_fb #(
   parameter int unsigned ZBits      = 24,
   parameter int unsigned AddrW      = 24,
   parameter int unsigned FbPixels   = 76800,   // even
   parameter bit          SinglePort = 1'b0,
-  parameter bit          Spram      = 1'b0     // needs SinglePort
+  parameter bit          Spram      = 1'b0,    // needs SinglePort and one colour page
+  parameter int unsigned ColorPages = 1        // 1 or 2
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -25,6 +29,7 @@ module htx_fb #(
   input  logic              wz_en_i,
   input  logic [AddrW-1:0]  w_addr_i,
   input  logic [15:0]       wc_data_i,
+  input  logic              c_page_i,     // the page wc_* writes (ColorPages = 2)
   input  logic [ZBits-1:0]  wz_data_i,
 
   input  logic              vr_req_i,     // video: read colour word vr_addr_i (two pixels)
@@ -42,8 +47,8 @@ module htx_fb #(
   output logic [31:0]       rsp_rdata_o,
   output logic              rsp_err_o
 );
-  localparam int unsigned CWords = FbPixels / 2;
-  localparam int unsigned CAW    = $clog2(CWords);
+  localparam int unsigned CWords = FbPixels / 2;                // a page
+  localparam int unsigned CAW    = $clog2(CWords * ColorPages);  // both pages
   localparam int unsigned ZAW    = $clog2(FbPixels);
 
   // ---- Bus decode ------------------------------------------------------------------------------
@@ -52,7 +57,7 @@ module htx_fb #(
   assign is_color = (req_addr_i[31:20] == 12'h300);
   assign is_depth = (req_addr_i[31:20] == 12'h301);
   assign bus_word = req_addr_i[19:2];
-  assign in_range = is_color ? htx_raster_pkg::below_const(32'(bus_word), CWords)
+  assign in_range = is_color ? htx_raster_pkg::below_const(32'(bus_word), CWords * ColorPages)
                              : (is_depth && htx_raster_pkg::below_const(32'(bus_word), FbPixels));
   // The raster's ports come first: a bus read of depth needs the depth read port, a bus write the
   // write port of its memory (SinglePort: any access needs the memory's one port).
@@ -76,12 +81,14 @@ module htx_fb #(
 
   // ---- Colour: 32-bit words of two pixels --------------------------------------------------------
   logic [1:0]     c_we;
-  logic [CAW-1:0] c_waddr;
+  logic [CAW-1:0] c_waddr, w_word;
+  // The raster's word in its page (its addresses are below FbPixels: htx_raster_fragment).
+  assign w_word = (ColorPages > 1 && c_page_i) ? CAW'(w_addr_i >> 1) + CAW'(CWords) : CAW'(w_addr_i >> 1);
   logic [31:0]    c_wdata, c_rdata;
   always_comb begin
     if (wc_en_i) begin
       c_we    = w_addr_i[0] ? 2'b10 : 2'b01;
-      c_waddr = CAW'(w_addr_i >> 1);
+      c_waddr = w_word;
       c_wdata = {wc_data_i, wc_data_i};
     end else begin
       c_we    = bus_wr_c ? {&req_be_i[3:2], &req_be_i[1:0]} : 2'b00;
@@ -93,7 +100,7 @@ module htx_fb #(
   // bus's), so the memory needs no read/write address multiplexer of its own.
   logic [CAW-1:0] c_raddr;
   assign c_raddr = SinglePort ? c_waddr : (vr_gnt_o ? CAW'(vr_addr_i) : CAW'(bus_word));
-  htx_fb_ram #(.LaneW(16), .Lanes(2), .Words(CWords), .Spram(Spram)) u_color (
+  htx_fb_ram #(.LaneW(16), .Lanes(2), .Words(CWords * ColorPages), .Spram(Spram)) u_color (
     .clk_i,
     .re_i   (bus_rd_c || vr_gnt_o),
     .raddr_i(c_raddr),
@@ -160,5 +167,5 @@ module htx_fb #(
   assign vr_data_o   = c_rdata;
 
   logic unused;
-  assign unused = ^{zr_addr_i, w_addr_i, req_addr_i[1:0], req_wdata_i, vr_addr_i};
+  assign unused = ^{zr_addr_i, w_addr_i, req_addr_i[1:0], req_wdata_i, vr_addr_i, c_page_i};
 endmodule

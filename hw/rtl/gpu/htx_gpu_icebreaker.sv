@@ -14,7 +14,9 @@ module htx_gpu_icebreaker #(
   parameter bit          TexWindowRead = 1'b1,
   // Framebuffer and depth in the UP5K's SPRAM (the board's builds; Yosys only, docs/gpu.md). The
   // memories are single-ported in every build, so simulation arbitrates as the board does.
-  parameter bit          FbSpram = 1'b0
+  parameter bit          FbSpram = 1'b0,
+  // Colour pages (2: double buffering; the SoC's simulated and ULX3S builds). With FbSpram, 1.
+  parameter int unsigned ColorPages = 1
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -48,6 +50,6 @@ module htx_gpu_icebreaker #(
     .CoordW(20), .TF(10), .GradW(16), .LF(6), .TexFormats(3'b011), .TexFilters(3'b011),
     .TexSlots(4), .TexLanes(1), .TexShiftAdd(1'b0), .TexCounters(1'b0), .LogIdx(6),
     .RasterCounters(RasterCounters), .TexWindowRead(TexWindowRead), .FwSetup(1'b1),
-    .FbPixels(FbPixels), .FbSpram(FbSpram), .TexBAW(TexBAW), .Methods(Methods)
+    .FbPixels(FbPixels), .FbSpram(FbSpram), .ColorPages(ColorPages), .TexBAW(TexBAW), .Methods(Methods)
   ) u_subsys (.*);
 endmodule

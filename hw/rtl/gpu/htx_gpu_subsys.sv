@@ -20,6 +20,7 @@ module htx_gpu_subsys #(
   parameter int unsigned FifoDepth   = 64,
   parameter int unsigned FbPixels    = 76800,
   parameter bit          FbSpram     = 1'b0,   // htx_fb's Spram (needs Iterative)
+  parameter int unsigned ColorPages  = 1,      // htx_fb's colour pages (2: double buffering)
   parameter int unsigned QBits       = 32,
   parameter int unsigned UvIntBits   = 16,
   parameter int unsigned PixelSteps  = 2,
@@ -128,6 +129,7 @@ module htx_gpu_subsys #(
   logic             zr_en, wc_en, wz_en;
   logic [AddrW-1:0] zr_addr, w_addr;
   logic [ZBits-1:0] zr_data, wz_data;
+  logic             draw_page;
   logic [15:0]      wc_data;
 
   logic              tq_valid, tq_ready, tq_direct;
@@ -150,7 +152,7 @@ module htx_gpu_subsys #(
     .PixelPipelined(PixelPipelined), .PixelMulIterative(PixelMulIterative),
     .SubdivDepth(SubdivDepth), .DfFracBits(DfFracBits), .DfCap(DfCap), .LF(LF), .LogIdx(LogIdx),
     .CoordW(CoordW), .QW(QW), .GradW(GradW), .LocW(LocW), .Counters(RasterCounters),
-    .FwSetup(FwSetup), .TexTagW(TagW)
+    .FwSetup(FwSetup), .TexTagW(TagW), .ColorPages(ColorPages)
   ) u_raster (
     .clk_i, .rst_ni,
     .req_valid_i(rs_valid[0]), .req_ready_o(rs_ready[0]), .req_addr_i(rs_addr),
@@ -159,6 +161,7 @@ module htx_gpu_subsys #(
     .clear_hold_i(fbv_req_i),
     .zr_en_o(zr_en), .zr_addr_o(zr_addr), .zr_data_i(zr_data),
     .wc_en_o(wc_en), .wz_en_o(wz_en), .w_addr_o(w_addr), .wc_data_o(wc_data), .wz_data_o(wz_data),
+    .draw_page_o(draw_page),
     .tex_req_valid_o(tq_valid), .tex_req_ready_i(tq_ready),
     .tex_req_u_o(tq_u), .tex_req_v_o(tq_v),
     .tex_req_filter_o(tq_filter), .tex_req_wrap_u_o(tq_wrap_u), .tex_req_wrap_v_o(tq_wrap_v),
@@ -213,10 +216,11 @@ module htx_gpu_subsys #(
   // The iterative raster's fragment stage never reads and writes depth in one clock (its Forward
   // = 0 schedule), so its memories can be single-ported.
   htx_fb #(.ZBits(ZBits), .AddrW(AddrW), .FbPixels(FbPixels), .SinglePort(Iterative),
-           .Spram(FbSpram)) u_fb (
+           .Spram(FbSpram), .ColorPages(ColorPages)) u_fb (
     .clk_i, .rst_ni,
     .zr_en_i(zr_en), .zr_addr_i(zr_addr), .zr_data_o(zr_data),
     .wc_en_i(wc_en), .wz_en_i(wz_en), .w_addr_i(w_addr), .wc_data_i(wc_data), .wz_data_i(wz_data),
+    .c_page_i(draw_page),
     .vr_req_i(fbv_req_i), .vr_addr_i(AddrW'(fbv_addr_i)), .vr_gnt_o(fbv_gnt_o), .vr_data_o(fbv_data_o),
     .req_valid_i(ms_valid[0]), .req_ready_o(ms_ready[0]), .req_addr_i(ms_addr),
     .req_we_i(ms_we), .req_be_i(ms_be), .req_wdata_i(ms_wdata),

@@ -46,7 +46,9 @@ module htx_raster #(
   // Setup is the firmware's (CAPS.FW_SETUP; `icebreaker`, docs/raster.md "Plane record"): the FIFO
   // takes plane records, which htx_raster_planes_in writes into the traversal's plane RAM, in place
   // of the input stage and htx_raster_setup. Needs Iterative (the traversal's planes in RAM).
-  parameter bit          FwSetup    = 1'b0
+  parameter bit          FwSetup    = 1'b0,
+  // Colour pages in htx_fb (FB_MEM.PAGES; 2: double buffering, FB_PAGE.DRAW chooses the one written).
+  parameter int unsigned ColorPages = 1
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -72,6 +74,7 @@ module htx_raster #(
   output logic [AddrW-1:0]  w_addr_o,
   output logic [15:0]       wc_data_o,
   output logic [ZBits-1:0]  wz_data_o,
+  output logic              draw_page_o,    // FB_PAGE.DRAW: the colour page wc_* writes
 
   // Texture request / response (docs/contracts.md, GPU join §1; mirrors htx_texture's req_* / out_*).
   output logic               tex_req_valid_o,
@@ -127,6 +130,7 @@ module htx_raster #(
   logic [11:0] offset;
   logic        accept, wr, is_fifo, fifo_full, fifo_empty;
   logic        enable_q, err_state_q;
+  logic        draw_page_q /* verilator public_flat_rd */;  // (htx sim reads the page drawn)
   logic [15:0] clear_color_q;
   logic [23:0] clear_depth_q;
   logic [12:0] width_q, height_q, stride_q;
@@ -964,6 +968,7 @@ module htx_raster #(
     .busy_o        (frag_busy),
     .pixel_o       (pixel)
   );
+  assign draw_page_o = draw_page_q;
 
   // A clear waits until setup holds nothing and every later stage is empty; setup takes no new
   // triangle meanwhile (hold_i), so the clear lands between the triangles before and after it.
@@ -1028,6 +1033,12 @@ module htx_raster #(
       htx_raster_reg_pkg::RASTER_FB_STRIDE_OFFSET: rdata_d = 32'(stride_q);
       // A diagnostic, built with the counters (CAPS.STATE): the board's build leaves both out.
       htx_raster_reg_pkg::RASTER_STATE_OFFSET: rdata_d = Counters ? last_state_q : 32'd0;
+      htx_raster_reg_pkg::RASTER_FB_MEM_OFFSET: begin
+        rdata_d[htx_raster_reg_pkg::RASTER_FB_MEM_PIXELS_LSB +: 20] = 20'(FbPixels);
+        rdata_d[htx_raster_reg_pkg::RASTER_FB_MEM_PAGES_LSB +: 2]   = 2'(ColorPages);
+      end
+      htx_raster_reg_pkg::RASTER_FB_PAGE_OFFSET:
+        rdata_d[htx_raster_reg_pkg::RASTER_FB_PAGE_DRAW_LSB] = draw_page_q;
       htx_raster_reg_pkg::RASTER_CAPS_OFFSET: begin
         rdata_d[htx_raster_reg_pkg::RASTER_CAPS_METHODS_LSB +: 5]  = Methods;
         rdata_d[htx_raster_reg_pkg::RASTER_CAPS_COUNTERS_LSB]      = Counters;
@@ -1051,6 +1062,7 @@ module htx_raster #(
     if (!rst_ni) begin
       enable_q      <= 1'(htx_raster_reg_pkg::RASTER_CTRL_ENABLE_RESET >> htx_raster_reg_pkg::RASTER_CTRL_ENABLE_LSB);
       err_state_q   <= 1'b0;
+      draw_page_q   <= 1'b0;
       clear_color_q <= '0;
       clear_depth_q <= 24'(htx_raster_reg_pkg::RASTER_CLEAR_DEPTH_RESET);
       width_q       <= 13'(htx_raster_reg_pkg::RASTER_FB_SIZE_WIDTH_RESET >> htx_raster_reg_pkg::RASTER_FB_SIZE_WIDTH_LSB);
@@ -1081,6 +1093,8 @@ module htx_raster #(
             height_q <= req_wdata_i[htx_raster_reg_pkg::RASTER_FB_SIZE_HEIGHT_LSB +: 13];
           end
           htx_raster_reg_pkg::RASTER_FB_STRIDE_OFFSET: stride_q <= req_wdata_i[12:0];
+          htx_raster_reg_pkg::RASTER_FB_PAGE_OFFSET:
+            draw_page_q <= (ColorPages > 1) && req_wdata_i[htx_raster_reg_pkg::RASTER_FB_PAGE_DRAW_LSB];
           default: ;
         endcase
       end

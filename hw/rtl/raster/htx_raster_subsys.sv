@@ -84,6 +84,7 @@ module htx_raster_subsys #(
   logic             zr_en, wc_en, wz_en;
   logic [AddrW-1:0] zr_addr, w_addr;
   logic [ZBits-1:0] zr_data, wz_data;
+  logic             draw_page;  // (one colour page: always 0)
   logic [15:0]      wc_data;
 
   htx_raster #(
@@ -102,6 +103,7 @@ module htx_raster_subsys #(
     .clear_hold_i(1'b0),
     .zr_en_o(zr_en), .zr_addr_o(zr_addr), .zr_data_i(zr_data),
     .wc_en_o(wc_en), .wz_en_o(wz_en), .w_addr_o(w_addr), .wc_data_o(wc_data), .wz_data_o(wz_data),
+    .draw_page_o(draw_page),
     .tex_req_valid_o(tex_req_valid), .tex_req_ready_i(tex_req_ready),
     .tex_req_u_o(tex_req_u), .tex_req_v_o(tex_req_v), .tex_req_filter_o(tex_req_filter),
     .tex_req_wrap_u_o(tex_req_wrap_u), .tex_req_wrap_v_o(tex_req_wrap_v), .tex_req_slot_o(tex_req_slot),
@@ -148,6 +150,7 @@ module htx_raster_subsys #(
     .clk_i, .rst_ni,
     .zr_en_i(zr_en), .zr_addr_i(zr_addr), .zr_data_o(zr_data),
     .wc_en_i(wc_en), .wz_en_i(wz_en), .w_addr_i(w_addr), .wc_data_i(wc_data), .wz_data_i(wz_data),
+    .c_page_i(draw_page),
     .vr_req_i(1'b0), .vr_addr_i('0), .vr_gnt_o(vr_gnt_unused), .vr_data_o(vr_data_unused),
     .req_valid_i(mem_req_valid_i), .req_ready_o(mem_req_ready_o), .req_addr_i(mem_req_addr_i),
     .req_we_i(mem_req_we_i), .req_be_i(mem_req_be_i), .req_wdata_i(mem_req_wdata_i),

@@ -34,6 +34,9 @@ module htx_raster_synth_wrapper #(
   logic [AddrW-1:0] zr_addr, w_addr;
   logic [15:0]      wc_data;
   logic [ZBits-1:0] wz_data;
+  logic             draw_page;  // (one colour page: always 0)
+  logic             unused_draw_page;
+  assign unused_draw_page = draw_page;
   logic              tq_valid, tq_lod_direct, to_ready;
   logic [ReqBits-1:0] tq_bits;
   logic [TagW-1:0]   tq_tag, to_tag_q;
@@ -68,6 +71,7 @@ module htx_raster_synth_wrapper #(
     .w_addr_o   (w_addr),
     .wc_data_o  (wc_data),
     .wz_data_o  (wz_data),
+    .draw_page_o(draw_page),
     .tex_req_valid_o(tq_valid),
     .tex_req_ready_i(in_q[70 + ZBits]),
     .tex_req_u_o(tq_bits[0 +: CoordW]),

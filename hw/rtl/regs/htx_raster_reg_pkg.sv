@@ -168,6 +168,26 @@ package htx_raster_reg_pkg;
   localparam logic [31:0] RASTER_CAPS_FW_SETUP_MASK = 32'h00000200;
   localparam logic [31:0] RASTER_CAPS_FW_SETUP_RESET = 32'h00000000;
 
+  // FB_MEM (ro): The framebuffer memories this build has (fixed by the RTL parameters; reads only)
+  localparam logic [11:0] RASTER_FB_MEM_OFFSET = 12'h024;
+  localparam logic [31:0] RASTER_FB_MEM_RESET = 32'h01000000;
+  localparam int unsigned RASTER_FB_MEM_PIXELS_LSB = 0;
+  localparam int unsigned RASTER_FB_MEM_PIXELS_WIDTH = 20;
+  localparam logic [31:0] RASTER_FB_MEM_PIXELS_MASK = 32'h000FFFFF;
+  localparam logic [31:0] RASTER_FB_MEM_PIXELS_RESET = 32'h00000000;
+  localparam int unsigned RASTER_FB_MEM_PAGES_LSB = 24;
+  localparam int unsigned RASTER_FB_MEM_PAGES_WIDTH = 2;
+  localparam logic [31:0] RASTER_FB_MEM_PAGES_MASK = 32'h03000000;
+  localparam logic [31:0] RASTER_FB_MEM_PAGES_RESET = 32'h01000000;
+
+  // FB_PAGE (rw): The colour page drawn into (double buffering; docs/video.md)
+  localparam logic [11:0] RASTER_FB_PAGE_OFFSET = 12'h028;
+  localparam logic [31:0] RASTER_FB_PAGE_RESET = 32'h00000000;
+  localparam int unsigned RASTER_FB_PAGE_DRAW_LSB = 0;
+  localparam int unsigned RASTER_FB_PAGE_DRAW_WIDTH = 1;
+  localparam logic [31:0] RASTER_FB_PAGE_DRAW_MASK = 32'h00000001;
+  localparam logic [31:0] RASTER_FB_PAGE_DRAW_RESET = 32'h00000000;
+
   // CNT_BUSY (ro): Clocks with STATUS.BUSY set. CNT_BUSY to CNT_PIXELS live in block RAM: a read of one waits up to 17 clocks and returns the count three clocks before it completes (exact once the unit is idle)
   localparam logic [11:0] RASTER_CNT_BUSY_OFFSET = 12'h040;
   localparam logic [31:0] RASTER_CNT_BUSY_RESET = 32'h00000000;

@@ -11,6 +11,10 @@ package htx_video_reg_pkg;
   localparam int unsigned VIDEO_CTRL_ENABLE_WIDTH = 1;
   localparam logic [31:0] VIDEO_CTRL_ENABLE_MASK = 32'h00000001;
   localparam logic [31:0] VIDEO_CTRL_ENABLE_RESET = 32'h00000000;
+  localparam int unsigned VIDEO_CTRL_PAGE_LSB = 1;
+  localparam int unsigned VIDEO_CTRL_PAGE_WIDTH = 1;
+  localparam logic [31:0] VIDEO_CTRL_PAGE_MASK = 32'h00000002;
+  localparam logic [31:0] VIDEO_CTRL_PAGE_RESET = 32'h00000000;
 
   // STATUS (rw): Scan-out state
   localparam logic [11:0] VIDEO_STATUS_OFFSET = 12'h004;
@@ -27,6 +31,10 @@ package htx_video_reg_pkg;
   localparam int unsigned VIDEO_STATUS_SHOWING_WIDTH = 1;
   localparam logic [31:0] VIDEO_STATUS_SHOWING_MASK = 32'h00000004;
   localparam logic [31:0] VIDEO_STATUS_SHOWING_RESET = 32'h00000000;
+  localparam int unsigned VIDEO_STATUS_PAGE_LSB = 3;
+  localparam int unsigned VIDEO_STATUS_PAGE_WIDTH = 1;
+  localparam logic [31:0] VIDEO_STATUS_PAGE_MASK = 32'h00000008;
+  localparam logic [31:0] VIDEO_STATUS_PAGE_RESET = 32'h00000000;
 
   // FRAME (ro): Frame counter
   localparam logic [11:0] VIDEO_FRAME_OFFSET = 12'h008;
@@ -46,7 +54,7 @@ package htx_video_reg_pkg;
 
   // MODE (ro): What is shown (the SoC's parameters; the reset values are the default's)
   localparam logic [11:0] VIDEO_MODE_OFFSET = 12'h010;
-  localparam logic [31:0] VIDEO_MODE_RESET = 32'h040780A0;
+  localparam logic [31:0] VIDEO_MODE_RESET = 32'h140780A0;
   localparam int unsigned VIDEO_MODE_SRC_WIDTH_LSB = 0;
   localparam int unsigned VIDEO_MODE_SRC_WIDTH_WIDTH = 12;
   localparam logic [31:0] VIDEO_MODE_SRC_WIDTH_MASK = 32'h00000FFF;
@@ -59,6 +67,10 @@ package htx_video_reg_pkg;
   localparam int unsigned VIDEO_MODE_SCALE_WIDTH = 4;
   localparam logic [31:0] VIDEO_MODE_SCALE_MASK = 32'h0F000000;
   localparam logic [31:0] VIDEO_MODE_SCALE_RESET = 32'h04000000;
+  localparam int unsigned VIDEO_MODE_PAGES_LSB = 28;
+  localparam int unsigned VIDEO_MODE_PAGES_WIDTH = 2;
+  localparam logic [31:0] VIDEO_MODE_PAGES_MASK = 32'h30000000;
+  localparam logic [31:0] VIDEO_MODE_PAGES_RESET = 32'h10000000;
 
   // verilator lint_on UNUSEDPARAM
 endpackage

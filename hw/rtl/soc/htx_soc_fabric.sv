@@ -15,7 +15,8 @@
 // are switched on by stall_en_i.
 //
 // The GPU is htx_gpu_icebreaker (docs/soc.md, "GPU"): raster and texture units in the `icebreaker`
-// configuration of the UP5K board, with framebuffer and depth memories of FbPixels pixels. Its two
+// configuration of the UP5K board, with framebuffer and depth memories of FbPixels pixels (two
+// colour pages of them, except in SPRAM). Its two
 // register blocks and its memory windows are each claimed by their own demux entry (so every other
 // address answers an error here) and joined onto the GPU's two ports: a demux sends requests to one
 // target at a time and takes responses only from that target, so two windows of one slave can share
@@ -76,6 +77,9 @@ module htx_soc_fabric #(
   input  logic        stall_en_i,
   input  logic [31:0] stall_seed_i
 );
+  // Two colour pages (double buffering, docs/video.md) where the memories are block RAM; the UP5K's
+  // SPRAM holds one page beside the depth buffer.
+  localparam int unsigned FbPages = GpuFbSpram ? 1 : 2;
   localparam logic [31:0] RamBase = 32'h0000_0000;
   localparam logic [31:0] RamMask = ~(32'(RamBytes) - 32'd1);
   localparam logic [31:0] IoBase  = 32'h2000_0000;
@@ -319,7 +323,8 @@ module htx_soc_fabric #(
     end
 
     htx_gpu_icebreaker #(.FbPixels(FbPixels), .Methods(GpuMethods), .RasterCounters(GpuCounters),
-                         .TexWindowRead(GpuTexRead), .FbSpram(GpuFbSpram)) u_gpu (
+                         .TexWindowRead(GpuTexRead), .FbSpram(GpuFbSpram),
+                         .ColorPages(FbPages)) u_gpu (
       .clk_i(gpu_clk), .rst_ni,
       .reg_req_valid_i(q_valid[3]), .reg_req_ready_o(q_ready[3]), .reg_req_addr_i(q_addr[96 +: 32]),
       .reg_req_we_i(q_we[3]), .reg_req_be_i(q_be[12 +: 4]), .reg_req_wdata_i(q_wdata[96 +: 32]),
@@ -333,7 +338,8 @@ module htx_soc_fabric #(
 
     // VIDEO on the SoC's clock (the pixel clock), reading the GPU's colour memory; its reads keep
     // the simulation's GPU clock running (busy_o above).
-    htx_video #(.SrcW(160), .SrcH(FbPixels / 160), .AddrW(24)) u_video (
+    htx_video #(.SrcW(160), .SrcH(FbPixels / 160), .AddrW(24), .Pages(FbPages),
+                .PageWords(FbPixels / 2)) u_video (
       .clk_i, .rst_ni,
       .req_valid_i(q_valid[4]), .req_ready_o(q_ready[4]), .req_addr_i(q_addr[128 +: 32]),
       .req_we_i(q_we[4]), .req_be_i(q_be[16 +: 4]), .req_wdata_i(q_wdata[128 +: 32]),

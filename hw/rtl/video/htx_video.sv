@@ -7,6 +7,9 @@
 // line is due sets STATUS.UNDERRUN and the line shows the half's old words. The output is RGB888
 // (RGB565 widened by bit replication, as `htx render` writes PNGs), the display enable and both
 // syncs (active low), two clocks after the timing counters.
+// Pages = 2 (the GPU double-buffers): the colour memory holds two frames, page 1 at word PageWords;
+// CTRL.PAGE chooses the one shown and, like ENABLE, is taken at a frame's start, so firmware draws
+// into the other page and a flip never splits a frame.
 module htx_video #(
   parameter int unsigned SrcW    = 160,   // even
   parameter int unsigned SrcH    = 120,
@@ -19,7 +22,9 @@ module htx_video #(
   parameter int unsigned VFront  = 10,
   parameter int unsigned VSync   = 2,
   parameter int unsigned VBack   = 33,    // VFront + VSync + VBack > Scale
-  parameter int unsigned AddrW   = 24     // framebuffer word addresses
+  parameter int unsigned AddrW   = 24,    // framebuffer word addresses
+  parameter int unsigned Pages   = 1,     // colour pages (1 or 2)
+  parameter int unsigned PageWords = SrcW / 2 * SrcH  // page 1's first word (>= the words shown)
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
@@ -48,7 +53,7 @@ module htx_video #(
   output logic             busy_o      // reading the framebuffer (the simulation's GPU clock gate)
 );
   localparam int unsigned Wpl    = SrcW / 2;          // framebuffer words a line
-  localparam int unsigned FAW    = $clog2(Wpl * SrcH); // the words shown (AddrW may be wider)
+  localparam int unsigned FAW    = $clog2(PageWords * (Pages - 1) + Wpl * SrcH);  // the words read
   localparam int unsigned LbAW   = $clog2(Wpl);
   localparam int unsigned XW     = $clog2(SrcW + 1);
   localparam int unsigned YW     = $clog2(SrcH + 2);
@@ -97,7 +102,7 @@ module htx_video #(
   end
 
   // ---- Registers -------------------------------------------------------------------------------
-  logic        enable_q, underrun_q, show_q;
+  logic        enable_q, underrun_q, show_q, page_q, shown_page_q;
   logic [31:0] frame_count_q;
   logic        act_q, act_write_q;
   logic [11:0] act_offset_q;
@@ -112,17 +117,21 @@ module htx_video #(
   always_comb begin
     rdata_d = '0;
     unique case (act_offset_q)
-      htx_video_reg_pkg::VIDEO_CTRL_OFFSET:
+      htx_video_reg_pkg::VIDEO_CTRL_OFFSET: begin
         rdata_d[htx_video_reg_pkg::VIDEO_CTRL_ENABLE_LSB] = enable_q;
+        rdata_d[htx_video_reg_pkg::VIDEO_CTRL_PAGE_LSB]   = page_q;
+      end
       htx_video_reg_pkg::VIDEO_STATUS_OFFSET: begin
         rdata_d[htx_video_reg_pkg::VIDEO_STATUS_VBLANK_LSB]   = !v_active;
         rdata_d[htx_video_reg_pkg::VIDEO_STATUS_UNDERRUN_LSB] = underrun_q;
         rdata_d[htx_video_reg_pkg::VIDEO_STATUS_SHOWING_LSB]  = show_q;
+        rdata_d[htx_video_reg_pkg::VIDEO_STATUS_PAGE_LSB]     = shown_page_q;
       end
       htx_video_reg_pkg::VIDEO_FRAME_OFFSET: rdata_d = frame_count_q;
       htx_video_reg_pkg::VIDEO_LINE_OFFSET:  rdata_d = 32'(v);
       htx_video_reg_pkg::VIDEO_MODE_OFFSET:
-        rdata_d = (32'(Scale) << htx_video_reg_pkg::VIDEO_MODE_SCALE_LSB) |
+        rdata_d = (32'(Pages) << htx_video_reg_pkg::VIDEO_MODE_PAGES_LSB) |
+                  (32'(Scale) << htx_video_reg_pkg::VIDEO_MODE_SCALE_LSB) |
                   (32'(SrcH) << htx_video_reg_pkg::VIDEO_MODE_SRC_HEIGHT_LSB) |
                   (32'(SrcW) << htx_video_reg_pkg::VIDEO_MODE_SRC_WIDTH_LSB);
       default: ;
@@ -139,7 +148,7 @@ module htx_video #(
   // source line's first picture line comes next, so its read must be over).
   logic             start_frame, line_due, start_next, start;
   logic             f_busy_q, f_bank_q, w_pend_q, w_bank_q;
-  logic [FAW-1:0]   f_addr_q, next_base_q;
+  logic [FAW-1:0]   f_addr_q, next_base_q, page_base;
   logic [LbAW-1:0]  f_idx_q, w_idx_q;
   logic             f_last;
   assign start_frame = line_end && (v == 10'(VTotal - Scale - 1));
@@ -149,6 +158,8 @@ module htx_video #(
   assign start_next  = line_due && (SrcH > 1) && (frame_end || (32'(ys_q) < 32'(SrcH - 2)));
   assign start  = (start_frame && enable_q) || start_next;
   assign f_last = (f_idx_q == LbAW'(Wpl - 1));
+  // The page a frame shows is taken at its start, with the enable (page_q is 0 with one page).
+  assign page_base = page_q ? FAW'(PageWords) : '0;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -161,6 +172,7 @@ module htx_video #(
       w_bank_q    <= 1'b0;
       w_idx_q     <= '0;
       show_q      <= 1'b0;
+      shown_page_q <= 1'b0;
     end else begin
       w_pend_q <= f_busy_q && fb_gnt_i;
       if (f_busy_q && fb_gnt_i) begin
@@ -170,15 +182,18 @@ module htx_video #(
         f_idx_q  <= f_idx_q + LbAW'(1);
         if (f_last) f_busy_q <= 1'b0;
       end
-      if (start_frame) show_q <= enable_q;
+      if (start_frame) begin
+        show_q       <= enable_q;
+        shown_page_q <= page_q;
+      end
       if (start) begin
         f_busy_q    <= 1'b1;
         f_idx_q     <= '0;
         // The half a line goes to is its parity, as the scan reads it (ys_q[0]): line 0, line 1
         // at the frame's end, else line ys_q + 2.
         f_bank_q    <= start_frame ? 1'b0 : (frame_end ? 1'b1 : ys_q[0]);
-        f_addr_q    <= start_frame ? '0 : next_base_q;
-        next_base_q <= (start_frame ? '0 : next_base_q) + FAW'(Wpl);
+        f_addr_q    <= start_frame ? page_base : next_base_q;
+        next_base_q <= (start_frame ? page_base : next_base_q) + FAW'(Wpl);
       end
     end
   end
@@ -189,11 +204,13 @@ module htx_video #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       enable_q      <= 1'b0;
+      page_q        <= 1'b0;
       underrun_q    <= 1'b0;
       frame_count_q <= '0;
     end else begin
       if (act_write_q && (act_offset_q == htx_video_reg_pkg::VIDEO_CTRL_OFFSET)) begin
         enable_q <= act_wdata_q[htx_video_reg_pkg::VIDEO_CTRL_ENABLE_LSB];
+        page_q   <= (Pages > 1) && act_wdata_q[htx_video_reg_pkg::VIDEO_CTRL_PAGE_LSB];
       end
       // A line due while its read is unfinished (this wins over a clear).
       if (line_due && f_busy_q) begin

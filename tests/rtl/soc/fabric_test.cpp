@@ -89,8 +89,9 @@ TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
   ASSERT_FALSE(soc.write(kFbColor + 8, 0x1111'2222).err);
   soc.write(kFbColor + 8, 0xAAAA'0000, 0xC);
   EXPECT_EQ(soc.read(kFbColor + 8).rdata, 0xAAAA'2222u);
-  soc.write(kFbColor + 2 * kFbPixels - 4, 0xBEEF'CAFE);  // the last word
-  EXPECT_EQ(soc.read(kFbColor + 2 * kFbPixels - 4).rdata, 0xBEEF'CAFEu);
+  // Two colour pages (double buffering) of kFbPixels pixels each.
+  soc.write(kFbColor + 4 * kFbPixels - 4, 0xBEEF'CAFE);  // the last word of page 1
+  EXPECT_EQ(soc.read(kFbColor + 4 * kFbPixels - 4).rdata, 0xBEEF'CAFEu);
   ASSERT_FALSE(soc.write(kFbDepth + 4 * 17, 0x0001'2345).err);
   EXPECT_EQ(soc.read(kFbDepth + 4 * 17).rdata & 0xFFFFu, 0x2345u);
   ASSERT_FALSE(soc.write(kFbDepth + 4 * (kFbPixels - 1), 0x0000'6789).err);  // the last pixel
@@ -117,7 +118,7 @@ TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
     EXPECT_EQ(r.rdata, 0u) << std::hex << a;
   }
   // Beyond the memories and holes of the windows answer errors.
-  for (uint32_t a : {kFbColor + 2 * kFbPixels, kFbDepth + 4 * kFbPixels, 0x3020'0000u, kTexMem + tex_bytes,
+  for (uint32_t a : {kFbColor + 4 * kFbPixels, kFbDepth + 4 * kFbPixels, 0x3020'0000u, kTexMem + tex_bytes,
                      kTexMem + 0x10'0000u, 0x2000'6000u}) {
     const auto r = soc.read(a);
     EXPECT_TRUE(r.err) << std::hex << a;
@@ -497,7 +498,8 @@ TEST_P(FabricTest, RandomTrafficOnBothPortsMatchesTheModel) {
 // first on the colour memory; the bus's wait) and gets the right words back.
 TEST_P(FabricTest, VideoShowsTheColourWindowWhileTheBusReadsIt) {
   constexpr uint32_t kVideo = HTX_VIDEO_BASE;
-  EXPECT_EQ(soc.read(kVideo + VIDEO_MODE_Offset).rdata, 160u | (120u << 12) | (4u << 24));
+  EXPECT_EQ(soc.read(kVideo + VIDEO_MODE_Offset).rdata,
+            160u | (120u << 12) | (4u << 24) | (2u << VIDEO_MODE_PAGES_Pos));
   std::vector<uint32_t> words(kFbPixels / 2);
   uint32_t seed = 99;
   for (uint32_t i = 0; i < words.size(); ++i) {
@@ -561,6 +563,49 @@ TEST_P(FabricTest, FastClearsYieldToTheVideoReads) {
   }
   ASSERT_EQ(monitor.last_frame().size(), 640u * 480u);
   EXPECT_EQ(std::count(monitor.last_frame().begin(), monitor.last_frame().end(), 0xFF00FFu), 640 * 480);
+}
+
+// Double buffering: the raster unit's fast clear goes to the page FB_PAGE.DRAW names while the
+// video shows the other; the flip to the drawn page is taken at the next frame's start.
+TEST_P(FabricTest, DrawsIntoOnePageWhileTheVideoShowsTheOther) {
+  constexpr uint32_t kVideo = HTX_VIDEO_BASE;
+  constexpr uint32_t kPageWords = kFbPixels / 2;
+  EXPECT_EQ(soc.read(kRaster + RASTER_FB_MEM_Offset).rdata, kFbPixels | (2u << RASTER_FB_MEM_PAGES_Pos));
+  EXPECT_EQ(soc.read(kRaster + RASTER_FB_PAGE_Offset).rdata, 0u);
+  for (uint32_t i = 0; i < kPageWords; ++i) soc.dbus.pending.push_back({kFbColor + 4 * i, true, 0xF, 0xFFFF'FFFFu});
+  ASSERT_TRUE(soc.drain(1'000'000));
+  ASSERT_FALSE(soc.write(kVideo + VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk).err);
+  ASSERT_FALSE(soc.write(kRaster + RASTER_FB_PAGE_Offset, RASTER_FB_PAGE_DRAW_Msk).err);
+  EXPECT_EQ(soc.read(kRaster + RASTER_FB_PAGE_Offset).rdata, RASTER_FB_PAGE_DRAW_Msk);
+  soc.write(kRaster + RASTER_FB_SIZE_Offset, 160u | (120u << RASTER_FB_SIZE_HEIGHT_Pos));
+  soc.write(kRaster + RASTER_FB_STRIDE_Offset, 160u);
+  soc.write(kRaster + RASTER_CLEAR_COLOR_Offset, 0x07E0u);  // green
+  soc.write(kRaster + RASTER_CTRL_Offset, RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_CLEAR_COLOR_Msk);
+  const auto capture = [&] {
+    htx::sim::VideoCapture monitor;
+    for (uint64_t i = 0; i < 3ull * 800 * 525 && monitor.frames() == 0; ++i) {
+      soc.step();
+      const htx::test::VideoPins v = soc.video();
+      monitor.clock(v.de, v.vsync_n, v.rgb);
+    }
+    return monitor.last_frame();
+  };
+  std::vector<uint32_t> px = capture();  // (the clear runs meanwhile)
+  ASSERT_EQ(px.size(), 640u * 480u);
+  EXPECT_EQ(std::count(px.begin(), px.end(), 0xFFFFFFu), 640 * 480) << "page 0 shown, untouched";
+  EXPECT_EQ(soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_BUSY_Msk, 0u);
+  for (uint32_t w : {0u, 4799u, kPageWords - 1}) {
+    EXPECT_EQ(soc.read(kFbColor + 4 * w).rdata, 0xFFFF'FFFFu) << w;
+    EXPECT_EQ(soc.read(kFbColor + 4 * (kPageWords + w)).rdata, 0x07E0'07E0u) << w;
+  }
+  ASSERT_FALSE(soc.write(kVideo + VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk | VIDEO_CTRL_PAGE_Msk).err);
+  px = capture();  // the frame under way when the flip was written, or the next
+  px = capture();
+  ASSERT_EQ(px.size(), 640u * 480u);
+  EXPECT_EQ(std::count(px.begin(), px.end(), 0x00FF00u), 640 * 480) << "page 1 shown";
+  const uint32_t status = soc.read(kVideo + VIDEO_STATUS_Offset).rdata;
+  EXPECT_EQ(status & VIDEO_STATUS_PAGE_Msk, VIDEO_STATUS_PAGE_Msk);
+  EXPECT_EQ(status & VIDEO_STATUS_UNDERRUN_Msk, 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Stalls, FabricTest, ::testing::Values(0, 1, 7, 1234),

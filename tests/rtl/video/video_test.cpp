@@ -1,9 +1,11 @@
 // htx_video (docs/video.md) on its own: the 640x480 at 60 Hz timing on its output pins, the
 // framebuffer shown scaled x4 while its port refuses reads at random (as the raster's colour writes
 // make htx_fb's port do), the registers, the frame taken at its start, and an underrun when the
-// port refuses every read (label `rtl`).
+// port refuses every read, and the page flip taken at a frame's start (label `rtl`). The model
+// is built with two colour pages (CMakeLists.txt: Pages = 2, page 1 from word 9,600).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -18,10 +20,11 @@ namespace {
 
 constexpr uint32_t kSrcW = 160, kSrcH = 120, kScale = 4;
 constexpr uint32_t kW = 640, kH = 480, kHTotal = 800, kVTotal = 525;
+constexpr uint32_t kPageWords = kSrcW * kSrcH / 2;
 
 struct Bench {
   Vhtx_video v;
-  std::vector<uint32_t> fb = std::vector<uint32_t>(kSrcW * kSrcH / 2);
+  std::vector<uint32_t> fb = std::vector<uint32_t>(2 * kPageWords);  // pages 0 and 1
   std::mt19937 rng{20261205};
   unsigned refuse_percent = 0;  // a read is refused in this share of the clocks it is asked in
   uint32_t word_read = 0;       // the word of the last granted read, on fb_data_i until the next
@@ -145,7 +148,7 @@ TEST(Video, ShowsTheFramebufferScaledWhileItsPortRefusesHalfTheReads) {
 
 TEST(Video, RegistersCountFramesAndLinesAndDescribeTheMode) {
   Bench b;
-  EXPECT_EQ(b.read(VIDEO_MODE_Offset), kSrcW | (kSrcH << 12) | (kScale << 24));
+  EXPECT_EQ(b.read(VIDEO_MODE_Offset), kSrcW | (kSrcH << 12) | (kScale << 24) | (2u << VIDEO_MODE_PAGES_Pos));
   EXPECT_EQ(b.read(VIDEO_CTRL_Offset), 0u);
   b.write(VIDEO_CTRL_Offset, 1);
   EXPECT_EQ(b.read(VIDEO_CTRL_Offset), 1u);
@@ -193,6 +196,44 @@ TEST(Video, EnableTakesEffectAtTheFrameStartAndStopsTheReads) {
   for (uint32_t p : px) ASSERT_EQ(p, 0u);
   EXPECT_EQ(b.reads, reads_before);
   EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_SHOWING_Msk, 0u);
+}
+
+// Page 0 white, page 1 blue. CTRL.PAGE written in the middle of a frame: that frame stays on page
+// 0 to its end and STATUS.PAGE with it; the next frame is page 1's, read from page 1's words only.
+TEST(Video, APageFlipTakesEffectAtTheFrameStart) {
+  Bench b;
+  for (uint32_t i = 0; i < kPageWords; ++i) {
+    b.fb[i] = 0xFFFFFFFFu;
+    b.fb[kPageWords + i] = 0x001F001Fu;
+  }
+  b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk);
+  std::vector<uint32_t> px = b.capture();
+  ASSERT_EQ(px.size(), kW * kH);
+  EXPECT_EQ(std::count(px.begin(), px.end(), 0xFFFFFFu), kW * kH);
+  EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_PAGE_Msk, 0u);
+  b.to_vsync();
+  for (uint32_t i = 0; i < (35 + 200) * kHTotal; ++i) b.clock();  // line 200 or so
+  b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk | VIDEO_CTRL_PAGE_Msk);
+  EXPECT_EQ(b.read(VIDEO_CTRL_Offset), VIDEO_CTRL_ENABLE_Msk | VIDEO_CTRL_PAGE_Msk);
+  EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_PAGE_Msk, 0u) << "not before the frame's end";
+  uint32_t white = 0, other = 0;
+  for (uint32_t i = 0; i < kHTotal * kVTotal && b.v.vsync_no; ++i) {  // to the frame's sync pulse
+    b.clock();
+    if (b.v.de_o) ++(b.v.rgb_o == 0xFFFFFFu ? white : other);
+  }
+  EXPECT_GT(white, kW * 200);
+  EXPECT_EQ(other, 0u) << "the frame the flip was written in stays whole";
+  const uint64_t reads_before = b.reads;
+  px = b.capture();
+  ASSERT_EQ(px.size(), kW * kH);
+  EXPECT_EQ(std::count(px.begin(), px.end(), 0x0000FFu), kW * kH);
+  EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_PAGE_Msk, VIDEO_STATUS_PAGE_Msk);
+  EXPECT_GE(b.reads - reads_before, kPageWords);
+  // Back to page 0 at the next start.
+  b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk);
+  b.to_vsync();
+  px = b.capture();
+  EXPECT_EQ(std::count(px.begin(), px.end(), 0xFFFFFFu), kW * kH);
 }
 
 TEST(Video, APortThatRefusesEveryReadSetsUnderrunWhichAWriteOfOneClears) {

@@ -22,12 +22,32 @@ inline VideoMode video_mode() {
           (m & VIDEO_MODE_SCALE_Msk) >> VIDEO_MODE_SCALE_Pos};
 }
 
-// Shows the framebuffer (or a black picture) from the next frame on.
+// Shows the framebuffer (or a black picture) from the next frame on; the page shown stays.
 inline void video_enable(bool on) {
-  HTX_VIDEO->CTRL = on ? VIDEO_CTRL_ENABLE_Msk : 0u;
+  const uint32_t page = HTX_VIDEO->CTRL & VIDEO_CTRL_PAGE_Msk;
+  HTX_VIDEO->CTRL = page | (on ? VIDEO_CTRL_ENABLE_Msk : 0u);
 }
 inline bool video_enabled() {
   return (HTX_VIDEO->CTRL & VIDEO_CTRL_ENABLE_Msk) != 0;
+}
+
+// Colour pages the unit can show (MODE.PAGES: 2 where the GPU double-buffers).
+inline uint32_t video_pages() {
+  return (HTX_VIDEO->MODE & VIDEO_MODE_PAGES_Msk) >> VIDEO_MODE_PAGES_Pos;
+}
+
+// Shows colour page `page` from the next frame's start on (the enable stays). The frame being
+// scanned keeps its page, so a flip never splits a frame: video_shown_page() says when it took.
+inline void video_show_page(uint32_t page) {
+  const uint32_t enable = HTX_VIDEO->CTRL & VIDEO_CTRL_ENABLE_Msk;
+  HTX_VIDEO->CTRL = enable | ((page << VIDEO_CTRL_PAGE_Pos) & VIDEO_CTRL_PAGE_Msk);
+}
+inline uint32_t video_requested_page() {
+  return (HTX_VIDEO->CTRL & VIDEO_CTRL_PAGE_Msk) >> VIDEO_CTRL_PAGE_Pos;
+}
+// The page the frame being scanned shows.
+inline uint32_t video_shown_page() {
+  return (HTX_VIDEO->STATUS & VIDEO_STATUS_PAGE_Msk) >> VIDEO_STATUS_PAGE_Pos;
 }
 
 // Frames scanned since reset (each counted as its vertical blanking begins).

@@ -69,8 +69,9 @@ class SocSim {
   SimResult run();
   // RAM words in [begin, end) (byte addresses, 4-aligned); throws if outside RAM.
   std::vector<uint32_t> read_words(uint32_t begin, uint32_t end) const;
-  // The colour window as the raster unit wrote it: width x height RGB565 pixels with stride `width`,
-  // pixel i at window half-word i (docs/contracts.md). Throws if width * height exceeds kFbPixels.
+  // The colour page the raster unit draws into (FB_PAGE.DRAW: the frame drawn last) as it wrote it:
+  // width x height RGB565 pixels with stride `width`, pixel i at the page's half-word i
+  // (docs/contracts.md). Throws if width * height exceeds kFbPixels, the pixels of a page.
   std::vector<uint16_t> read_frame(uint32_t width, uint32_t height) const;
   // The video scan-out as a monitor saw it (SimOptions::capture_screen; null without it).
   const VideoCapture* screen() const;
