@@ -181,7 +181,7 @@ void register_sim(CLI::App& app) {
   cmd->add_flag("--no-gpu-gate", args->no_gpu_gate,
                 "Clock the GPU on every cycle, even while it is idle (same results, several times slower)");
   cmd->add_option("--frame", args->frame,
-                  "At exit, write the framebuffer's colour window (--frame-size pixels) as a PNG");
+                  "At exit, write the colour page the raster unit draws into (the frame drawn last; --frame-size pixels) as a PNG");
   cmd->add_option("--screen", args->screen,
                   "At exit, write the last whole frame the video scan-out showed (640x480, what a board's "
                   "screen shows; black while the firmware has not turned the video on) as a PNG");

@@ -213,6 +213,42 @@ TEST(SystemConsole, ScreenShowsTheRenderedFrameScaled) {
   EXPECT_GT(lit, 7082 * 16 / 2) << "the cube's fragments are on the screen";
 }
 
+// `spin cube 4 crc`: four frames a quarter turn apart, each shown as it is drawn; the last is a
+// whole turn, the scene itself, so its CRC-32 is `render cube`'s, and the half turn's is another.
+TEST(SystemConsole, SpinTurnsTheSceneAndEndsWhereItStarted) {
+  ConsoleSim cs;
+  ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
+  const auto r = cs.console({"spin", "spin cube 0", "spin cube 3601", "spin cube 2 3", "spin cube 2 crc x",
+                             "spin nosuch", "render cube", "spin cube 4 crc", "spin cube 2", "quit"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string usage = "error: usage: spin SCENE [FRAMES] [crc] (FRAMES = 1..3600, 60 by default)";
+  size_t usages = 0;
+  for (size_t at = r.out.find(usage); at != std::string::npos; at = r.out.find(usage, at + 1)) ++usages;
+  EXPECT_EQ(usages, 5u) << r.out;
+  EXPECT_NE(r.out.find("error: unknown scene nosuch"), std::string::npos) << r.out;
+  const auto crc_after = [&](const std::string& key) {
+    const size_t at = r.out.find(key);
+    if (at == std::string::npos) return std::string();
+    const size_t c = r.out.find("crc32 ", at);
+    return c == std::string::npos ? std::string() : r.out.substr(c + 6, 8);
+  };
+  const std::string rendered = crc_after("render cube method");
+  ASSERT_EQ(rendered.size(), 8u) << r.out;
+  EXPECT_EQ(crc_after("frame 4 frame_cycles"), rendered) << r.out;
+  const std::string half = crc_after("frame 2 frame_cycles");
+  ASSERT_EQ(half.size(), 8u) << r.out;
+  EXPECT_NE(half, rendered) << r.out;
+  EXPECT_NE(crc_after("frame 1 frame_cycles"), half) << r.out;
+  EXPECT_EQ(crc_after("spin cube frames 4 mcycles "), rendered) << r.out;
+  // Without `crc` the frames' lines have none; the summary has the last frame's.
+  const size_t two = r.out.find("htx> spin cube 2\n");
+  ASSERT_NE(two, std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("frame 2 frame_cycles ", two), std::string::npos) << r.out;
+  EXPECT_GT(r.out.find("crc32", two), r.out.find("spin cube frames 2 mcycles ", two)) << r.out;
+  EXPECT_EQ(r.out.find("(stopped)"), std::string::npos) << r.out;
+  ASSERT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
+}
+
 // An image whose bottom row is texel row 0, from f(x, v) -> RGBA.
 template <typename F>
 void write_texture_png(const std::string& path, int w, int h, F f) {

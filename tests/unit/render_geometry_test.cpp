@@ -2,6 +2,7 @@
 // (hw/model geometry.hpp) and the double vertex-record encoder (firmware/lib vertex_record.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -92,6 +93,32 @@ TEST(RenderTransform, PointsAndProductsWithinTheirRoundingBounds) {
   const htx::render::Mat4 vp = htx::render::mat4_mul(htx::test::to_mat4_fx(proj), htx::test::to_mat4_fx(view));
   const htx::Mat4 vpd = proj * view;
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(entry(vp, 2, c), vpd.m[2][static_cast<size_t>(c)], 1e-7);
+}
+
+// Every angle of a whole turn (Q16 turns) against the library's sin and cos; the rotation matrix
+// built from them turns x towards -z and leaves y alone.
+TEST(RenderTransform, SinCosOfEveryAngleWithinThreeUnitsOfQ30) {
+  double worst = 0;
+  for (uint32_t t = 0; t <= 0x10000u; ++t) {
+    int32_t s = 0, c = 0;
+    htx::render::sin_cos_turns(t, &s, &c);
+    const double a = 2 * M_PI * static_cast<double>(t) / 65536.0;
+    worst = std::max({worst, std::abs(s - std::sin(a) * 0x1p30), std::abs(c - std::cos(a) * 0x1p30)});
+  }
+  EXPECT_LE(worst, 3.0);
+  int32_t s = 0, c = 0;
+  htx::render::sin_cos_turns(0, &s, &c);
+  EXPECT_EQ(s, 0);
+  EXPECT_EQ(c, 1 << 30);
+  htx::render::sin_cos_turns(0x4000, &s, &c);  // a quarter turn
+  EXPECT_EQ(s, 1 << 30);
+  EXPECT_EQ(c, 0);
+  const htx::render::Mat4 r = htx::render::mat4_rotation_y(0x2000);  // an eighth of a turn
+  const htx::render::Vec4 p = htx::render::transform_point(r, to_q16(2.0), to_q16(3.0), 0);
+  EXPECT_NEAR(q16(p.x), std::sqrt(2.0), 2 * kQ);
+  EXPECT_NEAR(q16(p.y), 3.0, kQ);
+  EXPECT_NEAR(q16(p.z), -std::sqrt(2.0), 2 * kQ);
+  EXPECT_EQ(p.w, 1 << 16);
 }
 
 TEST(RenderTransform, PerVertexHighProductsWithinThreeUlps) {

@@ -4,12 +4,16 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "frame_crc.hpp"
 #include "frame_download.hpp"
 #include "frame_pages.hpp"
 #include "scene_store.hpp"
 #include "scene_upload.hpp"
 #include "texture_store.hpp"
+#include "htx/hal/timer.h"
+#include "htx/hal/uart.h"
 #include "htx/hal/video.h"
+#include "htx/render/transform.h"
 #include "htx_regs.h"
 #include "scene_render.hpp"
 #include "scenes.hpp"
@@ -22,6 +26,7 @@ namespace {
 constexpr const char* kVersion = "0.1";
 // Status reads to wait for the video's last flip: a frame is 420,000 clocks, a read takes a few.
 constexpr uint32_t kFlipPolls = 1'000'000;
+constexpr uint32_t kSpinDefaultFrames = 60, kSpinMaxFrames = 3600;
 
 struct Settings {
   render_app::DrawSettings draw;
@@ -69,6 +74,7 @@ void cmd_help() {
         "  set method NAME       auto, affine, subdivN (N = 2..64), recip_lut, recip_nr, divfree\r\n"
         "  set tolerance 1/N     AUTO's largest predicted texel error (N = 1..65536)\r\n"
         "  render SCENE          draw a scene; prints its figures and the frame's CRC-32\r\n"
+        "  spin SCENE [FRAMES] [crc]  draw it FRAMES times (60) turning once about y; a key stops it\r\n"
         "  upload SIZE CRC32     receive a packed scene as packets (for `htx upload`); SCENE `upload`\r\n"
         "  texture SIZE CRC32    receive a packed texture as packets (for `htx upload --texture`)\r\n"
         "  stats                 the raster unit's counters after the last render\r\n"
@@ -175,39 +181,92 @@ void cmd_set(char* rest) {
   printf("ok\r\n");
 }
 
+// The scene `render` and `spin` name: a compiled-in one, or `upload`; null with the error printed.
+const render_app::SceneData* find_scene(const char* name) {
+  if (strcmp(name, "upload") == 0) {
+    const render_app::SceneData* up = uploaded_scene();
+    if (!up) error("no scene uploaded yet (htx upload)");
+    return up;
+  }
+  uint32_t n = 0;
+  const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
+  for (uint32_t i = 0; i < n; ++i)
+    if (strcmp(scenes[i].name, name) == 0) return &scenes[i];
+  error("unknown scene ", name);
+  return nullptr;
+}
+
+// Draws `scene` with the console's settings into the page not shown and shows it from the next
+// frame on (frame_pages.hpp); a failed render stays off the screen (`grab` still sends it: it
+// reads the page drawn last). Prints the error and returns false on failure.
+bool draw_and_show(const render_app::SceneData& scene, const char* name, bool checksum = true) {
+  render_app::DrawSettings draw = g_settings.draw;
+  draw.time_geometry = false;
+  draw.checksum = checksum;
+  const TextureInfo t = current_texture();
+  draw.texture_log2_width = t.log2_width;
+  draw.texture_log2_height = t.log2_height;
+  begin_frame_page(kFlipPolls);
+  g_last = render_app::draw_scene(scene, draw);
+  g_last_scene = name;
+  if (!g_last.ok) {
+    error("render failed: ", g_last.error);
+    return false;
+  }
+  present_frame_page();
+  return true;
+}
+
 void cmd_render(char* rest) {
   const char* name = next_word(&rest);
   if (!name || next_word(&rest)) return error("usage: render SCENE");
-  uint32_t n = 0;
-  const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
-  const render_app::SceneData* scene = nullptr;
-  for (uint32_t i = 0; i < n; ++i)
-    if (strcmp(scenes[i].name, name) == 0) scene = &scenes[i];
-  if (strcmp(name, "upload") == 0) {
-    scene = uploaded_scene();
-    if (!scene) return error("no scene uploaded yet (htx upload)");
+  const render_app::SceneData* scene = find_scene(name);
+  if (!scene || !draw_and_show(*scene, scene->name)) return;
+  printf("render %s method %s triangles %lu sent %lu frame_cycles %lu ", name, g_settings.method_text,
+         static_cast<unsigned long>(g_last.stats.triangles), static_cast<unsigned long>(g_last.stats.sent),
+         static_cast<unsigned long>(g_last.frame_cycles));
+  render_app::print_raster_figures(g_last.counters);
+  printf(" crc32 %08lx\r\n", static_cast<unsigned long>(g_last.crc));
+}
+
+// `spin SCENE [FRAMES] [crc]`: FRAMES renders, frame k turned k / FRAMES of a turn about the
+// world's y axis (the last a whole turn, drawn as the scene itself), each shown as it is done; a
+// line a frame (with its CRC-32 if asked: the checksum costs about as much as drawing the cube),
+// then the rate and the last frame's CRC-32. Any key stops it after the frame being drawn (the key
+// is consumed).
+void cmd_spin(char* rest) {
+  const char* name = next_word(&rest);
+  const char* count = next_word(&rest);
+  const char* crc_word = next_word(&rest);
+  uint32_t frames = kSpinDefaultFrames;
+  if (!name || next_word(&rest) || (count && !parse_uint(count, 1, kSpinMaxFrames, &frames)) ||
+      (crc_word && strcmp(crc_word, "crc") != 0))
+    return error("usage: spin SCENE [FRAMES] [crc] (FRAMES = 1..3600, 60 by default)");
+  const bool each_crc = crc_word != nullptr;
+  const render_app::SceneData* scene = find_scene(name);
+  if (!scene) return;
+  const uint64_t t0 = htx::hal::cpu_cycles();
+  uint32_t done = 0;
+  bool stopped = false;
+  for (uint32_t k = 1; k <= frames && !stopped; ++k) {
+    render_app::SceneData turned = *scene;
+    if (k < frames)
+      turned.view_proj = htx::render::mat4_mul(scene->view_proj, htx::render::mat4_rotation_y(k * 65536u / frames));
+    if (!draw_and_show(turned, scene->name, each_crc)) return;
+    ++done;
+    printf("frame %lu frame_cycles %lu", static_cast<unsigned long>(k), static_cast<unsigned long>(g_last.frame_cycles));
+    if (each_crc) printf(" crc32 %08lx", static_cast<unsigned long>(g_last.crc));
+    fputs("\r\n", stdout);
+    uint8_t key = 0;
+    stopped = htx::hal::uart_try_get(&key);
   }
-  if (scene) {
-    render_app::DrawSettings draw = g_settings.draw;
-    draw.time_geometry = false;
-    const TextureInfo t = current_texture();
-    draw.texture_log2_width = t.log2_width;
-    draw.texture_log2_height = t.log2_height;
-    // Drawn into the page not shown and shown from the next frame on (frame_pages.hpp); a failed
-    // render stays off the screen (`grab` still sends it: it reads the page drawn last).
-    begin_frame_page(kFlipPolls);
-    g_last = render_app::draw_scene(*scene, draw);
-    g_last_scene = scene->name;
-    if (!g_last.ok) return error("render failed: ", g_last.error);
-    present_frame_page();
-    printf("render %s method %s triangles %lu sent %lu frame_cycles %lu ", name,
-           g_settings.method_text, static_cast<unsigned long>(g_last.stats.triangles), static_cast<unsigned long>(g_last.stats.sent),
-           static_cast<unsigned long>(g_last.frame_cycles));
-    render_app::print_raster_figures(g_last.counters);
-    printf(" crc32 %08lx\r\n", static_cast<unsigned long>(g_last.crc));
-    return;
-  }
-  error("unknown scene ", name);
+  const uint64_t cycles = htx::hal::cpu_cycles() - t0;
+  printf("spin %s frames %lu%s mcycles ", name, static_cast<unsigned long>(done), stopped ? " (stopped)" : "");
+  render_app::print_ratio(cycles, 1'000'000);
+  fputs(" fps ", stdout);
+  render_app::print_ratio(uint64_t{done} * HTX_SYSCTRL->CLOCK_HZ, cycles);
+  g_last.crc = render_app::frame_crc32(render_app::kWidth, render_app::kHeight);
+  printf(" crc32 %08lx\r\n", static_cast<unsigned long>(g_last.crc));
 }
 
 void cmd_stats() {
@@ -234,6 +293,8 @@ CommandResult run_command(char* line) {
     cmd_set(rest);
   } else if (strcmp(cmd, "render") == 0) {
     cmd_render(rest);
+  } else if (strcmp(cmd, "spin") == 0) {
+    cmd_spin(rest);
   } else if (strcmp(cmd, "video") == 0) {
     cmd_video(rest);
   } else if (strcmp(cmd, "upload") == 0) {

@@ -96,7 +96,7 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
     return r;
   }
   htx::hal::raster_read_counters(&r.counters);
-  r.crc = frame_crc32(kWidth, kHeight);
+  if (settings.checksum) r.crc = frame_crc32(kWidth, kHeight);
   r.ok = true;
   return r;
 }

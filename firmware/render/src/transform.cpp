@@ -67,4 +67,73 @@ Vec4 transform_point(const Mat4& m, int32_t x, int32_t y, int32_t z) {
   return {out[0], out[1], out[2], out[3]};
 }
 
+namespace {
+
+constexpr int kTrigFrac = 30;
+constexpr int64_t kTrigOne = int64_t{1} << kTrigFrac;
+
+int64_t mul_q30(int64_t a, int64_t b) { return round_shift(a * b, kTrigFrac); }
+
+// 2^30 / n!, rounded.
+constexpr int64_t kInvFact3 = 178956971, kInvFact5 = 8947849, kInvFact7 = 213044, kInvFact9 = 2959;
+constexpr int64_t kInvFact2 = 536870912, kInvFact4 = 44739243, kInvFact6 = 1491308, kInvFact8 = 26631,
+                  kInvFact10 = 296;
+
+// sin and cos of x radians (Q30), 0 <= x <= pi/4, by Horner's rule.
+void sin_cos_octant(int64_t x, int64_t* s, int64_t* c) {
+  const int64_t x2 = mul_q30(x, x);
+  int64_t p = kInvFact9;
+  p = kInvFact7 - mul_q30(x2, p);
+  p = kInvFact5 - mul_q30(x2, p);
+  p = kInvFact3 - mul_q30(x2, p);
+  p = kTrigOne - mul_q30(x2, p);
+  *s = mul_q30(x, p);
+  int64_t q = kInvFact10;
+  q = kInvFact8 - mul_q30(x2, q);
+  q = kInvFact6 - mul_q30(x2, q);
+  q = kInvFact4 - mul_q30(x2, q);
+  q = kInvFact2 - mul_q30(x2, q);
+  *c = kTrigOne - mul_q30(x2, q);
+}
+
+}  // namespace
+
+void sin_cos_turns(uint32_t turn_q16, int32_t* sine, int32_t* cosine) {
+  constexpr uint32_t kQuarter = 1u << 14, kEighth = 1u << 13;
+  constexpr int64_t kTwoPiQ30 = 6746518852;  // 2 pi 2^30, rounded
+  const uint32_t t = turn_q16 & 0xFFFFu;
+  const uint32_t quadrant = t >> 14;
+  const uint32_t u = t & (kQuarter - 1);  // 0 .. a quarter turn
+  // Within the quadrant, the nearer end of it keeps the argument below pi/4.
+  const bool upper = u > kEighth;
+  const int64_t x = round_shift(static_cast<int64_t>(upper ? kQuarter - u : u) * kTwoPiQ30, 16);
+  int64_t s0 = 0, c0 = 0;
+  sin_cos_octant(x, &s0, &c0);
+  if (upper) {
+    const int64_t swap = s0;
+    s0 = c0;
+    c0 = swap;
+  }
+  int64_t s = s0, c = c0;
+  switch (quadrant) {
+    case 1: s = c0; c = -s0; break;
+    case 2: s = -s0; c = -c0; break;
+    case 3: s = -c0; c = s0; break;
+    default: break;
+  }
+  *sine = static_cast<int32_t>(s > kTrigOne ? kTrigOne : (s < -kTrigOne ? -kTrigOne : s));
+  *cosine = static_cast<int32_t>(c > kTrigOne ? kTrigOne : (c < -kTrigOne ? -kTrigOne : c));
+}
+
+Mat4 mat4_rotation_y(uint32_t turn_q16) {
+  int32_t s = 0, c = 0;
+  sin_cos_turns(turn_q16, &s, &c);
+  Mat4 r = mat4_identity();  // frac 30
+  r.m[0][0] = c;
+  r.m[0][2] = s;
+  r.m[2][0] = -s;
+  r.m[2][2] = c;
+  return r;
+}
+
 }  // namespace htx::render

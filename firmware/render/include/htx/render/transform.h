@@ -29,4 +29,11 @@ Mat4 mat4_mul(const Mat4& a, const Mat4& b);
 // M * (x, y, z, 1) for a point in Q16.16.
 Vec4 transform_point(const Mat4& m, int32_t x, int32_t y, int32_t z);
 
+// sin and cos of an angle given in turns, Q16 (65,536 = a whole turn), as Q2.30 (octant reduction
+// and Taylor polynomials to x^9 and x^10 on [0, pi/4]: within 3 units of the last place).
+void sin_cos_turns(uint32_t turn_q16, int32_t* sine, int32_t* cosine);
+// Rotation about the y axis by turn_q16 (x towards -z for small angles: right-handed, seen from
+// +y anticlockwise), frac 30.
+Mat4 mat4_rotation_y(uint32_t turn_q16);
+
 }  // namespace htx::render
