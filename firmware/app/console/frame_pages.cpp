@@ -11,15 +11,14 @@ uint32_t frame_pages() {
 
 uint32_t shown_frame_page() { return htx::hal::video_shown_page(); }
 
-bool begin_frame_page(uint32_t max_polls) {
-  if (frame_pages() < 2) return true;
+void begin_frame_page(uint32_t max_polls) {
+  if (frame_pages() < 2) return;
   // The video takes a flip at its next frame start, whether or not it is enabled, so this ends
   // within a frame (420,000 clocks); it is usually over long before the next command arrives.
   const uint32_t requested = htx::hal::video_requested_page();
   bool flipped = false;
   for (uint32_t i = 0; i < max_polls && !flipped; ++i) flipped = htx::hal::video_shown_page() == requested;
   htx::hal::fb_set_draw_page(requested ^ 1u);
-  return flipped;
 }
 
 void present_frame_page() {

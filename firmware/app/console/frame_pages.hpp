@@ -10,8 +10,8 @@ namespace console_app {
 
 // Chooses the page the next render draws into (the raster unit is idle between renders): the
 // one the video is not showing, after waiting for the last flip to take (at most one frame,
-// bounded by max_polls status reads; a wait that runs out draws anyway and returns false).
-bool begin_frame_page(uint32_t max_polls);
+// bounded by max_polls status reads; should the video never flip, the render draws anyway).
+void begin_frame_page(uint32_t max_polls);
 
 // Shows the page just drawn from the video's next frame start on.
 void present_frame_page();
