@@ -1,6 +1,7 @@
 // htx sim: run a firmware ELF on the whole SoC in Verilator.
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -42,6 +43,7 @@ struct SimArgs {
   std::string frame;                // PNG of the colour window at exit
   std::string frame_size = "160x120";
   std::string screen;               // PNG of the last whole frame the video scan-out showed
+  std::string screen_frames;        // directory: every picture the screen showed, once each
 };
 
 // "WxH" -> (W, H); both 1..4096.
@@ -95,6 +97,26 @@ void write_screen(const sim::VideoCapture& screen, const std::string& path) {
                                     screen.last_frame()));
 }
 
+// Every picture the screen showed, once each: a whole frame equal to the one written before it
+// is skipped, so a still screen writes one file and each flip of the frame shown one more.
+class ScreenRecorder {
+ public:
+  explicit ScreenRecorder(std::string dir) : dir_(std::move(dir)) { std::filesystem::create_directories(dir_); }
+  void operator()(const sim::VideoCapture& screen) {
+    if (screen.last_frame() == last_) return;
+    last_ = screen.last_frame();
+    char name[32];
+    std::snprintf(name, sizeof name, "screen_%04u.png", written_++);
+    write_png((std::filesystem::path(dir_) / name).string(),
+              image_from_rgb888(static_cast<int>(screen.width()), static_cast<int>(screen.height()), last_));
+  }
+
+ private:
+  std::string dir_;
+  std::vector<uint32_t> last_;
+  unsigned written_ = 0;
+};
+
 int run_sim(const SimArgs& a) {
   const auto [frame_w, frame_h] = parse_frame_size(a.frame_size);
   if (uint64_t{frame_w} * frame_h > sim::SocSim::kFbPixels)
@@ -106,7 +128,8 @@ int run_sim(const SimArgs& a) {
   opt.stall_seed = a.stall_seed;
   opt.trace_path = a.trace;
   opt.gpu_clock_gate = !a.no_gpu_gate;
-  opt.capture_screen = !a.screen.empty();
+  opt.capture_screen = !a.screen.empty() || !a.screen_frames.empty();
+  if (!a.screen_frames.empty()) opt.on_screen_frame = ScreenRecorder(a.screen_frames);
 
   std::unique_ptr<sim::SerialEndpoint> uart;
   if (a.uart == "pty") {
@@ -185,6 +208,9 @@ void register_sim(CLI::App& app) {
   cmd->add_option("--screen", args->screen,
                   "At exit, write the last whole frame the video scan-out showed (640x480, what a board's "
                   "screen shows; black while the firmware has not turned the video on) as a PNG");
+  cmd->add_option("--screen-frames", args->screen_frames,
+                  "Write every picture the video scan-out showed, once each (a frame equal to the one "
+                  "before it is skipped), as DIR/screen_NNNN.png");
   cmd->add_option("--frame-size", args->frame_size,
                   "Size of the frame in the colour window, WIDTHxHEIGHT with stride WIDTH (default 160x120)");
   cmd->add_flag("--profile", args->profile,

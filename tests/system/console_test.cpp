@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -247,6 +249,57 @@ TEST(SystemConsole, SpinTurnsTheSceneAndEndsWhereItStarted) {
   EXPECT_GT(r.out.find("crc32", two), r.out.find("spin cube frames 2 mcycles ", two)) << r.out;
   EXPECT_EQ(r.out.find("(stopped)"), std::string::npos) << r.out;
   ASSERT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
+}
+
+// The CRC-32 the firmware prints for a frame (RGB565 pixels, low byte first) of a screen picture
+// (640 x 480 RGBA, each framebuffer pixel a 4 x 4 block, widened by bit replication); "" when a
+// block is not one colour, which no whole frame of the framebuffer shows.
+std::string screen_frame_crc(const htx::Image& img) {
+  std::vector<uint8_t> bytes;
+  for (int y = 0; y < 120; ++y) {
+    for (int x = 0; x < 160; ++x) {
+      const uint8_t* p = &img.rgba[4 * (static_cast<size_t>(4 * y) * 640 + 4 * x)];
+      for (int dy = 0; dy < 4; ++dy)
+        for (int dx = 0; dx < 4; ++dx)
+          if (!std::equal(p, p + 4, &img.rgba[4 * (static_cast<size_t>(4 * y + dy) * 640 + 4 * x + dx)])) return "";
+      const unsigned v = ((p[0] >> 3) << 11) | ((p[1] >> 2) << 5) | (p[2] >> 3);
+      bytes.push_back(static_cast<uint8_t>(v & 0xFF));
+      bytes.push_back(static_cast<uint8_t>(v >> 8));
+    }
+  }
+  char hex[16];
+  std::snprintf(hex, sizeof hex, "%08x", static_cast<unsigned>(htx::fw::crc32(bytes.data(), bytes.size())));
+  return hex;
+}
+
+// Double buffering seen on the screen: every picture the video showed (`htx sim --screen-frames`)
+// during a render and a spin is a whole frame the firmware drew (its CRC-32 is one the console
+// printed) or the black of the memory before the first, never one being cleared or drawn.
+TEST(SystemConsole, TheScreenShowsOnlyWholeFrames) {
+  const std::string dir = ::testing::TempDir() + "htx_console_screen_frames";
+  std::filesystem::remove_all(dir);
+  ConsoleSim cs({"--screen-frames", dir});
+  ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
+  const auto r = cs.console({"render cube", "spin cube 4 crc", "info", "info", "quit"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
+  std::vector<std::string> drawn = {screen_frame_crc(htx::Image{640, 480, std::vector<uint8_t>(640 * 480 * 4, 0)})};
+  for (size_t at = r.out.find("crc32 "); at != std::string::npos; at = r.out.find("crc32 ", at + 1))
+    drawn.push_back(r.out.substr(at + 6, 8));
+  ASSERT_EQ(drawn.size(), 1u + 1u + 4u + 1u) << r.out;  // black, render, four frames, the summary
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  // Black, the render, and each frame of the spin (each is drawn in about three of the video's
+  // frames, so each is shown); equal neighbours are written once.
+  EXPECT_GE(files.size(), 5u);
+  for (const std::string& f : files) {
+    const htx::Image img = htx::load_image(f);
+    ASSERT_EQ(img.width, 640);
+    ASSERT_EQ(img.height, 480);
+    const std::string crc = screen_frame_crc(img);
+    EXPECT_NE(std::find(drawn.begin(), drawn.end(), crc), drawn.end()) << f << " shows a frame never drawn (" << crc << ")";
+  }
 }
 
 // An image whose bottom row is texel row 0, from f(x, v) -> RGBA.

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -27,6 +28,8 @@ struct SimOptions {
   bool gpu_clock_gate = true;
   // Watch the video scan-out's pins and keep the last whole frame it showed (screen()).
   bool capture_screen = false;
+  // With capture_screen: called with the monitor each time a whole frame has been shown.
+  std::function<void(const VideoCapture&)> on_screen_frame;
 };
 
 enum class StopReason { Exit, ToHost, CycleLimit };
