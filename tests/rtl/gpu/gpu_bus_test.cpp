@@ -1,6 +1,7 @@
 // The GPU's two bus ports (docs/gpu.md): the register port decodes RASTER and TEXTURE and answers
 // anything else with an error; the memory port reaches the framebuffer, depth and texture windows;
-// a texture uploaded through the window reads back word for word in the documented layout.
+// a texture uploaded through the window reads back word for word in the documented layout; one
+// colour page.
 #include <gtest/gtest.h>
 
 #include <cstddef>
@@ -38,6 +39,18 @@ TEST_P(GpuBus, RegisterPortDecodesBothBlocksAndRejectsTheRest) {
   EXPECT_THROW(sim.read_reg(0x20005000u), std::runtime_error);
   EXPECT_THROW(sim.write_reg(0x20002000u, 1), std::runtime_error);
   EXPECT_EQ(sim.read_reg(stride), 123u);  // and the port still works afterwards
+}
+
+// These models keep one colour page (double buffering is the SoC's, docs/video.md): FB_MEM says
+// so, and FB_PAGE reads 0 whatever is written.
+TEST_P(GpuBus, OneColourPageIgnoresTheDrawPage) {
+  GpuSim sim(GetParam());
+  const uint32_t mem = sim.read_reg(HTX_RASTER_BASE + offsetof(HTX_RASTER_Type, FB_MEM));
+  EXPECT_EQ((mem & RASTER_FB_MEM_PAGES_Msk) >> RASTER_FB_MEM_PAGES_Pos, 1u);
+  EXPECT_EQ((mem & RASTER_FB_MEM_PIXELS_Msk) >> RASTER_FB_MEM_PIXELS_Pos, 262144u);  // the models' FbPixels
+  const uint32_t page = HTX_RASTER_BASE + offsetof(HTX_RASTER_Type, FB_PAGE);
+  sim.write_reg(page, RASTER_FB_PAGE_DRAW_Msk);
+  EXPECT_EQ(sim.read_reg(page), 0u);
 }
 
 TEST_P(GpuBus, MemoryPortReachesFramebufferDepthAndTextureWindows) {

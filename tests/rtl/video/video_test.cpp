@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "Vhtx_video.h"
+#include "Vhtx_video_1p.h"
 #include "htx/model/image_io.hpp"
 #include "htx/sim/video_capture.hpp"
 #include "htx_regs.h"
@@ -22,15 +23,16 @@ constexpr uint32_t kSrcW = 160, kSrcH = 120, kScale = 4;
 constexpr uint32_t kW = 640, kH = 480, kHTotal = 800, kVTotal = 525;
 constexpr uint32_t kPageWords = kSrcW * kSrcH / 2;
 
-struct Bench {
-  Vhtx_video v;
+template <class Model>
+struct BenchOf {
+  Model v;
   std::vector<uint32_t> fb = std::vector<uint32_t>(2 * kPageWords);  // pages 0 and 1
   std::mt19937 rng{20261205};
   unsigned refuse_percent = 0;  // a read is refused in this share of the clocks it is asked in
   uint32_t word_read = 0;       // the word of the last granted read, on fb_data_i until the next
   uint64_t reads = 0;
 
-  Bench() {
+  BenchOf() {
     v.req_valid_i = 0;
     v.fb_gnt_i = 0;
     htx::raster_test::reset_model(v);
@@ -88,6 +90,7 @@ struct Bench {
     return monitor.last_frame();
   }
 };
+using Bench = BenchOf<Vhtx_video>;
 
 uint16_t pixel(const std::vector<uint32_t>& fb, uint32_t x, uint32_t y) {
   const uint32_t i = y * kSrcW + x;
@@ -234,6 +237,20 @@ TEST(Video, APageFlipTakesEffectAtTheFrameStart) {
   b.to_vsync();
   px = b.capture();
   EXPECT_EQ(std::count(px.begin(), px.end(), 0xFFFFFFu), kW * kH);
+}
+
+// Built with one page (the UP5K's SPRAM framebuffer): MODE says so, CTRL.PAGE reads 0 whatever is
+// written, and the frame is read from page 0.
+TEST(Video, WithOnePageThePageIsAlwaysZero) {
+  BenchOf<Vhtx_video_1p> b;
+  for (uint32_t i = 0; i < kPageWords; ++i) b.fb[i] = 0xFFFFFFFFu;
+  EXPECT_EQ(b.read(VIDEO_MODE_Offset) >> VIDEO_MODE_PAGES_Pos, 1u);
+  b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk | VIDEO_CTRL_PAGE_Msk);
+  EXPECT_EQ(b.read(VIDEO_CTRL_Offset), VIDEO_CTRL_ENABLE_Msk);
+  const std::vector<uint32_t> px = b.capture();
+  ASSERT_EQ(px.size(), kW * kH);
+  EXPECT_EQ(std::count(px.begin(), px.end(), 0xFFFFFFu), kW * kH);
+  EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_PAGE_Msk, 0u);
 }
 
 TEST(Video, APortThatRefusesEveryReadSetsUnderrunWhichAWriteOfOneClears) {
