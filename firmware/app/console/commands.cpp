@@ -232,8 +232,8 @@ void cmd_render(char* rest) {
 // `spin SCENE [FRAMES] [crc]`: FRAMES renders, frame k turned k / FRAMES of a turn about the
 // world's y axis (the last a whole turn, drawn as the scene itself), each shown as it is done; a
 // line a frame (with its CRC-32 if asked: the checksum costs about as much as drawing the cube),
-// then the rate and the last frame's CRC-32. Any key stops it after the frame being drawn (the key
-// is consumed).
+// then the rate and the last frame's CRC-32. Any key but a line feed stops it after the frame
+// being drawn (the key is consumed).
 void cmd_spin(char* rest) {
   const char* name = next_word(&rest);
   const char* count = next_word(&rest);
@@ -257,8 +257,10 @@ void cmd_spin(char* rest) {
     printf("frame %lu frame_cycles %lu", static_cast<unsigned long>(k), static_cast<unsigned long>(g_last.frame_cycles));
     if (each_crc) printf(" crc32 %08lx", static_cast<unsigned long>(g_last.crc));
     fputs("\r\n", stdout);
+    // A line feed is not a key: a terminal that ends lines with CR LF sends the command's LF
+    // after the CR that ended it, while the spin has begun.
     uint8_t key = 0;
-    stopped = htx::hal::uart_try_get(&key);
+    while (!stopped && htx::hal::uart_try_get(&key)) stopped = key != '\n';
   }
   const uint64_t cycles = htx::hal::cpu_cycles() - t0;
   printf("spin %s frames %lu%s mcycles ", name, static_cast<unsigned long>(done), stopped ? " (stopped)" : "");
