@@ -297,7 +297,8 @@ std::string screen_frame_crc(const htx::Image& img) {
 // during a render and a spin is a whole frame the firmware drew (its CRC-32 is one the console
 // printed) or the black of the memory before the first, never one being cleared or drawn.
 TEST(SystemConsole, TheScreenShowsOnlyWholeFrames) {
-  const std::string dir = ::testing::TempDir() + "htx_console_screen_frames";
+  // (a directory of this process's own: the test reads back every file in it)
+  const std::string dir = ::testing::TempDir() + "htx_console_screen_frames_" + std::to_string(getpid());
   std::filesystem::remove_all(dir);
   ConsoleSim cs({"--screen-frames", dir});
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
@@ -324,6 +325,7 @@ TEST(SystemConsole, TheScreenShowsOnlyWholeFrames) {
   // frames, so each is shown); equal neighbours are written once.
   EXPECT_GE(files.size(), 5u);
   if (HasFailure()) ADD_FAILURE() << "pictures:\n" << shown << "console:\n" << r.out << "sim:\n" << cs.sim.output();
+  if (!HasFailure()) std::filesystem::remove_all(dir);
 }
 
 // An image whose bottom row is texel row 0, from f(x, v) -> RGBA.
