@@ -87,14 +87,17 @@ void write_signature(const sim::SocSim& soc, const sim::ElfImage& elf, const std
 
 #if HTX_HAVE_SOC_SIM
 // The last whole frame the video scan-out showed, as a monitor would show it.
+Image image_of_screen(const sim::VideoCapture& screen) {
+  return image_from_rgb888(static_cast<int>(screen.width()), static_cast<int>(screen.height()), screen.last_frame());
+}
+
 void write_screen(const sim::VideoCapture& screen, const std::string& path) {
   if (screen.frames() == 0) {
     throw std::runtime_error(path +
                              ": the run ended before the video scan-out had shown a whole frame (the first ends "
                              "after 420,000 clocks); not written");
   }
-  write_png(path, image_from_rgb888(static_cast<int>(screen.width()), static_cast<int>(screen.height()),
-                                    screen.last_frame()));
+  write_png(path, image_of_screen(screen));
 }
 
 // Every picture the screen showed, once each: a whole frame equal to the one written before it
@@ -107,8 +110,7 @@ class ScreenRecorder {
     last_ = screen.last_frame();
     char name[32];
     std::snprintf(name, sizeof name, "screen_%04u.png", written_++);
-    write_png((std::filesystem::path(dir_) / name).string(),
-              image_from_rgb888(static_cast<int>(screen.width()), static_cast<int>(screen.height()), last_));
+    write_png((std::filesystem::path(dir_) / name).string(), image_of_screen(screen));
   }
 
  private:

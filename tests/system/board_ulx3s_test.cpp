@@ -132,16 +132,8 @@ TEST(BoardUlx3s, ConsoleDrawsTheFrameOfTheSimulatedSoc) {
   const std::vector<uint32_t> screen = capture_screen(board, &problem);
   EXPECT_EQ(problem, "");
   ASSERT_EQ(screen.size(), 640u * 480u);
-  std::vector<uint16_t> frame;
-  for (uint32_t y = 0; y < 120; ++y) {
-    for (uint32_t x = 0; x < 160; ++x) {
-      const uint32_t p = screen[(4 * y) * 640 + 4 * x];
-      for (uint32_t k = 0; k < 16; ++k) {
-        ASSERT_EQ(screen[(4 * y + k / 4) * 640 + 4 * x + k % 4], p) << "block " << x << "," << y;
-      }
-      frame.push_back(static_cast<uint16_t>(((p >> 19) << 11) | (((p >> 10) & 63) << 5) | ((p >> 3) & 31)));
-    }
-  }
+  const std::vector<uint16_t> frame = htx::sim::frame_from_screen(screen, 640, 480, 4);
+  ASSERT_EQ(frame.size(), 160u * 120u) << "a 4 x 4 block of the screen is not one colour";
   char crc[9];
   std::snprintf(crc, sizeof crc, "%08x", htx::sim::frame_crc32(frame));
   EXPECT_EQ(std::string(crc), sim_crc) << "the screen's frame against the simulated SoC's";

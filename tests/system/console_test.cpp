@@ -16,6 +16,8 @@
 #include "htx/fw/console_packet.h"
 #include "htx/fw/crc32.h"
 #include "htx/model/image_io.hpp"
+#include "htx/sim/frame_crc.hpp"
+#include "htx/sim/video_capture.hpp"
 #include "subprocess.hpp"
 
 namespace {
@@ -272,24 +274,16 @@ TEST(SystemConsole, SpinTurnsTheSceneAndEndsWhereItStarted) {
   ASSERT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
 }
 
-// The CRC-32 the firmware prints for a frame (RGB565 pixels, low byte first) of a screen picture
-// (640 x 480 RGBA, each framebuffer pixel a 4 x 4 block, widened by bit replication); "" when a
-// block is not one colour, which no whole frame of the framebuffer shows.
+// The CRC-32 the firmware prints for the frame a screen picture (640 x 480 RGBA) shows; "" when a
+// 4 x 4 block is not one colour, which no whole frame of the framebuffer shows.
 std::string screen_frame_crc(const htx::Image& img) {
-  std::vector<uint8_t> bytes;
-  for (int y = 0; y < 120; ++y) {
-    for (int x = 0; x < 160; ++x) {
-      const uint8_t* p = &img.rgba[4 * (static_cast<size_t>(4 * y) * 640 + 4 * x)];
-      for (int dy = 0; dy < 4; ++dy)
-        for (int dx = 0; dx < 4; ++dx)
-          if (!std::equal(p, p + 4, &img.rgba[4 * (static_cast<size_t>(4 * y + dy) * 640 + 4 * x + dx)])) return "";
-      const unsigned v = ((p[0] >> 3) << 11) | ((p[1] >> 2) << 5) | (p[2] >> 3);
-      bytes.push_back(static_cast<uint8_t>(v & 0xFF));
-      bytes.push_back(static_cast<uint8_t>(v >> 8));
-    }
-  }
+  std::vector<uint32_t> picture;
+  for (size_t i = 0; i + 3 < img.rgba.size(); i += 4)
+    picture.push_back((uint32_t{img.rgba[i]} << 16) | (uint32_t{img.rgba[i + 1]} << 8) | img.rgba[i + 2]);
+  const std::vector<uint16_t> frame = htx::sim::frame_from_screen(picture, 640, 480, 4);
+  if (frame.empty()) return "";
   char hex[16];
-  std::snprintf(hex, sizeof hex, "%08x", static_cast<unsigned>(htx::fw::crc32(bytes.data(), bytes.size())));
+  std::snprintf(hex, sizeof hex, "%08x", static_cast<unsigned>(htx::sim::frame_crc32(frame)));
   return hex;
 }
 

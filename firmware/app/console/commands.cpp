@@ -199,7 +199,7 @@ const render_app::SceneData* find_scene(const char* name) {
 // Draws `scene` with the console's settings into the page not shown and shows it from the next
 // frame on (frame_pages.hpp); a failed render stays off the screen (`grab` still sends it: it
 // reads the page drawn last). Prints the error and returns false on failure.
-bool draw_and_show(const render_app::SceneData& scene, const char* name, bool checksum = true) {
+bool draw_and_show(const render_app::SceneData& scene, bool checksum = true) {
   render_app::DrawSettings draw = g_settings.draw;
   draw.time_geometry = false;
   draw.checksum = checksum;
@@ -208,7 +208,7 @@ bool draw_and_show(const render_app::SceneData& scene, const char* name, bool ch
   draw.texture_log2_height = t.log2_height;
   begin_frame_page(kFlipPolls);
   g_last = render_app::draw_scene(scene, draw);
-  g_last_scene = name;
+  g_last_scene = scene.name;
   if (!g_last.ok) {
     error("render failed: ", g_last.error);
     return false;
@@ -221,7 +221,7 @@ void cmd_render(char* rest) {
   const char* name = next_word(&rest);
   if (!name || next_word(&rest)) return error("usage: render SCENE");
   const render_app::SceneData* scene = find_scene(name);
-  if (!scene || !draw_and_show(*scene, scene->name)) return;
+  if (!scene || !draw_and_show(*scene)) return;
   printf("render %s method %s triangles %lu sent %lu frame_cycles %lu ", name, g_settings.method_text,
          static_cast<unsigned long>(g_last.stats.triangles), static_cast<unsigned long>(g_last.stats.sent),
          static_cast<unsigned long>(g_last.frame_cycles));
@@ -252,7 +252,7 @@ void cmd_spin(char* rest) {
     render_app::SceneData turned = *scene;
     if (k < frames)
       turned.view_proj = htx::render::mat4_mul(scene->view_proj, htx::render::mat4_rotation_y(k * 65536u / frames));
-    if (!draw_and_show(turned, scene->name, each_crc)) return;
+    if (!draw_and_show(turned, each_crc)) return;
     ++done;
     printf("frame %lu frame_cycles %lu", static_cast<unsigned long>(k), static_cast<unsigned long>(g_last.frame_cycles));
     if (each_crc) printf(" crc32 %08lx", static_cast<unsigned long>(g_last.crc));
@@ -267,7 +267,7 @@ void cmd_spin(char* rest) {
   render_app::print_ratio(cycles, 1'000'000);
   fputs(" fps ", stdout);
   render_app::print_ratio(uint64_t{done} * HTX_SYSCTRL->CLOCK_HZ, cycles);
-  g_last.crc = render_app::frame_crc32(render_app::kWidth, render_app::kHeight);
+  if (!each_crc) g_last.crc = render_app::frame_crc32(render_app::kWidth, render_app::kHeight);
   printf(" crc32 %08lx\r\n", static_cast<unsigned long>(g_last.crc));
 }
 

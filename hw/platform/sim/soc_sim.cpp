@@ -132,11 +132,9 @@ SimResult SocSim::run() {
       if (s.uart) s.uart->write(&*byte, 1);
     }
     if (s.top->sim_putchar_o) s.console.put(static_cast<char>(s.top->sim_char_o));
-    if (s.screen) {
-      const uint64_t shown = s.screen->frames();
-      s.screen->clock(s.top->video_de_o, s.top->video_vsync_no, s.top->video_rgb_o);
-      if (s.screen->frames() != shown && s.opt.on_screen_frame) s.opt.on_screen_frame(*s.screen);
-    }
+    if (s.screen && s.screen->clock(s.top->video_de_o, s.top->video_vsync_no, s.top->video_rgb_o) &&
+        s.opt.on_screen_frame)
+      s.opt.on_screen_frame(*s.screen);
     if (s.top->sim_exit_o) {
       res.reason = StopReason::Exit;
       res.exit_code = s.top->sim_exit_code_o;

@@ -30,17 +30,15 @@ module htx_timer (
   logic [31:0] rdata_d;
 
   // The request, registered as it is accepted.
-  logic        act_q, act_write_q;
+  logic        act_write_q;
   logic [11:0] act_offset_q;
   logic [31:0] act_wdata_q;
   htx_reg_port u_port (
     .clk_i, .rst_ni, .req_valid_i, .req_ready_o, .req_addr_i, .req_we_i, .req_be_i, .req_wdata_i,
     .rsp_valid_o, .rsp_rdata_o, .rsp_err_o,
-    .act_o(act_q), .act_write_o(act_write_q), .act_offset_o(act_offset_q), .act_wdata_o(act_wdata_q),
+    .act_write_o(act_write_q), .act_offset_o(act_offset_q), .act_wdata_o(act_wdata_q),
     .rdata_i(rdata_d)
   );
-  logic unused_act;
-  assign unused_act = act_q;  // (reads need no action here: rdata_d is what the port answers)
 
   logic wr_time_lo, wr_time_hi;
   assign wr_time_lo = act_write_q && (act_offset_q == htx_timer_reg_pkg::TIMER_MTIME_LO_OFFSET);

@@ -104,13 +104,13 @@ module htx_video #(
   // ---- Registers -------------------------------------------------------------------------------
   logic        enable_q, underrun_q, show_q, page_q, shown_page_q;
   logic [31:0] frame_count_q;
-  logic        act_q, act_write_q;
+  logic        act_write_q;
   logic [11:0] act_offset_q;
   logic [31:0] act_wdata_q, rdata_d;
   htx_reg_port u_port (
     .clk_i, .rst_ni, .req_valid_i, .req_ready_o, .req_addr_i, .req_we_i, .req_be_i, .req_wdata_i,
     .rsp_valid_o, .rsp_rdata_o, .rsp_err_o,
-    .act_o(act_q), .act_write_o(act_write_q), .act_offset_o(act_offset_q), .act_wdata_o(act_wdata_q),
+    .act_write_o(act_write_q), .act_offset_o(act_offset_q), .act_wdata_o(act_wdata_q),
     .rdata_i(rdata_d)
   );
 
@@ -257,5 +257,5 @@ module htx_video #(
   assign pix = s1_lane_q ? lb_rdata_q[31:16] : lb_rdata_q[15:0];
 
   logic unused;
-  assign unused = ^{act_q, h};
+  assign unused = ^h;
 endmodule
