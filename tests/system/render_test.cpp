@@ -6,6 +6,9 @@
 // for the same vertex records and texture).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -28,6 +31,7 @@
 #include "htx/rtl/raster_engine.hpp"
 #include "render_scene.hpp"
 #include "render_state.hpp"
+#include "scene_turn.hpp"
 #include "scenes.hpp"
 #include "soc_config.hpp"
 #include "soc_texture.hpp"
@@ -197,6 +201,52 @@ TEST(SystemRender, CompiledInScenesEqualTheModelsScenes) {
       EXPECT_EQ(a.state.depth_func, b.state.depth_func);
       EXPECT_EQ(a.state.depth_write, b.state.depth_write);
       EXPECT_EQ(a.state.combine, b.state.combine);
+    }
+  }
+}
+
+// The console's `spin` (firmware/app/console/scene_turn.cpp) turns each compiled-in scene about
+// the vertical line through the middle of its bounding box (found here apart, in double): a half
+// turn draws each vertex where the original draws its mirror image through that line (so `floor`,
+// far from the world's origin, stays in view), and the turns keep the line itself in place.
+TEST(SystemRender, SpinTurnsEachSceneAboutItsMiddle) {
+  uint32_t n = 0;
+  const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
+  for (uint32_t s = 0; s < n; ++s) {
+    const render_app::SceneData& sc = scenes[s];
+    SCOPED_TRACE(sc.name);
+    double lo[2] = {1e30, 1e30}, hi[2] = {-1e30, -1e30};
+    std::vector<htx::render::Vec4> world;
+    for (uint32_t m = 0; m < sc.mesh_count; ++m)
+      for (uint32_t i = 0; i < sc.meshes[m].vertex_count; ++i) {
+        const auto& v = sc.meshes[m].vertices[i];
+        world.push_back(htx::render::transform_point(sc.meshes[m].model, v.x, v.y, v.z));
+        const double xz[2] = {world.back().x / 65536.0, world.back().z / 65536.0};
+        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], xz[k]), hi[k] = std::max(hi[k], xz[k]);
+      }
+    ASSERT_FALSE(world.empty());
+    const double cx = (lo[0] + hi[0]) / 2, cz = (lo[1] + hi[1]) / 2;
+    const console_app::TurnAxis axis = console_app::scene_turn_axis(sc);
+    EXPECT_NEAR(axis.x / 65536.0, cx, 1e-4);
+    EXPECT_NEAR(axis.z / 65536.0, cz, 1e-4);
+    const auto clip = [](const htx::render::Mat4& m, int32_t x, int32_t y, int32_t z) {
+      const htx::render::Vec4 c = htx::render::transform_point(m, x, y, z);
+      return std::array<double, 4>{c.x / 65536.0, c.y / 65536.0, c.z / 65536.0, c.w / 65536.0};
+    };
+    const auto q16 = [](double v) { return static_cast<int32_t>(std::lround(v * 65536.0)); };
+    const render_app::SceneData half = console_app::turned_scene(sc, axis, 0x8000u);
+    double worst = 0, scale = 1;
+    for (const htx::render::Vec4& p : world) {
+      const auto a = clip(half.view_proj, p.x, p.y, p.z);
+      const auto b = clip(sc.view_proj, q16(2 * cx) - p.x, p.y, q16(2 * cz) - p.z);
+      for (int k = 0; k < 4; ++k) worst = std::max(worst, std::abs(a[k] - b[k])), scale = std::max(scale, std::abs(b[k]));
+    }
+    EXPECT_LE(worst, 1e-4 * scale) << "the half turn is not the mirror image through the middle";
+    for (uint32_t turn : {0x1000u, 0x5555u, 0xC000u}) {
+      const render_app::SceneData t = console_app::turned_scene(sc, axis, turn);
+      const auto a = clip(t.view_proj, q16(cx), q16(1.0), q16(cz));
+      const auto b = clip(sc.view_proj, q16(cx), q16(1.0), q16(cz));
+      for (int k = 0; k < 4; ++k) EXPECT_NEAR(a[k], b[k], 1e-4 * scale) << turn;
     }
   }
 }

@@ -121,6 +121,30 @@ TEST(RenderTransform, SinCosOfEveryAngleWithinThreeUnitsOfQ30) {
   EXPECT_EQ(p.w, 1 << 16);
 }
 
+// A turn about a vertical line away from the origin (`spin`): points on the line stay put, others
+// turn about it as about the origin, and a whole turn is the identity.
+TEST(RenderTransform, RotationAboutAVerticalLineKeepsThatLine) {
+  const int32_t cx = to_q16(3.0), cz = to_q16(-5.0);
+  for (uint32_t turn : {0x0u, 0x1555u, 0x4000u, 0x9000u, 0xFFFFu, 0x10000u}) {
+    const htx::render::Mat4 r = htx::render::mat4_rotation_y_about(turn, cx, cz);
+    const htx::render::Vec4 on = htx::render::transform_point(r, cx, to_q16(7.0), cz);
+    EXPECT_NEAR(q16(on.x), 3.0, kQ) << turn;
+    EXPECT_NEAR(q16(on.y), 7.0, kQ) << turn;
+    EXPECT_NEAR(q16(on.z), -5.0, kQ) << turn;
+    // (1, 2, 0) from the line, turned as mat4_rotation_y turns it about the origin.
+    const htx::render::Vec4 off = htx::render::transform_point(r, cx + to_q16(1.0), to_q16(2.0), cz);
+    const double a = 2 * M_PI * turn / 65536.0;
+    EXPECT_NEAR(q16(off.x), 3.0 + std::cos(a), 2 * kQ) << turn;
+    EXPECT_NEAR(q16(off.y), 2.0, kQ) << turn;
+    EXPECT_NEAR(q16(off.z), -5.0 - std::sin(a), 2 * kQ) << turn;
+    EXPECT_EQ(off.w, 1 << 16);
+  }
+  const htx::render::Mat4 whole = htx::render::mat4_rotation_y_about(0x10000u, cx, cz);
+  const htx::render::Vec4 p = htx::render::transform_point(whole, to_q16(-1.25), to_q16(0.5), to_q16(9.0));
+  EXPECT_EQ(p.x, to_q16(-1.25));
+  EXPECT_EQ(p.z, to_q16(9.0));
+}
+
 TEST(RenderTransform, PerVertexHighProductsWithinThreeUlps) {
   std::mt19937 rng(17);
   const double ranges[3] = {1.5, 40, 400};

@@ -8,12 +8,13 @@
 #include "frame_download.hpp"
 #include "frame_pages.hpp"
 #include "scene_store.hpp"
+#include "scene_turn.hpp"
 #include "scene_upload.hpp"
 #include "texture_store.hpp"
 #include "htx/hal/timer.h"
 #include "htx/hal/uart.h"
 #include "htx/hal/video.h"
-#include "htx/render/transform.h"
+#include "htx/render/fixed.h"
 #include "htx_regs.h"
 #include "scene_render.hpp"
 #include "scenes.hpp"
@@ -230,7 +231,8 @@ void cmd_render(char* rest) {
 }
 
 // `spin SCENE [FRAMES] [crc]`: FRAMES renders, frame k turned k / FRAMES of a turn about the
-// world's y axis (the last a whole turn, drawn as the scene itself), each shown as it is done; a
+// vertical line through the scene's middle (scene_turn.hpp; the last a whole turn, drawn as the
+// scene itself), each shown as it is done; a
 // line a frame (with its CRC-32 if asked: the checksum costs about as much as drawing the cube),
 // then the rate and the last frame's CRC-32. Any key but a line feed stops it after the frame
 // being drawn (the key is consumed).
@@ -245,13 +247,12 @@ void cmd_spin(char* rest) {
   const bool each_crc = crc_word != nullptr;
   const render_app::SceneData* scene = find_scene(name);
   if (!scene) return;
+  const TurnAxis axis = scene_turn_axis(*scene);
   const uint64_t t0 = htx::hal::cpu_cycles();
   uint32_t done = 0;
   bool stopped = false;
   for (uint32_t k = 1; k <= frames && !stopped; ++k) {
-    render_app::SceneData turned = *scene;
-    if (k < frames)
-      turned.view_proj = htx::render::mat4_mul(scene->view_proj, htx::render::mat4_rotation_y(k * 65536u / frames));
+    const render_app::SceneData turned = k < frames ? turned_scene(*scene, axis, k * 65536u / frames) : *scene;
     if (!draw_and_show(turned, each_crc)) return;
     ++done;
     printf("frame %lu frame_cycles %lu", static_cast<unsigned long>(k), static_cast<unsigned long>(g_last.frame_cycles));

@@ -138,4 +138,14 @@ Mat4 mat4_rotation_y(uint32_t turn_q16) {
   return r;
 }
 
+Mat4 mat4_rotation_y_about(uint32_t turn_q16, int32_t cx, int32_t cz) {
+  // T(c) R T(-c): the linear part is R's, the translation c - R c.
+  Mat4 r = mat4_rotation_y(turn_q16);
+  const int64_t rx = round_shift(static_cast<int64_t>(r.m[0][0]) * cx + static_cast<int64_t>(r.m[0][2]) * cz, r.frac);
+  const int64_t rz = round_shift(static_cast<int64_t>(r.m[2][0]) * cx + static_cast<int64_t>(r.m[2][2]) * cz, r.frac);
+  r.m[0][3] = saturate32(cx - rx);
+  r.m[2][3] = saturate32(cz - rz);
+  return r;
+}
+
 }  // namespace htx::render

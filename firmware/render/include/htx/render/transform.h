@@ -35,5 +35,8 @@ void sin_cos_turns(uint32_t turn_q16, int32_t* sine, int32_t* cosine);
 // Rotation about the y axis by turn_q16 (x towards -z for small angles: right-handed, seen from
 // +y anticlockwise), frac 30.
 Mat4 mat4_rotation_y(uint32_t turn_q16);
+// The same rotation about the vertical line through (cx, *, cz), Q16.16: points on it stay put
+// (the translation saturates where it leaves Q16.16).
+Mat4 mat4_rotation_y_about(uint32_t turn_q16, int32_t cx, int32_t cz);
 
 }  // namespace htx::render
