@@ -4,6 +4,9 @@
 // (draw_mesh without a raster unit: clipping, culling, AUTO, encoding), from the cycle CSR:
 //   geombench <scene> vertices <n> projected <p> cycles/vertex <c.cc>
 //   geombench <scene> triangles <n> sent <s> cycles/triangle <c>
+//   geombench <scene> triangles <n> sent <s> cycles/triangle <c> method recip_nr
+// (the second the same pipeline with every triangle's method fixed, so the difference is AUTO's
+// choice: its bounds and costs in soft float, htx/fw/auto_select.h)
 //   geombench all vertices <n> cycles/vertex <c.cc>
 // and, for each triangle sent, what its setup costs the firmware for the `icebreaker` raster unit,
 // which takes plane records (CAPS.FW_SETUP; htx/fw/plane_record.h, docs/raster.md "Plane record"):
@@ -112,6 +115,21 @@ int main() {
     printf("geombench %s triangles %lu sent %lu clipped %lu cycles/triangle %lu\n", sc.name,
            static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(sent),
            static_cast<unsigned long>(st.clipped), static_cast<unsigned long>(dc / sc.triangle_count));
+
+    htx::render::Mesh fixed = mesh;
+    fixed.state.method = htx::render::kMethodRecipNr;
+    uint32_t fixed_sent = 0;
+    const uint64_t f0 = htx::hal::cpu_cycles();
+    const htx::render::DrawStatus fixed_status =
+        htx::render::draw_mesh(frame, sc.view_proj, fixed, &cache, {count_triangle, &fixed_sent}, &st);
+    const uint64_t fc = htx::hal::cpu_cycles() - f0;
+    if (fixed_status != htx::render::kDrawOk) {
+      printf("geombench %s: draw_mesh (recip_nr) failed with status %d\n", sc.name, fixed_status);
+      return 1;
+    }
+    printf("geombench %s triangles %lu sent %lu cycles/triangle %lu method recip_nr\n", sc.name,
+           static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(fixed_sent),
+           static_cast<unsigned long>(fc / sc.triangle_count));
 
     SetupTally tally;
     if (htx::render::draw_mesh(frame, sc.view_proj, mesh, &cache, {time_setup, &tally}, &st) == htx::render::kDrawOk &&
