@@ -224,12 +224,20 @@ TEST(AutoChoose, FirmwareAdapterSeesPixelsAndTexels) {
     sv[i].attr = &cv[i];
   }
   const htx::render::ScreenVert* pv[3] = {&sv[0], &sv[1], &sv[2]};
-  const AutoTriangle t = htx::render::auto_triangle(pv, {6, 5});
-  EXPECT_EQ(t.x[1], 100.0f);
-  EXPECT_EQ(t.y[2], 100.0f);
-  EXPECT_EQ(t.w[2], 3.0f);
-  EXPECT_EQ(t.u[1], 64.0f);
-  EXPECT_EQ(t.v[2], 16.0f);
+  const htx::fw::AutoTriangleNum tn = htx::render::auto_triangle(pv, {6, 5});
+  EXPECT_EQ(htx::fw::num_to_float_up(tn.x[1]), 100.0f);
+  EXPECT_EQ(htx::fw::num_to_float_up(tn.y[2]), 100.0f);
+  EXPECT_EQ(htx::fw::num_to_float_up(tn.w[2]), 3.0f);
+  EXPECT_EQ(htx::fw::num_to_float_up(tn.u[1]), 64.0f);
+  EXPECT_EQ(htx::fw::num_to_float_up(tn.v[2]), 16.0f);
+  AutoTriangle t{};
+  for (int i = 0; i < 3; ++i) {
+    t.x[i] = htx::fw::num_to_float_up(tn.x[i]);
+    t.y[i] = htx::fw::num_to_float_up(tn.y[i]);
+    t.w[i] = htx::fw::num_to_float_up(tn.w[i]);
+    t.u[i] = htx::fw::num_to_float_up(tn.u[i]);
+    t.v[i] = htx::fw::num_to_float_up(tn.v[i]);
+  }
   const htx::fw::AutoChoice c = htx::render::auto_method(pv, {6, 5}, htx::fw::kAutoConfigIcebreaker, {}, 4096, 0x1F);
   EXPECT_EQ(c.method, htx::fw::choose_method(t, htx::fw::kAutoConfigIcebreaker, {}, 0x1F, 1.0f / 16).method);
 }

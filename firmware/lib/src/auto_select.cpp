@@ -4,210 +4,281 @@ namespace htx::fw {
 
 namespace {
 
-float absf(float x) { return x < 0 ? -x : x; }
-float maxf(float a, float b) { return a > b ? a : b; }
-float minf(float a, float b) { return a < b ? a : b; }
-bool finitef(float x) { return x == x && x < 3.0e38f && x > -3.0e38f; }
+using Num = AutoNum;
+using Tri = AutoTriangleNum;
 
-// 2^e for -126 <= e <= 127, built from its exponent bits (exact; no libm, no loop: this runs per
-// triangle on a CPU without floating point).
-float pow2f(int e) {
-  const uint32_t bits = static_cast<uint32_t>(e + 127) << 23;
-  float r;
-  __builtin_memcpy(&r, &bits, sizeof r);
-  return r;
+// Input checks on the float's bits (no soft-float compares): |x| < 3.0e38 and not NaN, and x > 0.
+constexpr uint32_t kFiniteLimitBits = 0x7F61B1E6u;  // 3.0e38f
+uint32_t bits_of(float x) {
+  uint32_t b;
+  __builtin_memcpy(&b, &x, sizeof b);
+  return b;
+}
+bool finite_input(float x) { return (bits_of(x) & 0x7FFFFFFFu) < kFiniteLimitBits; }
+bool positive_input(float x) { return bits_of(x) != 0 && bits_of(x) <= 0x7F800000u; }
+
+Num num(int32_t v) { return num_from_int(v); }
+
+Tri tri_of(const AutoTriangle& t) {
+  Tri n;
+  for (int i = 0; i < 3; ++i) {
+    n.x[i] = num_from_float(t.x[i]);
+    n.y[i] = num_from_float(t.y[i]);
+    n.w[i] = num_from_float(t.w[i]);
+    n.u[i] = num_from_float(t.u[i]);
+    n.v[i] = num_from_float(t.v[i]);
+  }
+  return n;
 }
 
-// sqrt(x) for x >= 1: a first guess from halving the exponent (within a factor of 1.5), then
-// Newton's method, which from the second step on decreases monotonically; it stops when it no
-// longer does (float precision), at most 8 steps.
-float sqrt_ge1(float x) {
-  uint32_t bits;
-  __builtin_memcpy(&bits, &x, sizeof bits);
-  const uint32_t guess_bits = ((bits >> 23) - 127) / 2 + 127;
-  float y;
-  const uint32_t g = guess_bits << 23;
-  __builtin_memcpy(&y, &g, sizeof y);
-  y = 0.5f * (y + x / y);
-  for (int i = 0; i < 8; ++i) {
-    const float next = 0.5f * (y + x / y);
-    if (!(next < y)) break;
-    y = next;
-  }
+// sqrt(x) for x >= 1, from above: x = f 4^k with f in [1, 4), a first guess (f + 2) / 3 (within 6 %),
+// then two Newton steps. Newton's steps for a square root never end below it, so the result is
+// over by at most 2e-6 relative (the error squares each step), which only makes AFFINE's bound
+// (increasing in it) safer.
+Num sqrt_ge1(Num x) {
+  const int32_t exp = x.e + 30;  // x = (m / 2^30) 2^exp, m / 2^30 in [1, 2)
+  const int32_t k = exp >> 1;
+  const Num f = num_scale(x, -2 * k);
+  const Num third = {0x2AAAAAAB, -31};  // 1/3, rounded up
+  Num y = num_scale((f + num(2)) * third, k);
+  for (int i = 0; i < 2; ++i) y = num_scale(y + x / y, -1);
   return y;
 }
 
 // Rounding of the TF-bit texel coordinates and of the plane arithmetic, common to every method
 // (docs/auto.md: 4 ulps of TF; icebreaker's measured RECIP_NR error, 0.0027 texel, is within it).
-float base_error(const AutoConfig& c) { return pow2f(2 - c.texcoord_frac_bits); }
+Num base_error(const AutoConfig& c) { return num_pow2(2 - c.texcoord_frac_bits); }
 
 // Relative error of the reciprocal table alone and after the pixel Newton steps (docs/model.md §4, §5).
-float table_error(const AutoConfig& c) {
-  return pow2f(-(c.recip_table_bits + 1)) * (1.0f + pow2f(-(c.recip_guard_bits + 1)));
+Num table_error(const AutoConfig& c) {
+  return num_pow2(-(c.recip_table_bits + 1)) * (num(1) + num_pow2(-(c.recip_guard_bits + 1)));
 }
-float newton_error(const AutoConfig& c) {
-  float e = table_error(c);
-  for (int i = 0; i < c.pixel_nr_steps; ++i) e = e * e + pow2f(2 - c.recip_width);
+Num newton_error(const AutoConfig& c) {
+  Num e = table_error(c);
+  for (int i = 0; i < c.pixel_nr_steps; ++i) e = e * e + num_pow2(2 - c.recip_width);
   return e;
+}
+
+struct Range {
+  Num lo, hi;
+};
+Range range_of(const Num a[3]) {
+  Range r{a[0], a[0]};
+  for (int i = 1; i < 3; ++i) {
+    r.lo = num_min(r.lo, a[i]);
+    r.hi = num_max(r.hi, a[i]);
+  }
+  return r;
 }
 
 struct Extent {
-  float x_lo, x_hi, y_lo, y_hi, w_lo, w_hi;
+  Range x, y, w, u, v;
+};
+Extent extent_of(const Tri& t) { return {range_of(t.x), range_of(t.y), range_of(t.w), range_of(t.u), range_of(t.v)}; }
+
+// For one texture axis a with the planes Q = q and A = (a - c) q (c the middle of a's range),
+// da/dx = k / Q^2 where k = gA*Q - A*gQ is constant along x, so its extremes over the triangle are
+// at the vertices (docs/auto.md, "SUBDIV"): the largest |k| at a vertex. g_q is the q plane's x
+// gradient, the same for both axes; inv_det = 1 / the determinant.
+Num axis_k_max(const Num a[3], Range range, const Num q[3], const Num dy[3], Num inv_det, Num g_q) {
+  const Num c = num_scale(range.hi + range.lo, -1);
+  Num A[3];
+  for (int i = 0; i < 3; ++i) A[i] = (a[i] - c) * q[i];
+  const Num g_a = ((A[1] - A[0]) * dy[2] - (A[2] - A[0]) * dy[1]) * inv_det;
+  Num k_max;
+  for (int i = 0; i < 3; ++i) k_max = num_max(k_max, num_abs(q[i] * g_a - A[i] * g_q));
+  return k_max;
+}
+
+struct Bounds {
+  Num affine, recip_lut, recip_nr, divfree, subdiv_slope, subdiv_curvature, span_limit, du;
 };
 
-Extent extent_of(const AutoTriangle& t) {
-  Extent e{t.x[0], t.x[0], t.y[0], t.y[0], t.w[0], t.w[0]};
-  for (int i = 1; i < 3; ++i) {
-    e.x_lo = minf(e.x_lo, t.x[i]);
-    e.x_hi = maxf(e.x_hi, t.x[i]);
-    e.y_lo = minf(e.y_lo, t.y[i]);
-    e.y_hi = maxf(e.y_hi, t.y[i]);
-    e.w_lo = minf(e.w_lo, t.w[i]);
-    e.w_hi = maxf(e.w_hi, t.w[i]);
+Bounds bounds_of(const Tri& t, const Extent& e, const AutoConfig& cfg, const AutoSampling& s) {
+  Bounds b;
+  b.du = num_max(e.u.hi - e.u.lo, e.v.hi - e.v.lo);
+  const Num base = base_error(cfg);
+  const Num sr = sqrt_ge1(e.w.hi / e.w.lo);
+  b.affine = b.du * (sr - num(1)) / (sr + num(1)) + base;
+  const Num local = num_scale(b.du, -1) + num(1);  // |u - u_offset| (the offset is the rounded midpoint)
+  b.recip_lut = local * table_error(cfg) + base;
+  b.recip_nr = local * newton_error(cfg) + base;
+  b.divfree = (s.filter == 0 ? num_pow2(-1) : num_pow2(s.top_level - cfg.divfree_frac_bits - 1)) + base;
+  b.span_limit = e.x.hi - e.x.lo + num(1);
+
+  // SUBDIV's slope k / Q^2 and curvature 2 k gQ / Q^3 are largest at the largest |k| of either
+  // axis and the smallest Q.
+  Num dx[3], dy[3], q[3];
+  for (int i = 0; i < 3; ++i) {
+    dx[i] = t.x[i] - t.x[0];
+    dy[i] = t.y[i] - t.y[0];
+    q[i] = e.w.lo / t.w[i];  // in (0, 1]
   }
-  return e;
+  const Num det = dx[1] * dy[2] - dx[2] * dy[1];
+  if (det.m == 0) return b;  // slope and curvature 0
+  const Num inv_det = num(1) / det;
+  const Num q_min = e.w.lo / e.w.hi;
+  const Num g_q = ((q[1] - q[0]) * dy[2] - (q[2] - q[0]) * dy[1]) * inv_det;
+  const Num k_max = num_max(axis_k_max(t.u, e.u, q, dy, inv_det, g_q), axis_k_max(t.v, e.v, q, dy, inv_det, g_q));
+  const Num q2 = q_min * q_min;
+  b.subdiv_slope = k_max / q2;
+  b.subdiv_curvature = num_scale(b.subdiv_slope * num_abs(g_q), 1) / q_min;
+  return b;
 }
 
-float range_of(const float a[3]) {
-  return maxf(a[0], maxf(a[1], a[2])) - minf(a[0], minf(a[1], a[2]));
+Num bound_subdiv(const Bounds& b, const AutoConfig& cfg, unsigned n) {
+  const Num l = num_min(num(static_cast<int32_t>(n)), b.span_limit);  // pixels between exact points
+  const Num interp = num_min(num_scale(l * l * b.subdiv_curvature, -3), b.affine);
+  const Num seg = num_min(b.du, l * b.subdiv_slope);  // texels one segment spans
+  // The step's 8 extra fraction bits and round(2^16 / L) (docs/model.md §5.3).
+  const Num step = num_scale(l * seg, -17) + num_scale(l, -9 - cfg.texcoord_frac_bits);
+  return interp + step + b.recip_nr;
 }
 
-// Slope and curvature of one texture axis a along screen x (docs/auto.md, "SUBDIV"): with the
-// planes Q = q and A = (a - c) q, da/dx = k / Q^2 where k = gA*Q - A*gQ is constant along x (so
-// its extremes over the triangle are at vertices), and d2a/dx2 = -2 k gQ / Q^3.
-void axis_derivatives(const float a[3], const float q[3], const float dy[3], float det, float q_min,
-                      float* slope, float* curvature) {
-  const float c = 0.5f * (maxf(a[0], maxf(a[1], a[2])) + minf(a[0], minf(a[1], a[2])));
-  float A[3];
-  for (int i = 0; i < 3; ++i) A[i] = (a[i] - c) * q[i];
-  const float g_q = ((q[1] - q[0]) * dy[2] - (q[2] - q[0]) * dy[1]) / det;
-  const float g_a = ((A[1] - A[0]) * dy[2] - (A[2] - A[0]) * dy[1]) / det;
-  float k_max = 0;
-  for (int i = 0; i < 3; ++i) k_max = maxf(k_max, absf(q[i] * g_a - A[i] * g_q));
-  const float q2 = q_min * q_min;
-  *slope = k_max / q2;
-  *curvature = 2.0f * k_max * absf(g_q) / (q2 * q_min);
+// What every method's cost shares (docs/model.md §9 estimate), computed once a triangle.
+struct Footprint {
+  Num pixels, rows, fixed, traverse, nr_divide;
+};
+
+Footprint footprint_of(const Tri& t, const Extent& e, const AutoConfig& cfg) {
+  Footprint f;
+  const Num det = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
+  f.pixels = num_scale(num_abs(det), -1);
+  f.rows = e.y.hi - e.y.lo + num(1);
+  f.fixed = num(26 + 7 * cfg.recip_issue_interval) + f.rows;  // setup, one clock per span
+  f.traverse = num_scale(num(cfg.pixel_cost16), -4) * f.pixels;
+  f.nr_divide = num_scale(num(cfg.nr_divide_cost16), -4);
+  return f;
+}
+
+// The traversal and the reciprocal unit work side by side: a method takes the longer of the
+// traversal's clocks and the divider's.
+Num cycles_of(const Footprint& f, const AutoConfig& cfg, uint8_t method, unsigned n) {
+  switch (method) {
+    case kAutoRecipNr: return f.fixed + num_max(f.traverse, f.nr_divide * f.pixels);
+    case kAutoRecipLut: return f.fixed + num_max(f.traverse, num_scale(num(cfg.lut_divide_cost16), -4) * f.pixels);
+    case kAutoSubdiv: {
+      const Num points = num_min(f.pixels, f.pixels / num(static_cast<int32_t>(n)) + num_scale(f.rows, 1));
+      return f.fixed + num_max(f.traverse, f.nr_divide * points);
+    }
+    case kAutoDivFree: return f.fixed + f.traverse + num(cfg.recip_issue_interval);  // one seed division
+    default: return f.fixed + f.traverse + num_scale(num(cfg.affine_setup_cost16), -4);  // AFFINE
+  }
+}
+
+// Nothing predicted within the tolerance (or a triangle that cannot be judged): the most accurate
+// divider built (SUBDIV with n = 2 when it is the only one).
+uint8_t fallback_method(uint32_t built, uint8_t* subdiv_n) {
+  *subdiv_n = 16;
+  if (built & (1u << kAutoRecipNr)) return kAutoRecipNr;
+  if (built & (1u << kAutoRecipLut)) return kAutoRecipLut;
+  if (built & (1u << kAutoSubdiv)) {
+    *subdiv_n = 2;
+    return kAutoSubdiv;
+  }
+  return kAutoAffine;
 }
 
 }  // namespace
 
 AutoBounds auto_bounds(const AutoTriangle& t, const AutoConfig& cfg, const AutoSampling& s) {
-  const Extent e = extent_of(t);
-  AutoBounds b{};
-  b.du = maxf(range_of(t.u), range_of(t.v));
-  const float base = base_error(cfg);
-  const float r = e.w_hi / e.w_lo;
-  const float sr = sqrt_ge1(r);
-  b.affine = b.du * (sr - 1.0f) / (sr + 1.0f) + base;
-  const float local = 0.5f * b.du + 1.0f;  // |u - u_offset| (the offset is the rounded midpoint)
-  b.recip_lut = local * table_error(cfg) + base;
-  b.recip_nr = local * newton_error(cfg) + base;
-  b.divfree = (s.filter == 0 ? 0.5f : pow2f(s.top_level - cfg.divfree_frac_bits - 1)) + base;
-  b.span_limit = e.x_hi - e.x_lo + 1.0f;
-
-  float dx[3], dy[3], q[3];
-  for (int i = 0; i < 3; ++i) {
-    dx[i] = t.x[i] - t.x[0];
-    dy[i] = t.y[i] - t.y[0];
-    q[i] = e.w_lo / t.w[i];  // in (0, 1]
-  }
-  const float det = dx[1] * dy[2] - dx[2] * dy[1];
-  const float q_min = e.w_lo / e.w_hi;
-  if (det == 0.0f) {
-    b.subdiv_slope = b.subdiv_curvature = 0;
-    return b;
-  }
-  float su = 0, cu = 0, sv = 0, cv = 0;
-  axis_derivatives(t.u, q, dy, det, q_min, &su, &cu);
-  axis_derivatives(t.v, q, dy, det, q_min, &sv, &cv);
-  b.subdiv_slope = maxf(su, sv);
-  b.subdiv_curvature = maxf(cu, cv);
-  return b;
+  const Tri tn = tri_of(t);
+  const Bounds b = bounds_of(tn, extent_of(tn), cfg, s);
+  AutoBounds r;
+  r.affine = num_to_float_up(b.affine);
+  r.recip_lut = num_to_float_up(b.recip_lut);
+  r.recip_nr = num_to_float_up(b.recip_nr);
+  r.divfree = num_to_float_up(b.divfree);
+  r.subdiv_slope = num_to_float_up(b.subdiv_slope);
+  r.subdiv_curvature = num_to_float_up(b.subdiv_curvature);
+  r.span_limit = num_to_float_up(b.span_limit);
+  r.du = num_to_float_up(b.du);
+  return r;
 }
 
 float auto_bound_subdiv(const AutoBounds& b, const AutoConfig& cfg, unsigned n) {
-  const float l = minf(static_cast<float>(n), b.span_limit);  // pixels between exact points
-  const float interp = minf(l * l * 0.125f * b.subdiv_curvature, b.affine);
-  const float seg = minf(b.du, l * b.subdiv_slope);  // texels one segment spans
-  // The step's 8 extra fraction bits and round(2^16 / L) (docs/model.md §5.3).
-  const float step = l * seg * pow2f(-17) + l * pow2f(-9 - cfg.texcoord_frac_bits);
-  return interp + step + b.recip_nr;
+  Bounds nb;
+  nb.affine = num_from_float(b.affine);
+  nb.recip_lut = num_from_float(b.recip_lut);
+  nb.recip_nr = num_from_float(b.recip_nr);
+  nb.divfree = num_from_float(b.divfree);
+  nb.subdiv_slope = num_from_float(b.subdiv_slope);
+  nb.subdiv_curvature = num_from_float(b.subdiv_curvature);
+  nb.span_limit = num_from_float(b.span_limit);
+  nb.du = num_from_float(b.du);
+  return num_to_float_up(bound_subdiv(nb, cfg, n));
 }
 
 float auto_cycles(const AutoTriangle& t, const AutoConfig& cfg, uint8_t method, unsigned n) {
-  const Extent e = extent_of(t);
-  const float det = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
-  const float pixels = 0.5f * absf(det);
-  const float rows = e.y_hi - e.y_lo + 1.0f;
-  const float interval = static_cast<float>(cfg.recip_issue_interval);
-  const float fixed = 26.0f + 7.0f * interval + rows;  // setup, one clock per span
-  // The traversal and the reciprocal unit work side by side: a method takes the longer of the
-  // traversal's clocks and the divider's.
-  const float traverse = static_cast<float>(cfg.pixel_cost16) / 16.0f * pixels;
-  const float nr_divide = static_cast<float>(cfg.nr_divide_cost16) / 16.0f;
-  switch (method) {
-    case kAutoRecipNr: return fixed + maxf(traverse, nr_divide * pixels);
-    case kAutoRecipLut: return fixed + maxf(traverse, static_cast<float>(cfg.lut_divide_cost16) / 16.0f * pixels);
-    case kAutoSubdiv: {
-      const float points = minf(pixels, pixels / static_cast<float>(n) + 2.0f * rows);
-      return fixed + maxf(traverse, nr_divide * points);
-    }
-    case kAutoDivFree: return fixed + traverse + interval;  // one seed division
-    default: return fixed + traverse + static_cast<float>(cfg.affine_setup_cost16) / 16.0f;  // AFFINE
-  }
+  const Tri tn = tri_of(t);
+  return num_to_float_up(cycles_of(footprint_of(tn, extent_of(tn), cfg), cfg, method, n));
 }
 
 AutoChoice choose_method(const AutoTriangle& t, const AutoConfig& cfg, const AutoSampling& s, uint32_t built,
                          float tolerance) {
-  AutoChoice best;
-  bool ok = tolerance > 0;
+  bool ok = positive_input(tolerance);
   for (int i = 0; i < 3; ++i)
-    ok = ok && finitef(t.x[i]) && finitef(t.y[i]) && finitef(t.u[i]) && finitef(t.v[i]) && finitef(t.w[i]) &&
-         t.w[i] > 0;
-  if (ok) {
-    const AutoBounds b = auto_bounds(t, cfg, s);
-    const uint8_t plain[4] = {kAutoAffine, kAutoRecipLut, kAutoRecipNr, kAutoDivFree};
-    const float bounds[4] = {b.affine, b.recip_lut, b.recip_nr, b.divfree};
-    for (int i = 0; i < 4; ++i) {
-      if (!(built & (1u << plain[i])) || !(bounds[i] <= tolerance)) continue;
-      const float c = auto_cycles(t, cfg, plain[i], 0);
-      if (!best.within || c < best.cycles || (c == best.cycles && bounds[i] < best.bound))
-        best = AutoChoice{plain[i], 16, true, bounds[i], c};
-    }
-    // SUBDIV: the longest segment within the tolerance (the bound grows with n, the cost falls, so a
-    // binary search over 2..64 finds it), if it is cheaper than the choice so far.
-    if ((built & (1u << kAutoSubdiv)) && b.subdiv_curvature == b.subdiv_curvature &&
-        auto_bound_subdiv(b, cfg, 2) <= tolerance) {
-      unsigned lo = 2, hi = 64;  // bound(lo) within; find the largest such n
-      while (lo < hi) {
-        const unsigned mid = (lo + hi + 1) / 2;
-        if (auto_bound_subdiv(b, cfg, mid) <= tolerance) lo = mid;
-        else hi = mid - 1;
-      }
-      const float c = auto_cycles(t, cfg, kAutoSubdiv, lo);
-      if (!best.within || c < best.cycles)
-        best = AutoChoice{kAutoSubdiv, static_cast<uint8_t>(lo), true, auto_bound_subdiv(b, cfg, lo), c};
-    }
-    if (best.within) return best;
+    ok = ok && finite_input(t.x[i]) && finite_input(t.y[i]) && finite_input(t.u[i]) && finite_input(t.v[i]) &&
+         finite_input(t.w[i]) && positive_input(t.w[i]);
+  if (!ok) return choose_method(Tri{}, cfg, s, built, Num{});  // the fallback
+  return choose_method(tri_of(t), cfg, s, built, num_from_float(tolerance));
+}
+
+AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const AutoSampling& s, uint32_t built,
+                         AutoNum tol) {
+  AutoChoice c;
+  bool ok = tol.m > 0;
+  for (int i = 0; i < 3; ++i) ok = ok && t.w[i].m > 0;
+  if (!ok) {
+    c.method = fallback_method(built, &c.subdiv_n);
+    return c;
   }
-  // Nothing predicted within the tolerance: the most accurate divider built.
-  best.within = false;
-  best.subdiv_n = 16;
-  if (built & (1u << kAutoRecipNr)) best.method = kAutoRecipNr;
-  else if (built & (1u << kAutoRecipLut)) best.method = kAutoRecipLut;
-  else if (built & (1u << kAutoSubdiv)) {
-    best.method = kAutoSubdiv;
-    best.subdiv_n = 2;
-  } else best.method = kAutoAffine;
-  if (ok) {
-    const AutoBounds b = auto_bounds(t, cfg, s);
-    best.bound = best.method == kAutoRecipNr ? b.recip_nr
-                 : best.method == kAutoRecipLut ? b.recip_lut
-                 : best.method == kAutoSubdiv   ? auto_bound_subdiv(b, cfg, 2)
-                                                : b.affine;
-    best.cycles = auto_cycles(t, cfg, best.method, best.subdiv_n);
+  const Extent e = extent_of(t);
+  const Bounds b = bounds_of(t, e, cfg, s);
+  const Footprint f = footprint_of(t, e, cfg);
+  Num bound, cycles;
+  const uint8_t plain[4] = {kAutoAffine, kAutoRecipLut, kAutoRecipNr, kAutoDivFree};
+  const Num plain_bounds[4] = {b.affine, b.recip_lut, b.recip_nr, b.divfree};
+  for (int i = 0; i < 4; ++i) {
+    if (!(built & (1u << plain[i])) || !(plain_bounds[i] <= tol)) continue;
+    const Num cost = cycles_of(f, cfg, plain[i], 0);
+    if (!c.within || cost < cycles || (cost == cycles && plain_bounds[i] < bound)) {
+      c.method = plain[i];
+      c.within = true;
+      bound = plain_bounds[i];
+      cycles = cost;
+    }
   }
-  return best;
+  // SUBDIV: the longest segment within the tolerance (the bound grows with n, the cost falls, so a
+  // binary search over 2..64 finds it), if it is cheaper than the choice so far.
+  if ((built & (1u << kAutoSubdiv)) && bound_subdiv(b, cfg, 2) <= tol) {
+    unsigned lo = 2, hi = 64;  // bound(lo) within; find the largest such n
+    if (bound_subdiv(b, cfg, hi) <= tol) lo = hi;  // (often so: one evaluation instead of six)
+    while (lo < hi) {
+      const unsigned mid = (lo + hi + 1) / 2;
+      if (bound_subdiv(b, cfg, mid) <= tol) lo = mid;
+      else hi = mid - 1;
+    }
+    const Num cost = cycles_of(f, cfg, kAutoSubdiv, lo);
+    if (!c.within || cost < cycles) {
+      c.method = kAutoSubdiv;
+      c.subdiv_n = static_cast<uint8_t>(lo);
+      c.within = true;
+      bound = bound_subdiv(b, cfg, lo);
+      cycles = cost;
+    }
+  }
+  if (!c.within) {
+    c.method = fallback_method(built, &c.subdiv_n);
+    bound = c.method == kAutoRecipNr    ? b.recip_nr
+            : c.method == kAutoRecipLut ? b.recip_lut
+            : c.method == kAutoSubdiv   ? bound_subdiv(b, cfg, c.subdiv_n)
+                                        : b.affine;
+    cycles = cycles_of(f, cfg, c.method, c.subdiv_n);
+  }
+  c.bound = num_to_float_up(bound);
+  c.cycles = num_to_float_up(cycles);
+  return c;
 }
 
 }  // namespace htx::fw

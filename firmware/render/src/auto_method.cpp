@@ -2,24 +2,24 @@
 
 namespace htx::render {
 
-fw::AutoTriangle auto_triangle(const ScreenVert* const v[3], TexSize tex) {
-  fw::AutoTriangle t;
-  const float to_px = 1.0f / 256.0f, to_unit = 1.0f / 65536.0f;
-  const float width = static_cast<float>(1u << tex.log2_width), height = static_cast<float>(1u << tex.log2_height);
+fw::AutoTriangleNum auto_triangle(const ScreenVert* const v[3], TexSize tex) {
+  // Exact: every coordinate is an integer times a power of two (1/256 pixel, Q16.16 w, s and t).
+  fw::AutoTriangleNum t;
   for (int i = 0; i < 3; ++i) {
-    t.x[i] = static_cast<float>(v[i]->x) * to_px;
-    t.y[i] = static_cast<float>(v[i]->y) * to_px;
-    t.w[i] = static_cast<float>(v[i]->w) * to_unit;
-    t.u[i] = static_cast<float>(v[i]->attr->s) * to_unit * width;
-    t.v[i] = static_cast<float>(v[i]->attr->t) * to_unit * height;
+    t.x[i] = fw::num_scale(fw::num_from_int(v[i]->x), -8);
+    t.y[i] = fw::num_scale(fw::num_from_int(v[i]->y), -8);
+    t.w[i] = fw::num_scale(fw::num_from_int(v[i]->w), -16);
+    t.u[i] = fw::num_scale(fw::num_from_int(v[i]->attr->s), tex.log2_width - 16);
+    t.v[i] = fw::num_scale(fw::num_from_int(v[i]->attr->t), tex.log2_height - 16);
   }
   return t;
 }
 
 fw::AutoChoice auto_method(const ScreenVert* const v[3], TexSize tex, const fw::AutoConfig& cfg,
                            const fw::AutoSampling& sampling, int64_t tol, uint32_t built) {
-  return fw::choose_method(auto_triangle(v, tex), cfg, sampling, built,
-                           static_cast<float>(tol) * (1.0f / 65536.0f));
+  // (a tolerance beyond 2^15 texels is as good as any)
+  const int32_t tol32 = tol > INT32_MAX ? INT32_MAX : tol < 0 ? 0 : static_cast<int32_t>(tol);
+  return fw::choose_method(auto_triangle(v, tex), cfg, sampling, built, fw::num_scale(fw::num_from_int(tol32), -16));
 }
 
 }  // namespace htx::render

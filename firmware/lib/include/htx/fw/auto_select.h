@@ -3,13 +3,16 @@
 // the firmware pipeline (firmware/render, fixed-point vertices converted here) and the host
 // (`htx render --method auto --tolerance T`), so both pick with the same code.
 //
-// Single-precision float on purpose: the bounds need products of screen and texture quantities whose
-// ranges do not fit a fixed-point format, and only + - * / and comparisons are used (no libm), all
-// correctly rounded IEEE operations, so the rv32im soft float and the host give identical choices.
-// Freestanding C++17.
+// The interface is float; inside, a floating-point type of integer operations (htx/fw/auto_num.h):
+// the bounds need products of screen and texture quantities whose ranges do not fit a fixed-point
+// format, the host and the rv32im CPU must give identical choices, and on the CPU the soft-float
+// library cost about 37,000 cycles a triangle (docs/auto.md, "Arithmetic"). Reported bounds and
+// costs are rounded up to float. Freestanding C++17.
 #pragma once
 
 #include <stdint.h>
+
+#include "htx/fw/auto_num.h"
 
 namespace htx::fw {
 
@@ -75,6 +78,10 @@ AutoConfig auto_config_of(const Config& c) {
 struct AutoTriangle {
   float x[3], y[3], w[3], u[3], v[3];
 };
+// The same in AutoNum, which the firmware builds from its fixed-point vertices without float.
+struct AutoTriangleNum {
+  AutoNum x[3], y[3], w[3], u[3], v[3];
+};
 
 // What the triangle is drawn with (texture filter and the texture's last mip level, for DIVFREE's
 // cell size).
@@ -111,5 +118,9 @@ float auto_cycles(const AutoTriangle& t, const AutoConfig& cfg, uint8_t method, 
 // with within = false.
 AutoChoice choose_method(const AutoTriangle& t, const AutoConfig& cfg, const AutoSampling& s, uint32_t built,
                          float tolerance);
+// The same choice for a triangle and tolerance in AutoNum (equal to the float version's for the
+// same values; a w <= 0 or a tolerance <= 0 gives the fallback).
+AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const AutoSampling& s, uint32_t built,
+                         AutoNum tolerance);
 
 }  // namespace htx::fw

@@ -11,8 +11,8 @@
 
 namespace htx::render {
 
-// The chooser's view of a screen triangle: pixels, w, level-0 texels (u = s * 2^log2_width).
-fw::AutoTriangle auto_triangle(const ScreenVert* const v[3], TexSize tex);
+// The chooser's view of a screen triangle: pixels, w, level-0 texels (u = s * 2^log2_width), exact.
+fw::AutoTriangleNum auto_triangle(const ScreenVert* const v[3], TexSize tex);
 
 // tol: Q16.16 texels (> 0). built: bit i = method i built by the raster unit.
 fw::AutoChoice auto_method(const ScreenVert* const v[3], TexSize tex, const fw::AutoConfig& cfg,
