@@ -69,6 +69,19 @@ void print_ratio(uint64_t num, uint64_t den) {
   printf("%lu.%02lu", static_cast<unsigned long>(hundredths / 100), static_cast<unsigned long>(hundredths % 100));
 }
 
+// draw_mesh without a raster unit, timed; prints the failure and returns false if it fails.
+bool timed_draw(const htx::render::FrameParams& frame, const geombench::BenchScene& sc, const htx::render::Mesh& mesh,
+                htx::render::VertexCache* cache, uint32_t* sent, htx::render::DrawStats* st, uint64_t* cycles) {
+  const uint64_t t0 = htx::hal::cpu_cycles();
+  const htx::render::DrawStatus status = htx::render::draw_mesh(frame, sc.view_proj, mesh, cache, {count_triangle, sent}, st);
+  *cycles = htx::hal::cpu_cycles() - t0;
+  if (status != htx::render::kDrawOk) {
+    printf("geombench %s: draw_mesh (method %u) failed with status %d\n", sc.name, mesh.state.method, status);
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 int main() {
@@ -102,16 +115,10 @@ int main() {
     mesh.state.method = htx::render::kMethodAuto;
     htx::render::FrameParams frame;
     frame.viewport = vp;
-    uint32_t sent = 0;
     htx::render::DrawStats st;
-    const uint64_t d0 = htx::hal::cpu_cycles();
-    const htx::render::DrawStatus status =
-        htx::render::draw_mesh(frame, sc.view_proj, mesh, &cache, {count_triangle, &sent}, &st);
-    const uint64_t dc = htx::hal::cpu_cycles() - d0;
-    if (status != htx::render::kDrawOk) {
-      printf("geombench %s: draw_mesh failed with status %d\n", sc.name, status);
-      return 1;
-    }
+    uint32_t sent = 0;
+    uint64_t dc = 0;
+    if (!timed_draw(frame, sc, mesh, &cache, &sent, &st, &dc)) return 1;
     printf("geombench %s triangles %lu sent %lu clipped %lu cycles/triangle %lu\n", sc.name,
            static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(sent),
            static_cast<unsigned long>(st.clipped), static_cast<unsigned long>(dc / sc.triangle_count));
@@ -119,14 +126,8 @@ int main() {
     htx::render::Mesh fixed = mesh;
     fixed.state.method = htx::render::kMethodRecipNr;
     uint32_t fixed_sent = 0;
-    const uint64_t f0 = htx::hal::cpu_cycles();
-    const htx::render::DrawStatus fixed_status =
-        htx::render::draw_mesh(frame, sc.view_proj, fixed, &cache, {count_triangle, &fixed_sent}, &st);
-    const uint64_t fc = htx::hal::cpu_cycles() - f0;
-    if (fixed_status != htx::render::kDrawOk) {
-      printf("geombench %s: draw_mesh (recip_nr) failed with status %d\n", sc.name, fixed_status);
-      return 1;
-    }
+    uint64_t fc = 0;
+    if (!timed_draw(frame, sc, fixed, &cache, &fixed_sent, &st, &fc)) return 1;
     printf("geombench %s triangles %lu sent %lu cycles/triangle %lu method recip_nr\n", sc.name,
            static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(fixed_sent),
            static_cast<unsigned long>(fc / sc.triangle_count));

@@ -181,31 +181,27 @@ uint8_t fallback_method(uint32_t built, uint8_t* subdiv_n) {
 
 }  // namespace
 
+// AutoBounds' fields and their Bounds counterparts, in the same order.
+constexpr float AutoBounds::*kReportedBounds[] = {&AutoBounds::affine,       &AutoBounds::recip_lut,
+                                                  &AutoBounds::recip_nr,     &AutoBounds::divfree,
+                                                  &AutoBounds::subdiv_slope, &AutoBounds::subdiv_curvature,
+                                                  &AutoBounds::span_limit,   &AutoBounds::du};
+constexpr Num Bounds::*kBounds[] = {&Bounds::affine,       &Bounds::recip_lut,        &Bounds::recip_nr,
+                                    &Bounds::divfree,      &Bounds::subdiv_slope,     &Bounds::subdiv_curvature,
+                                    &Bounds::span_limit,   &Bounds::du};
+static_assert(sizeof kReportedBounds / sizeof kReportedBounds[0] == sizeof kBounds / sizeof kBounds[0]);
+
 AutoBounds auto_bounds(const AutoTriangle& t, const AutoConfig& cfg, const AutoSampling& s) {
   const Tri tn = tri_of(t);
   const Bounds b = bounds_of(tn, extent_of(tn), cfg, s);
   AutoBounds r;
-  r.affine = num_to_float_up(b.affine);
-  r.recip_lut = num_to_float_up(b.recip_lut);
-  r.recip_nr = num_to_float_up(b.recip_nr);
-  r.divfree = num_to_float_up(b.divfree);
-  r.subdiv_slope = num_to_float_up(b.subdiv_slope);
-  r.subdiv_curvature = num_to_float_up(b.subdiv_curvature);
-  r.span_limit = num_to_float_up(b.span_limit);
-  r.du = num_to_float_up(b.du);
+  for (uint32_t i = 0; i < sizeof kBounds / sizeof kBounds[0]; ++i) r.*kReportedBounds[i] = num_to_float_up(b.*kBounds[i]);
   return r;
 }
 
 float auto_bound_subdiv(const AutoBounds& b, const AutoConfig& cfg, unsigned n) {
   Bounds nb;
-  nb.affine = num_from_float(b.affine);
-  nb.recip_lut = num_from_float(b.recip_lut);
-  nb.recip_nr = num_from_float(b.recip_nr);
-  nb.divfree = num_from_float(b.divfree);
-  nb.subdiv_slope = num_from_float(b.subdiv_slope);
-  nb.subdiv_curvature = num_from_float(b.subdiv_curvature);
-  nb.span_limit = num_from_float(b.span_limit);
-  nb.du = num_from_float(b.du);
+  for (uint32_t i = 0; i < sizeof kBounds / sizeof kBounds[0]; ++i) nb.*kBounds[i] = num_from_float(b.*kReportedBounds[i]);
   return num_to_float_up(bound_subdiv(nb, cfg, n));
 }
 
