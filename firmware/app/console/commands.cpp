@@ -7,6 +7,7 @@
 #include "frame_crc.hpp"
 #include "frame_download.hpp"
 #include "frame_pages.hpp"
+#include "line_reader.hpp"
 #include "scene_store.hpp"
 #include "scene_turn.hpp"
 #include "scene_upload.hpp"
@@ -235,7 +236,7 @@ void cmd_render(char* rest) {
 // scene itself), each shown as it is done; a
 // line a frame (with its CRC-32 if asked: the checksum costs more CPU time than drawing the cube),
 // then the rate and the last frame's CRC-32. Any key but a line feed stops it after the frame
-// being drawn (the key is consumed).
+// being drawn (the key then begins the next command line).
 void cmd_spin(char* rest) {
   const char* name = next_word(&rest);
   const char* count = next_word(&rest);
@@ -259,9 +260,14 @@ void cmd_spin(char* rest) {
     if (each_crc) printf(" crc32 %08lx", static_cast<unsigned long>(g_last.crc));
     fputs("\r\n", stdout);
     // A line feed is not a key: a terminal that ends lines with CR LF sends the command's LF
-    // after the CR that ended it, while the spin has begun.
+    // after the CR that ended it, while the spin has begun. The key that stops it begins the next
+    // line (a script's next command arrives while it spins, and must not lose its first byte).
     uint8_t key = 0;
-    while (!stopped && htx::hal::uart_try_get(&key)) stopped = key != '\n';
+    while (!stopped && htx::hal::uart_try_get(&key)) {
+      if (key == '\n') continue;
+      stopped = true;
+      unread_byte(key);
+    }
   }
   const uint64_t cycles = htx::hal::cpu_cycles() - t0;
   printf("spin %s frames %lu%s mcycles ", name, static_cast<unsigned long>(done), stopped ? " (stopped)" : "");

@@ -11,13 +11,18 @@ constexpr int kCtrlC = 0x03;
 constexpr int kBackspace = 0x08;
 constexpr int kDelete = 0x7F;
 bool g_after_cr = false;  // swallow the LF of a CR LF pair
+int g_unread = EOF;       // a byte given back by unread_byte
 }  // namespace
+
+void unread_byte(int c) { g_unread = c; }
 
 LineStatus read_line(char* buf) {
   size_t n = 0;
   bool too_long = false;
   for (;;) {
-    const int c = getchar();
+    int c = g_unread;
+    g_unread = EOF;
+    if (c == EOF) c = getchar();
     if (c == EOF) return LineStatus::kEndOfInput;
     const bool lf_after_cr = g_after_cr && c == '\n';
     g_after_cr = c == '\r';

@@ -16,4 +16,8 @@ enum class LineStatus { kLine, kTooLong, kOverrun, kEndOfInput };
 // is reported as kOverrun, since it may have lost characters.
 LineStatus read_line(char* buf);
 
+// Gives one received byte back: the next read_line takes it first (a key that stopped `spin` begins
+// the next line instead of being lost).
+void unread_byte(int c);
+
 }  // namespace console_app

@@ -15,6 +15,7 @@ namespace {
 // How often (in clocks) the host endpoint is polled for input: a syscall per poll, and far shorter
 // than one serial bit time would need (104 clocks at 115200 baud).
 constexpr uint64_t kPollInterval = 256;
+constexpr uint32_t kUartFifoDepth = 16;  // htx_uart's FifoDepth in the fabric
 
 std::string hex(uint32_t v) {
   char buf[16];
@@ -50,6 +51,7 @@ struct SocSim::Impl {
         rx_decoder(kClockHz / o.baud), tx_encoder(kClockHz / o.baud) {}
 
   auto& ram() { return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_ram__DOT__mem_q; }
+  uint32_t uart_rx_level() const { return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_uart__DOT__rx_level; }
   // The framebuffer's colour memory, two pixels a word (the lower pixel in bits 15:0).
   auto& fb_color() {
     return top->rootp
@@ -120,6 +122,7 @@ SimResult SocSim::run() {
   SimResult res;
   const auto t0 = std::chrono::steady_clock::now();
   uint8_t inbuf[256];
+  size_t script_at = 0, script_len = 0;  // paced input: inbuf[script_at, script_len) not yet sent
   auto& ram = s.ram();
   uint64_t c = 0;
   bool done = false;
@@ -152,9 +155,21 @@ SimResult SocSim::run() {
       }
     }
     if (s.uart && c % kPollInterval == 0) {
-      if (s.tx_encoder.queued() < 16) {
-        const size_t n = s.uart->read(inbuf, sizeof inbuf);
-        for (size_t i = 0; i < n; ++i) s.tx_encoder.push(inbuf[i]);
+      if (!s.uart->paced()) {
+        // A person or a serial program: at the line's rate, as on a board (a burst can overrun
+        // the FIFO, which the firmware reports).
+        if (s.tx_encoder.queued() < 16) {
+          const size_t n = s.uart->read(inbuf, sizeof inbuf);
+          for (size_t i = 0; i < n; ++i) s.tx_encoder.push(inbuf[i]);
+        }
+      } else if (s.tx_encoder.idle() && s.uart_rx_level() + 1 < kUartFifoDepth) {
+        // A script: a byte at a time, each once the last is in the FIFO and only while the FIFO
+        // has room for it.
+        if (script_at == script_len) {
+          script_len = s.uart->read(inbuf, sizeof inbuf);
+          script_at = 0;
+        }
+        if (script_at < script_len) s.tx_encoder.push(inbuf[script_at++]);
       }
       if (c % (kPollInterval * 1024) == 0) s.uart->flush();
     }

@@ -36,8 +36,11 @@ class StdioSerial final : public SerialEndpoint {
 
   void flush() override { std::fflush(stdout); }
 
+  bool paced() const override { return script_; }
+
  private:
   bool eof_ = false;
+  const bool script_ = !::isatty(STDIN_FILENO);  // a pipe or a file
 };
 
 }  // namespace

@@ -18,12 +18,16 @@ class SerialEndpoint {
   virtual void write(const uint8_t* data, size_t len) = 0;
   // Passes on buffered output (called at the end of a run and now and then while running).
   virtual void flush() {}
+  // Input is a script, not a person or a serial program: the harness then sends it only as fast
+  // as the UART's receive FIFO has room (as a terminal with flow control would), so none is lost.
+  virtual bool paced() const { return false; }
 };
 
 // A pseudo-terminal in raw mode; any serial program can open path(). Output the program has not
 // read yet is kept (the harness holds the slave side open), so nothing sent before it attaches is lost.
 std::unique_ptr<SerialEndpoint> open_pty_serial(std::string& path_out);
-// Standard input and output. Input is read only when available; EOF simply ends input.
+// Standard input and output. Input is read only when available; EOF simply ends input. When stdin
+// is not a terminal (a pipe or a file) it is paced().
 std::unique_ptr<SerialEndpoint> open_stdio_serial();
 
 }  // namespace htx::sim
