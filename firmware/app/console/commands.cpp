@@ -76,7 +76,7 @@ void cmd_help() {
         "  set method NAME       auto, affine, subdivN (N = 2..64), recip_lut, recip_nr, divfree\r\n"
         "  set tolerance 1/N     AUTO's largest predicted texel error (N = 1..65536)\r\n"
         "  render SCENE          draw a scene; prints its figures and the frame's CRC-32\r\n"
-        "  spin SCENE [FRAMES] [crc]  draw it FRAMES times (60) turning once about y; a key stops it\r\n"
+        "  spin SCENE [FRAMES] [crc]  FRAMES renders (60) turning once about its middle; a key stops\r\n"
         "  upload SIZE CRC32     receive a packed scene as packets (for `htx upload`); SCENE `upload`\r\n"
         "  texture SIZE CRC32    receive a packed texture as packets (for `htx upload --texture`)\r\n"
         "  stats                 the raster unit's counters after the last render\r\n"
