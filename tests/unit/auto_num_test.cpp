@@ -8,6 +8,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "htx/fw/auto_num.h"
 
@@ -103,6 +104,34 @@ TEST(AutoNum, ArithmeticWithinAFewUnitsOfTheExactResult) {
   EXPECT_TRUE(htx::fw::num_from_int(0) == AutoNum{});
   EXPECT_TRUE(htx::fw::num_from_int(1) > AutoNum{});
   EXPECT_TRUE(htx::fw::num_from_int(-1) < AutoNum{});
+}
+
+// Every pair of the extreme mantissas (+-2^30, +-(2^31 - 1) and their neighbours) at a few exponent
+// distances: results normalised and within a few units (two mantissas of -(2^31 - 1) once summed to
+// 2^31, outside the format, which a product then read as 0), and a power of two divides exactly.
+TEST(AutoNum, ExtremeMantissasStayNormalised) {
+  const int32_t edges[] = {1 << 30, (1 << 30) + 1, 0x7FFFFFFE, 0x7FFFFFFF};
+  std::vector<AutoNum> nums;
+  for (int32_t m : edges)
+    for (int32_t e : {-40, -31, -30, 0, 1})
+      for (int sign : {1, -1}) nums.push_back({sign * m, e});
+  for (const AutoNum& a : nums)
+    for (const AutoNum& b : nums) {
+      const double x = value(a), y = value(b), scale = std::max(std::fabs(x), std::fabs(y));
+      const AutoNum sum = a + b, diff = a - b, prod = a * b, quot = a / b;
+      ASSERT_TRUE(normalised(sum) && normalised(diff) && normalised(prod) && normalised(quot))
+          << a.m << "e" << a.e << " " << b.m << "e" << b.e;
+      ASSERT_NEAR(value(sum), x + y, scale * kRel);
+      ASSERT_NEAR(value(diff), x - y, scale * kRel);
+      ASSERT_NEAR(value(prod), x * y, std::fabs(x * y) * kRel);
+      ASSERT_NEAR(value(quot), x / y, std::fabs(x / y) * kRel);
+      if (b.m == (1 << 30) || b.m == -(1 << 30)) {
+        ASSERT_EQ(value(quot), x / y);
+      }
+    }
+  const AutoNum one = htx::fw::num_from_int(1);
+  EXPECT_EQ(value(one / one), 1.0);
+  EXPECT_EQ(value(htx::fw::num_from_int(3) / htx::fw::num_from_int(-4)), -0.75);
 }
 
 // Quotients of nearby mantissas, where the reciprocal's first guess is worst (y' near 1/2, 3/4, 1).

@@ -39,7 +39,7 @@ Num sqrt_ge1(Num x) {
   const int32_t exp = x.e + 30;  // x = (m / 2^30) 2^exp, m / 2^30 in [1, 2)
   const int32_t k = exp >> 1;
   const Num f = num_scale(x, -2 * k);
-  const Num third = {0x2AAAAAAB, -31};  // 1/3, rounded up
+  const Num third = {0x55555556, -32};  // 1/3, rounded up (normalised, as every operand must be)
   Num y = num_scale((f + num(2)) * third, k);
   for (int i = 0; i < 2; ++i) y = num_scale(y + x / y, -1);
   return y;
