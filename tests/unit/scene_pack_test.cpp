@@ -38,7 +38,7 @@ const char* unpack(const std::vector<uint8_t>& bytes, std::vector<Mesh>* meshes,
                    uint32_t max_meshes = 8, uint32_t max_vertices = 96) {
   static std::vector<uint32_t> words;
   words.assign((bytes.size() + 3) / 4 + 1, 0);
-  std::memcpy(words.data(), bytes.data(), bytes.size());
+  if (!bytes.empty()) std::memcpy(words.data(), bytes.data(), bytes.size());
   meshes->assign(max_meshes, Mesh{});
   return htx::render::unpack_scene(reinterpret_cast<const uint8_t*>(words.data()), bytes.size(), meshes->data(),
                                    max_meshes, max_vertices, out);

@@ -48,8 +48,8 @@ fw::EncodeStatus encode_triangle_fx(const fw::RecordFormat& f, const ScreenVert*
   // u, v in level-0 texels, Q16.16 (64 bits: up to 2^15 normalised units times 2^15 texels).
   int64_t us[3], vs[3];
   for (int i = 0; i < 3; ++i) {
-    us[i] = static_cast<int64_t>(v[i]->attr->s) << tex.log2_width;
-    vs[i] = static_cast<int64_t>(v[i]->attr->t) << tex.log2_height;
+    us[i] = shift_left(static_cast<int64_t>(v[i]->attr->s), tex.log2_width);
+    vs[i] = shift_left(static_cast<int64_t>(v[i]->attr->t), tex.log2_height);
   }
   const int64_t ou = offset_of(us), ov = offset_of(vs);
   const int64_t off_limit = int64_t{1} << 30;
@@ -74,8 +74,8 @@ fw::EncodeStatus encode_triangle_fx(const fw::RecordFormat& f, const ScreenVert*
     if (q < 1) q = 1;  // a depth ratio beyond 2^q_bits inside one triangle: raised to one unit
     if (q > q_top) q = q_top;
     r.q = static_cast<uint32_t>(q);
-    const int64_t ul = us[i] - (ou << kFracBits);
-    const int64_t vl = vs[i] - (ov << kFracBits);
+    const int64_t ul = us[i] - shift_left(ou, kFracBits);
+    const int64_t vl = vs[i] - shift_left(ov, kFracBits);
     if (!(ul > -uv_limit && ul < uv_limit && vl > -uv_limit && vl < uv_limit)) return fw::kEncodeUvRange;
     // The products use the quantised q, so uq / q reproduces u at the vertex to 1/(2q) texel.
     r.uq = round_shift(static_cast<int64_t>(static_cast<int32_t>(ul)) * q, kFracBits);

@@ -11,7 +11,7 @@ namespace {
 inline int32_t divide_q29(int32_t c, int32_t w, int sh, uint32_t mant) {
   if (c > w) c = w;
   if (c < -w) c = -w;
-  const int32_t cn = sh >= 0 ? c << sh : c >> -sh;
+  const int32_t cn = sh >= 0 ? shift_left(c, sh) : c >> -sh;
   return static_cast<int32_t>((static_cast<int64_t>(cn) * static_cast<int64_t>(mant)) >> 32);
 }
 

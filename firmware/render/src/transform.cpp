@@ -61,7 +61,7 @@ Vec4 transform_point(const Mat4& m, int32_t x, int32_t y, int32_t z) {
   const int f = m.frac;
   for (int i = 0; i < 4; ++i) {
     const int64_t s = static_cast<int64_t>(m.m[i][0]) * x + static_cast<int64_t>(m.m[i][1]) * y +
-                      static_cast<int64_t>(m.m[i][2]) * z + (static_cast<int64_t>(m.m[i][3]) << f);
+                      static_cast<int64_t>(m.m[i][2]) * z + shift_left(static_cast<int64_t>(m.m[i][3]), f);
     out[i] = saturate32(round_shift(s, f));
   }
   return {out[0], out[1], out[2], out[3]};

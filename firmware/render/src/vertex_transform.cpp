@@ -31,7 +31,7 @@ VertexTransform make_vertex_transform(const Mat4& mvp, int position_bits) {
   for (int i = 0; i < 4; ++i) {
     for (int j = 0; j < 3; ++j) {
       const int64_t e = mvp.m[i][j];
-      vt.m[i][j] = f >= mvp.frac ? static_cast<int32_t>(e << (f - mvp.frac))
+      vt.m[i][j] = f >= mvp.frac ? static_cast<int32_t>(shift_left(e, f - mvp.frac))
                                  : static_cast<int32_t>(round_shift(e, mvp.frac - f));
     }
     // Three truncating products lose up to 3 ulps, 1.5 on average: adding one centres it.

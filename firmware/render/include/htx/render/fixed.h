@@ -13,6 +13,11 @@ inline constexpr int32_t kOne = int32_t{1} << kFracBits;
 // floor(v / 2^s + 1/2) for s >= 1 (arithmetic shift).
 inline int64_t round_shift(int64_t v, int s) { return (v + (int64_t{1} << (s - 1))) >> s; }
 
+// v * 2^s, wrapping as the CPU's shift does: a left shift of a negative value is undefined in
+// C++17 (UBSan reports it), a shift of its bits is not.
+inline int32_t shift_left(int32_t v, int s) { return static_cast<int32_t>(static_cast<uint32_t>(v) << s); }
+inline int64_t shift_left(int64_t v, int s) { return static_cast<int64_t>(static_cast<uint64_t>(v) << s); }
+
 // Saturates to the int32 range.
 inline int32_t saturate32(int64_t v) {
   return v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : static_cast<int32_t>(v));

@@ -7,6 +7,7 @@
 
 #include <stdint.h>
 
+#include "htx/render/fixed.h"
 #include "htx/render/transform.h"
 
 namespace htx::render {
@@ -29,12 +30,12 @@ inline int32_t apply_row(const VertexTransform& vt, int i, int32_t px, int32_t p
   const int32_t s = static_cast<int32_t>((static_cast<int64_t>(vt.m[i][0]) * px) >> 32) +
                     static_cast<int32_t>((static_cast<int64_t>(vt.m[i][1]) * py) >> 32) +
                     static_cast<int32_t>((static_cast<int64_t>(vt.m[i][2]) * pz) >> 32);
-  return (s << vt.out_shift) + vt.t[i];
+  return shift_left(s, vt.out_shift) + vt.t[i];
 }
 
 // clip = M * (x, y, z, 1), Q16.16 in and out.
 inline Vec4 apply(const VertexTransform& vt, int32_t x, int32_t y, int32_t z) {
-  const int32_t px = x << vt.in_shift, py = y << vt.in_shift, pz = z << vt.in_shift;
+  const int32_t px = shift_left(x, vt.in_shift), py = shift_left(y, vt.in_shift), pz = shift_left(z, vt.in_shift);
   return {apply_row(vt, 0, px, py, pz), apply_row(vt, 1, px, py, pz), apply_row(vt, 2, px, py, pz),
           apply_row(vt, 3, px, py, pz)};
 }
