@@ -190,3 +190,5 @@ HTX_AUTO_NUM_INLINE AutoNum num_min(AutoNum a, AutoNum b) { return b < a ? b : a
 HTX_AUTO_NUM_INLINE AutoNum num_max(AutoNum a, AutoNum b) { return a < b ? b : a; }
 
 }  // namespace htx::fw
+
+#undef HTX_AUTO_NUM_INLINE
