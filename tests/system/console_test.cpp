@@ -233,9 +233,7 @@ TEST(SystemConsole, SpinTurnsTheSceneAndEndsWhereItStarted) {
   EXPECT_NE(r.out.find("error: unknown scene nosuch"), std::string::npos) << r.out;
   const auto crc_after = [&](const std::string& key) {
     const size_t at = r.out.find(key);
-    if (at == std::string::npos) return std::string();
-    const size_t c = r.out.find("crc32 ", at);
-    return c == std::string::npos ? std::string() : r.out.substr(c + 6, 8);
+    return at == std::string::npos ? std::string() : field_after(r.out.substr(at), "crc32 ");
   };
   const std::string rendered = crc_after("render cube method");
   ASSERT_EQ(rendered.size(), 8u) << r.out;

@@ -233,9 +233,8 @@ void cmd_render(char* rest) {
 
 // `spin SCENE [FRAMES] [crc]`: FRAMES renders, frame k turned k / FRAMES of a turn about the
 // vertical line through the scene's middle (scene_turn.hpp; the last a whole turn, drawn as the
-// scene itself), each shown as it is done; a
-// line a frame (with its CRC-32 if asked: the checksum costs more CPU time than drawing the cube),
-// then the rate and the last frame's CRC-32. Any key but a line feed stops it after the frame
+// scene itself), each shown as it is done; a line a frame (with its CRC-32 if asked: the checksum
+// costs more CPU time than drawing the cube), then the rate and the last frame's CRC-32. Any key but a line feed stops it after the frame
 // being drawn (the key then begins the next command line).
 void cmd_spin(char* rest) {
   const char* name = next_word(&rest);

@@ -6,7 +6,7 @@
 //   geombench <scene> triangles <n> sent <s> cycles/triangle <c>
 //   geombench <scene> triangles <n> sent <s> cycles/triangle <c> method recip_nr
 // (the second the same pipeline with every triangle's method fixed, so the difference is AUTO's
-// choice: its bounds and costs in soft float, htx/fw/auto_select.h)
+// choice: its bounds and costs, htx/fw/auto_select.h)
 //   geombench all vertices <n> cycles/vertex <c.cc>
 // and, for each triangle sent, what its setup costs the firmware for the `icebreaker` raster unit,
 // which takes plane records (CAPS.FW_SETUP; htx/fw/plane_record.h, docs/raster.md "Plane record"):

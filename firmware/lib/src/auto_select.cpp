@@ -71,10 +71,22 @@ Range range_of(const Num a[3]) {
   return r;
 }
 
-struct Extent {
+// What the bounds and the costs share, found once a triangle: the ranges of its coordinates, the
+// y edges from vertex 0 and the screen-space determinant (twice the signed area).
+struct Shape {
   Range x, y, w, u, v;
+  Num dy[3], det;
 };
-Extent extent_of(const Tri& t) { return {range_of(t.x), range_of(t.y), range_of(t.w), range_of(t.u), range_of(t.v)}; }
+Shape shape_of(const Tri& t) {
+  Shape sh{range_of(t.x), range_of(t.y), range_of(t.w), range_of(t.u), range_of(t.v), {}, {}};
+  Num dx[3];
+  for (int i = 0; i < 3; ++i) {
+    dx[i] = t.x[i] - t.x[0];
+    sh.dy[i] = t.y[i] - t.y[0];
+  }
+  sh.det = dx[1] * sh.dy[2] - dx[2] * sh.dy[1];
+  return sh;
+}
 
 // For one texture axis a with the planes Q = q and A = (a - c) q (c the middle of a's range),
 // da/dx = k / Q^2 where k = gA*Q - A*gQ is constant along x, so its extremes over the triangle are
@@ -94,32 +106,28 @@ struct Bounds {
   Num affine, recip_lut, recip_nr, divfree, subdiv_slope, subdiv_curvature, span_limit, du;
 };
 
-Bounds bounds_of(const Tri& t, const Extent& e, const AutoConfig& cfg, const AutoSampling& s) {
+Bounds bounds_of(const Tri& t, const Shape& sh, const AutoConfig& cfg, const AutoSampling& s) {
   Bounds b;
-  b.du = num_max(e.u.hi - e.u.lo, e.v.hi - e.v.lo);
+  b.du = num_max(sh.u.hi - sh.u.lo, sh.v.hi - sh.v.lo);
   const Num base = base_error(cfg);
-  const Num sr = sqrt_ge1(e.w.hi / e.w.lo);
+  const Num sr = sqrt_ge1(sh.w.hi / sh.w.lo);
   b.affine = b.du * (sr - num(1)) / (sr + num(1)) + base;
   const Num local = num_scale(b.du, -1) + num(1);  // |u - u_offset| (the offset is the rounded midpoint)
   b.recip_lut = local * table_error(cfg) + base;
   b.recip_nr = local * newton_error(cfg) + base;
   b.divfree = (s.filter == 0 ? num_pow2(-1) : num_pow2(s.top_level - cfg.divfree_frac_bits - 1)) + base;
-  b.span_limit = e.x.hi - e.x.lo + num(1);
+  b.span_limit = sh.x.hi - sh.x.lo + num(1);
 
   // SUBDIV's slope k / Q^2 and curvature 2 k gQ / Q^3 are largest at the largest |k| of either
   // axis and the smallest Q.
-  Num dx[3], dy[3], q[3];
-  for (int i = 0; i < 3; ++i) {
-    dx[i] = t.x[i] - t.x[0];
-    dy[i] = t.y[i] - t.y[0];
-    q[i] = e.w.lo / t.w[i];  // in (0, 1]
-  }
-  const Num det = dx[1] * dy[2] - dx[2] * dy[1];
-  if (det.m == 0) return b;  // slope and curvature 0
-  const Num inv_det = num(1) / det;
-  const Num q_min = e.w.lo / e.w.hi;
-  const Num g_q = ((q[1] - q[0]) * dy[2] - (q[2] - q[0]) * dy[1]) * inv_det;
-  const Num k_max = num_max(axis_k_max(t.u, e.u, q, dy, inv_det, g_q), axis_k_max(t.v, e.v, q, dy, inv_det, g_q));
+  if (sh.det.m == 0) return b;  // slope and curvature 0
+  Num q[3];
+  for (int i = 0; i < 3; ++i) q[i] = sh.w.lo / t.w[i];  // in (0, 1]
+  const Num inv_det = num(1) / sh.det;
+  const Num q_min = sh.w.lo / sh.w.hi;
+  const Num g_q = ((q[1] - q[0]) * sh.dy[2] - (q[2] - q[0]) * sh.dy[1]) * inv_det;
+  const Num k_max =
+      num_max(axis_k_max(t.u, sh.u, q, sh.dy, inv_det, g_q), axis_k_max(t.v, sh.v, q, sh.dy, inv_det, g_q));
   const Num q2 = q_min * q_min;
   b.subdiv_slope = k_max / q2;
   b.subdiv_curvature = num_scale(b.subdiv_slope * num_abs(g_q), 1) / q_min;
@@ -140,11 +148,10 @@ struct Footprint {
   Num pixels, rows, fixed, traverse, nr_divide;
 };
 
-Footprint footprint_of(const Tri& t, const Extent& e, const AutoConfig& cfg) {
+Footprint footprint_of(const Shape& sh, const AutoConfig& cfg) {
   Footprint f;
-  const Num det = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
-  f.pixels = num_scale(num_abs(det), -1);
-  f.rows = e.y.hi - e.y.lo + num(1);
+  f.pixels = num_scale(num_abs(sh.det), -1);
+  f.rows = sh.y.hi - sh.y.lo + num(1);
   f.fixed = num(26 + 7 * cfg.recip_issue_interval) + f.rows;  // setup, one clock per span
   f.traverse = num_scale(num(cfg.pixel_cost16), -4) * f.pixels;
   f.nr_divide = num_scale(num(cfg.nr_divide_cost16), -4);
@@ -193,7 +200,7 @@ static_assert(sizeof kReportedBounds / sizeof kReportedBounds[0] == sizeof kBoun
 
 AutoBounds auto_bounds(const AutoTriangle& t, const AutoConfig& cfg, const AutoSampling& s) {
   const Tri tn = tri_of(t);
-  const Bounds b = bounds_of(tn, extent_of(tn), cfg, s);
+  const Bounds b = bounds_of(tn, shape_of(tn), cfg, s);
   AutoBounds r;
   for (uint32_t i = 0; i < sizeof kBounds / sizeof kBounds[0]; ++i) r.*kReportedBounds[i] = num_to_float_up(b.*kBounds[i]);
   return r;
@@ -207,7 +214,7 @@ float auto_bound_subdiv(const AutoBounds& b, const AutoConfig& cfg, unsigned n) 
 
 float auto_cycles(const AutoTriangle& t, const AutoConfig& cfg, uint8_t method, unsigned n) {
   const Tri tn = tri_of(t);
-  return num_to_float_up(cycles_of(footprint_of(tn, extent_of(tn), cfg), cfg, method, n));
+  return num_to_float_up(cycles_of(footprint_of(shape_of(tn), cfg), cfg, method, n));
 }
 
 AutoChoice choose_method(const AutoTriangle& t, const AutoConfig& cfg, const AutoSampling& s, uint32_t built,
@@ -229,9 +236,9 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
     c.method = fallback_method(built, &c.subdiv_n);
     return c;
   }
-  const Extent e = extent_of(t);
-  const Bounds b = bounds_of(t, e, cfg, s);
-  const Footprint f = footprint_of(t, e, cfg);
+  const Shape sh = shape_of(t);
+  const Bounds b = bounds_of(t, sh, cfg, s);
+  const Footprint f = footprint_of(sh, cfg);
   Num bound, cycles;
   const uint8_t plain[4] = {kAutoAffine, kAutoRecipLut, kAutoRecipNr, kAutoDivFree};
   const Num plain_bounds[4] = {b.affine, b.recip_lut, b.recip_nr, b.divfree};
@@ -247,12 +254,15 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
   }
   // SUBDIV: the longest segment within the tolerance (the bound grows with n, the cost falls, so a
   // binary search over 2..64 finds it), if it is cheaper than the choice so far.
-  if ((built & (1u << kAutoSubdiv)) && bound_subdiv(b, cfg, 2) <= tol) {
-    unsigned lo = 2, hi = 64;  // bound(lo) within; find the largest such n
-    if (bound_subdiv(b, cfg, hi) <= tol) lo = hi;  // (often so: one evaluation instead of six)
+  Num lo_bound = (built & (1u << kAutoSubdiv)) ? bound_subdiv(b, cfg, 2) : Num{};
+  if ((built & (1u << kAutoSubdiv)) && lo_bound <= tol) {
+    unsigned lo = 2, hi = 64;  // bound(lo) = lo_bound is within; find the largest such n
+    const Num hi_bound = bound_subdiv(b, cfg, hi);
+    if (hi_bound <= tol) lo = hi, lo_bound = hi_bound;  // (often so: one evaluation instead of six)
     while (lo < hi) {
       const unsigned mid = (lo + hi + 1) / 2;
-      if (bound_subdiv(b, cfg, mid) <= tol) lo = mid;
+      const Num mid_bound = bound_subdiv(b, cfg, mid);
+      if (mid_bound <= tol) lo = mid, lo_bound = mid_bound;
       else hi = mid - 1;
     }
     const Num cost = cycles_of(f, cfg, kAutoSubdiv, lo);
@@ -260,7 +270,7 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
       c.method = kAutoSubdiv;
       c.subdiv_n = static_cast<uint8_t>(lo);
       c.within = true;
-      bound = bound_subdiv(b, cfg, lo);
+      bound = lo_bound;
       cycles = cost;
     }
   }

@@ -15,7 +15,6 @@ namespace {
 // How often (in clocks) the host endpoint is polled for input: a syscall per poll, and far shorter
 // than one serial bit time would need (104 clocks at 115200 baud).
 constexpr uint64_t kPollInterval = 256;
-constexpr uint32_t kUartFifoDepth = 16;  // htx_uart's FifoDepth in the fabric
 
 std::string hex(uint32_t v) {
   char buf[16];
@@ -51,7 +50,7 @@ struct SocSim::Impl {
         rx_decoder(kClockHz / o.baud), tx_encoder(kClockHz / o.baud) {}
 
   auto& ram() { return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_ram__DOT__mem_q; }
-  uint32_t uart_rx_level() const { return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_uart__DOT__rx_level; }
+  bool uart_rx_full() const { return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_uart__DOT__rx_full; }
   // The framebuffer's colour memory, two pixels a word (the lower pixel in bits 15:0).
   auto& fb_color() {
     return top->rootp
@@ -162,9 +161,9 @@ SimResult SocSim::run() {
           const size_t n = s.uart->read(inbuf, sizeof inbuf);
           for (size_t i = 0; i < n; ++i) s.tx_encoder.push(inbuf[i]);
         }
-      } else if (s.tx_encoder.idle() && s.uart_rx_level() + 1 < kUartFifoDepth) {
+      } else if (s.tx_encoder.idle() && !s.uart_rx_full()) {
         // A script: a byte at a time, each once the last is in the FIFO and only while the FIFO
-        // has room for it.
+        // has room for it (so a byte is never sent into a full FIFO, whatever its depth).
         if (script_at == script_len) {
           script_len = s.uart->read(inbuf, sizeof inbuf);
           script_at = 0;

@@ -32,10 +32,11 @@ module htx_uart #(
   logic        tx_full, tx_empty, tx_idle, tx_load_q, tx_pop;
   logic [7:0]  tx_byte;
   logic [LevelWidth-1:0] tx_level;
-  logic        rx_full, rx_empty, rx_pop;
+  // (rx_full is read by the simulation harness: a script on stdin is fed as the FIFO has room)
+  logic        rx_full /* verilator public_flat_rd */;
+  logic        rx_empty, rx_pop;
   logic [7:0]  rx_byte;
-  // (read by the simulation harness: a script on stdin is fed as the FIFO has room)
-  logic [LevelWidth-1:0] rx_level /* verilator public_flat_rd */;
+  logic [LevelWidth-1:0] rx_level;
   logic        rx_valid, rx_frame_err, tx_line, rx_line;
   logic [7:0]  rx_data;
 

@@ -1,12 +1,11 @@
 // AutoNum: the number type of AUTO's bounds and costs (auto_select.cpp, docs/auto.md "Arithmetic").
 // A binary floating-point value m * 2^e with a 32-bit mantissa normalised to 2^30 <= |m| < 2^31 (or
 // m = 0), computed with integer operations only, each result truncated (not rounded): identical on
-// the host and on the rv32im CPU, where AUTO's work costs 2.4 times fewer cycles than with the
+// the host and on the rv32im CPU, where AUTO's work costs 2.5 times fewer cycles than with the
 // soft-float library (which handles rounding modes, infinities, NaNs and subnormals that AUTO never
-// needs). Its
-// precision (31 bits) is above float's (24 bits); it has no infinities or NaNs: a division by zero
-// gives a value of 2^(2^20) with the dividend's sign, and the exponent's range is never reached
-// from float inputs. Freestanding C++17.
+// needs). Its precision (31 bits) is above float's (24 bits); it has no infinities or NaNs: a
+// division by zero gives a value of 2^(2^20) with the dividend's sign, and the exponent's range is
+// never reached from float inputs. Freestanding C++17.
 #pragma once
 
 #include <stdint.h>
