@@ -161,6 +161,9 @@ int run_sim(const SimArgs& a) {
     std::cerr << "htx sim: cycle limit of " << a.max_cycles
               << " cycles reached before the firmware exited (raise --max-cycles?); status "
               << kCycleLimitStatus << "\n";
+  } else if (r.reason == sim::StopReason::InputEnded) {
+    std::cout << std::endl;  // ends the line of the prompt the firmware was waiting at
+    std::cerr << "htx sim: standard input ended and the firmware waits for more input: stopped, status 0\n";
   }
   char summary[256];
   std::snprintf(summary, sizeof summary,

@@ -300,6 +300,31 @@ TEST(SystemConsole, AScriptOnStandardInputLosesNothing) {
   EXPECT_NE(r.out.find("tolerance 1/8"), std::string::npos) << r.out;
 }
 
+// A script without `quit`: the run ends once the script has ended and the console waits for its
+// next line (status 0, stop reason input_ended), not at --max-cycles; a spin on the last line,
+// which looks for a key once a frame, still draws every frame first.
+TEST(SystemConsole, AScriptWithoutQuitEndsWithItsInput) {
+  const std::string script = ::testing::TempDir() + "htx_console_noquit_" + std::to_string(getpid()) + ".txt";
+  {
+    std::ofstream f(script);
+    f << "render cube\ninfo\nspin cube 3\n";
+  }
+  const std::string cmd = std::string(HTX_BIN) + " sim --elf " HTX_FIRMWARE_DIR "/console.elf --uart stdio --json --max-cycles 200000000 < " + script;
+  const auto r = htx::test::run_program({"/bin/sh", "-c", cmd}, 180s);
+  std::filesystem::remove(script);
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_EQ(r.out.find("error:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("render cube method auto"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("htx> info\r\nhypertex"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("spin cube frames 3 mcycles"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"reason\":\"input_ended\""), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("standard input ended"), std::string::npos) << r.err;
+  // Ended while waiting, long before the limit: the whole session is a few million clocks.
+  const size_t at = r.out.find("\"cycles\":");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  EXPECT_LT(std::stoull(r.out.substr(at + 9)), 20'000'000ull) << r.out;
+}
+
 // The CRC-32 the firmware prints for the frame a screen picture (640 x 480 RGBA) shows; "" when a
 // 4 x 4 block is not one colour, which no whole frame of the framebuffer shows.
 std::string screen_frame_crc(const htx::Image& img) {

@@ -15,6 +15,11 @@ namespace {
 // How often (in clocks) the host endpoint is polled for input: a syscall per poll, and far shorter
 // than one serial bit time would need (104 clocks at 115200 baud).
 constexpr uint64_t kPollInterval = 256;
+// A script's input is over when the firmware has read the empty receiver this many times in a row,
+// each within kWaitPollGap clocks of the last, sending nothing: a loop waiting for a byte (the
+// console polls every few clocks), not a check between frames (`spin` polls once a frame).
+constexpr uint32_t kWaitPolls = 1000;
+constexpr uint64_t kWaitPollGap = 1000;
 
 std::string hex(uint32_t v) {
   char buf[16];
@@ -28,6 +33,7 @@ const char* to_string(StopReason r) {
     case StopReason::Exit: return "exit";
     case StopReason::ToHost: return "tohost";
     case StopReason::CycleLimit: return "cycle_limit";
+    case StopReason::InputEnded: return "input_ended";
   }
   return "?";
 }
@@ -51,6 +57,9 @@ struct SocSim::Impl {
 
   auto& ram() { return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_ram__DOT__mem_q; }
   bool uart_rx_full() const { return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_uart__DOT__rx_full; }
+  bool uart_rx_empty_read() const {
+    return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_uart__DOT__rx_empty_read;
+  }
   // The framebuffer's colour memory, two pixels a word (the lower pixel in bits 15:0).
   auto& fb_color() {
     return top->rootp
@@ -125,6 +134,11 @@ SimResult SocSim::run() {
   auto& ram = s.ram();
   uint64_t c = 0;
   bool done = false;
+  // The script has ended and every byte of it is in the UART (input_over); then the firmware's
+  // reads of the empty receiver are counted (waiting_polls, the last at last_empty_read).
+  bool input_over = false;
+  uint32_t waiting_polls = 0;
+  uint64_t last_empty_read = 0;
   while (!done && c < s.opt.max_cycles) {
     s.top->uart_rx_i = s.tx_encoder.step();
     s.cycle();
@@ -132,6 +146,16 @@ SimResult SocSim::run() {
 
     if (auto byte = s.rx_decoder.step(s.top->uart_tx_o)) {
       if (s.uart) s.uart->write(&*byte, 1);
+      waiting_polls = 0;
+    }
+    if (input_over && s.uart_rx_empty_read()) {
+      waiting_polls = c - last_empty_read <= kWaitPollGap ? waiting_polls + 1 : 1;
+      last_empty_read = c;
+      if (waiting_polls >= kWaitPolls) {
+        // It waits for input that cannot come: the run ends, as a shell does at its script's end.
+        res.reason = StopReason::InputEnded;
+        done = true;
+      }
     }
     if (s.top->sim_putchar_o) s.console.put(static_cast<char>(s.top->sim_char_o));
     if (s.screen && s.screen->clock(s.top->video_de_o, s.top->video_vsync_no, s.top->video_rgb_o) &&
@@ -169,6 +193,7 @@ SimResult SocSim::run() {
           script_at = 0;
         }
         if (script_at < script_len) s.tx_encoder.push(inbuf[script_at++]);
+        input_over = script_at == script_len && s.uart->ended();
       }
       if (c % (kPollInterval * 1024) == 0) s.uart->flush();
     }

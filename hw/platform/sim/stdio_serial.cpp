@@ -37,6 +37,7 @@ class StdioSerial final : public SerialEndpoint {
   void flush() override { std::fflush(stdout); }
 
   bool paced() const override { return script_; }
+  bool ended() const override { return eof_; }
 
  private:
   bool eof_ = false;

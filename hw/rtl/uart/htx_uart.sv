@@ -35,6 +35,9 @@ module htx_uart #(
   // (rx_full is read by the simulation harness: a script on stdin is fed as the FIFO has room)
   logic        rx_full /* verilator public_flat_rd */;
   logic        rx_empty, rx_pop;
+  // (read by the simulation harness: a DATA read that found no byte, i.e. software waiting for
+  // input; a script on stdin that has ended then ends the run)
+  logic        rx_empty_read /* verilator public_flat_rd */;
   logic [7:0]  rx_byte;
   logic [LevelWidth-1:0] rx_level;
   logic        rx_valid, rx_frame_err, tx_line, rx_line;
@@ -53,6 +56,7 @@ module htx_uart #(
   assign req_ready_o = !tx_stall;
   assign accept     = req_valid_i && req_ready_o;
   assign rx_pop     = accept && data_read && !rx_empty;
+  assign rx_empty_read = accept && data_read && rx_empty;
 
   // Divisors below 4 leave no room for mid-bit sampling.
   // (A zero test of the upper bits: Yosys 0.23 builds "< 4" as a 16-bit carry chain.)

@@ -21,13 +21,15 @@ class SerialEndpoint {
   // Input is a script, not a person or a serial program: the harness then sends it only as fast
   // as the UART's receive FIFO has room (as a terminal with flow control would), so none is lost.
   virtual bool paced() const { return false; }
+  // No more input will ever come (a script's end of file); a terminal or a pty never ends.
+  virtual bool ended() const { return false; }
 };
 
 // A pseudo-terminal in raw mode; any serial program can open path(). Output the program has not
 // read yet is kept (the harness holds the slave side open), so nothing sent before it attaches is lost.
 std::unique_ptr<SerialEndpoint> open_pty_serial(std::string& path_out);
-// Standard input and output. Input is read only when available; EOF simply ends input. When stdin
-// is not a terminal (a pipe or a file) it is paced().
+// Standard input and output. Input is read only when available; EOF ends input (ended()). When
+// stdin is not a terminal (a pipe or a file) it is paced().
 std::unique_ptr<SerialEndpoint> open_stdio_serial();
 
 }  // namespace htx::sim

@@ -32,7 +32,8 @@ struct SimOptions {
   std::function<void(const VideoCapture&)> on_screen_frame;
 };
 
-enum class StopReason { Exit, ToHost, CycleLimit };
+// InputEnded: a script's input ended and the firmware then waited for more (SocSim::run).
+enum class StopReason { Exit, ToHost, CycleLimit, InputEnded };
 
 // Where the CPU's clocks went (hw/platform/sim/htx_cpu_profile.sv): every clock after reset is
 // charged to one cause, judged at the execute stage, so the counts add up to the clocks run.
