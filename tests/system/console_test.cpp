@@ -302,7 +302,7 @@ TEST(SystemConsole, AScriptOnStandardInputLosesNothing) {
 
 // A script without `quit`: the run ends once the script has ended and the console waits for its
 // next line (status 0, stop reason input_ended), not at --max-cycles; a spin on the last line,
-// which looks for a key once a frame, still draws every frame first.
+// which looks for a key once a frame, still draws every frame first. An empty stdin is no script.
 TEST(SystemConsole, AScriptWithoutQuitEndsWithItsInput) {
   const std::string script = ::testing::TempDir() + "htx_console_noquit_" + std::to_string(getpid()) + ".txt";
   {
@@ -323,6 +323,12 @@ TEST(SystemConsole, AScriptWithoutQuitEndsWithItsInput) {
   const size_t at = r.out.find("\"cycles\":");
   ASSERT_NE(at, std::string::npos) << r.out;
   EXPECT_LT(std::stoull(r.out.substr(at + 9)), 20'000'000ull) << r.out;
+
+  // An empty stdin is no script: the console waits on, and the run ends at its cycle limit.
+  const std::string none = std::string(HTX_BIN) + " sim --elf " HTX_FIRMWARE_DIR "/console.elf --uart stdio --json --max-cycles 3000000 < /dev/null";
+  const auto e = htx::test::run_program({"/bin/sh", "-c", none}, 60s);
+  EXPECT_EQ(e.status, 124) << e.out << e.err;
+  EXPECT_NE(e.out.find("\"reason\":\"cycle_limit\""), std::string::npos) << e.out;
 }
 
 // The CRC-32 the firmware prints for the frame a screen picture (640 x 480 RGBA) shows; "" when a

@@ -135,8 +135,9 @@ SimResult SocSim::run() {
   uint64_t c = 0;
   bool done = false;
   // The script has ended and every byte of it is in the UART (input_over); then the firmware's
-  // reads of the empty receiver are counted (waiting_polls, the last at last_empty_read).
-  bool input_over = false;
+  // reads of the empty receiver are counted (waiting_polls, the last at last_empty_read). An empty
+  // stdin (/dev/null, as under a test runner) is no script: that run ends as it did before.
+  bool input_over = false, script_sent = false;
   uint32_t waiting_polls = 0;
   uint64_t last_empty_read = 0;
   while (!done && c < s.opt.max_cycles) {
@@ -192,8 +193,11 @@ SimResult SocSim::run() {
           script_len = s.uart->read(inbuf, sizeof inbuf);
           script_at = 0;
         }
-        if (script_at < script_len) s.tx_encoder.push(inbuf[script_at++]);
-        input_over = script_at == script_len && s.uart->ended();
+        if (script_at < script_len) {
+          s.tx_encoder.push(inbuf[script_at++]);
+          script_sent = true;
+        }
+        input_over = script_sent && script_at == script_len && s.uart->ended();
       }
       if (c % (kPollInterval * 1024) == 0) s.uart->flush();
     }
