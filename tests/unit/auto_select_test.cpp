@@ -179,6 +179,57 @@ TEST(AutoChoose, CheapestWithinToleranceAmongEveryCandidate) {
   }
 }
 
+// choose_method finds only the bounds that can change its choice (docs/auto.md, "Arithmetic"):
+// the same result, bit for bit, as the rule applied literally, over triangles in the firmware's
+// fixed-point form (1/256 pixel, Q16.16 w, texel coordinates at several texture sizes), degenerate
+// ones and ones without perspective (where methods tie on cost), both configurations, any set of
+// built methods, filters and tolerances.
+TEST(AutoChoose, EqualsTheRuleAppliedLiterally) {
+  std::mt19937_64 rng(2026120516);
+  int per_method[5] = {}, subdiv_short = 0;
+  for (int k = 0; k < 40000; ++k) {
+    htx::fw::AutoTriangleNum t;
+    const int extent = 1 << (rng() % 12);  // 1 .. 2048 pixels
+    const int tex_log2 = static_cast<int>(rng() % 8);
+    const bool degenerate = rng() % 50 == 0;
+    const bool flat = rng() % 10 == 0;  // one w for all three (no perspective: AFFINE is exact)
+    const int32_t x0 = static_cast<int32_t>(rng() % (320 * 256)), y0 = static_cast<int32_t>(rng() % (240 * 256));
+    const int32_t w0 = 1 + static_cast<int32_t>(rng() % (1u << 24));
+    for (int i = 0; i < 3; ++i) {
+      const auto offset = [&] { return static_cast<int32_t>(rng() % (extent * 256)) - extent * 128; };
+      const int32_t x = degenerate ? x0 : x0 + offset();
+      const int32_t y = degenerate ? y0 : y0 + offset();
+      const int32_t w = flat ? w0 : 1 + static_cast<int32_t>(rng() % (1u << (8 + rng() % 22)));
+      const int32_t u = static_cast<int32_t>(rng() % (1u << (1 + rng() % 24))) - 4096;
+      const int32_t v = static_cast<int32_t>(rng() % (1u << (1 + rng() % 24))) - 4096;
+      t.x[i] = htx::fw::num_scale(htx::fw::num_from_int(x), -8);
+      t.y[i] = htx::fw::num_scale(htx::fw::num_from_int(y), -8);
+      t.w[i] = htx::fw::num_scale(htx::fw::num_from_int(w), -16);
+      t.u[i] = htx::fw::num_scale(htx::fw::num_from_int(u), tex_log2 - 16);
+      t.v[i] = htx::fw::num_scale(htx::fw::num_from_int(v), tex_log2 - 16);
+    }
+    const AutoConfig& cfg = k % 2 ? htx::fw::kAutoConfigFull : htx::fw::kAutoConfigIcebreaker;
+    const htx::fw::AutoSampling s{static_cast<uint8_t>(rng() % 3), static_cast<uint8_t>(tex_log2)};
+    const uint32_t built = rng() % 4 == 0 ? static_cast<uint32_t>(rng() % 32) : 0x1Fu;
+    const htx::fw::AutoNum tol =
+        htx::fw::num_scale(htx::fw::num_from_int(1 + static_cast<int32_t>(rng() % 65536)), -16 - static_cast<int>(rng() % 8));
+    const htx::fw::AutoChoice want = htx::fw::choose_method_exhaustive(t, cfg, s, built, tol);
+    const htx::fw::AutoChoice got = htx::fw::choose_method(t, cfg, s, built, tol);
+    ASSERT_EQ(got.method, want.method) << "triangle " << k;
+    if (want.method == htx::fw::kAutoSubdiv) {
+      ASSERT_EQ(got.subdiv_n, want.subdiv_n) << "triangle " << k;
+    }
+    ASSERT_EQ(got.within, want.within) << "triangle " << k;
+    ASSERT_EQ(got.bound, want.bound) << "triangle " << k;    // both rounded up from the same AutoNum
+    ASSERT_EQ(got.cycles, want.cycles) << "triangle " << k;
+    ++per_method[want.method];
+    subdiv_short += want.method == htx::fw::kAutoSubdiv && want.within && want.subdiv_n < 64;
+  }
+  // Every method is chosen somewhere, and SUBDIV's search runs (a span below 64).
+  for (int m = 0; m < 5; ++m) EXPECT_GT(per_method[m], 0) << "method " << m;
+  EXPECT_GT(subdiv_short, 0);
+}
+
 TEST(AutoChoose, FallbackAndBadInput) {
   AutoTriangle t{{0, 100, 0}, {0, 0, 100}, {1, 4, 2}, {0, 200, 0}, {0, 0, 200}};
   const AutoConfig cfg = htx::fw::kAutoConfigIcebreaker;

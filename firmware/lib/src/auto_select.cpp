@@ -106,21 +106,29 @@ struct Bounds {
   Num affine, recip_lut, recip_nr, divfree, subdiv_slope, subdiv_curvature, span_limit, du;
 };
 
-Bounds bounds_of(const Tri& t, const Shape& sh, const AutoConfig& cfg, const AutoSampling& s) {
-  Bounds b;
-  b.du = num_max(sh.u.hi - sh.u.lo, sh.v.hi - sh.v.lo);
+// The bounds that take a few operations each: every one but AFFINE's and SUBDIV's terms.
+void cheap_bounds(const Shape& sh, const AutoConfig& cfg, const AutoSampling& s, Bounds* b) {
+  b->du = num_max(sh.u.hi - sh.u.lo, sh.v.hi - sh.v.lo);
   const Num base = base_error(cfg);
-  const Num sr = sqrt_ge1(sh.w.hi / sh.w.lo);
-  b.affine = b.du * (sr - num(1)) / (sr + num(1)) + base;
-  const Num local = num_scale(b.du, -1) + num(1);  // |u - u_offset| (the offset is the rounded midpoint)
-  b.recip_lut = local * table_error(cfg) + base;
-  b.recip_nr = local * newton_error(cfg) + base;
-  b.divfree = (s.filter == 0 ? num_pow2(-1) : num_pow2(s.top_level - cfg.divfree_frac_bits - 1)) + base;
-  b.span_limit = sh.x.hi - sh.x.lo + num(1);
+  const Num local = num_scale(b->du, -1) + num(1);  // |u - u_offset| (the offset is the rounded midpoint)
+  b->recip_lut = local * table_error(cfg) + base;
+  b->recip_nr = local * newton_error(cfg) + base;
+  b->divfree = (s.filter == 0 ? num_pow2(-1) : num_pow2(s.top_level - cfg.divfree_frac_bits - 1)) + base;
+  b->span_limit = sh.x.hi - sh.x.lo + num(1);
+}
 
-  // SUBDIV's slope k / Q^2 and curvature 2 k gQ / Q^3 are largest at the largest |k| of either
-  // axis and the smallest Q.
-  if (sh.det.m == 0) return b;  // slope and curvature 0
+// AFFINE's bound (a square root and two divisions); SUBDIV's interpolation term is capped by it.
+Num affine_bound(const Shape& sh, Num du, const AutoConfig& cfg) {
+  const Num sr = sqrt_ge1(sh.w.hi / sh.w.lo);
+  return du * (sr - num(1)) / (sr + num(1)) + base_error(cfg);
+}
+
+// SUBDIV's slope k / Q^2 and curvature 2 k gQ / Q^3, largest at the largest |k| of either axis and
+// the smallest Q (five divisions and some fifty operations: the chooser's largest part).
+void subdiv_terms(const Tri& t, const Shape& sh, Bounds* b) {
+  b->subdiv_slope = Num{};
+  b->subdiv_curvature = Num{};
+  if (sh.det.m == 0) return;  // slope and curvature 0
   Num q[3];
   for (int i = 0; i < 3; ++i) q[i] = sh.w.lo / t.w[i];  // in (0, 1]
   const Num inv_det = num(1) / sh.det;
@@ -129,8 +137,15 @@ Bounds bounds_of(const Tri& t, const Shape& sh, const AutoConfig& cfg, const Aut
   const Num k_max =
       num_max(axis_k_max(t.u, sh.u, q, sh.dy, inv_det, g_q), axis_k_max(t.v, sh.v, q, sh.dy, inv_det, g_q));
   const Num q2 = q_min * q_min;
-  b.subdiv_slope = k_max / q2;
-  b.subdiv_curvature = num_scale(b.subdiv_slope * num_abs(g_q), 1) / q_min;
+  b->subdiv_slope = k_max / q2;
+  b->subdiv_curvature = num_scale(b->subdiv_slope * num_abs(g_q), 1) / q_min;
+}
+
+Bounds bounds_of(const Tri& t, const Shape& sh, const AutoConfig& cfg, const AutoSampling& s) {
+  Bounds b;
+  cheap_bounds(sh, cfg, s, &b);
+  b.affine = affine_bound(sh, b.du, cfg);
+  subdiv_terms(t, sh, &b);
   return b;
 }
 
@@ -236,43 +251,147 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
     c.method = fallback_method(built, &c.subdiv_n);
     return c;
   }
+  // The rule (docs/auto.md): among AFFINE, RECIP_LUT, RECIP_NR and DIVFREE, the cheapest within the
+  // tolerance (equal costs: the smaller bound, then the first in that order); then SUBDIV with the
+  // largest n within it replaces that choice if strictly cheaper. A cost takes a few operations,
+  // AFFINE's bound some twenty and SUBDIV's terms about seventy, so those two are found only when
+  // their method could still win, and SUBDIV's bound first at n = 64: the same choice, for fewer
+  // operations (docs/auto.md, "Arithmetic").
+  const Shape sh = shape_of(t);
+  const Footprint f = footprint_of(sh, cfg);
+  Bounds b;
+  cheap_bounds(sh, cfg, s, &b);
+  // AFFINE's bound and SUBDIV's terms, each found once and only when asked for.
+  bool have_affine = false, have_subdiv_terms = false;
+  auto affine = [&]() {
+    if (!have_affine) b.affine = affine_bound(sh, b.du, cfg), have_affine = true;
+    return b.affine;
+  };
+  auto need_subdiv_terms = [&]() {
+    if (have_subdiv_terms) return;
+    affine();  // (SUBDIV's bound reads it)
+    subdiv_terms(t, sh, &b);
+    have_subdiv_terms = true;
+  };
+  Num bound, cycles;
+
+  // RECIP_LUT, RECIP_NR and DIVFREE: their bounds are at hand, so each one's cost is found only
+  // when it is within the tolerance.
+  const uint8_t cheap[3] = {kAutoRecipLut, kAutoRecipNr, kAutoDivFree};
+  const Num cheap_bound[3] = {b.recip_lut, b.recip_nr, b.divfree};
+  for (int i = 0; i < 3; ++i) {
+    if (!(built & (1u << cheap[i])) || !(cheap_bound[i] <= tol)) continue;
+    const Num cost = cycles_of(f, cfg, cheap[i], 0);
+    if (!c.within || cost < cycles || (cost == cycles && cheap_bound[i] < bound)) {
+      c.method = cheap[i];
+      c.within = true;
+      bound = cheap_bound[i];
+      cycles = cost;
+    }
+  }
+  // SUBDIV's cost falls as n grows, so if it is not cheaper at n = 64 than the choice so far it
+  // never is (AFFINE below can only make the choice cheaper).
+  const bool subdiv_built = (built & (1u << kAutoSubdiv)) != 0;
+  const Num subdiv_cost_64 = subdiv_built ? cycles_of(f, cfg, kAutoSubdiv, 64) : Num{};
+  const bool subdiv_may_win = subdiv_built && (!c.within || subdiv_cost_64 < cycles);
+  // AFFINE, first in the order (so it wins a tie of cost and bound), comes last. When SUBDIV will
+  // need its bound anyway, the bound decides first; otherwise its cost does.
+  if (built & (1u << kAutoAffine)) {
+    const bool bound_first = subdiv_may_win;
+    const Num cost = bound_first ? Num{} : cycles_of(f, cfg, kAutoAffine, 0);
+    if (bound_first || !c.within || cost <= cycles) {
+      const Num ab = affine();
+      if (ab <= tol) {
+        const Num ac = bound_first ? cycles_of(f, cfg, kAutoAffine, 0) : cost;
+        if (!c.within || ac < cycles || (ac == cycles && ab <= bound)) {
+          c.method = kAutoAffine;
+          c.within = true;
+          bound = ab;
+          cycles = ac;
+        }
+      }
+    }
+  }
+
+  // SUBDIV, when it may still win: the longest segment within the tolerance (the bound grows with
+  // n: n = 64 first, as it often is; then a binary search over 2..63), if cheaper than the choice.
+  if (subdiv_may_win && (!c.within || subdiv_cost_64 < cycles)) {
+    need_subdiv_terms();
+    unsigned n = 64;
+    Num n_bound = bound_subdiv(b, cfg, 64);
+    if (!(n_bound <= tol)) {
+      // Not within at 64: none is if 2 is not; else the largest n in 2..63 within (bound(lo) is).
+      n_bound = bound_subdiv(b, cfg, 2);
+      n = n_bound <= tol ? 2 : 0;
+      for (unsigned lo = 2, hi = 63; n != 0 && lo < hi;) {
+        const unsigned mid = (lo + hi + 1) / 2;
+        const Num mid_bound = bound_subdiv(b, cfg, mid);
+        if (mid_bound <= tol) lo = mid, n = mid, n_bound = mid_bound;
+        else hi = mid - 1;
+      }
+    }
+    if (n != 0) {
+      const Num sc = n == 64 ? subdiv_cost_64 : cycles_of(f, cfg, kAutoSubdiv, n);
+      if (!c.within || sc < cycles) {
+        c.method = kAutoSubdiv;
+        c.subdiv_n = static_cast<uint8_t>(n);
+        c.within = true;
+        bound = n_bound;
+        cycles = sc;
+      }
+    }
+  }
+  if (!c.within) {
+    c.method = fallback_method(built, &c.subdiv_n);
+    if (c.method == kAutoSubdiv) need_subdiv_terms();
+    bound = c.method == kAutoRecipNr    ? b.recip_nr
+            : c.method == kAutoRecipLut ? b.recip_lut
+            : c.method == kAutoSubdiv   ? bound_subdiv(b, cfg, c.subdiv_n)
+                                        : affine();
+    cycles = cycles_of(f, cfg, c.method, c.subdiv_n);
+  }
+  c.bound = num_to_float_up(bound);
+  c.cycles = num_to_float_up(cycles);
+  return c;
+}
+
+AutoChoice choose_method_exhaustive(const AutoTriangleNum& t, const AutoConfig& cfg, const AutoSampling& s,
+                                    uint32_t built, AutoNum tol) {
+  AutoChoice c;
+  bool ok = tol.m > 0;
+  for (int i = 0; i < 3; ++i) ok = ok && t.w[i].m > 0;
+  if (!ok) {
+    c.method = fallback_method(built, &c.subdiv_n);
+    return c;
+  }
   const Shape sh = shape_of(t);
   const Bounds b = bounds_of(t, sh, cfg, s);
   const Footprint f = footprint_of(sh, cfg);
   Num bound, cycles;
   const uint8_t plain[4] = {kAutoAffine, kAutoRecipLut, kAutoRecipNr, kAutoDivFree};
-  const Num plain_bounds[4] = {b.affine, b.recip_lut, b.recip_nr, b.divfree};
+  const Num plain_bound[4] = {b.affine, b.recip_lut, b.recip_nr, b.divfree};
   for (int i = 0; i < 4; ++i) {
-    if (!(built & (1u << plain[i])) || !(plain_bounds[i] <= tol)) continue;
+    if (!(built & (1u << plain[i])) || !(plain_bound[i] <= tol)) continue;
     const Num cost = cycles_of(f, cfg, plain[i], 0);
-    if (!c.within || cost < cycles || (cost == cycles && plain_bounds[i] < bound)) {
+    if (!c.within || cost < cycles || (cost == cycles && plain_bound[i] < bound)) {
       c.method = plain[i];
       c.within = true;
-      bound = plain_bounds[i];
+      bound = plain_bound[i];
       cycles = cost;
     }
   }
-  // SUBDIV: the longest segment within the tolerance (the bound grows with n, the cost falls, so a
-  // binary search over 2..64 finds it), if it is cheaper than the choice so far.
-  Num lo_bound = (built & (1u << kAutoSubdiv)) ? bound_subdiv(b, cfg, 2) : Num{};
-  if ((built & (1u << kAutoSubdiv)) && lo_bound <= tol) {
-    unsigned lo = 2, hi = 64;  // bound(lo) = lo_bound is within; find the largest such n
-    const Num hi_bound = bound_subdiv(b, cfg, hi);
-    if (hi_bound <= tol) lo = hi, lo_bound = hi_bound;  // (often so: one evaluation instead of six)
-    while (lo < hi) {
-      const unsigned mid = (lo + hi + 1) / 2;
-      const Num mid_bound = bound_subdiv(b, cfg, mid);
-      if (mid_bound <= tol) lo = mid, lo_bound = mid_bound;
-      else hi = mid - 1;
-    }
-    const Num cost = cycles_of(f, cfg, kAutoSubdiv, lo);
+  for (unsigned n = 64; (built & (1u << kAutoSubdiv)) && n >= 2; --n) {
+    const Num nb = bound_subdiv(b, cfg, n);
+    if (!(nb <= tol)) continue;
+    const Num cost = cycles_of(f, cfg, kAutoSubdiv, n);
     if (!c.within || cost < cycles) {
       c.method = kAutoSubdiv;
-      c.subdiv_n = static_cast<uint8_t>(lo);
+      c.subdiv_n = static_cast<uint8_t>(n);
       c.within = true;
-      bound = lo_bound;
+      bound = nb;
       cycles = cost;
     }
+    break;  // the largest n within the tolerance
   }
   if (!c.within) {
     c.method = fallback_method(built, &c.subdiv_n);

@@ -122,5 +122,9 @@ AutoChoice choose_method(const AutoTriangle& t, const AutoConfig& cfg, const Aut
 // same values; a w <= 0 or a tolerance <= 0 gives the fallback).
 AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const AutoSampling& s, uint32_t built,
                          AutoNum tolerance);
+// The rule applied literally, for tests: every bound found, the plain methods in their order,
+// SUBDIV's n by a scan down from 64. choose_method must give the same, bit for bit, for less work.
+AutoChoice choose_method_exhaustive(const AutoTriangleNum& t, const AutoConfig& cfg, const AutoSampling& s,
+                                    uint32_t built, AutoNum tolerance);
 
 }  // namespace htx::fw
