@@ -281,16 +281,25 @@ TEST(SystemConsole, SpinTurnsTheSceneAndEndsWhereItStarted) {
 // 16-byte receive FIFO has room, so lines queued behind a render are not lost (at the line's rate
 // they overran the FIFO: the console dropped them); a command that arrives during a spin stops it
 // and runs whole.
+// `htx sim --json` on the console firmware with `stdin_file` as its standard input.
+htx::test::RunResult console_on_stdin(const std::string& stdin_file, uint64_t max_cycles) {
+  const std::string cmd = std::string(HTX_BIN) + " sim --elf " HTX_FIRMWARE_DIR "/console.elf --uart stdio --json --max-cycles " +
+                          std::to_string(max_cycles) + " < " + stdin_file;
+  return htx::test::run_program({"/bin/sh", "-c", cmd}, 180s);
+}
+
+// The same with `script` written to a file of its own for stdin.
+htx::test::RunResult console_script(const std::string& script) {
+  const std::string file = ::testing::TempDir() + "htx_console_script_" + std::to_string(getpid()) + ".txt";
+  std::ofstream(file) << script;
+  auto r = console_on_stdin(file, 200'000'000);
+  std::filesystem::remove(file);
+  return r;
+}
+
 TEST(SystemConsole, AScriptOnStandardInputLosesNothing) {
-  const std::string script = ::testing::TempDir() + "htx_console_script_" + std::to_string(getpid()) + ".txt";
-  {
-    std::ofstream f(script);
-    f << "render cube\nset method recip_nr\nrender cube\nset tolerance 1/8\nset method auto\nspin cube 3\n"
-         "info\nquit\n";
-  }
-  const std::string cmd = std::string(HTX_BIN) + " sim --elf " HTX_FIRMWARE_DIR "/console.elf --uart stdio --max-cycles 200000000 < " + script;
-  const auto r = htx::test::run_program({"/bin/sh", "-c", cmd}, 180s);
-  std::filesystem::remove(script);
+  const auto r = console_script("render cube\nset method recip_nr\nrender cube\nset tolerance 1/8\nset method auto\n"
+                                "spin cube 3\ninfo\nquit\n");
   EXPECT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_EQ(r.out.find("error:"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("render cube method auto"), std::string::npos) << r.out;
@@ -304,14 +313,7 @@ TEST(SystemConsole, AScriptOnStandardInputLosesNothing) {
 // next line (status 0, stop reason input_ended), not at --max-cycles; a spin on the last line,
 // which looks for a key once a frame, still draws every frame first. An empty stdin is no script.
 TEST(SystemConsole, AScriptWithoutQuitEndsWithItsInput) {
-  const std::string script = ::testing::TempDir() + "htx_console_noquit_" + std::to_string(getpid()) + ".txt";
-  {
-    std::ofstream f(script);
-    f << "render cube\ninfo\nspin cube 3\n";
-  }
-  const std::string cmd = std::string(HTX_BIN) + " sim --elf " HTX_FIRMWARE_DIR "/console.elf --uart stdio --json --max-cycles 200000000 < " + script;
-  const auto r = htx::test::run_program({"/bin/sh", "-c", cmd}, 180s);
-  std::filesystem::remove(script);
+  const auto r = console_script("render cube\ninfo\nspin cube 3\n");
   EXPECT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_EQ(r.out.find("error:"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("render cube method auto"), std::string::npos) << r.out;
@@ -325,8 +327,7 @@ TEST(SystemConsole, AScriptWithoutQuitEndsWithItsInput) {
   EXPECT_LT(std::stoull(r.out.substr(at + 9)), 20'000'000ull) << r.out;
 
   // An empty stdin is no script: the console waits on, and the run ends at its cycle limit.
-  const std::string none = std::string(HTX_BIN) + " sim --elf " HTX_FIRMWARE_DIR "/console.elf --uart stdio --json --max-cycles 3000000 < /dev/null";
-  const auto e = htx::test::run_program({"/bin/sh", "-c", none}, 60s);
+  const auto e = console_on_stdin("/dev/null", 3'000'000);
   EXPECT_EQ(e.status, 124) << e.out << e.err;
   EXPECT_NE(e.out.find("\"reason\":\"cycle_limit\""), std::string::npos) << e.out;
 }

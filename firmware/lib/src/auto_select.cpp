@@ -201,6 +201,21 @@ uint8_t fallback_method(uint32_t built, uint8_t* subdiv_n) {
   return kAutoAffine;
 }
 
+// A triangle and tolerance the bounds can judge: every w > 0 and a tolerance > 0.
+bool judgeable(const Tri& t, Num tol) {
+  bool ok = tol.m > 0;
+  for (int i = 0; i < 3; ++i) ok = ok && t.w[i].m > 0;
+  return ok;
+}
+
+// The bound of the fallback `method` (b holds it: AFFINE's bound, or SUBDIV's terms if it is SUBDIV).
+Num fallback_bound(const Bounds& b, const AutoConfig& cfg, uint8_t method, unsigned n) {
+  return method == kAutoRecipNr    ? b.recip_nr
+         : method == kAutoRecipLut ? b.recip_lut
+         : method == kAutoSubdiv   ? bound_subdiv(b, cfg, n)
+                                   : b.affine;
+}
+
 }  // namespace
 
 // AutoBounds' fields and their Bounds counterparts, in the same order.
@@ -245,9 +260,7 @@ AutoChoice choose_method(const AutoTriangle& t, const AutoConfig& cfg, const Aut
 AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const AutoSampling& s, uint32_t built,
                          AutoNum tol) {
   AutoChoice c;
-  bool ok = tol.m > 0;
-  for (int i = 0; i < 3; ++i) ok = ok && t.w[i].m > 0;
-  if (!ok) {
+  if (!judgeable(t, tol)) {
     c.method = fallback_method(built, &c.subdiv_n);
     return c;
   }
@@ -256,7 +269,7 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
   // largest n within it replaces that choice if strictly cheaper. A cost takes a few operations,
   // AFFINE's bound some twenty and SUBDIV's terms about seventy, so those two are found only when
   // their method could still win, and SUBDIV's bound first at n = 64: the same choice, for fewer
-  // operations (docs/auto.md, "Arithmetic").
+  // operations (docs/auto.md, "Arithmetic"; choose_method_exhaustive below is the rule as stated).
   const Shape sh = shape_of(t);
   const Footprint f = footprint_of(sh, cfg);
   Bounds b;
@@ -273,7 +286,7 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
     subdiv_terms(t, sh, &b);
     have_subdiv_terms = true;
   };
-  Num bound, cycles;
+  Num bound, cycles;  // the choice's, once c.within
 
   // RECIP_LUT, RECIP_NR and DIVFREE: their bounds are at hand, so each one's cost is found only
   // when it is within the tolerance.
@@ -344,10 +357,8 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
   if (!c.within) {
     c.method = fallback_method(built, &c.subdiv_n);
     if (c.method == kAutoSubdiv) need_subdiv_terms();
-    bound = c.method == kAutoRecipNr    ? b.recip_nr
-            : c.method == kAutoRecipLut ? b.recip_lut
-            : c.method == kAutoSubdiv   ? bound_subdiv(b, cfg, c.subdiv_n)
-                                        : affine();
+    if (c.method == kAutoAffine) affine();
+    bound = fallback_bound(b, cfg, c.method, c.subdiv_n);
     cycles = cycles_of(f, cfg, c.method, c.subdiv_n);
   }
   c.bound = num_to_float_up(bound);
@@ -355,12 +366,11 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
   return c;
 }
 
+// The rule as docs/auto.md states it, every bound found: what choose_method must equal.
 AutoChoice choose_method_exhaustive(const AutoTriangleNum& t, const AutoConfig& cfg, const AutoSampling& s,
                                     uint32_t built, AutoNum tol) {
   AutoChoice c;
-  bool ok = tol.m > 0;
-  for (int i = 0; i < 3; ++i) ok = ok && t.w[i].m > 0;
-  if (!ok) {
+  if (!judgeable(t, tol)) {
     c.method = fallback_method(built, &c.subdiv_n);
     return c;
   }
@@ -373,32 +383,20 @@ AutoChoice choose_method_exhaustive(const AutoTriangleNum& t, const AutoConfig& 
   for (int i = 0; i < 4; ++i) {
     if (!(built & (1u << plain[i])) || !(plain_bound[i] <= tol)) continue;
     const Num cost = cycles_of(f, cfg, plain[i], 0);
-    if (!c.within || cost < cycles || (cost == cycles && plain_bound[i] < bound)) {
-      c.method = plain[i];
-      c.within = true;
-      bound = plain_bound[i];
-      cycles = cost;
-    }
+    if (!c.within || cost < cycles || (cost == cycles && plain_bound[i] < bound))
+      c.method = plain[i], c.within = true, bound = plain_bound[i], cycles = cost;
   }
   for (unsigned n = 64; (built & (1u << kAutoSubdiv)) && n >= 2; --n) {
     const Num nb = bound_subdiv(b, cfg, n);
     if (!(nb <= tol)) continue;
     const Num cost = cycles_of(f, cfg, kAutoSubdiv, n);
-    if (!c.within || cost < cycles) {
-      c.method = kAutoSubdiv;
-      c.subdiv_n = static_cast<uint8_t>(n);
-      c.within = true;
-      bound = nb;
-      cycles = cost;
-    }
+    if (!c.within || cost < cycles)
+      c.method = kAutoSubdiv, c.subdiv_n = static_cast<uint8_t>(n), c.within = true, bound = nb, cycles = cost;
     break;  // the largest n within the tolerance
   }
   if (!c.within) {
     c.method = fallback_method(built, &c.subdiv_n);
-    bound = c.method == kAutoRecipNr    ? b.recip_nr
-            : c.method == kAutoRecipLut ? b.recip_lut
-            : c.method == kAutoSubdiv   ? bound_subdiv(b, cfg, c.subdiv_n)
-                                        : b.affine;
+    bound = fallback_bound(b, cfg, c.method, c.subdiv_n);
     cycles = cycles_of(f, cfg, c.method, c.subdiv_n);
   }
   c.bound = num_to_float_up(bound);
