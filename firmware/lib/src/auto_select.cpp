@@ -107,20 +107,19 @@ struct Bounds {
 };
 
 // The bounds that take a few operations each: every one but AFFINE's and SUBDIV's terms.
-void cheap_bounds(const Shape& sh, const AutoConfig& cfg, const AutoSampling& s, Bounds* b) {
+void cheap_bounds(const Shape& sh, const AutoPricing& pr, const AutoSampling& s, Bounds* b) {
   b->du = num_max(sh.u.hi - sh.u.lo, sh.v.hi - sh.v.lo);
-  const Num base = base_error(cfg);
   const Num local = num_scale(b->du, -1) + num(1);  // |u - u_offset| (the offset is the rounded midpoint)
-  b->recip_lut = local * table_error(cfg) + base;
-  b->recip_nr = local * newton_error(cfg) + base;
-  b->divfree = (s.filter == 0 ? num_pow2(-1) : num_pow2(s.top_level - cfg.divfree_frac_bits - 1)) + base;
+  b->recip_lut = local * pr.table_error + pr.base;
+  b->recip_nr = local * pr.newton_error + pr.base;
+  b->divfree = (s.filter == 0 ? num_pow2(-1) : num_pow2(s.top_level - pr.cfg.divfree_frac_bits - 1)) + pr.base;
   b->span_limit = sh.x.hi - sh.x.lo + num(1);
 }
 
 // AFFINE's bound (a square root and two divisions); SUBDIV's interpolation term is capped by it.
-Num affine_bound(const Shape& sh, Num du, const AutoConfig& cfg) {
+Num affine_bound(const Shape& sh, Num du, const AutoPricing& pr) {
   const Num sr = sqrt_ge1(sh.w.hi / sh.w.lo);
-  return du * (sr - num(1)) / (sr + num(1)) + base_error(cfg);
+  return du * (sr - num(1)) / (sr + num(1)) + pr.base;
 }
 
 // SUBDIV's slope k / Q^2 and curvature 2 k gQ / Q^3, largest at the largest |k| of either axis and
@@ -141,50 +140,49 @@ void subdiv_terms(const Tri& t, const Shape& sh, Bounds* b) {
   b->subdiv_curvature = num_scale(b->subdiv_slope * num_abs(g_q), 1) / q_min;
 }
 
-Bounds bounds_of(const Tri& t, const Shape& sh, const AutoConfig& cfg, const AutoSampling& s) {
+Bounds bounds_of(const Tri& t, const Shape& sh, const AutoPricing& pr, const AutoSampling& s) {
   Bounds b;
-  cheap_bounds(sh, cfg, s, &b);
-  b.affine = affine_bound(sh, b.du, cfg);
+  cheap_bounds(sh, pr, s, &b);
+  b.affine = affine_bound(sh, b.du, pr);
   subdiv_terms(t, sh, &b);
   return b;
 }
 
-Num bound_subdiv(const Bounds& b, const AutoConfig& cfg, unsigned n) {
+Num bound_subdiv(const Bounds& b, const AutoPricing& pr, unsigned n) {
   const Num l = num_min(num(static_cast<int32_t>(n)), b.span_limit);  // pixels between exact points
   const Num interp = num_min(num_scale(l * l * b.subdiv_curvature, -3), b.affine);
   const Num seg = num_min(b.du, l * b.subdiv_slope);  // texels one segment spans
   // The step's 8 extra fraction bits and round(2^16 / L) (docs/model.md §5.3).
-  const Num step = num_scale(l * seg, -17) + num_scale(l, -9 - cfg.texcoord_frac_bits);
+  const Num step = num_scale(l * seg, -17) + num_scale(l, -9 - pr.cfg.texcoord_frac_bits);
   return interp + step + b.recip_nr;
 }
 
 // What every method's cost shares (docs/model.md §9 estimate), computed once a triangle.
 struct Footprint {
-  Num pixels, rows, fixed, traverse, nr_divide;
+  Num pixels, rows, fixed, traverse;
 };
 
-Footprint footprint_of(const Shape& sh, const AutoConfig& cfg) {
+Footprint footprint_of(const Shape& sh, const AutoPricing& pr) {
   Footprint f;
   f.pixels = num_scale(num_abs(sh.det), -1);
   f.rows = sh.y.hi - sh.y.lo + num(1);
-  f.fixed = num(26 + 7 * cfg.recip_issue_interval) + f.rows;  // setup, one clock per span
-  f.traverse = num_scale(num(cfg.pixel_cost16), -4) * f.pixels;
-  f.nr_divide = num_scale(num(cfg.nr_divide_cost16), -4);
+  f.fixed = pr.setup + f.rows;  // setup, one clock per span
+  f.traverse = pr.pixel_cost * f.pixels;
   return f;
 }
 
 // The traversal and the reciprocal unit work side by side: a method takes the longer of the
 // traversal's clocks and the divider's.
-Num cycles_of(const Footprint& f, const AutoConfig& cfg, uint8_t method, unsigned n) {
+Num cycles_of(const Footprint& f, const AutoPricing& pr, uint8_t method, unsigned n) {
   switch (method) {
-    case kAutoRecipNr: return f.fixed + num_max(f.traverse, f.nr_divide * f.pixels);
-    case kAutoRecipLut: return f.fixed + num_max(f.traverse, num_scale(num(cfg.lut_divide_cost16), -4) * f.pixels);
+    case kAutoRecipNr: return f.fixed + num_max(f.traverse, pr.nr_divide * f.pixels);
+    case kAutoRecipLut: return f.fixed + num_max(f.traverse, pr.lut_divide * f.pixels);
     case kAutoSubdiv: {
       const Num points = num_min(f.pixels, f.pixels / num(static_cast<int32_t>(n)) + num_scale(f.rows, 1));
-      return f.fixed + num_max(f.traverse, f.nr_divide * points);
+      return f.fixed + num_max(f.traverse, pr.nr_divide * points);
     }
-    case kAutoDivFree: return f.fixed + f.traverse + num(cfg.recip_issue_interval);  // one seed division
-    default: return f.fixed + f.traverse + num_scale(num(cfg.affine_setup_cost16), -4);  // AFFINE
+    case kAutoDivFree: return f.fixed + f.traverse + pr.seed_divide;  // one seed division
+    default: return f.fixed + f.traverse + pr.affine_setup;  // AFFINE
   }
 }
 
@@ -209,14 +207,29 @@ bool judgeable(const Tri& t, Num tol) {
 }
 
 // The bound of the fallback `method` (b holds it: AFFINE's bound, or SUBDIV's terms if it is SUBDIV).
-Num fallback_bound(const Bounds& b, const AutoConfig& cfg, uint8_t method, unsigned n) {
+Num fallback_bound(const Bounds& b, const AutoPricing& pr, uint8_t method, unsigned n) {
   return method == kAutoRecipNr    ? b.recip_nr
          : method == kAutoRecipLut ? b.recip_lut
-         : method == kAutoSubdiv   ? bound_subdiv(b, cfg, n)
+         : method == kAutoSubdiv   ? bound_subdiv(b, pr, n)
                                    : b.affine;
 }
 
 }  // namespace
+
+AutoPricing auto_pricing(const AutoConfig& cfg) {
+  AutoPricing p;
+  p.cfg = cfg;
+  p.base = base_error(cfg);
+  p.table_error = table_error(cfg);
+  p.newton_error = newton_error(cfg);
+  p.setup = num(26 + 7 * cfg.recip_issue_interval);
+  p.pixel_cost = num_scale(num(cfg.pixel_cost16), -4);
+  p.lut_divide = num_scale(num(cfg.lut_divide_cost16), -4);
+  p.nr_divide = num_scale(num(cfg.nr_divide_cost16), -4);
+  p.affine_setup = num_scale(num(cfg.affine_setup_cost16), -4);
+  p.seed_divide = num(cfg.recip_issue_interval);
+  return p;
+}
 
 // AutoBounds' fields and their Bounds counterparts, in the same order.
 constexpr float AutoBounds::*kReportedBounds[] = {&AutoBounds::affine,       &AutoBounds::recip_lut,
@@ -230,7 +243,7 @@ static_assert(sizeof kReportedBounds / sizeof kReportedBounds[0] == sizeof kBoun
 
 AutoBounds auto_bounds(const AutoTriangle& t, const AutoConfig& cfg, const AutoSampling& s) {
   const Tri tn = tri_of(t);
-  const Bounds b = bounds_of(tn, shape_of(tn), cfg, s);
+  const Bounds b = bounds_of(tn, shape_of(tn), auto_pricing(cfg), s);
   AutoBounds r;
   for (uint32_t i = 0; i < sizeof kBounds / sizeof kBounds[0]; ++i) r.*kReportedBounds[i] = num_to_float_up(b.*kBounds[i]);
   return r;
@@ -239,12 +252,13 @@ AutoBounds auto_bounds(const AutoTriangle& t, const AutoConfig& cfg, const AutoS
 float auto_bound_subdiv(const AutoBounds& b, const AutoConfig& cfg, unsigned n) {
   Bounds nb;
   for (uint32_t i = 0; i < sizeof kBounds / sizeof kBounds[0]; ++i) nb.*kBounds[i] = num_from_float(b.*kReportedBounds[i]);
-  return num_to_float_up(bound_subdiv(nb, cfg, n));
+  return num_to_float_up(bound_subdiv(nb, auto_pricing(cfg), n));
 }
 
 float auto_cycles(const AutoTriangle& t, const AutoConfig& cfg, uint8_t method, unsigned n) {
   const Tri tn = tri_of(t);
-  return num_to_float_up(cycles_of(footprint_of(shape_of(tn), cfg), cfg, method, n));
+  const AutoPricing pr = auto_pricing(cfg);
+  return num_to_float_up(cycles_of(footprint_of(shape_of(tn), pr), pr, method, n));
 }
 
 AutoChoice choose_method(const AutoTriangle& t, const AutoConfig& cfg, const AutoSampling& s, uint32_t built,
@@ -259,6 +273,11 @@ AutoChoice choose_method(const AutoTriangle& t, const AutoConfig& cfg, const Aut
 
 AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const AutoSampling& s, uint32_t built,
                          AutoNum tol) {
+  return choose_method(t, auto_pricing(cfg), s, built, tol);
+}
+
+AutoChoice choose_method(const AutoTriangleNum& t, const AutoPricing& pr, const AutoSampling& s, uint32_t built,
+                         AutoNum tol) {
   AutoChoice c;
   if (!judgeable(t, tol)) {
     c.method = fallback_method(built, &c.subdiv_n);
@@ -271,13 +290,13 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
   // their method could still win, and SUBDIV's bound first at n = 64: the same choice, for fewer
   // operations (docs/auto.md, "Arithmetic"; choose_method_exhaustive below is the rule as stated).
   const Shape sh = shape_of(t);
-  const Footprint f = footprint_of(sh, cfg);
+  const Footprint f = footprint_of(sh, pr);
   Bounds b;
-  cheap_bounds(sh, cfg, s, &b);
+  cheap_bounds(sh, pr, s, &b);
   // AFFINE's bound and SUBDIV's terms, each found once and only when asked for.
   bool have_affine = false, have_subdiv_terms = false;
   auto affine = [&]() {
-    if (!have_affine) b.affine = affine_bound(sh, b.du, cfg), have_affine = true;
+    if (!have_affine) b.affine = affine_bound(sh, b.du, pr), have_affine = true;
     return b.affine;
   };
   auto need_subdiv_terms = [&]() {
@@ -294,7 +313,7 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
   const Num cheap_bound[3] = {b.recip_lut, b.recip_nr, b.divfree};
   for (int i = 0; i < 3; ++i) {
     if (!(built & (1u << cheap[i])) || !(cheap_bound[i] <= tol)) continue;
-    const Num cost = cycles_of(f, cfg, cheap[i], 0);
+    const Num cost = cycles_of(f, pr, cheap[i], 0);
     if (!c.within || cost < cycles || (cost == cycles && cheap_bound[i] < bound)) {
       c.method = cheap[i];
       c.within = true;
@@ -305,17 +324,17 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
   // SUBDIV's cost falls as n grows, so if it is not cheaper at n = 64 than the choice so far it
   // never is (AFFINE below can only make the choice cheaper).
   const bool subdiv_built = (built & (1u << kAutoSubdiv)) != 0;
-  const Num subdiv_cost_64 = subdiv_built ? cycles_of(f, cfg, kAutoSubdiv, 64) : Num{};
+  const Num subdiv_cost_64 = subdiv_built ? cycles_of(f, pr, kAutoSubdiv, 64) : Num{};
   const bool subdiv_may_win = subdiv_built && (!c.within || subdiv_cost_64 < cycles);
   // AFFINE, first in the order (so it wins a tie of cost and bound), comes last. When SUBDIV will
   // need its bound anyway, the bound decides first; otherwise its cost does.
   if (built & (1u << kAutoAffine)) {
     const bool bound_first = subdiv_may_win;
-    const Num cost = bound_first ? Num{} : cycles_of(f, cfg, kAutoAffine, 0);
+    const Num cost = bound_first ? Num{} : cycles_of(f, pr, kAutoAffine, 0);
     if (bound_first || !c.within || cost <= cycles) {
       const Num ab = affine();
       if (ab <= tol) {
-        const Num ac = bound_first ? cycles_of(f, cfg, kAutoAffine, 0) : cost;
+        const Num ac = bound_first ? cycles_of(f, pr, kAutoAffine, 0) : cost;
         if (!c.within || ac < cycles || (ac == cycles && ab <= bound)) {
           c.method = kAutoAffine;
           c.within = true;
@@ -331,20 +350,20 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
   if (subdiv_may_win && (!c.within || subdiv_cost_64 < cycles)) {
     need_subdiv_terms();
     unsigned n = 64;
-    Num n_bound = bound_subdiv(b, cfg, 64);
+    Num n_bound = bound_subdiv(b, pr, 64);
     if (!(n_bound <= tol)) {
       // Not within at 64: none is if 2 is not; else the largest n in 2..63 within (bound(lo) is).
-      n_bound = bound_subdiv(b, cfg, 2);
+      n_bound = bound_subdiv(b, pr, 2);
       n = n_bound <= tol ? 2 : 0;
       for (unsigned lo = 2, hi = 63; n != 0 && lo < hi;) {
         const unsigned mid = (lo + hi + 1) / 2;
-        const Num mid_bound = bound_subdiv(b, cfg, mid);
+        const Num mid_bound = bound_subdiv(b, pr, mid);
         if (mid_bound <= tol) lo = mid, n = mid, n_bound = mid_bound;
         else hi = mid - 1;
       }
     }
     if (n != 0) {
-      const Num sc = n == 64 ? subdiv_cost_64 : cycles_of(f, cfg, kAutoSubdiv, n);
+      const Num sc = n == 64 ? subdiv_cost_64 : cycles_of(f, pr, kAutoSubdiv, n);
       if (!c.within || sc < cycles) {
         c.method = kAutoSubdiv;
         c.subdiv_n = static_cast<uint8_t>(n);
@@ -358,8 +377,8 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
     c.method = fallback_method(built, &c.subdiv_n);
     if (c.method == kAutoSubdiv) need_subdiv_terms();
     if (c.method == kAutoAffine) affine();
-    bound = fallback_bound(b, cfg, c.method, c.subdiv_n);
-    cycles = cycles_of(f, cfg, c.method, c.subdiv_n);
+    bound = fallback_bound(b, pr, c.method, c.subdiv_n);
+    cycles = cycles_of(f, pr, c.method, c.subdiv_n);
   }
   c.bound = num_to_float_up(bound);
   c.cycles = num_to_float_up(cycles);
@@ -369,35 +388,36 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const 
 // The rule as docs/auto.md states it, every bound found: what choose_method must equal.
 AutoChoice choose_method_exhaustive(const AutoTriangleNum& t, const AutoConfig& cfg, const AutoSampling& s,
                                     uint32_t built, AutoNum tol) {
+  const AutoPricing pr = auto_pricing(cfg);
   AutoChoice c;
   if (!judgeable(t, tol)) {
     c.method = fallback_method(built, &c.subdiv_n);
     return c;
   }
   const Shape sh = shape_of(t);
-  const Bounds b = bounds_of(t, sh, cfg, s);
-  const Footprint f = footprint_of(sh, cfg);
+  const Bounds b = bounds_of(t, sh, pr, s);
+  const Footprint f = footprint_of(sh, pr);
   Num bound, cycles;
   const uint8_t plain[4] = {kAutoAffine, kAutoRecipLut, kAutoRecipNr, kAutoDivFree};
   const Num plain_bound[4] = {b.affine, b.recip_lut, b.recip_nr, b.divfree};
   for (int i = 0; i < 4; ++i) {
     if (!(built & (1u << plain[i])) || !(plain_bound[i] <= tol)) continue;
-    const Num cost = cycles_of(f, cfg, plain[i], 0);
+    const Num cost = cycles_of(f, pr, plain[i], 0);
     if (!c.within || cost < cycles || (cost == cycles && plain_bound[i] < bound))
       c.method = plain[i], c.within = true, bound = plain_bound[i], cycles = cost;
   }
   for (unsigned n = 64; (built & (1u << kAutoSubdiv)) && n >= 2; --n) {
-    const Num nb = bound_subdiv(b, cfg, n);
+    const Num nb = bound_subdiv(b, pr, n);
     if (!(nb <= tol)) continue;
-    const Num cost = cycles_of(f, cfg, kAutoSubdiv, n);
+    const Num cost = cycles_of(f, pr, kAutoSubdiv, n);
     if (!c.within || cost < cycles)
       c.method = kAutoSubdiv, c.subdiv_n = static_cast<uint8_t>(n), c.within = true, bound = nb, cycles = cost;
     break;  // the largest n within the tolerance
   }
   if (!c.within) {
     c.method = fallback_method(built, &c.subdiv_n);
-    bound = fallback_bound(b, cfg, c.method, c.subdiv_n);
-    cycles = cycles_of(f, cfg, c.method, c.subdiv_n);
+    bound = fallback_bound(b, pr, c.method, c.subdiv_n);
+    cycles = cycles_of(f, pr, c.method, c.subdiv_n);
   }
   c.bound = num_to_float_up(bound);
   c.cycles = num_to_float_up(cycles);

@@ -25,8 +25,9 @@ void to_clip(const VertexTransform& vt, const MeshVertex& in, ClipVert* out) {
 void emit_to_fifo(void*, uint32_t state_word, const uint32_t* words) { hal::raster_push_triangle(state_word, words); }
 
 // Culls, chooses the method, encodes and emits one screen triangle.
-void finish_triangle(const FrameParams& frame, const Mesh& mesh, const ScreenVert* const v[3], const TriangleSink& sink,
-                     DrawStats* st) {
+// pricing: frame.auto_config's (found once a mesh, for AUTO).
+void finish_triangle(const FrameParams& frame, const fw::AutoPricing& pricing, const Mesh& mesh,
+                     const ScreenVert* const v[3], const TriangleSink& sink, DrawStats* st) {
   const int64_t area2 = screen_area2(*v[0], *v[1], *v[2]);
   if (area2 == 0) {
     ++st->degenerate;
@@ -41,7 +42,7 @@ void finish_triangle(const FrameParams& frame, const Mesh& mesh, const ScreenVer
     const uint8_t top = mesh.tex.log2_width > mesh.tex.log2_height ? mesh.tex.log2_width : mesh.tex.log2_height;
     // An untextured triangle has no texel error: any method will do, so the cheapest.
     const int64_t tol = state.textured ? frame.auto_tolerance : int64_t{1} << 40;
-    const fw::AutoChoice c = auto_method(v, mesh.tex, frame.auto_config, fw::AutoSampling{state.filter, top}, tol,
+    const fw::AutoChoice c = auto_method(v, mesh.tex, pricing, fw::AutoSampling{state.filter, top}, tol,
                                          frame.methods_built);
     state.method = c.method;
     state.subdiv_n = c.subdiv_n;
@@ -95,6 +96,8 @@ DrawStatus draw_mesh(const FrameParams& frame, const Mat4& view_proj, const Mesh
   const VertexTransform vt = make_vertex_transform(mat4_mul(view_proj, mesh.model), mesh.position_bits);
   process_vertices(vt, mesh.vertices, mesh.vertex_count, vp, cache);
 
+  const fw::AutoPricing pricing =
+      mesh.state.method == kMethodAuto ? fw::auto_pricing(frame.auto_config) : fw::AutoPricing{};
   for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
     ++st->triangles;
     const uint16_t* idx = mesh.indices + 3 * t;
@@ -105,7 +108,7 @@ DrawStatus draw_mesh(const FrameParams& frame, const Mat4& view_proj, const Mesh
     }
     if ((c0 | c1 | c2) == 0) {
       const ScreenVert* v[3] = {&cache->screen[idx[0]], &cache->screen[idx[1]], &cache->screen[idx[2]]};
-      finish_triangle(frame, mesh, v, sink, st);
+      finish_triangle(frame, pricing, mesh, v, sink, st);
       continue;
     }
     ++st->clipped;
@@ -118,7 +121,7 @@ DrawStatus draw_mesh(const FrameParams& frame, const Mat4& view_proj, const Mesh
     for (int k = 0; k < poly.count; ++k) project(poly.v[k], vp, &screen[k]);
     for (int k = 1; k + 1 < poly.count; ++k) {
       const ScreenVert* v[3] = {&screen[0], &screen[k], &screen[k + 1]};
-      finish_triangle(frame, mesh, v, sink, st);
+      finish_triangle(frame, pricing, mesh, v, sink, st);
     }
   }
   return kDrawOk;

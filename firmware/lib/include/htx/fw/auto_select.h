@@ -112,6 +112,18 @@ float auto_bound_subdiv(const AutoBounds& b, const AutoConfig& cfg, unsigned n);
 // Predicted raster cycles (docs/model.md §9) of drawing the triangle with `method` (n for SUBDIV).
 float auto_cycles(const AutoTriangle& t, const AutoConfig& cfg, uint8_t method, unsigned n);
 
+// What the bounds and costs take from a configuration, as AutoNum: found once (the firmware: once
+// a mesh) instead of once a triangle.
+struct AutoPricing {
+  AutoConfig cfg;
+  AutoNum base;          // 4 ulps of the texel coordinate (every method's rounding)
+  AutoNum table_error;   // the reciprocal table's relative error
+  AutoNum newton_error;  // the same after the pixel Newton steps
+  AutoNum setup;         // clocks of setup, without the one a span
+  AutoNum pixel_cost, lut_divide, nr_divide, affine_setup, seed_divide;  // clocks (docs/auto.md)
+};
+AutoPricing auto_pricing(const AutoConfig& cfg);
+
 // The cheapest built method (bit i of `built` = method i) whose bound is within `tolerance`
 // texels; among equal costs the smaller bound. When none is within it (or the triangle is
 // degenerate or not finite): RECIP_NR if built, else RECIP_LUT, else SUBDIV with n = 2, else AFFINE,
@@ -121,6 +133,8 @@ AutoChoice choose_method(const AutoTriangle& t, const AutoConfig& cfg, const Aut
 // The same choice for a triangle and tolerance in AutoNum (equal to the float version's for the
 // same values; a w <= 0 or a tolerance <= 0 gives the fallback).
 AutoChoice choose_method(const AutoTriangleNum& t, const AutoConfig& cfg, const AutoSampling& s, uint32_t built,
+                         AutoNum tolerance);
+AutoChoice choose_method(const AutoTriangleNum& t, const AutoPricing& pricing, const AutoSampling& s, uint32_t built,
                          AutoNum tolerance);
 // The rule applied literally, for tests: every bound found, the plain methods in their order,
 // SUBDIV's n by a scan down from 64. choose_method must give the same, bit for bit, for less work.

@@ -14,8 +14,9 @@ namespace htx::render {
 // The chooser's view of a screen triangle: pixels, w, level-0 texels (u = s * 2^log2_width), exact.
 fw::AutoTriangleNum auto_triangle(const ScreenVert* const v[3], TexSize tex);
 
-// tol: Q16.16 texels (> 0). built: bit i = method i built by the raster unit.
-fw::AutoChoice auto_method(const ScreenVert* const v[3], TexSize tex, const fw::AutoConfig& cfg,
+// tol: Q16.16 texels (> 0). built: bit i = method i built by the raster unit. pricing: the raster
+// unit's fw::auto_pricing (once a mesh: it does not change from triangle to triangle).
+fw::AutoChoice auto_method(const ScreenVert* const v[3], TexSize tex, const fw::AutoPricing& pricing,
                            const fw::AutoSampling& sampling, int64_t tol, uint32_t built);
 
 }  // namespace htx::render
