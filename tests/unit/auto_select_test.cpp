@@ -289,7 +289,8 @@ TEST(AutoChoose, FirmwareAdapterSeesPixelsAndTexels) {
     t.u[i] = htx::fw::num_to_float_up(tn.u[i]);
     t.v[i] = htx::fw::num_to_float_up(tn.v[i]);
   }
-  const htx::fw::AutoChoice c = htx::render::auto_method(pv, {6, 5}, htx::fw::auto_pricing(htx::fw::kAutoConfigIcebreaker), {}, 4096, 0x1F);
+  const htx::fw::AutoChoice c = htx::render::auto_method(pv, {6, 5}, htx::fw::auto_pricing(htx::fw::kAutoConfigIcebreaker), {},
+                                                          htx::render::auto_tolerance(4096), 0x1F);
   EXPECT_EQ(c.method, htx::fw::choose_method(t, htx::fw::kAutoConfigIcebreaker, {}, 0x1F, 1.0f / 16).method);
 }
 

@@ -329,12 +329,11 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoPricing& pr, const 
   // AFFINE, first in the order (so it wins a tie of cost and bound), comes last. When SUBDIV will
   // need its bound anyway, the bound decides first; otherwise its cost does.
   if (built & (1u << kAutoAffine)) {
-    const bool bound_first = subdiv_may_win;
-    const Num cost = bound_first ? Num{} : cycles_of(f, pr, kAutoAffine, 0);
-    if (bound_first || !c.within || cost <= cycles) {
+    const Num cost = subdiv_may_win ? Num{} : cycles_of(f, pr, kAutoAffine, 0);  // (priced below if not here)
+    if (subdiv_may_win || !c.within || cost <= cycles) {
       const Num ab = affine();
       if (ab <= tol) {
-        const Num ac = bound_first ? cycles_of(f, pr, kAutoAffine, 0) : cost;
+        const Num ac = subdiv_may_win ? cycles_of(f, pr, kAutoAffine, 0) : cost;
         if (!c.within || ac < cycles || (ac == cycles && ab <= bound)) {
           c.method = kAutoAffine;
           c.within = true;

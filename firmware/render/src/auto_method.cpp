@@ -15,11 +15,14 @@ fw::AutoTriangleNum auto_triangle(const ScreenVert* const v[3], TexSize tex) {
   return t;
 }
 
+fw::AutoNum auto_tolerance(int64_t tol_q16) {
+  const int32_t tol32 = tol_q16 > INT32_MAX ? INT32_MAX : tol_q16 < 0 ? 0 : static_cast<int32_t>(tol_q16);
+  return fw::num_scale(fw::num_from_int(tol32), -16);
+}
+
 fw::AutoChoice auto_method(const ScreenVert* const v[3], TexSize tex, const fw::AutoPricing& pricing,
-                           const fw::AutoSampling& sampling, int64_t tol, uint32_t built) {
-  // (a tolerance beyond 2^15 texels is as good as any)
-  const int32_t tol32 = tol > INT32_MAX ? INT32_MAX : tol < 0 ? 0 : static_cast<int32_t>(tol);
-  return fw::choose_method(auto_triangle(v, tex), pricing, sampling, built, fw::num_scale(fw::num_from_int(tol32), -16));
+                           const fw::AutoSampling& sampling, fw::AutoNum tol, uint32_t built) {
+  return fw::choose_method(auto_triangle(v, tex), pricing, sampling, built, tol);
 }
 
 }  // namespace htx::render

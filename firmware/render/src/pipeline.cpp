@@ -24,9 +24,28 @@ void to_clip(const VertexTransform& vt, const MeshVertex& in, ClipVert* out) {
 
 void emit_to_fifo(void*, uint32_t state_word, const uint32_t* words) { hal::raster_push_triangle(state_word, words); }
 
-// Culls, chooses the method, encodes and emits one screen triangle.
-// pricing: frame.auto_config's (found once a mesh, for AUTO).
-void finish_triangle(const FrameParams& frame, const fw::AutoPricing& pricing, const Mesh& mesh,
+// The texture's last mip level: log2 of its larger side.
+uint8_t texture_top_level(TexSize tex) { return tex.log2_width > tex.log2_height ? tex.log2_width : tex.log2_height; }
+
+// What AUTO takes from the frame and the mesh, the same for each of the mesh's triangles.
+struct MeshAuto {
+  fw::AutoPricing pricing;   // the raster unit's
+  fw::AutoSampling sampling;
+  fw::AutoNum tolerance;
+};
+
+MeshAuto mesh_auto(const FrameParams& frame, const Mesh& mesh) {
+  MeshAuto a;
+  a.pricing = fw::auto_pricing(frame.auto_config);
+  a.sampling = {mesh.state.filter, texture_top_level(mesh.tex)};
+  // An untextured triangle has no texel error: any method will do, so the cheapest.
+  a.tolerance = auto_tolerance(mesh.state.textured ? frame.auto_tolerance : int64_t{1} << 40);
+  return a;
+}
+
+// Culls, chooses the method (with `mesh_auto`, found once a mesh, for AUTO), encodes and emits one
+// screen triangle.
+void finish_triangle(const FrameParams& frame, const MeshAuto& mesh_auto, const Mesh& mesh,
                      const ScreenVert* const v[3], const TriangleSink& sink, DrawStats* st) {
   const int64_t area2 = screen_area2(*v[0], *v[1], *v[2]);
   if (area2 == 0) {
@@ -39,20 +58,14 @@ void finish_triangle(const FrameParams& frame, const fw::AutoPricing& pricing, c
   }
   TriState state = mesh.state;
   if (state.method == kMethodAuto) {
-    const uint8_t top = mesh.tex.log2_width > mesh.tex.log2_height ? mesh.tex.log2_width : mesh.tex.log2_height;
-    // An untextured triangle has no texel error: any method will do, so the cheapest.
-    const int64_t tol = state.textured ? frame.auto_tolerance : int64_t{1} << 40;
-    const fw::AutoChoice c = auto_method(v, mesh.tex, pricing, fw::AutoSampling{state.filter, top}, tol,
-                                         frame.methods_built);
+    const fw::AutoChoice c =
+        auto_method(v, mesh.tex, mesh_auto.pricing, mesh_auto.sampling, mesh_auto.tolerance, frame.methods_built);
     state.method = c.method;
     state.subdiv_n = c.subdiv_n;
   }
   // DIVFREE has no subdivision length: its SUBDIV_N field carries the texture's last mip level, the
   // top of its per-span level choice under bilinear and trilinear filtering (docs/raster.md).
-  if (state.method == kMethodDivFree) {
-    const uint8_t last = mesh.tex.log2_width > mesh.tex.log2_height ? mesh.tex.log2_width : mesh.tex.log2_height;
-    state.subdiv_n = state.textured ? last : 0;
-  }
+  if (state.method == kMethodDivFree) state.subdiv_n = state.textured ? texture_top_level(mesh.tex) : 0;
   fw::TriangleRecord rec;
   if (encode_triangle_fx(frame.format, v, mesh.tex, &rec) != fw::kEncodeOk) {
     ++st->encode_errors;
@@ -96,8 +109,7 @@ DrawStatus draw_mesh(const FrameParams& frame, const Mat4& view_proj, const Mesh
   const VertexTransform vt = make_vertex_transform(mat4_mul(view_proj, mesh.model), mesh.position_bits);
   process_vertices(vt, mesh.vertices, mesh.vertex_count, vp, cache);
 
-  const fw::AutoPricing pricing =
-      mesh.state.method == kMethodAuto ? fw::auto_pricing(frame.auto_config) : fw::AutoPricing{};
+  const MeshAuto auto_of_mesh = mesh.state.method == kMethodAuto ? mesh_auto(frame, mesh) : MeshAuto{};
   for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
     ++st->triangles;
     const uint16_t* idx = mesh.indices + 3 * t;
@@ -108,7 +120,7 @@ DrawStatus draw_mesh(const FrameParams& frame, const Mat4& view_proj, const Mesh
     }
     if ((c0 | c1 | c2) == 0) {
       const ScreenVert* v[3] = {&cache->screen[idx[0]], &cache->screen[idx[1]], &cache->screen[idx[2]]};
-      finish_triangle(frame, pricing, mesh, v, sink, st);
+      finish_triangle(frame, auto_of_mesh, mesh, v, sink, st);
       continue;
     }
     ++st->clipped;
@@ -121,7 +133,7 @@ DrawStatus draw_mesh(const FrameParams& frame, const Mat4& view_proj, const Mesh
     for (int k = 0; k < poly.count; ++k) project(poly.v[k], vp, &screen[k]);
     for (int k = 1; k + 1 < poly.count; ++k) {
       const ScreenVert* v[3] = {&screen[0], &screen[k], &screen[k + 1]};
-      finish_triangle(frame, pricing, mesh, v, sink, st);
+      finish_triangle(frame, auto_of_mesh, mesh, v, sink, st);
     }
   }
   return kDrawOk;
