@@ -18,6 +18,7 @@
 #include "htx/model/image_io.hpp"
 #include "htx/sim/elf_image.hpp"
 #include "htx/sim/frame_crc.hpp"
+#include "htx/sim/function_profile.hpp"
 #include "htx/sim/serial_endpoint.hpp"
 #include "htx/sim/soc_sim.hpp"
 #else
@@ -39,6 +40,7 @@ struct SimArgs {
   std::optional<uint32_t> stall_seed;
   bool json = false;
   bool profile = false;
+  bool hotspots = false;
   bool no_gpu_gate = false;
   std::string frame;                // PNG of the colour window at exit
   std::string frame_size = "160x120";
@@ -65,6 +67,33 @@ void print_profile(const sim::CpuProfile& p) {
     const double share = total ? 100.0 * static_cast<double>(p.counts[i]) / static_cast<double>(total) : 0.0;
     std::fprintf(stderr, "  %-12s %12llu  %5.1f %%\n", sim::CpuProfile::kNames[i],
                  static_cast<unsigned long long>(p.counts[i]), share);
+  }
+}
+
+// The functions that took the most clocks, one line each (stderr, beside the summary); JSON has them all.
+constexpr size_t kHotspotLines = 20;
+
+void print_hotspots(const std::vector<sim::FunctionCost>& costs, uint64_t total) {
+  std::fprintf(stderr,
+               "htx sim: where the CPU's %llu clocks went by function (an instruction's clocks at execute, a "
+               "bubble's to the instruction before it):\n"
+               "        clocks      %%  instructions    CPI  function\n",
+               static_cast<unsigned long long>(total));
+  for (size_t i = 0; i < costs.size() && i < kHotspotLines; ++i) {
+    const sim::FunctionCost& c = costs[i];
+    const double share = total ? 100.0 * static_cast<double>(c.cycles) / static_cast<double>(total) : 0.0;
+    char cpi[16] = "      -";
+    if (c.instructions) std::snprintf(cpi, sizeof cpi, "%7.2f", static_cast<double>(c.cycles) / static_cast<double>(c.instructions));
+    std::fprintf(stderr, "  %12llu  %5.1f  %12llu %s  %s\n", static_cast<unsigned long long>(c.cycles), share,
+                 static_cast<unsigned long long>(c.instructions), cpi, c.name.c_str());
+  }
+  if (costs.size() > kHotspotLines) {
+    uint64_t rest = 0;
+    for (size_t i = kHotspotLines; i < costs.size(); ++i) rest += costs[i].cycles;
+    std::fprintf(stderr, "  %12llu  %5.1f  (%zu more functions; --json lists them all)\n",
+                 static_cast<unsigned long long>(rest),
+                 total ? 100.0 * static_cast<double>(rest) / static_cast<double>(total) : 0.0,
+                 costs.size() - kHotspotLines);
   }
 }
 
@@ -131,6 +160,7 @@ int run_sim(const SimArgs& a) {
   opt.trace_path = a.trace;
   opt.gpu_clock_gate = !a.no_gpu_gate;
   opt.capture_screen = !a.screen.empty() || !a.screen_frames.empty();
+  opt.profile_pcs = a.hotspots;
   if (!a.screen_frames.empty()) opt.on_screen_frame = ScreenRecorder(a.screen_frames);
 
   std::unique_ptr<sim::SerialEndpoint> uart;
@@ -172,6 +202,11 @@ int run_sim(const SimArgs& a) {
                 static_cast<unsigned long long>(r.instret), cpi, rate / 1e6);
   std::cerr << summary;
   if (a.profile) print_profile(r.profile);
+  std::vector<sim::FunctionCost> hotspots;
+  if (r.pcs) {
+    hotspots = sim::cost_by_function(*r.pcs, elf.functions);
+    print_hotspots(hotspots, r.cycles);
+  }
   if (a.json) {
     nlohmann::json j = {{"exit_code", status},       {"reason", sim::to_string(r.reason)},
                         {"cycles", r.cycles},        {"instret", r.instret},
@@ -181,6 +216,13 @@ int run_sim(const SimArgs& a) {
       nlohmann::json p = nlohmann::json::object();
       for (size_t i = 0; i < sim::CpuProfile::kCauses; ++i) p[sim::CpuProfile::kNames[i]] = r.profile.counts[i];
       j["profile"] = p;
+    }
+    if (r.pcs) {
+      nlohmann::json list = nlohmann::json::array();
+      for (const sim::FunctionCost& c : hotspots) {
+        list.push_back({{"function", c.name}, {"addr", c.addr}, {"cycles", c.cycles}, {"instructions", c.instructions}});
+      }
+      j["hotspots"] = list;
     }
     std::cout << j.dump() << std::endl;
   }
@@ -221,6 +263,10 @@ void register_sim(CLI::App& app) {
   cmd->add_flag("--profile", args->profile,
                 "Print where the CPU's clocks went: execute, data bus, mul/div, CSR order, load use, late "
                 "result, redirect, predicted jump, fetch (with --json, also as \"profile\")");
+  cmd->add_flag("--hotspots", args->hotspots,
+                "Print the functions that took the most clocks (the ELF's symbols), with their instructions and "
+                "CPI: each clock is charged to the instruction in execute, a bubble's to the one before it "
+                "(with --json, every function as \"hotspots\")");
   cmd->add_flag("--json", args->json,
                 "Print one JSON object (exit_code, cycles, instret, cpi, ..., frame_crc32) as the last line of stdout");
   cmd->callback([args]() {

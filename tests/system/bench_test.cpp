@@ -63,4 +63,40 @@ TEST(SystemBench, RunsToCompletionWithHostChecksums) {
                                   std::to_string(json.at("cycles_per_second").get<double>()));
 }
 
+// --hotspots charges the kernels' clocks to their functions: transform and clip run in leaf
+// functions, whose clocks are the firmware's own rdcycle figures less the reading's few clocks.
+TEST(SystemBench, HotspotsChargeTheLeafKernelsTheirClocks) {
+  const auto r = htx::test::run_program(
+      {HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/bench.elf", "--max-cycles", "20000000", "--hotspots", "--json"},
+      120s);
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.err.find("by function"), std::string::npos) << r.err;
+  const auto json = nlohmann::json::parse(r.out.substr(r.out.rfind("\n{") + 1));  // the last line
+  std::map<std::string, uint64_t> cycles;
+  uint64_t sum = 0, instructions = 0;
+  for (const auto& h : json.at("hotspots")) {
+    cycles[h.at("function").get<std::string>()] = h.at("cycles").get<uint64_t>();
+    sum += h.at("cycles").get<uint64_t>();
+    instructions += h.at("instructions").get<uint64_t>();
+  }
+  EXPECT_EQ(sum, json.at("cycles").get<uint64_t>());
+  // Instructions execute completed: minstret's, and the last few that had not retired at the exit.
+  EXPECT_GE(instructions, json.at("instret").get<uint64_t>());
+  EXPECT_LE(instructions, json.at("instret").get<uint64_t>() + 8);
+  EXPECT_GT(cycles["_start"], 0u);  // crt0: an assembly label without a size
+  for (const char* kernel : {"transform", "clip"}) {
+    unsigned long printed = 0;
+    const size_t at = r.out.find(std::string("bench ") + kernel + " cycles ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    ASSERT_EQ(std::sscanf(r.out.c_str() + at + std::string("bench ").size() + std::string(kernel).size(), " cycles %lu",
+                          &printed),
+              1);
+    const std::string fn = std::string("htx::bench::") + kernel + "_run(unsigned int)";
+    ASSERT_TRUE(cycles.count(fn)) << fn << " missing in " << json.at("hotspots").dump();
+    EXPECT_LE(cycles[fn], printed) << fn;
+    EXPECT_GE(cycles[fn] + 100, printed) << fn;
+  }
+}
+
 }  // namespace

@@ -1,7 +1,8 @@
 // htx sim's contract beyond the firmware: every run ends (cycle limit: clear message, status 124),
 // bad input is refused with a clear message, the tohost convention sets the status, --signature
 // writes the words between begin_signature and end_signature, --json prints one object, and
-// --profile charges every clock to one cause, each cause counted as the pipeline's rules say.
+// --profile charges every clock to one cause, each cause counted as the pipeline's rules say, and
+// --hotspots every clock to a function.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -146,7 +147,32 @@ TEST(SystemSimCli, NoProfileUnlessAsked) {
   const auto r = htx::test::run_program({HTX_BIN, "sim", "--elf", HTX_SIM_TEST_ELF, "--json"}, 60s);
   const auto json = last_json_line(r.out);
   EXPECT_FALSE(json.contains("profile"));
+  EXPECT_FALSE(json.contains("hotspots"));
   EXPECT_EQ(r.err.find("where the CPU's"), std::string::npos) << r.err;
+}
+
+// --hotspots on sim_profile.S, whose loop lies in _start (a label without a size, bounded by its
+// section): 200 more iterations charge _start exactly 200 times the iteration's 15 clocks (the
+// bubbles included: each goes to the instruction before it) and 9 instructions.
+TEST(SystemSimCli, HotspotsChargeEachLoopIterationToItsFunction) {
+  auto hotspots_of = [](unsigned loops) {
+    const auto r = htx::test::run_program(
+        {HTX_BIN, "sim", "--elf", std::string(HTX_SIM_PROFILE_ELF_DIR) + "/sim_profile_" + std::to_string(loops) + ".elf",
+         "--hotspots", "--json", "--max-cycles", "1000000"},
+        60s);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("went by function"), std::string::npos) << r.err;
+    const auto json = last_json_line(r.out);
+    EXPECT_EQ(json.at("hotspots").size(), 1u) << json.dump();
+    const auto& start = json.at("hotspots").at(0);
+    EXPECT_EQ(start.at("function"), "_start");
+    EXPECT_EQ(start.at("cycles").get<uint64_t>(), json.at("cycles").get<uint64_t>());
+    return std::pair{start.at("cycles").get<uint64_t>(), start.at("instructions").get<uint64_t>()};
+  };
+  const auto [short_clocks, short_instructions] = hotspots_of(100);
+  const auto [long_clocks, long_instructions] = hotspots_of(300);
+  EXPECT_EQ(long_clocks - short_clocks, 200u * 15u);
+  EXPECT_EQ(long_instructions - short_instructions, 200u * 9u);
 }
 
 }  // namespace

@@ -39,6 +39,32 @@ TEST(Crc32, MatchesTheStandardCheckValue) {
   EXPECT_EQ(crc32(reinterpret_cast<const uint8_t*>(text), 9), 0xCBF43926u);
 }
 
+// The table-driven update (two bytes a turn after an odd first one) against the polynomial applied
+// a bit at a time, for every length to 70 and every split of a buffer into two updates.
+TEST(Crc32, TableUpdateEqualsTheBitwiseDefinition) {
+  auto bitwise = [](uint32_t reg, const uint8_t* data, size_t size) {
+    for (size_t i = 0; i < size; ++i) {
+      reg ^= data[i];
+      for (int k = 0; k < 8; ++k) reg = (reg >> 1) ^ ((reg & 1u) ? 0xEDB88320u : 0u);
+    }
+    return reg;
+  };
+  std::mt19937 rng(5);
+  std::vector<uint8_t> data(70);
+  for (uint8_t& b : data) b = static_cast<uint8_t>(rng());
+  for (size_t len = 0; len <= data.size(); ++len) {
+    const uint32_t want = bitwise(kCrc32Init, data.data(), len);
+    EXPECT_EQ(crc32_update(kCrc32Init, data.data(), len), want) << "len " << len;
+    uint32_t by_byte = kCrc32Init;
+    for (size_t i = 0; i < len; ++i) by_byte = crc32_update_byte(by_byte, data[i]);
+    EXPECT_EQ(by_byte, want) << "len " << len;
+    for (size_t cut = 0; cut <= len; ++cut) {
+      const uint32_t split = crc32_update(crc32_update(kCrc32Init, data.data(), cut), data.data() + cut, len - cut);
+      ASSERT_EQ(split, want) << "len " << len << " cut " << cut;
+    }
+  }
+}
+
 TEST(ConsolePacket, RoundTripsEveryLengthAndZeroRuns) {
   std::mt19937 rng(11);
   for (size_t len = 0; len <= kPacketMaxPayload; ++len) {

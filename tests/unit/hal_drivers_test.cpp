@@ -146,6 +146,24 @@ TEST(HalFramebuffer, ReadsPixelsAndRowsFromHalfWords) {
   EXPECT_EQ(htx::hal::fb_read_depth(5, 1, 1), 0xABCDEFu);
 }
 
+// Every start parity and length: the pixels in order, nothing written past the n-th (the whole
+// words go through a loop of their own, an odd first and an even last pixel apart).
+TEST(HalFramebuffer, ReadRowTakesEveryStartAndLength) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  for (uint32_t w = 0; w < 16; ++w) bus.poke(htx::hal::kFbColorBase + 4 * w, ((2 * w + 1) << 16) | (2 * w));
+  for (uint32_t x0 = 0; x0 < 6; ++x0) {
+    for (uint32_t n = 0; n <= 8; ++n) {
+      uint16_t row[10];
+      for (uint16_t& p : row) p = 0xBEEF;
+      htx::hal::fb_read_row(16, 1, x0, n, row);  // window pixels 16 + x0 ...
+      for (uint32_t k = 0; k < 10; ++k) {
+        EXPECT_EQ(row[k], k < n ? 16 + x0 + k : 0xBEEFu) << "x0 " << x0 << " n " << n << " k " << k;
+      }
+    }
+  }
+}
+
 // With two colour pages the reads are of the page the raster unit draws into: page 1 starts at
 // pixel FB_MEM.PIXELS of the colour window.
 TEST(HalFramebuffer, ReadsThePageTheRasterDrawsInto) {

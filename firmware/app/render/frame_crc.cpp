@@ -12,10 +12,8 @@ uint32_t frame_crc32(uint32_t width, uint32_t height) {
     for (uint32_t x0 = 0; x0 < width; x0 += 256) {
       const uint32_t n = width - x0 < 256 ? width - x0 : 256;
       htx::hal::fb_read_row(width, y, x0, n, row);
-      for (uint32_t i = 0; i < n; ++i) {
-        reg = htx::fw::crc32_update_byte(reg, static_cast<uint8_t>(row[i] & 0xFFu));
-        reg = htx::fw::crc32_update_byte(reg, static_cast<uint8_t>(row[i] >> 8));
-      }
+      // The pixels' bytes in memory order, low byte first: the target is little-endian.
+      reg = htx::fw::crc32_update(reg, reinterpret_cast<const uint8_t*>(row), 2 * n);
     }
   }
   return ~reg;

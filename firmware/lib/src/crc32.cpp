@@ -3,19 +3,37 @@
 namespace htx::fw {
 
 namespace {
-constexpr uint32_t kNibble[16] = {0x00000000u, 0x1DB71064u, 0x3B6E20C8u, 0x26D930ACu, 0x76DC4190u, 0x6B6B51F4u,
-                                  0x4DB26158u, 0x5005713Cu, 0xEDB88320u, 0xF00F9344u, 0xD6D6A3E8u, 0xCB61B38Cu,
-                                  0x9B64C2B0u, 0x86D3D2D4u, 0xA00AE278u, 0xBDBDF21Cu};
+
+// The byte table, built by the compiler: entry b is the register's change for the byte b
+// (eight steps of the reflected polynomial). 1 KiB of RAM for a frame's checksum twice as fast as
+// the half-byte table's two lookups a byte (render.elf: 26 -> 13 clocks a byte).
+struct ByteTable {
+  uint32_t entry[256];
+  constexpr ByteTable() : entry() {
+    for (uint32_t b = 0; b < 256; ++b) {
+      uint32_t r = b;
+      for (int k = 0; k < 8; ++k) r = (r >> 1) ^ ((r & 1u) ? 0xEDB88320u : 0u);
+      entry[b] = r;
+    }
+  }
+};
+constexpr ByteTable kTable;
+
 }  // namespace
 
-uint32_t crc32_update_byte(uint32_t reg, uint8_t byte) {
-  reg ^= byte;
-  reg = (reg >> 4) ^ kNibble[reg & 0xFu];
-  return (reg >> 4) ^ kNibble[reg & 0xFu];
-}
+uint32_t crc32_update_byte(uint32_t reg, uint8_t byte) { return (reg >> 8) ^ kTable.entry[(reg ^ byte) & 0xFFu]; }
 
 uint32_t crc32_update(uint32_t reg, const uint8_t* data, size_t size) {
-  for (size_t i = 0; i < size; ++i) reg = crc32_update_byte(reg, data[i]);
+  if (size == 0) return reg;
+  // Two bytes a turn where it can, and the branch at the bottom: -Os otherwise tests at the top
+  // and jumps back, a predicted jump's bubble a byte.
+  const uint8_t* const end = data + size;
+  if (size & 1u) reg = (reg >> 8) ^ kTable.entry[(reg ^ *data++) & 0xFFu];
+  while (data != end) {
+    reg = (reg >> 8) ^ kTable.entry[(reg ^ data[0]) & 0xFFu];
+    reg = (reg >> 8) ^ kTable.entry[(reg ^ data[1]) & 0xFFu];
+    data += 2;
+  }
   return reg;
 }
 

@@ -15,6 +15,10 @@ constexpr uint16_t kEmRiscv = 243;
 constexpr uint32_t kPtLoad = 1;
 constexpr uint32_t kShtSymtab = 2;
 constexpr uint16_t kShnUndef = 0;
+constexpr uint16_t kShnLoReserve = 0xFF00;  // SHN_ABS, SHN_COMMON, ...: no section
+constexpr uint8_t kSttNoType = 0;
+constexpr uint8_t kSttFunc = 2;
+constexpr uint32_t kShfExecInstr = 4;
 
 class Reader {
  public:
@@ -114,11 +118,21 @@ ElfImage parse_elf(std::span<const uint8_t> data, const std::string& what) {
     for (uint64_t s = symoff; s + entsize <= static_cast<uint64_t>(symoff) + symsize; s += entsize) {
       const uint32_t name = r.u32(s);
       const uint32_t value = r.u32(s + 4);
+      const uint32_t size = r.u32(s + 8);
+      const uint8_t type = r.u8(s + 12) & 0xF;
       const uint16_t shndx = r.u16(s + 14);
       if (shndx == kShnUndef || name == 0 || name >= strtab.size()) continue;
       const auto* begin = reinterpret_cast<const char*>(strtab.data()) + name;
       const size_t len = strnlen(begin, strtab.size() - name);
       img.symbols.emplace(std::string(begin, len), value);
+      // Functions: FUNC symbols, and untyped labels in code (assembly entry points such as
+      // _start), not absolute symbols (picolibc aliases unused stdio functions to 0 that way) nor
+      // the RISC-V mapping symbols ($x..., $d: where code and data begin).
+      if (shndx >= kShnLoReserve || (type != kSttFunc && type != kSttNoType) || begin[0] == '$') continue;
+      const uint64_t target = shoff + static_cast<uint64_t>(shndx) * shentsize;
+      if (shndx >= shnum || !(r.u32(target + 8) & kShfExecInstr)) continue;
+      img.functions.push_back(
+          {std::string(begin, len), value, size, uint64_t{r.u32(target + 12)} + r.u32(target + 20)});
     }
   }
   return img;

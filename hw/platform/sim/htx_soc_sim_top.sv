@@ -21,7 +21,11 @@ module htx_soc_sim_top #(
   output logic        video_vsync_no,
   output logic [23:0] video_rgb_o,
 
-  output logic [63:0] instret_o
+  output logic [63:0] instret_o,
+  // The instruction in the CPU's execute stage (`htx sim --hotspots` charges each clock to it).
+  output logic        cpu_e_valid_o,  // execute holds an instruction that is not squashed
+  output logic [31:0] cpu_e_pc_o,     // its address
+  output logic        cpu_e_done_o    // it completes this clock
 );
   logic timer_irq_unused;
 
@@ -51,7 +55,10 @@ module htx_soc_sim_top #(
     .stall_en_i(stall_en_q), .stall_seed_i(stall_seed_q)
   );
 
-  assign instret_o = u_soc.u_cpu.u_csr.instret_q;
+  assign instret_o     = u_soc.u_cpu.u_csr.instret_q;
+  assign cpu_e_valid_o = u_soc.u_cpu.e_live;  // not a squashed one
+  assign cpu_e_pc_o    = {u_soc.u_cpu.e_pc_q, 2'b00};
+  assign cpu_e_done_o  = u_soc.u_cpu.e_done;
 
   // Where the CPU's clocks go (`htx sim --profile`); the harness reads the counts.
   htx_cpu_profile u_cpu_profile (

@@ -140,7 +140,14 @@ SimResult SocSim::run() {
   bool input_over = false, script_sent = false;
   uint32_t waiting_polls = 0;
   uint64_t last_empty_read = 0;
+  if (s.opt.profile_pcs) res.pcs.emplace(kRamBytes);
+  uint32_t last_pc = 0;
   while (!done && c < s.opt.max_cycles) {
+    if (res.pcs) {
+      // This clock's state, settled by the last edge's eval (e_done is combinational).
+      if (s.top->cpu_e_valid_o) last_pc = s.top->cpu_e_pc_o;
+      res.pcs->charge(last_pc, s.top->cpu_e_valid_o && s.top->cpu_e_done_o);
+    }
     s.top->uart_rx_i = s.tx_encoder.step();
     s.cycle();
     ++c;

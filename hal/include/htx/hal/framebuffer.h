@@ -42,15 +42,21 @@ inline uint16_t fb_read_pixel(uint32_t stride, uint32_t x, uint32_t y) {
   return static_cast<uint16_t>(word >> (16u * (i & 1u)));
 }
 
-// Reads n colour pixels of row y from column x0 (word reads, two pixels each).
+// Reads n colour pixels of row y from column x0 (word reads, two pixels each; a frame's checksum
+// reads every pixel, so the whole words go in a loop of their own).
 inline void fb_read_row(uint32_t stride, uint32_t y, uint32_t x0, uint32_t n, uint16_t* out) {
   uint32_t i = fb_draw_page_first_pixel() + y * stride + x0;
   const uint32_t end = i + n;
-  while (i < end) {
-    const uint32_t word = backend::mem_read32(kFbColorBase + 4u * (i >> 1));
-    for (uint32_t half = i & 1u; half < 2u && i < end; ++half, ++i)
-      *out++ = static_cast<uint16_t>(word >> (16u * half));
+  if ((i & 1u) && i < end) {  // an odd first pixel: the high half of its word
+    *out++ = static_cast<uint16_t>(backend::mem_read32(kFbColorBase + 4u * (i >> 1)) >> 16);
+    ++i;
   }
+  for (; i < end && end - i >= 2u; i += 2u, out += 2) {
+    const uint32_t word = backend::mem_read32(kFbColorBase + 2u * i);
+    out[0] = static_cast<uint16_t>(word);
+    out[1] = static_cast<uint16_t>(word >> 16);
+  }
+  if (i < end) *out = static_cast<uint16_t>(backend::mem_read32(kFbColorBase + 2u * i));  // an even last pixel
 }
 
 inline uint32_t fb_read_depth(uint32_t stride, uint32_t x, uint32_t y) {

@@ -17,9 +17,10 @@ struct VideoMode {
 
 inline VideoMode video_mode() {
   const uint32_t m = HTX_VIDEO->MODE;
-  return {(m & VIDEO_MODE_SRC_WIDTH_Msk) >> VIDEO_MODE_SRC_WIDTH_Pos,
-          (m & VIDEO_MODE_SRC_HEIGHT_Msk) >> VIDEO_MODE_SRC_HEIGHT_Pos,
-          (m & VIDEO_MODE_SCALE_Msk) >> VIDEO_MODE_SCALE_Pos};
+  // (The masks are unsigned long: 64 bits on a host.)
+  return {static_cast<uint32_t>((m & VIDEO_MODE_SRC_WIDTH_Msk) >> VIDEO_MODE_SRC_WIDTH_Pos),
+          static_cast<uint32_t>((m & VIDEO_MODE_SRC_HEIGHT_Msk) >> VIDEO_MODE_SRC_HEIGHT_Pos),
+          static_cast<uint32_t>((m & VIDEO_MODE_SCALE_Msk) >> VIDEO_MODE_SCALE_Pos)};
 }
 
 // Shows the framebuffer (or a black picture) from the next frame on; the page shown stays.

@@ -11,7 +11,7 @@ namespace htx::fw {
 inline constexpr uint32_t kCrc32Init = 0xFFFFFFFFu;
 
 // Adds bytes to a running CRC register (start from kCrc32Init; the checksum is ~register).
-// A half-byte table: 16 words instead of 256 keep the firmware's RAM for scenes.
+// A byte table (1 KiB, crc32.cpp).
 uint32_t crc32_update(uint32_t reg, const uint8_t* data, size_t size);
 uint32_t crc32_update_byte(uint32_t reg, uint8_t byte);
 

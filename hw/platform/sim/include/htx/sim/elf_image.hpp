@@ -1,5 +1,6 @@
 // A small ELF32 (little-endian RISC-V executable) reader: the loadable segments and the symbol
-// table, which is all the SoC harness needs (load the image, find tohost and the signature).
+// table, which is all the SoC harness needs (load the image, find tohost and the signature, name
+// the functions a profile charges).
 #pragma once
 
 #include <cstdint>
@@ -17,10 +18,20 @@ struct ElfSegment {
   std::vector<uint8_t> bytes;  // file contents
 };
 
+// A function symbol: STT_FUNC, or an untyped label in an executable section (an assembly entry
+// point, often without a size), defined in a section (not absolute).
+struct ElfFunction {
+  std::string name;  // as in the symbol table (mangled for C++)
+  uint32_t addr = 0;
+  uint32_t size = 0;  // bytes of code; 0 when the symbol does not say
+  uint64_t section_end = 0;  // where its section ends (bounds one without a size); 0: unknown
+};
+
 struct ElfImage {
   uint32_t entry = 0;
   std::vector<ElfSegment> segments;
   std::map<std::string, uint32_t> symbols;  // defined symbols by name
+  std::vector<ElfFunction> functions;       // defined functions, in symbol-table order
 
   std::optional<uint32_t> symbol(const std::string& name) const;
 };

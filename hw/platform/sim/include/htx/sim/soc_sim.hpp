@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "htx/sim/elf_image.hpp"
+#include "htx/sim/function_profile.hpp"
 #include "htx/sim/serial_endpoint.hpp"
 #include "htx/sim/video_capture.hpp"
 
@@ -30,6 +31,9 @@ struct SimOptions {
   bool capture_screen = false;
   // With capture_screen: called with the monitor each time a whole frame has been shown.
   std::function<void(const VideoCapture&)> on_screen_frame;
+  // Charge every clock to an instruction address (SimResult::pcs): the instruction in execute, or
+  // while execute is empty the last one it held (a bubble's clocks go to the instruction before it).
+  bool profile_pcs = false;
 };
 
 // InputEnded: a script's input ended and the firmware then waited for more (SocSim::run).
@@ -53,6 +57,7 @@ struct SimResult {
   uint64_t instret = 0;   // instructions retired (the CPU's minstret)
   double seconds = 0.0;   // host wall time of the run
   CpuProfile profile;
+  std::optional<PcProfile> pcs;  // with SimOptions::profile_pcs
 };
 
 const char* to_string(StopReason r);
