@@ -62,11 +62,12 @@ Num newton_error(const AutoConfig& c) {
 struct Range {
   Num lo, hi;
 };
-Range range_of(const Num a[3]) {
-  Range r{a[0], a[0]};
-  for (int i = 1; i < 3; ++i) {
-    r.lo = num_min(r.lo, a[i]);
-    r.hi = num_max(r.hi, a[i]);
+Range range_of(const Num a[3]) {  // three compares, not four
+  Range r = a[1] < a[0] ? Range{a[1], a[0]} : Range{a[0], a[1]};
+  if (a[2] < r.lo) {
+    r.lo = a[2];
+  } else if (r.hi < a[2]) {
+    r.hi = a[2];
   }
   return r;
 }
