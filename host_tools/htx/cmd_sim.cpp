@@ -74,26 +74,28 @@ void print_profile(const sim::CpuProfile& p) {
 constexpr size_t kHotspotLines = 20;
 
 void print_hotspots(const std::vector<sim::FunctionCost>& costs, uint64_t total) {
+  auto share = [total](uint64_t n) { return total ? 100.0 * static_cast<double>(n) / static_cast<double>(total) : 0.0; };
   std::fprintf(stderr,
                "htx sim: where the CPU's %llu clocks went by function (an instruction's clocks at execute, a "
-               "bubble's to the instruction before it):\n"
-               "        clocks      %%  instructions    CPI  function\n",
+               "bubble's to the instruction before it; inclusive: from a call to its return):\n"
+               "        clocks      %%     inclusive      %%      calls  instructions    CPI  function\n",
                static_cast<unsigned long long>(total));
   for (size_t i = 0; i < costs.size() && i < kHotspotLines; ++i) {
     const sim::FunctionCost& c = costs[i];
-    const double share = total ? 100.0 * static_cast<double>(c.cycles) / static_cast<double>(total) : 0.0;
+    char inclusive[40] = "             -       -";
+    if (c.calls) std::snprintf(inclusive, sizeof inclusive, "%14llu  %5.1f", static_cast<unsigned long long>(c.inclusive), share(c.inclusive));
+    char calls[24] = "          -";
+    if (c.calls) std::snprintf(calls, sizeof calls, "%11llu", static_cast<unsigned long long>(c.calls));
     char cpi[16] = "      -";
     if (c.instructions) std::snprintf(cpi, sizeof cpi, "%7.2f", static_cast<double>(c.cycles) / static_cast<double>(c.instructions));
-    std::fprintf(stderr, "  %12llu  %5.1f  %12llu %s  %s\n", static_cast<unsigned long long>(c.cycles), share,
-                 static_cast<unsigned long long>(c.instructions), cpi, c.name.c_str());
+    std::fprintf(stderr, "  %12llu  %5.1f%s %s  %12llu %s  %s\n", static_cast<unsigned long long>(c.cycles), share(c.cycles),
+                 inclusive, calls, static_cast<unsigned long long>(c.instructions), cpi, c.name.c_str());
   }
   if (costs.size() > kHotspotLines) {
     uint64_t rest = 0;
     for (size_t i = kHotspotLines; i < costs.size(); ++i) rest += costs[i].cycles;
-    std::fprintf(stderr, "  %12llu  %5.1f  (%zu more functions; --json lists them all)\n",
-                 static_cast<unsigned long long>(rest),
-                 total ? 100.0 * static_cast<double>(rest) / static_cast<double>(total) : 0.0,
-                 costs.size() - kHotspotLines);
+    std::fprintf(stderr, "  %12llu  %5.1f  (%zu more functions; --json lists them all, with their callers)\n",
+                 static_cast<unsigned long long>(rest), share(rest), costs.size() - kHotspotLines);
   }
 }
 
@@ -220,7 +222,15 @@ int run_sim(const SimArgs& a) {
     if (r.pcs) {
       nlohmann::json list = nlohmann::json::array();
       for (const sim::FunctionCost& c : hotspots) {
-        list.push_back({{"function", c.name}, {"addr", c.addr}, {"cycles", c.cycles}, {"instructions", c.instructions}});
+        nlohmann::json callers = nlohmann::json::array();
+        for (const sim::FunctionCaller& k : c.callers) callers.push_back({{"function", k.name}, {"calls", k.calls}});
+        list.push_back({{"function", c.name},
+                        {"addr", c.addr},
+                        {"cycles", c.cycles},
+                        {"instructions", c.instructions},
+                        {"calls", c.calls},
+                        {"inclusive", c.inclusive},
+                        {"callers", callers}});
       }
       j["hotspots"] = list;
     }
@@ -264,9 +274,9 @@ void register_sim(CLI::App& app) {
                 "Print where the CPU's clocks went: execute, data bus, mul/div, CSR order, load use, late "
                 "result, redirect, predicted jump, fetch (with --json, also as \"profile\")");
   cmd->add_flag("--hotspots", args->hotspots,
-                "Print the functions that took the most clocks (the ELF's symbols), with their instructions and "
-                "CPI: each clock is charged to the instruction in execute, a bubble's to the one before it "
-                "(with --json, every function as \"hotspots\")");
+                "Print the functions that took the most clocks (the ELF's symbols), with their clocks from call "
+                "to return, calls, instructions and CPI: each clock is charged to the instruction in execute, a "
+                "bubble's to the one before it (with --json, every function and its callers as \"hotspots\")");
   cmd->add_flag("--json", args->json,
                 "Print one JSON object (exit_code, cycles, instret, cpi, ..., frame_crc32) as the last line of stdout");
   cmd->callback([args]() {

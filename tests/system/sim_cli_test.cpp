@@ -175,4 +175,35 @@ TEST(SystemSimCli, HotspotsChargeEachLoopIterationToItsFunction) {
   EXPECT_EQ(long_instructions - short_instructions, 200u * 9u);
 }
 
+// Calls (tests/system/sim_calls.S): each function's calls and callers, `leaf`'s inclusive clocks
+// its own, `outer`'s its own with `leaf`'s and those of `tail`, which it jumps into (not a call).
+TEST(SystemSimCli, HotspotsFollowCallsAndReturns) {
+  const auto r = htx::test::run_program({HTX_BIN, "sim", "--elf", HTX_SIM_CALLS_ELF, "--hotspots", "--json"}, 60s);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("inclusive"), std::string::npos) << r.err;
+  const auto json = last_json_line(r.out);
+  std::map<std::string, nlohmann::json> fn;
+  uint64_t sum = 0;
+  for (const auto& h : json.at("hotspots")) {
+    fn[h.at("function").get<std::string>()] = h;
+    sum += h.at("cycles").get<uint64_t>();
+  }
+  ASSERT_EQ(fn.size(), 4u) << json.dump();
+  EXPECT_EQ(sum, json.at("cycles").get<uint64_t>());
+  const auto& leaf = fn.at("leaf");
+  const auto& outer = fn.at("outer");
+  EXPECT_EQ(leaf.at("calls"), 100);  // through JAL and JALR
+  EXPECT_EQ(leaf.at("instructions"), 100 * 12);
+  EXPECT_EQ(leaf.at("inclusive"), leaf.at("cycles"));
+  EXPECT_EQ(leaf.at("callers"), nlohmann::json::parse(R"([{"function":"outer","calls":100}])"));
+  EXPECT_EQ(outer.at("calls"), 50);
+  EXPECT_EQ(outer.at("inclusive").get<uint64_t>(), outer.at("cycles").get<uint64_t>() +
+                                                       leaf.at("cycles").get<uint64_t>() +
+                                                       fn.at("tail").at("cycles").get<uint64_t>());
+  EXPECT_EQ(outer.at("callers"), nlohmann::json::parse(R"([{"function":"_start","calls":50}])"));
+  EXPECT_EQ(fn.at("tail").at("calls"), 0);
+  EXPECT_EQ(fn.at("tail").at("inclusive"), 0);
+  EXPECT_EQ(fn.at("_start").at("calls"), 0);
+}
+
 }  // namespace

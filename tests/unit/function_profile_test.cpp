@@ -101,6 +101,70 @@ TEST(FunctionProfile, CyclesAddUpAndTiesKeepAddressOrder) {
   EXPECT_EQ(order, (std::vector<std::string>{"f2", "f5", "f1", "f4", "f7"}));
 }
 
+uint32_t jal(uint32_t rd) { return 0x6Fu | (rd << 7); }
+uint32_t jalr(uint32_t rd, uint32_t rs1) { return 0x67u | (rd << 7) | (rs1 << 15); }
+
+// The return-address-stack hints: x1 and x5 link; a call's frame opens at the next live
+// instruction, a return's closes there; recursion counts the outer frame only.
+TEST(FunctionProfile, CallsAndReturnsByTheLinkRegisterHints) {
+  PcProfile p(0x1000);
+  uint64_t clock = 0;
+  auto step = [&](uint32_t pc, uint32_t word) {  // one live clock, the instruction completing
+    p.live(pc, clock);
+    p.charge(pc, true);
+    p.completed(pc, word);
+    ++clock;
+  };
+  step(0x00, jal(1));         // call f (x1)
+  step(0x100, jalr(5, 6));    // f calls g through x5 (millicode style)
+  step(0x200, jal(0));        // g: a jump (no link), not a call
+  step(0x204, jalr(0, 5));    // g returns through x5
+  step(0x104, jalr(0, 6));    // f: a jump through x6, not a return
+  step(0x108, jal(1));        // f calls f (recursion)
+  step(0x100, jalr(1, 5));    // f: rd x1, rs1 x5 differ: returns (closes the inner f) and calls h
+  step(0x300, jalr(0, 1));    // h returns
+  step(0x10C, jalr(0, 1));    // f returns (the outer f)
+  step(0x004, 0x13u);         // back in the caller: a nop
+  p.finish(clock);
+  const auto& e = p.entries();
+  ASSERT_EQ(e.size(), 3u);
+  EXPECT_EQ(e.at(0x100).calls, 2u);      // f, twice (the second recursive)
+  EXPECT_EQ(e.at(0x100).inclusive, 8u);  // the outer f: clocks 1 to 9
+  EXPECT_EQ(e.at(0x200).calls, 1u);      // g
+  EXPECT_EQ(e.at(0x200).inclusive, 2u);  // clocks 2 and 3
+  EXPECT_EQ(e.at(0x300).calls, 1u);      // h
+  EXPECT_EQ(e.at(0x300).inclusive, 1u);
+  EXPECT_EQ(p.call_sites().at({0x108, 0x100}), 1u);
+  EXPECT_EQ(p.call_sites().at({0x100, 0x300}), 1u);
+}
+
+TEST(FunctionProfile, CallsGoToTheFunctionsHoldingTheirAddresses) {
+  PcProfile p(0x1000);
+  uint64_t clock = 0;
+  auto step = [&](uint32_t pc, uint32_t word) {
+    p.live(pc, clock);
+    p.charge(pc, true);
+    p.completed(pc, word);
+    ++clock;
+  };
+  step(0x10, jal(1));       // main calls leaf
+  step(0x40, 0x13u);
+  step(0x44, jalr(0, 1));   // leaf returns
+  step(0x14, jal(1));       // main calls leaf again
+  step(0x40, jalr(0, 1));
+  step(0x18, 0x13u);
+  p.finish(clock);
+  const std::vector<ElfFunction> fns = {{"main", 0x10, 0x20}, {"leaf", 0x40, 0x10}};
+  auto m = by_name(cost_by_function(p, fns));
+  EXPECT_EQ(m["leaf"].calls, 2u);
+  EXPECT_EQ(m["leaf"].inclusive, 3u);
+  ASSERT_EQ(m["leaf"].callers.size(), 1u);
+  EXPECT_EQ(m["leaf"].callers[0].name, "main");
+  EXPECT_EQ(m["leaf"].callers[0].calls, 2u);
+  EXPECT_EQ(m["main"].calls, 0u);
+  EXPECT_EQ(m["main"].inclusive, 0u);
+}
+
 TEST(FunctionProfile, DemanglesCppNamesOnly) {
   EXPECT_EQ(htx::sim::demangle("_ZN3htx5bench5crc32EPKhj"), "htx::bench::crc32(unsigned char const*, unsigned int)");
   EXPECT_EQ(htx::sim::demangle("uart_putc"), "uart_putc");

@@ -12,6 +12,50 @@ namespace htx::sim {
 PcProfile::PcProfile(uint32_t ram_bytes)
     : ram_bytes_(ram_bytes & ~3u), outside_(ram_bytes_ / 4), cycles_(outside_ + 1), instructions_(outside_ + 1) {}
 
+namespace {
+bool is_link(uint32_t reg) { return reg == 1 || reg == 5; }
+}  // namespace
+
+void PcProfile::completed(uint32_t pc, uint32_t word) {
+  const uint32_t opcode = word & 0x7Fu, rd = (word >> 7) & 0x1Fu, rs1 = (word >> 15) & 0x1Fu;
+  bool call = false, ret = false;
+  if (opcode == 0x6Fu) {  // JAL
+    call = is_link(rd);
+  } else if (opcode == 0x67u && ((word >> 12) & 7u) == 0) {  // JALR
+    call = is_link(rd);
+    ret = is_link(rs1) && (!is_link(rd) || rd != rs1);  // (rd, rs1 both links and different: a coroutine swap)
+  }
+  if (ret) return_pending_ = true;
+  if (call) {
+    call_pending_ = true;
+    call_site_ = pc;
+  }
+}
+
+void PcProfile::close_top(uint64_t clock) {
+  const Frame f = stack_.back();
+  stack_.pop_back();
+  if (--active_[f.entry] == 0) entries_[f.entry].inclusive += clock - f.start;  // the outermost frame
+}
+
+void PcProfile::live(uint32_t pc, uint64_t clock) {
+  if (return_pending_) {
+    return_pending_ = false;
+    if (!stack_.empty()) close_top(clock);  // (a return above the first call has no frame)
+  }
+  if (call_pending_) {
+    call_pending_ = false;
+    stack_.push_back({pc, clock});
+    ++active_[pc];
+    ++entries_[pc].calls;
+    ++call_sites_[{call_site_, pc}];
+  }
+}
+
+void PcProfile::finish(uint64_t clock) {
+  while (!stack_.empty()) close_top(clock);
+}
+
 std::string demangle(const std::string& name) {
   int status = 0;
   std::unique_ptr<char, void (*)(void*)> out(abi::__cxa_demangle(name.c_str(), nullptr, nullptr, &status),
@@ -42,31 +86,59 @@ std::vector<FunctionCost> cost_by_function(const PcProfile& profile, std::span<c
     end_of[f.addr] = end;
   }
   std::map<uint32_t, FunctionCost> costs;  // by start address
-  FunctionCost rest{"(outside any function)", 0, 0, 0};
+  FunctionCost rest;
+  rest.name = "(outside any function)";
+  // The function holding pc (null: none), and its line.
+  auto function_at = [&](uint32_t pc) -> const ElfFunction* {
+    if (pc >= profile.ram_bytes()) return nullptr;
+    const auto it = by_start.upper_bound(pc);  // the function starting last at or before pc
+    if (it == by_start.begin()) return nullptr;
+    const ElfFunction* candidate = std::prev(it)->second;
+    return uint64_t{pc} < end_of[candidate->addr] ? candidate : nullptr;
+  };
+  auto line_of = [&](const ElfFunction* f) -> FunctionCost& {
+    if (!f) return rest;
+    auto [it, added] = costs.try_emplace(f->addr);
+    if (added) {
+      it->second.name = demangle(f->name);
+      it->second.addr = f->addr;
+    }
+    return it->second;
+  };
   const auto cycles = profile.cycles();
   const auto instructions = profile.instructions();
   for (size_t i = 0; i < cycles.size(); ++i) {
     if (cycles[i] == 0 && instructions[i] == 0) continue;
     const bool in_ram = i + 1 < cycles.size();
-    const uint32_t pc = static_cast<uint32_t>(i * 4);
-    // The function starting last at or before pc, if pc is inside it.
-    auto it = in_ram ? by_start.upper_bound(pc) : by_start.begin();
-    const ElfFunction* f = nullptr;
-    if (in_ram && it != by_start.begin()) {
-      const ElfFunction* candidate = std::prev(it)->second;
-      if (uint64_t{pc} < end_of[candidate->addr]) f = candidate;
-    }
-    FunctionCost& c = f ? costs.try_emplace(f->addr, FunctionCost{demangle(f->name), f->addr, 0, 0}).first->second
-                        : rest;
+    FunctionCost& c = line_of(in_ram ? function_at(static_cast<uint32_t>(i * 4)) : nullptr);
     c.cycles += cycles[i];
     c.instructions += instructions[i];
+  }
+  for (const auto& [entry, e] : profile.entries()) {
+    FunctionCost& c = line_of(function_at(entry));
+    c.calls += e.calls;
+    c.inclusive += e.inclusive;
+  }
+  std::map<std::pair<uint32_t, std::string>, uint64_t> edges;  // (callee's start, caller) -> calls
+  for (const auto& [site, n] : profile.call_sites()) {
+    const ElfFunction* caller = function_at(site.first);
+    const ElfFunction* callee = function_at(site.second);
+    edges[{callee ? callee->addr : ~0u, caller ? demangle(caller->name) : rest.name}] += n;
+  }
+  for (const auto& [key, n] : edges) {
+    FunctionCost& c = key.first == ~0u ? rest : costs.at(key.first);
+    c.callers.push_back({key.second, n});
   }
   std::vector<FunctionCost> out;
   out.reserve(costs.size() + 1);
   for (auto& [addr, c] : costs) out.push_back(std::move(c));
-  std::stable_sort(out.begin(), out.end(),
-                   [](const FunctionCost& a, const FunctionCost& b) { return a.cycles > b.cycles; });
-  if (rest.cycles != 0 || rest.instructions != 0) out.push_back(std::move(rest));
+  // The most clocks first, the rest last.
+  std::stable_sort(out.begin(), out.end(), [](const FunctionCost& a, const FunctionCost& b) { return a.cycles > b.cycles; });
+  if (rest.cycles != 0 || rest.instructions != 0 || rest.calls != 0) out.push_back(std::move(rest));
+  for (FunctionCost& c : out) {
+    std::stable_sort(c.callers.begin(), c.callers.end(),
+                     [](const FunctionCaller& a, const FunctionCaller& b) { return a.calls > b.calls; });
+  }
   return out;
 }
 

@@ -145,8 +145,13 @@ SimResult SocSim::run() {
   while (!done && c < s.opt.max_cycles) {
     if (res.pcs) {
       // This clock's state, settled by the last edge's eval (e_done is combinational).
-      if (s.top->cpu_e_valid_o) last_pc = s.top->cpu_e_pc_o;
-      res.pcs->charge(last_pc, s.top->cpu_e_valid_o && s.top->cpu_e_done_o);
+      const bool live = s.top->cpu_e_valid_o, completes = live && s.top->cpu_e_done_o;
+      if (live) {
+        last_pc = s.top->cpu_e_pc_o;
+        res.pcs->live(last_pc, c);
+      }
+      res.pcs->charge(last_pc, completes);
+      if (completes && last_pc < kRamBytes) res.pcs->completed(last_pc, ram[last_pc / 4]);
     }
     s.top->uart_rx_i = s.tx_encoder.step();
     s.cycle();
@@ -211,6 +216,7 @@ SimResult SocSim::run() {
   }
   if (s.uart) s.uart->flush();
   s.console.flush();
+  if (res.pcs) res.pcs->finish(c);
   res.cycles = c;
   res.instret = s.top->instret_o;
   for (size_t i = 0; i < CpuProfile::kCauses; ++i) {
