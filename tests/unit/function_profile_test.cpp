@@ -104,17 +104,24 @@ TEST(FunctionProfile, CyclesAddUpAndTiesKeepAddressOrder) {
 uint32_t jal(uint32_t rd) { return 0x6Fu | (rd << 7); }
 uint32_t jalr(uint32_t rd, uint32_t rs1) { return 0x67u | (rd << 7) | (rs1 << 15); }
 
-// The return-address-stack hints: x1 and x5 link; a call's frame opens at the next live
-// instruction, a return's closes there; recursion counts the outer frame only.
-TEST(FunctionProfile, CallsAndReturnsByTheLinkRegisterHints) {
-  PcProfile p(0x1000);
+// Feeds a profile as the harness does: each step one clock whose live instruction completes.
+struct Trace {
+  PcProfile& p;
   uint64_t clock = 0;
-  auto step = [&](uint32_t pc, uint32_t word) {  // one live clock, the instruction completing
+  void step(uint32_t pc, uint32_t word) {
     p.live(pc, clock);
     p.charge(pc, true);
     p.completed(pc, word);
     ++clock;
-  };
+  }
+};
+
+// The return-address-stack hints: x1 and x5 link; a call's frame opens at the next live
+// instruction, a return's closes there; recursion counts the outer frame only.
+TEST(FunctionProfile, CallsAndReturnsByTheLinkRegisterHints) {
+  PcProfile p(0x1000);
+  Trace t{p};
+  auto step = [&t](uint32_t pc, uint32_t word) { t.step(pc, word); };
   step(0x00, jal(1));         // call f (x1)
   step(0x100, jalr(5, 6));    // f calls g through x5 (millicode style)
   step(0x200, jal(0));        // g: a jump (no link), not a call
@@ -125,7 +132,7 @@ TEST(FunctionProfile, CallsAndReturnsByTheLinkRegisterHints) {
   step(0x300, jalr(0, 1));    // h returns
   step(0x10C, jalr(0, 1));    // f returns (the outer f)
   step(0x004, 0x13u);         // back in the caller: a nop
-  p.finish(clock);
+  p.finish(t.clock);
   const auto& e = p.entries();
   ASSERT_EQ(e.size(), 3u);
   EXPECT_EQ(e.at(0x100).calls, 2u);      // f, twice (the second recursive)
@@ -140,20 +147,15 @@ TEST(FunctionProfile, CallsAndReturnsByTheLinkRegisterHints) {
 
 TEST(FunctionProfile, CallsGoToTheFunctionsHoldingTheirAddresses) {
   PcProfile p(0x1000);
-  uint64_t clock = 0;
-  auto step = [&](uint32_t pc, uint32_t word) {
-    p.live(pc, clock);
-    p.charge(pc, true);
-    p.completed(pc, word);
-    ++clock;
-  };
+  Trace t{p};
+  auto step = [&t](uint32_t pc, uint32_t word) { t.step(pc, word); };
   step(0x10, jal(1));       // main calls leaf
   step(0x40, 0x13u);
   step(0x44, jalr(0, 1));   // leaf returns
   step(0x14, jal(1));       // main calls leaf again
   step(0x40, jalr(0, 1));
   step(0x18, 0x13u);
-  p.finish(clock);
+  p.finish(t.clock);
   const std::vector<ElfFunction> fns = {{"main", 0x10, 0x20}, {"leaf", 0x40, 0x10}};
   auto m = by_name(cost_by_function(p, fns));
   EXPECT_EQ(m["leaf"].calls, 2u);
