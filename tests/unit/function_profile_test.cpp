@@ -145,6 +145,24 @@ TEST(FunctionProfile, CallsAndReturnsByTheLinkRegisterHints) {
   EXPECT_EQ(p.call_sites().at({0x100, 0x300}), 1u);
 }
 
+// A recursion deeper than the frames kept: every call counted, the returns matched, so the
+// outermost frame still closes at its own return.
+TEST(FunctionProfile, CallsBeyondTheFramesKeptStayMatched) {
+  PcProfile p(0x1000);
+  Trace t{p};
+  const size_t depth = PcProfile::kMaxFrames + 10;
+  t.step(0x00, jal(1));
+  for (size_t i = 0; i < depth - 1; ++i) t.step(0x100, jal(1));  // f calls itself
+  t.step(0x100, jalr(0, 1));
+  for (size_t i = 0; i < depth - 1; ++i) t.step(0x104, jalr(0, 1));
+  const uint64_t returned = t.clock;
+  t.step(0x04, 0x13u);
+  t.step(0x08, 0x13u);
+  p.finish(t.clock);
+  EXPECT_EQ(p.entries().at(0x100).calls, depth);
+  EXPECT_EQ(p.entries().at(0x100).inclusive, returned - 1);  // from clock 1 to the caller's next
+}
+
 TEST(FunctionProfile, CallsGoToTheFunctionsHoldingTheirAddresses) {
   PcProfile p(0x1000);
   Trace t{p};

@@ -41,14 +41,22 @@ void PcProfile::close_top(uint64_t clock) {
 void PcProfile::live(uint32_t pc, uint64_t clock) {
   if (return_pending_) {
     return_pending_ = false;
-    if (!stack_.empty()) close_top(clock);  // (a return above the first call has no frame)
+    if (unframed_ > 0) {
+      --unframed_;
+    } else if (!stack_.empty()) {
+      close_top(clock);  // (a return above the first call has no frame)
+    }
   }
   if (call_pending_) {
     call_pending_ = false;
-    stack_.push_back({pc, clock});
-    ++active_[pc];
     ++entries_[pc].calls;
     ++call_sites_[{call_site_, pc}];
+    if (stack_.size() < kMaxFrames) {
+      stack_.push_back({pc, clock});
+      ++active_[pc];
+    } else {
+      ++unframed_;  // calls that never return (a loop of calls) must not take the host's memory
+    }
   }
 }
 

@@ -40,6 +40,9 @@ class PcProfile {
   void live(uint32_t pc, uint64_t clock);
   // Closes the frames still open at the end of the run.
   void finish(uint64_t clock);
+  // Frames deeper than this are not opened (their calls are still counted, their returns matched):
+  // a program that calls and never returns does not grow the harness without bound.
+  static constexpr size_t kMaxFrames = 65536;
 
   struct Entry {
     uint64_t calls = 0;
@@ -62,6 +65,7 @@ class PcProfile {
   std::map<uint32_t, uint32_t> active_;  // frames open by entry: recursion counts the outer one only
   std::map<uint32_t, Entry> entries_;
   std::map<std::pair<uint32_t, uint32_t>, uint64_t> call_sites_;
+  uint64_t unframed_ = 0;  // calls past kMaxFrames not yet returned
   bool call_pending_ = false, return_pending_ = false;
   uint32_t call_site_ = 0;
   void close_top(uint64_t clock);
