@@ -80,8 +80,8 @@ struct Shape {
 };
 Shape shape_of(const Tri& t) {
   Shape sh{range_of(t.x), range_of(t.y), range_of(t.w), range_of(t.u), range_of(t.v), {}, {}};
-  Num dx[3];
-  for (int i = 0; i < 3; ++i) {
+  Num dx[3];  // dx[0] and dy[0] are zero (x - x is exactly 0)
+  for (int i = 1; i < 3; ++i) {
     dx[i] = t.x[i] - t.x[0];
     sh.dy[i] = t.y[i] - t.y[0];
   }
