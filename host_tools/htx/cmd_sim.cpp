@@ -74,7 +74,9 @@ void print_profile(const sim::CpuProfile& p) {
 constexpr size_t kHotspotLines = 20;
 
 void print_hotspots(const std::vector<sim::FunctionCost>& costs, uint64_t total) {
-  auto share = [total](uint64_t n) { return total ? 100.0 * static_cast<double>(n) / static_cast<double>(total) : 0.0; };
+  auto share = [total](uint64_t n) {
+    return total ? 100.0 * static_cast<double>(n) / static_cast<double>(total) : 0.0;
+  };
   std::fprintf(stderr,
                "htx sim: where the CPU's %llu clocks went by function (an instruction's clocks at execute, a "
                "bubble's to the instruction before it; inclusive: from a call to its return):\n"
@@ -83,13 +85,17 @@ void print_hotspots(const std::vector<sim::FunctionCost>& costs, uint64_t total)
   for (size_t i = 0; i < costs.size() && i < kHotspotLines; ++i) {
     const sim::FunctionCost& c = costs[i];
     char inclusive[40] = "             -       -";
-    if (c.calls) std::snprintf(inclusive, sizeof inclusive, "%14llu  %5.1f", static_cast<unsigned long long>(c.inclusive), share(c.inclusive));
+    if (c.calls)
+      std::snprintf(inclusive, sizeof inclusive, "%14llu  %5.1f", static_cast<unsigned long long>(c.inclusive),
+                    share(c.inclusive));
     char calls[24] = "          -";
     if (c.calls) std::snprintf(calls, sizeof calls, "%11llu", static_cast<unsigned long long>(c.calls));
     char cpi[16] = "      -";
-    if (c.instructions) std::snprintf(cpi, sizeof cpi, "%7.2f", static_cast<double>(c.cycles) / static_cast<double>(c.instructions));
-    std::fprintf(stderr, "  %12llu  %5.1f%s %s  %12llu %s  %s\n", static_cast<unsigned long long>(c.cycles), share(c.cycles),
-                 inclusive, calls, static_cast<unsigned long long>(c.instructions), cpi, c.name.c_str());
+    if (c.instructions)
+      std::snprintf(cpi, sizeof cpi, "%7.2f", static_cast<double>(c.cycles) / static_cast<double>(c.instructions));
+    std::fprintf(stderr, "  %12llu  %5.1f%s %s  %12llu %s  %s\n", static_cast<unsigned long long>(c.cycles),
+                 share(c.cycles), inclusive, calls, static_cast<unsigned long long>(c.instructions), cpi,
+                 c.name.c_str());
   }
   if (costs.size() > kHotspotLines) {
     uint64_t rest = 0;

@@ -1,12 +1,12 @@
 // htx::sim::cost_by_function: each address's clocks go to the function holding it, by its symbol's
 // size or, without one, up to the next function; the rest to one "(outside any function)" line.
+#include "htx/sim/function_profile.hpp"
+
 #include <gtest/gtest.h>
 
 #include <map>
 #include <string>
 #include <vector>
-
-#include "htx/sim/function_profile.hpp"
 
 namespace {
 
@@ -34,7 +34,7 @@ TEST(FunctionProfile, ChargesEachAddressToTheFunctionHoldingIt) {
   p.charge(0x2000, false);                            // outside RAM
   const auto costs = cost_by_function(p, fns);
   ASSERT_EQ(costs.size(), 4u);
-  EXPECT_EQ(costs.front().name, "main");  // the most clocks first
+  EXPECT_EQ(costs.front().name, "main");                   // the most clocks first
   EXPECT_EQ(costs.back().name, "(outside any function)");  // the rest last
   auto m = by_name(costs);
   EXPECT_EQ(m["main"].cycles, 6u);
@@ -50,8 +50,8 @@ TEST(FunctionProfile, ChargesEachAddressToTheFunctionHoldingIt) {
 TEST(FunctionProfile, TheSizedSymbolNamesAnAddressAndEmptyFunctionsAreLeftOut) {
   PcProfile p(0x100);
   // A label and a sized function at one address (either order), and a function never run.
-  const std::vector<ElfFunction> fns = {{"label", 0x10, 0}, {"sized", 0x10, 0x10}, {"idle", 0x40, 4},
-                                        {"other", 0x20, 0}};
+  const std::vector<ElfFunction> fns = {
+      {"label", 0x10, 0}, {"sized", 0x10, 0x10}, {"idle", 0x40, 4}, {"other", 0x20, 0}};
   p.charge(0x14, true);
   p.charge(0x24, true);  // in "other" (no size: up to idle at 0x40)
   const auto costs = cost_by_function(p, fns);
@@ -101,8 +101,12 @@ TEST(FunctionProfile, CyclesAddUpAndTiesKeepAddressOrder) {
   EXPECT_EQ(order, (std::vector<std::string>{"f2", "f5", "f1", "f4", "f7"}));
 }
 
-uint32_t jal(uint32_t rd) { return 0x6Fu | (rd << 7); }
-uint32_t jalr(uint32_t rd, uint32_t rs1) { return 0x67u | (rd << 7) | (rs1 << 15); }
+uint32_t jal(uint32_t rd) {
+  return 0x6Fu | (rd << 7);
+}
+uint32_t jalr(uint32_t rd, uint32_t rs1) {
+  return 0x67u | (rd << 7) | (rs1 << 15);
+}
 
 // Feeds a profile as the harness does: each step one clock whose live instruction completes.
 struct Trace {
@@ -122,16 +126,16 @@ TEST(FunctionProfile, CallsAndReturnsByTheLinkRegisterHints) {
   PcProfile p(0x1000);
   Trace t{p};
   auto step = [&t](uint32_t pc, uint32_t word) { t.step(pc, word); };
-  step(0x00, jal(1));         // call f (x1)
-  step(0x100, jalr(5, 6));    // f calls g through x5 (millicode style)
-  step(0x200, jal(0));        // g: a jump (no link), not a call
-  step(0x204, jalr(0, 5));    // g returns through x5
-  step(0x104, jalr(0, 6));    // f: a jump through x6, not a return
-  step(0x108, jal(1));        // f calls f (recursion)
-  step(0x100, jalr(1, 5));    // f: rd x1, rs1 x5 differ: returns (closes the inner f) and calls h
-  step(0x300, jalr(0, 1));    // h returns
-  step(0x10C, jalr(0, 1));    // f returns (the outer f)
-  step(0x004, 0x13u);         // back in the caller: a nop
+  step(0x00, jal(1));       // call f (x1)
+  step(0x100, jalr(5, 6));  // f calls g through x5 (millicode style)
+  step(0x200, jal(0));      // g: a jump (no link), not a call
+  step(0x204, jalr(0, 5));  // g returns through x5
+  step(0x104, jalr(0, 6));  // f: a jump through x6, not a return
+  step(0x108, jal(1));      // f calls f (recursion)
+  step(0x100, jalr(1, 5));  // f: rd x1, rs1 x5 differ: returns (closes the inner f) and calls h
+  step(0x300, jalr(0, 1));  // h returns
+  step(0x10C, jalr(0, 1));  // f returns (the outer f)
+  step(0x004, 0x13u);       // back in the caller: a nop
   p.finish(t.clock);
   const auto& e = p.entries();
   ASSERT_EQ(e.size(), 3u);
@@ -167,10 +171,10 @@ TEST(FunctionProfile, CallsGoToTheFunctionsHoldingTheirAddresses) {
   PcProfile p(0x1000);
   Trace t{p};
   auto step = [&t](uint32_t pc, uint32_t word) { t.step(pc, word); };
-  step(0x10, jal(1));       // main calls leaf
+  step(0x10, jal(1));  // main calls leaf
   step(0x40, 0x13u);
-  step(0x44, jalr(0, 1));   // leaf returns
-  step(0x14, jal(1));       // main calls leaf again
+  step(0x44, jalr(0, 1));  // leaf returns
+  step(0x14, jal(1));      // main calls leaf again
   step(0x40, jalr(0, 1));
   step(0x18, 0x13u);
   p.finish(t.clock);

@@ -13,7 +13,9 @@ PcProfile::PcProfile(uint32_t ram_bytes)
     : ram_bytes_(ram_bytes & ~3u), outside_(ram_bytes_ / 4), cycles_(outside_ + 1), instructions_(outside_ + 1) {}
 
 namespace {
-bool is_link(uint32_t reg) { return reg == 1 || reg == 5; }
+bool is_link(uint32_t reg) {
+  return reg == 1 || reg == 5;
+}
 }  // namespace
 
 void PcProfile::completed(uint32_t pc, uint32_t word) {
@@ -66,8 +68,7 @@ void PcProfile::finish(uint64_t clock) {
 
 std::string demangle(const std::string& name) {
   int status = 0;
-  std::unique_ptr<char, void (*)(void*)> out(abi::__cxa_demangle(name.c_str(), nullptr, nullptr, &status),
-                                             std::free);
+  std::unique_ptr<char, void (*)(void*)> out(abi::__cxa_demangle(name.c_str(), nullptr, nullptr, &status), std::free);
   return status == 0 && out ? std::string(out.get()) : name;
 }
 
@@ -141,7 +142,8 @@ std::vector<FunctionCost> cost_by_function(const PcProfile& profile, std::span<c
   out.reserve(costs.size() + 1);
   for (auto& [addr, c] : costs) out.push_back(std::move(c));
   // The most clocks first, the rest last.
-  std::stable_sort(out.begin(), out.end(), [](const FunctionCost& a, const FunctionCost& b) { return a.cycles > b.cycles; });
+  std::stable_sort(out.begin(), out.end(),
+                   [](const FunctionCost& a, const FunctionCost& b) { return a.cycles > b.cycles; });
   if (rest.cycles != 0 || rest.instructions != 0 || rest.calls != 0) out.push_back(std::move(rest));
   for (FunctionCost& c : out) {
     std::stable_sort(c.callers.begin(), c.callers.end(),

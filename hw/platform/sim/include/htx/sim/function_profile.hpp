@@ -77,22 +77,23 @@ struct FunctionCaller {
 };
 
 struct FunctionCost {
-  std::string name;      // demangled; "(outside any function)" for the rest
-  uint32_t addr = 0;     // where the function starts (0 for the rest)
-  uint64_t cycles = 0;   // its own clocks
+  std::string name;     // demangled; "(outside any function)" for the rest
+  uint32_t addr = 0;    // where the function starts (0 for the rest)
+  uint64_t cycles = 0;  // its own clocks
   uint64_t instructions = 0;
-  uint64_t calls = 0;       // calls that entered it
-  uint64_t inclusive = 0;   // clocks from those calls to their returns (0 when never called)
+  uint64_t calls = 0;                   // calls that entered it
+  uint64_t inclusive = 0;               // clocks from those calls to their returns (0 when never called)
   std::vector<FunctionCaller> callers;  // most calls first
 };
 
 // The profile by function, the most clocks first (ties by address). A function holds [addr, addr +
 // size); one without a size (an assembly label such as _start) holds the addresses up to the next
-// function's start or its section's end, whichever is first. An address inside no function (code without a symbol, or outside RAM) goes to
-// one last line named "(outside any function)", present only when it has clocks. Functions without
-// clocks are left out; of symbols at one address the first with a size names the function; where
-// functions overlap, the one starting last holds the address. The cycles add up to the profile's.
-// Calls go to the function holding the address called, from the function holding the call site.
+// function's start or its section's end, whichever is first. An address inside no function (code
+// without a symbol, or outside RAM) goes to one last line named "(outside any function)", present
+// only when it has clocks. Functions without clocks are left out; of symbols at one address the
+// first with a size names the function; where functions overlap, the one starting last holds the
+// address. The cycles add up to the profile's. Calls go to the function holding the address
+// called, from the function holding the call site.
 std::vector<FunctionCost> cost_by_function(const PcProfile& profile, std::span<const ElfFunction> functions);
 
 // A C++ symbol demangled (the name itself when it is not a mangled C++ name).
