@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <random>
+#include <vector>
 
 #include "htx/fw/vertex_record.h"
 #include "htx/model/geometry.hpp"
@@ -432,6 +435,33 @@ TEST(RenderEncode, RefusesWhatTheRecordCannotHold) {
   EXPECT_EQ(htx::render::encode_triangle_fx(fmt, pv, {}, &rec), htx::fw::kEncodeBadW);
   const htx::fw::RecordFormat bad{14, 16, 40, 13};
   EXPECT_EQ(htx::render::encode_triangle_fx(bad, pv, {}, &rec), htx::fw::kEncodeBadFormat);
+}
+
+// A colour channel is round(c / 2^16) clamped to 0..255 (Q16.16 in, 8 bits out), computed in 32
+// bits: against the 64-bit rounding on the values around every edge (halves, 0, 255, the int32
+// ends).
+TEST(RenderEncode, ColourChannelsRoundAndClampAtEveryEdge) {
+  htx::render::ScreenVert sv[3] = {};
+  htx::render::ClipVert cv[3] = {};
+  for (int k = 0; k < 3; ++k) {
+    sv[k].w = htx::render::kOne;
+    sv[k].inv_w = htx::render::reciprocal(static_cast<uint32_t>(sv[k].w));
+    sv[k].attr = &cv[k];
+  }
+  const htx::render::ScreenVert* pv[3] = {&sv[0], &sv[1], &sv[2]};
+  const htx::fw::RecordFormat fmt{14, 16, 24, 13};
+  std::vector<int32_t> values = {INT32_MIN, INT32_MIN + 1, INT32_MAX - 1, INT32_MAX};
+  for (int64_t base : {int64_t{-1} << 16, int64_t{0}, int64_t{1} << 16, int64_t{255} << 16, int64_t{256} << 16})
+    for (int64_t d : {-32769, -32768, -32767, -1, 0, 1, 32767, 32768, 32769}) values.push_back(static_cast<int32_t>(base + d));
+  for (int32_t c : values) {
+    for (int ch = 0; ch < 4; ++ch) cv[1].c[ch] = ch == 2 ? c : 0;
+    htx::fw::TriangleRecord rec;
+    ASSERT_EQ(htx::render::encode_triangle_fx(fmt, pv, {}, &rec), htx::fw::kEncodeOk);
+    const int64_t r = (int64_t{c} + 32768) >> 16;  // floor(c / 2^16 + 1/2)
+    const uint32_t want = r < 0 ? 0u : (r > 255 ? 255u : static_cast<uint32_t>(r));
+    EXPECT_EQ((rec.v[1].rgba >> 16) & 0xFFu, want) << c;
+    EXPECT_EQ(rec.v[1].rgba & 0xFF00FFFFu, 0u) << c;
+  }
 }
 
 // The whole pipeline on the built-in scenes against prepare_screen_scene + the double encoder.

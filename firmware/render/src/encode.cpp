@@ -6,8 +6,11 @@ namespace htx::render {
 
 namespace {
 
+// round(c / 2^16) clamped to 0..255, in 32 bits: floor((c + 2^15) / 2^16) is c's integer part
+// plus its first fraction bit (no 64-bit sum on the CPU, and no overflow near INT32_MAX).
 uint32_t channel8(int32_t c) {
-  const int64_t r = round_shift(c, kFracBits);
+  static_assert(kFracBits == 16, "the rounding bit below is fraction bit 15");
+  const int32_t r = (c >> 16) + ((c >> 15) & 1);
   return r < 0 ? 0u : (r > 255 ? 255u : static_cast<uint32_t>(r));
 }
 
