@@ -413,15 +413,28 @@ TEST(RenderEncode, FixedEncoderWithinBoundsOfTheDoubleEncoder) {
   EXPECT_GT(compared, 7000);
 }
 
-TEST(RenderEncode, RefusesWhatTheRecordCannotHold) {
+// Three screen vertices at the origin, w = 1, each with its clip vertex (all zero): a triangle
+// the encoder takes, for tests that change one field at a time.
+struct FlatTriangle {
   htx::render::ScreenVert sv[3] = {};
   htx::render::ClipVert cv[3] = {};
-  for (int k = 0; k < 3; ++k) {
-    sv[k].w = htx::render::kOne;
-    sv[k].inv_w = htx::render::reciprocal(static_cast<uint32_t>(sv[k].w));
-    sv[k].attr = &cv[k];
-  }
   const htx::render::ScreenVert* pv[3] = {&sv[0], &sv[1], &sv[2]};
+  FlatTriangle() {
+    for (int k = 0; k < 3; ++k) {
+      sv[k].w = htx::render::kOne;
+      sv[k].inv_w = htx::render::reciprocal(static_cast<uint32_t>(sv[k].w));
+      sv[k].attr = &cv[k];
+    }
+  }
+  FlatTriangle(const FlatTriangle&) = delete;  // pv and attr point into this object
+  FlatTriangle& operator=(const FlatTriangle&) = delete;
+};
+
+TEST(RenderEncode, RefusesWhatTheRecordCannotHold) {
+  FlatTriangle t;
+  auto& sv = t.sv;
+  auto& cv = t.cv;
+  auto& pv = t.pv;
   htx::fw::TriangleRecord rec;
   const htx::fw::RecordFormat fmt{14, 16, 24, 13};
   EXPECT_EQ(htx::render::encode_triangle_fx(fmt, pv, {}, &rec), htx::fw::kEncodeOk);
@@ -441,14 +454,9 @@ TEST(RenderEncode, RefusesWhatTheRecordCannotHold) {
 // bits: against the 64-bit rounding on the values around every edge (halves, 0, 255, the int32
 // ends).
 TEST(RenderEncode, ColourChannelsRoundAndClampAtEveryEdge) {
-  htx::render::ScreenVert sv[3] = {};
-  htx::render::ClipVert cv[3] = {};
-  for (int k = 0; k < 3; ++k) {
-    sv[k].w = htx::render::kOne;
-    sv[k].inv_w = htx::render::reciprocal(static_cast<uint32_t>(sv[k].w));
-    sv[k].attr = &cv[k];
-  }
-  const htx::render::ScreenVert* pv[3] = {&sv[0], &sv[1], &sv[2]};
+  FlatTriangle t;
+  auto& cv = t.cv;
+  auto& pv = t.pv;
   const htx::fw::RecordFormat fmt{14, 16, 24, 13};
   std::vector<int32_t> values = {INT32_MIN, INT32_MIN + 1, INT32_MAX - 1, INT32_MAX};
   for (int64_t base : {int64_t{-1} << 16, int64_t{0}, int64_t{1} << 16, int64_t{255} << 16, int64_t{256} << 16})
