@@ -27,6 +27,22 @@ constexpr double kQ = 1.0 / 65536.0;
 
 double q16(int32_t v) { return v * kQ; }
 
+// round_shift_u32 against the 64-bit rounding: every shift 0..63 on the values around each power
+// of two and its halves, the ends and random words.
+TEST(RenderFixed, UnsignedRoundShiftEqualsTheWideOne) {
+  std::vector<uint32_t> values = {0u, 1u, 2u, 3u, 0x7FFFFFFFu, 0x80000000u, 0x80000001u, 0xFFFFFFFEu, 0xFFFFFFFFu};
+  for (int b = 1; b < 32; ++b)
+    for (int64_t d : {-1, 0, 1}) values.push_back(static_cast<uint32_t>((int64_t{1} << b) + d));
+  std::mt19937 rng(3);
+  for (int i = 0; i < 2000; ++i) values.push_back(static_cast<uint32_t>(rng()));
+  for (uint32_t v : values) {
+    for (int s = 0; s < 64; ++s) {
+      const int64_t want = s == 0 ? int64_t{v} : htx::render::round_shift(static_cast<int64_t>(v), s);
+      ASSERT_EQ(static_cast<int64_t>(htx::render::round_shift_u32(v, s)), want) << v << " >> " << s;
+    }
+  }
+}
+
 TEST(RenderFixed, ReciprocalHas31CorrectBits) {
   std::mt19937 rng(7);
   for (int i = 0; i < 200000; ++i) {

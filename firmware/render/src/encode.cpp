@@ -70,10 +70,9 @@ fw::EncodeStatus encode_triangle_fx(const fw::RecordFormat& f, const ScreenVert*
     r.x = s.x;
     r.y = s.y;
     r.z = static_cast<uint32_t>((static_cast<uint64_t>(s.z) * z_max + 0x80000000ull) >> 32);
-    // q = round(mant * 2^(q_bits - 32 - (lz_max - lz))).
+    // q = round(mant * 2^(q_bits - 32 - (lz_max - lz))); the shift is at least 0 (q_bits <= 32).
     const int shift = 32 - f.q_bits + (lz_max - s.inv_w.lz);
-    int64_t q = shift == 0 ? static_cast<int64_t>(s.inv_w.mant)
-                           : (shift >= 40 ? 0 : round_shift(static_cast<int64_t>(s.inv_w.mant), shift));
+    int64_t q = round_shift_u32(s.inv_w.mant, shift);
     if (q < 1) q = 1;  // a depth ratio beyond 2^q_bits inside one triangle: raised to one unit
     if (q > q_top) q = q_top;
     r.q = static_cast<uint32_t>(q);

@@ -13,6 +13,15 @@ inline constexpr int32_t kOne = int32_t{1} << kFracBits;
 // floor(v / 2^s + 1/2) for s >= 1 (arithmetic shift).
 inline int64_t round_shift(int64_t v, int s) { return (v + (int64_t{1} << (s - 1))) >> s; }
 
+// The same for an unsigned 32-bit v and any s >= 0 (s = 0: v), in 32-bit arithmetic: the shifted
+// value plus the last bit shifted out, which cannot overflow as v + 2^(s - 1) can.
+inline uint32_t round_shift_u32(uint32_t v, int s) {
+  if (s == 0) return v;
+  if (s > 32) return 0;  // v + 2^(s - 1) < 2^s
+  const uint32_t half_bit = (v >> (s - 1)) & 1u;
+  return (s == 32 ? 0u : v >> s) + half_bit;
+}
+
 // v * 2^s, wrapping as the CPU's shift does: a left shift of a negative value is undefined in
 // C++17 (UBSan reports it), a shift of its bits is not.
 inline int32_t shift_left(int32_t v, int s) { return static_cast<int32_t>(static_cast<uint32_t>(v) << s); }
