@@ -10,6 +10,7 @@
 #include <string>
 
 #include "kernels.hpp"
+#include "sim_json.hpp"
 #include "subprocess.hpp"
 
 namespace {
@@ -54,7 +55,7 @@ TEST(SystemBench, RunsToCompletionWithHostChecksums) {
   const size_t total = r.out.find("bench total");
   ASSERT_NE(total, std::string::npos) << r.out;
   const std::string total_line = r.out.substr(total, r.out.find('\n', total) - total);
-  const auto json = nlohmann::json::parse(r.out.substr(r.out.rfind('{')));
+  const auto json = htx::test::last_json_line(r.out);
   EXPECT_EQ(json.at("exit_code"), 0);
   EXPECT_EQ(json.at("reason"), "exit");
   std::printf("%s\nwhole run: %s\n", total_line.c_str(), json.dump().c_str());
@@ -72,7 +73,7 @@ TEST(SystemBench, HotspotsChargeTheLeafKernelsTheirClocks) {
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_NE(r.err.find("by function"), std::string::npos) << r.err;
-  const auto json = nlohmann::json::parse(r.out.substr(r.out.rfind("\n{") + 1));  // the last line
+  const auto json = htx::test::last_json_line(r.out);
   std::map<std::string, uint64_t> cycles;
   uint64_t sum = 0, instructions = 0;
   for (const auto& h : json.at("hotspots")) {

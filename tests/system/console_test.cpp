@@ -20,6 +20,7 @@
 #include "htx/model/image_io.hpp"
 #include "htx/sim/frame_crc.hpp"
 #include "htx/sim/video_capture.hpp"
+#include "sim_json.hpp"
 #include "subprocess.hpp"
 
 namespace {
@@ -323,7 +324,7 @@ TEST(SystemConsole, AScriptWithoutQuitEndsWithItsInput) {
   EXPECT_NE(r.out.find("\"reason\":\"input_ended\""), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("standard input ended"), std::string::npos) << r.err;
   // Ended while waiting, long before the limit: the whole session is a few million clocks.
-  const auto json = nlohmann::json::parse(r.out.substr(r.out.rfind('{')));
+  const auto json = htx::test::last_json_line(r.out);
   EXPECT_LT(json.at("cycles").get<uint64_t>(), 20'000'000ull) << r.out;
 
   // An empty stdin is no script: the console waits on, and the run ends at its cycle limit.

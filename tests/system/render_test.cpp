@@ -35,6 +35,7 @@
 #include "scenes.hpp"
 #include "soc_config.hpp"
 #include "soc_texture.hpp"
+#include "sim_json.hpp"
 #include "subprocess.hpp"
 
 namespace {
@@ -275,7 +276,7 @@ TEST(SystemRender, FirmwareFrameOnTheSocEqualsTheCosimFrame) {
   const auto report = parse_report(r.out);
   ASSERT_EQ(report.size(), 1u) << r.out;
   ASSERT_TRUE(report.count("cube")) << r.out;
-  const auto json = nlohmann::json::parse(r.out.substr(r.out.rfind('{')));
+  const auto json = htx::test::last_json_line(r.out);
   EXPECT_EQ(json.at("reason"), "exit");
 
   const CosimFrame cube = cosim_frame("cube");
@@ -314,8 +315,8 @@ TEST(SystemRender, GatedGpuClockGivesTheSameRunAsAFreeOne) {
   ASSERT_FALSE(free_run.timed_out);
   ASSERT_EQ(gated.status, 0) << gated.out << gated.err;
   ASSERT_EQ(free_run.status, 0) << free_run.out << free_run.err;
-  const auto g = nlohmann::json::parse(gated.out.substr(gated.out.rfind('{')));
-  const auto f = nlohmann::json::parse(free_run.out.substr(free_run.out.rfind('{')));
+  const auto g = htx::test::last_json_line(gated.out);
+  const auto f = htx::test::last_json_line(free_run.out);
   for (const char* key : {"reason", "exit_code", "cycles", "instret", "frame_crc32"})
     EXPECT_EQ(g.at(key), f.at(key)) << key;
   const auto gr = parse_report(gated.out);

@@ -13,11 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "sim_json.hpp"
 #include "subprocess.hpp"
 
 namespace {
 
 using namespace std::chrono_literals;
+using htx::test::last_json_line;
 
 std::string temp_path(const std::string& name) {
   return ::testing::TempDir() + "htx_sim_cli_" + name;
@@ -30,7 +32,7 @@ TEST(SystemSimCli, CycleLimitEndsTheRunWithAClearMessage) {
   ASSERT_FALSE(r.timed_out);
   EXPECT_EQ(r.status, 124);
   EXPECT_NE(r.err.find("cycle limit of 20000 cycles reached"), std::string::npos) << r.err;
-  const auto json = nlohmann::json::parse(r.out.substr(r.out.rfind('{')));
+  const auto json = last_json_line(r.out);
   EXPECT_EQ(json.at("reason"), "cycle_limit");
   EXPECT_EQ(json.at("cycles"), 20000);
   EXPECT_EQ(json.at("exit_code"), 124);
@@ -62,7 +64,7 @@ TEST(SystemSimCli, ToHostStatusAndSignature) {
       {HTX_BIN, "sim", "--elf", HTX_SIM_TEST_ELF, "--signature", sig, "--json", "--max-cycles", "100000"}, 60s);
   ASSERT_FALSE(r.timed_out);
   EXPECT_EQ(r.status, 3) << r.err;  // the program writes tohost = (3 << 1) | 1
-  const auto json = nlohmann::json::parse(r.out.substr(r.out.rfind('{')));
+  const auto json = last_json_line(r.out);
   EXPECT_EQ(json.at("reason"), "tohost");
   EXPECT_GT(json.at("instret").get<uint64_t>(), 5u);
   EXPECT_GT(json.at("cpi").get<double>(), 0.5);
@@ -83,12 +85,6 @@ TEST(SystemSimCli, SameResultWithRandomStalls) {
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_EQ(text.str(), "deadbeef\n00000000\n12345678\nfffffff9\n");
-}
-
-// The last line of stdout, the JSON object (it holds the nested "profile" object).
-nlohmann::json last_json_line(const std::string& out) {
-  const size_t line = out.rfind("\n{");
-  return nlohmann::json::parse(out.substr(line == std::string::npos ? out.find('{') : line + 1));
 }
 
 // The profile of sim_profile.S (LOOPS iterations) as a cause -> clocks map, checking that the

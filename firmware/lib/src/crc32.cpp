@@ -26,7 +26,9 @@ uint32_t crc32_update_byte(uint32_t reg, uint8_t byte) { return (reg >> 8) ^ kTa
 uint32_t crc32_update(uint32_t reg, const uint8_t* data, size_t size) {
   if (size == 0) return reg;
   // Two bytes a turn where it can, and the branch at the bottom: -Os otherwise tests at the top
-  // and jumps back, a predicted jump's bubble a byte.
+  // and jumps back, a predicted jump's bubble a byte. The step is written out, as in
+  // crc32_update_byte: through an inlined helper -Os orders it with one more load-use stall
+  // (render.elf's checksums 1.08 M clocks against 1.04 M).
   const uint8_t* const end = data + size;
   if (size & 1u) reg = (reg >> 8) ^ kTable.entry[(reg ^ *data++) & 0xFFu];
   while (data != end) {

@@ -129,10 +129,10 @@ ElfImage parse_elf(std::span<const uint8_t> data, const std::string& what) {
       // _start), not absolute symbols (picolibc aliases unused stdio functions to 0 that way) nor
       // the RISC-V mapping symbols ($x..., $d: where code and data begin).
       if (shndx >= kShnLoReserve || (type != kSttFunc && type != kSttNoType) || begin[0] == '$') continue;
-      const uint64_t target = shoff + static_cast<uint64_t>(shndx) * shentsize;
-      if (shndx >= shnum || !(r.u32(target + 8) & kShfExecInstr)) continue;
+      const uint64_t section = shoff + static_cast<uint64_t>(shndx) * shentsize;
+      if (shndx >= shnum || !(r.u32(section + 8) & kShfExecInstr)) continue;
       img.functions.push_back(
-          {std::string(begin, len), value, size, uint64_t{r.u32(target + 12)} + r.u32(target + 20)});
+          {std::string(begin, len), value, size, uint64_t{r.u32(section + 12)} + r.u32(section + 20)});
     }
   }
   return img;

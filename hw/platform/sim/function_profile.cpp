@@ -73,26 +73,25 @@ std::string demangle(const std::string& name) {
 }
 
 std::vector<FunctionCost> cost_by_function(const PcProfile& profile, std::span<const ElfFunction> functions) {
-  // Start address -> the function starting there (the first symbol wins over its aliases).
-  std::map<uint32_t, const ElfFunction*> by_start;
+  // Start address -> the function starting there and where it ends. Of symbols at one address, the
+  // first with a size names it (a label beside a C function).
+  struct Extent {
+    const ElfFunction* f;
+    uint64_t end;
+  };
+  std::map<uint32_t, Extent> by_start;
   for (const ElfFunction& f : functions) {
-    // Of symbols at one address, the first with a size names it (a label beside a C function).
-    auto [it, added] = by_start.emplace(f.addr, &f);
-    if (!added && it->second->size == 0 && f.size != 0) it->second = &f;
+    auto [it, added] = by_start.try_emplace(f.addr, Extent{&f, 0});
+    if (!added && it->second.f->size == 0 && f.size != 0) it->second.f = &f;
   }
-  // Where each function ends: its size, or for a symbol without one (an assembly label such as
-  // _start) the next function's start or its section's end, whichever comes first.
-  std::map<uint32_t, uint64_t> end_of;
+  // A function ends after its size, or, for a symbol without one (an assembly label such as
+  // _start), at the next function's start or its section's end, whichever comes first.
   for (auto it = by_start.begin(); it != by_start.end(); ++it) {
-    const ElfFunction& f = *it->second;
-    if (f.size != 0) {
-      end_of[f.addr] = uint64_t{f.addr} + f.size;
-      continue;
-    }
+    const ElfFunction& f = *it->second.f;
     const auto next = std::next(it);
     uint64_t end = next != by_start.end() ? next->first : uint64_t{f.addr};
     if (f.section_end > f.addr && (next == by_start.end() || f.section_end < end)) end = f.section_end;
-    end_of[f.addr] = end;
+    it->second.end = f.size != 0 ? uint64_t{f.addr} + f.size : end;
   }
   std::map<uint32_t, FunctionCost> costs;  // by start address
   FunctionCost rest;
@@ -102,8 +101,8 @@ std::vector<FunctionCost> cost_by_function(const PcProfile& profile, std::span<c
     if (pc >= profile.ram_bytes()) return nullptr;
     const auto it = by_start.upper_bound(pc);  // the function starting last at or before pc
     if (it == by_start.begin()) return nullptr;
-    const ElfFunction* candidate = std::prev(it)->second;
-    return uint64_t{pc} < end_of[candidate->addr] ? candidate : nullptr;
+    const Extent& candidate = std::prev(it)->second;
+    return uint64_t{pc} < candidate.end ? candidate.f : nullptr;
   };
   auto line_of = [&](const ElfFunction* f) -> FunctionCost& {
     if (!f) return rest;

@@ -32,8 +32,8 @@ class PcProfile {
 
   // Calls and returns, by the RISC-V return-address-stack hints (x1 and x5 are link registers): a
   // JAL or JALR that writes a link register calls, a JALR that jumps through one and does not write
-  // one returns. `completed` reports an instruction (its word) completing at `pc` in `clock`; `live`
-  // reports the instruction execute holds in a clock, so that a call's frame opens at the callee's
+  // one returns. `completed` reports an instruction (its word) completing at `pc`; `live` reports
+  // the instruction execute holds in a clock, so that a call's frame opens at the callee's
   // first instruction and a return's closes at the caller's next one (the bubbles between a return
   // and that instruction are the callee's, as its clocks charge them to the return).
   void completed(uint32_t pc, uint32_t word);
