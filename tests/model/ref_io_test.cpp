@@ -80,6 +80,36 @@ TEST(RefIo, ObjErrorsAreClear) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
   }
+  // Numbers tinyobjloader would read as 0 without a word: each is refused, naming its line.
+  const struct {
+    const char* line;
+    const char* message;
+  } corrupt[] = {
+      {"v nan 1 0", "line 2: 'nan' is not a finite decimal"},
+      {"v 1 abc 0", "line 2: 'abc' is not a finite decimal"},
+      {"v 0x1p3 1 0", "line 2: '0x1p3' is not a finite decimal"},
+      {"v 1e999 1 0", "line 2: '1e999' is not a finite decimal"},
+      {"v 1. 2e 0", "line 2: '2e' is not a finite decimal"},
+      {"v 1 2", "line 2: 'v' with 2 numbers"},
+      {"vt 0.5 inf", "line 2: 'inf' is not a finite decimal"},
+      {"vt", "line 2: 'vt' with 0 numbers"},
+  };
+  for (const auto& c : corrupt) {
+    std::ofstream(dir / "corrupt.obj") << "v 0 0 0\n" << c.line << "\nv 0 1 0\nvt 0 0\nf 1 2 3\n";
+    try {
+      load_obj_scene((dir / "corrupt.obj").string());
+      ADD_FAILURE() << c.line << " must be refused";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos) << e.what();
+    }
+  }
+  // What OBJ files do write is taken: signs, a point at either end, exponents, w, colours, comments.
+  std::ofstream(dir / "forms.obj") << "v +1. -.5 0e0 1\nv 1.5E+2 0 -1e-3 1 0.5 0\n  v 0 1 0 # a comment\r\n"
+                                   << "vt .25\nvt 0 1 0\nf 1/1 2/2 3/2\n";
+  const Scene forms = load_obj_scene((dir / "forms.obj").string());
+  ASSERT_EQ(forms.meshes.size(), 1u);
+  EXPECT_EQ(forms.meshes[0].vertices[1].pos.x, 150.0);
+  EXPECT_EQ(forms.meshes[0].vertices[0].s, 0.25);
   std::filesystem::remove_all(dir);
 }
 

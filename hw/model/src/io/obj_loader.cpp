@@ -3,10 +3,14 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -21,6 +25,54 @@ unsigned log2_exact(int n) {
   unsigned l = 0;
   while ((1 << l) < n) ++l;
   return (1 << l) == n ? l : 0;
+}
+
+// A decimal number as OBJ writes them: [+-] digits [. digits] [(e|E) [+-] digits], with a digit
+// before or after the point. tinyobjloader reads anything else (nan, inf, hex, a word) as 0
+// without a warning, so a corrupt coordinate would silently move a vertex to the origin.
+bool is_decimal(const std::string& tok) {
+  size_t i = 0;
+  if (i < tok.size() && (tok[i] == '+' || tok[i] == '-')) ++i;
+  size_t digits = 0;
+  while (i < tok.size() && std::isdigit(static_cast<unsigned char>(tok[i]))) ++i, ++digits;
+  if (i < tok.size() && tok[i] == '.') {
+    ++i;
+    while (i < tok.size() && std::isdigit(static_cast<unsigned char>(tok[i]))) ++i, ++digits;
+  }
+  if (digits == 0) return false;
+  if (i < tok.size() && (tok[i] == 'e' || tok[i] == 'E')) {
+    ++i;
+    if (i < tok.size() && (tok[i] == '+' || tok[i] == '-')) ++i;
+    size_t exp_digits = 0;
+    while (i < tok.size() && std::isdigit(static_cast<unsigned char>(tok[i]))) ++i, ++exp_digits;
+    if (exp_digits == 0) return false;
+  }
+  return i == tok.size();
+}
+
+// Every number of the vertex (v: x y z, optionally w or r g b) and texture-coordinate (vt: u,
+// optionally v and w) lines is a finite decimal, and each line has a count the format allows:
+// otherwise a clear error naming the line, instead of tinyobjloader's silent 0.
+void check_obj_numbers(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  for (size_t number = 1; std::getline(in, line); ++number) {
+    std::istringstream words(line.substr(0, line.find('#')));
+    std::string keyword, tok;
+    words >> keyword;
+    if (keyword != "v" && keyword != "vt") continue;
+    size_t count = 0;
+    while (words >> tok) {
+      ++count;
+      if (!is_decimal(tok) || !std::isfinite(std::strtod(tok.c_str(), nullptr)))
+        throw std::runtime_error("OBJ '" + path + "' line " + std::to_string(number) + ": '" + tok +
+                                 "' is not a finite decimal number");
+    }
+    const bool ok = keyword == "v" ? (count == 3 || count == 4 || count == 6 || count == 7) : (count >= 1 && count <= 3);
+    if (!ok)
+      throw std::runtime_error("OBJ '" + path + "' line " + std::to_string(number) + ": '" + keyword + "' with " +
+                               std::to_string(count) + " numbers (v takes 3, 4, 6 or 7; vt 1 to 3)");
+  }
 }
 
 }  // namespace
@@ -46,6 +98,7 @@ Scene load_obj_scene(const std::string& path) {
   tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(path, config) || !reader.Valid())
     throw std::runtime_error("cannot load OBJ '" + path + "': " + reader.Error());
+  check_obj_numbers(path);
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   const auto& materials = reader.GetMaterials();
 
