@@ -103,6 +103,29 @@ TEST(RefIo, ObjErrorsAreClear) {
       EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos) << e.what();
     }
   }
+  // What tinyobjloader only warns of (or not at all) and would draw other than written.
+  std::ofstream(dir / "grey.mtl") << "newmtl grey\nKd 0.5\n";
+  std::ofstream(dir / "nan.mtl") << "newmtl m\nKd 1 nan 1\n";
+  const struct {
+    const char* text;
+    const char* message;
+  } lost[] = {
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n", "texture coordinate index out of range"},
+      {"mtllib none.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: material library 'none.mtl' not found"},
+      {"mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl blue\nf 1 2 3\n", "usemtl 'blue' is in none"},
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n", "usemtl 'red' is in none"},
+      {"mtllib grey.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "grey.mtl' line 2: 'Kd' with 1 numbers"},
+      {"mtllib nan.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "nan.mtl' line 2: 'nan' is not a finite decimal"},
+  };
+  for (const auto& c : lost) {
+    std::ofstream(dir / "lost.obj") << c.text;
+    try {
+      load_obj_scene((dir / "lost.obj").string());
+      ADD_FAILURE() << c.text << " must be refused";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos) << e.what();
+    }
+  }
   // What OBJ files do write is taken: signs, a point at either end, exponents, w, colours, comments.
   std::ofstream(dir / "forms.obj") << "v +1. -.5 0e0 1\nv 1.5E+2 0 -1e-3 1 0.5 0\n  v 0 1 0 # a comment\r\n"
                                    << "vt .25\nvt 0 1 0\nf 1/1 2/2 3/2\n";

@@ -10,9 +10,11 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "htx/model/image_io.hpp"
 #include "htx/model/texture.hpp"
@@ -50,29 +52,63 @@ bool is_decimal(const std::string& tok) {
   return i == tok.size();
 }
 
-// Every number of the vertex (v: x y z, optionally w or r g b) and texture-coordinate (vt: u,
-// optionally v and w) lines is a finite decimal, and each line has a count the format allows:
-// otherwise a clear error naming the line, instead of tinyobjloader's silent 0.
-void check_obj_numbers(const std::string& path) {
-  std::ifstream in(path);
+// Calls visit(line number, keyword, the words after it) for each line of `file` (comments cut).
+template <class Visit>
+void for_each_line(const std::filesystem::path& file, Visit visit) {
+  std::ifstream in(file);
   std::string line;
   for (size_t number = 1; std::getline(in, line); ++number) {
-    std::istringstream words(line.substr(0, line.find('#')));
-    std::string keyword, tok;
-    words >> keyword;
-    if (keyword != "v" && keyword != "vt") continue;
-    size_t count = 0;
-    while (words >> tok) {
-      ++count;
-      if (!is_decimal(tok) || !std::isfinite(std::strtod(tok.c_str(), nullptr)))
-        throw std::runtime_error("OBJ '" + path + "' line " + std::to_string(number) + ": '" + tok +
-                                 "' is not a finite decimal number");
-    }
-    const bool ok = keyword == "v" ? (count == 3 || count == 4 || count == 6 || count == 7) : (count >= 1 && count <= 3);
-    if (!ok)
-      throw std::runtime_error("OBJ '" + path + "' line " + std::to_string(number) + ": '" + keyword + "' with " +
-                               std::to_string(count) + " numbers (v takes 3, 4, 6 or 7; vt 1 to 3)");
+    std::istringstream stream(line.substr(0, line.find('#')));
+    std::string keyword, word;
+    std::vector<std::string> words;
+    stream >> keyword;
+    while (stream >> word) words.push_back(word);
+    visit(number, keyword, words);
   }
+}
+
+// Every word a finite decimal number and their count one the format allows: otherwise a clear
+// error naming the file and line, instead of tinyobjloader's silent 0 (a Kd of one number, which
+// the MTL format reads as grey, it reads as red: three are required).
+void check_decimals(const std::string& file, size_t line, const std::string& keyword,
+                    const std::vector<std::string>& words, bool count_ok, const char* counts) {
+  const std::string where = file + " line " + std::to_string(line) + ": ";
+  for (const std::string& w : words)
+    if (!is_decimal(w) || !std::isfinite(std::strtod(w.c_str(), nullptr)))
+      throw std::runtime_error(where + "'" + w + "' is not a finite decimal number");
+  if (!count_ok)
+    throw std::runtime_error(where + "'" + keyword + "' with " + std::to_string(words.size()) + " numbers (" +
+                             counts + ")");
+}
+
+// What tinyobjloader lets pass with at most a warning, checked before it reads the file: the
+// numbers of v and vt lines and of the material libraries' Kd lines, and that each material
+// library exists. Returns the material names the OBJ's usemtl lines ask for.
+std::set<std::string> check_obj_text(const std::string& path) {
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  std::set<std::string> used;
+  for_each_line(path, [&](size_t n, const std::string& key, const std::vector<std::string>& w) {
+    const size_t c = w.size();
+    if (key == "v") {
+      check_decimals("OBJ '" + path + "'", n, key, w, c == 3 || c == 4 || c == 6 || c == 7, "v takes 3, 4, 6 or 7");
+    } else if (key == "vt") {
+      check_decimals("OBJ '" + path + "'", n, key, w, c >= 1 && c <= 3, "vt takes 1 to 3");
+    } else if (key == "usemtl" && c > 0) {
+      used.insert(w[0]);
+    } else if (key == "mtllib") {
+      for (const std::string& lib : w) {
+        const std::filesystem::path file = dir / lib;
+        if (!std::filesystem::is_regular_file(file))
+          throw std::runtime_error("OBJ '" + path + "' line " + std::to_string(n) + ": material library '" + lib +
+                                   "' not found");
+        for_each_line(file, [&](size_t m, const std::string& mkey, const std::vector<std::string>& mw) {
+          if (mkey == "Kd")
+            check_decimals("MTL '" + file.string() + "'", m, mkey, mw, mw.size() == 3, "Kd takes 3");
+        });
+      }
+    }
+  });
+  return used;
 }
 
 }  // namespace
@@ -98,9 +134,14 @@ Scene load_obj_scene(const std::string& path) {
   tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(path, config) || !reader.Valid())
     throw std::runtime_error("cannot load OBJ '" + path + "': " + reader.Error());
-  check_obj_numbers(path);
+  const std::set<std::string> used_materials = check_obj_text(path);
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   const auto& materials = reader.GetMaterials();
+  for (const std::string& name : used_materials) {
+    bool found = false;
+    for (const auto& m : materials) found = found || m.name == name;
+    if (!found) throw std::runtime_error("OBJ '" + path + "': usemtl '" + name + "' is in none of its material libraries");
+  }
 
   Scene scene;
   scene.name = std::filesystem::path(path).filename().string();
@@ -144,7 +185,9 @@ Scene load_obj_scene(const std::string& path) {
         const auto vi = static_cast<size_t>(ix.vertex_index);
         Vertex v;
         v.pos = {attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1], attrib.vertices[3 * vi + 2]};
-        if (ix.texcoord_index >= 0 && static_cast<size_t>(ix.texcoord_index) * 2 + 1 < attrib.texcoords.size()) {
+        if (ix.texcoord_index >= 0) {
+          if (static_cast<size_t>(ix.texcoord_index) * 2 + 1 >= attrib.texcoords.size())
+            throw std::runtime_error("OBJ '" + path + "': texture coordinate index out of range");
           v.s = attrib.texcoords[2 * static_cast<size_t>(ix.texcoord_index)];
           v.t = attrib.texcoords[2 * static_cast<size_t>(ix.texcoord_index) + 1];
         }

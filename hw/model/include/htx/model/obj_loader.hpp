@@ -14,7 +14,10 @@
 
 namespace htx {
 
-// Throws std::runtime_error naming the file on any load or validation failure.
+// Throws std::runtime_error naming the file on any load or validation failure, including what
+// tinyobjloader passes silently or with a warning (docs/scenes.md): a v, vt or Kd number that is not
+// a finite decimal or a count the format does not allow, a missing material library, a usemtl
+// naming no material, a texture-coordinate index out of range.
 Scene load_obj_scene(const std::string& path);
 
 // An image as a texture the way an OBJ's map_Kd is read (sides powers of two in 8..256, texel
