@@ -162,6 +162,15 @@ int run_sim(const SimArgs& a) {
     throw std::runtime_error("--frame-size " + a.frame_size + " exceeds the framebuffer of " +
                              std::to_string(sim::SocSim::kFbPixels) + " pixels");
   const sim::ElfImage elf = sim::load_elf(a.elf);
+  // What can only fail after the run is checked before it, so a long run is not lost to a typo.
+  if (!a.signature.empty() && (!elf.symbol("begin_signature") || !elf.symbol("end_signature")))
+    throw std::runtime_error(a.signature + ": the ELF has no begin_signature/end_signature symbols");
+  for (const std::string* out : {&a.signature, &a.screen, &a.frame, &a.trace}) {
+    if (out->empty()) continue;
+    const std::filesystem::path dir = std::filesystem::path(*out).parent_path();
+    if (!dir.empty() && !std::filesystem::is_directory(dir))
+      throw std::runtime_error(*out + ": no directory " + dir.string() + " to write it in");
+  }
   sim::SimOptions opt;
   opt.max_cycles = a.max_cycles;
   opt.stall_seed = a.stall_seed;
@@ -203,10 +212,13 @@ int run_sim(const SimArgs& a) {
     std::cout << std::endl;  // ends the line of the prompt the firmware was waiting at
     std::cerr << "htx sim: standard input ended and the firmware waits for more input: stopped, status 0\n";
   }
+  // The firmware's exit code only when it exited (a cycle limit or ended input has none).
+  const bool exited = r.reason == sim::StopReason::Exit || r.reason == sim::StopReason::ToHost;
+  char exit_code[32] = "";
+  if (exited) std::snprintf(exit_code, sizeof exit_code, ", exit code %d", r.exit_code);
   char summary[256];
-  std::snprintf(summary, sizeof summary,
-                "htx sim: %s, exit code %d: %llu cycles, %llu instructions, CPI %.3f (%.2f Mcycles/s)\n",
-                sim::to_string(r.reason), r.exit_code, static_cast<unsigned long long>(r.cycles),
+  std::snprintf(summary, sizeof summary, "htx sim: %s%s: %llu cycles, %llu instructions, CPI %.3f (%.2f Mcycles/s)\n",
+                sim::to_string(r.reason), exit_code, static_cast<unsigned long long>(r.cycles),
                 static_cast<unsigned long long>(r.instret), cpi, rate / 1e6);
   std::cerr << summary;
   if (a.profile) print_profile(r.profile);

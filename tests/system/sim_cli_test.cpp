@@ -36,6 +36,8 @@ TEST(SystemSimCli, CycleLimitEndsTheRunWithAClearMessage) {
   EXPECT_EQ(json.at("reason"), "cycle_limit");
   EXPECT_EQ(json.at("cycles"), 20000);
   EXPECT_EQ(json.at("exit_code"), 124);
+  // The summary gives no exit code: the firmware never exited.
+  EXPECT_NE(r.err.find("htx sim: cycle_limit: 20000 cycles"), std::string::npos) << r.err;
 }
 
 TEST(SystemSimCli, RefusesAFileThatIsNotAnElf) {
@@ -55,6 +57,29 @@ TEST(SystemSimCli, RefusesATruncatedElf) {
   const auto r = htx::test::run_program({HTX_BIN, "sim", "--elf", cut}, 30s);
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("outside the file"), std::string::npos) << r.err;
+}
+
+TEST(SystemSimCli, OutputsThatCannotBeWrittenAreRefusedBeforeTheRun) {
+  // echo.elf has no signature symbols and would run to the cycle limit: both refusals come first.
+  const std::string dir = temp_path("no_such_dir");
+  const struct {
+    std::vector<std::string> option;
+    std::string message;
+  } cases[] = {
+      {{"--signature", temp_path("sig.txt")}, "the ELF has no begin_signature/end_signature symbols"},
+      {{"--frame", dir + "/frame.png"}, "no directory " + dir + " to write it in"},
+      {{"--screen", dir + "/screen.png"}, "no directory " + dir + " to write it in"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args = {HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/echo.elf", "--max-cycles", "2000000"};
+    args.insert(args.end(), c.option.begin(), c.option.end());
+    const auto r = htx::test::run_program(args, 60s);
+    ASSERT_FALSE(r.timed_out);
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("cycle limit"), std::string::npos) << "refused only after the run: " << r.err;
+    EXPECT_EQ(r.out.find("hypertex echo"), std::string::npos) << "the firmware ran: " << r.out;
+  }
 }
 
 TEST(SystemSimCli, ToHostStatusAndSignature) {
