@@ -195,11 +195,12 @@ TEST(SystemConsole, ScreenShowsTheRenderedFrameScaled) {
       << r.out;
   EXPECT_NE(r.out.find("video 640x480 60 Hz showing 160x120 x4: off"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("video 640x480 60 Hz showing 160x120 x4: on"), std::string::npos) << r.out;
-  // Double buffering: the cube is drawn into page 1 while page 0 is shown, then shown from the
-  // next frame's start (`info` prints the page shown); the frame `--frame` saves is page 1's.
+  // Triple buffering: the cube is drawn into page 1 (neither shown nor waiting to be) while page
+  // 0 is shown, then shown from the next frame's start (`info` prints the page shown); the frame
+  // `--frame` saves is page 1's.
   EXPECT_NE(r.out.find("x4: off, frame "), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find(", page 0 of 2"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find(", page 1 of 2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(", page 0 of 3"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(", page 1 of 3"), std::string::npos) << r.out;
   ASSERT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
   const htx::Image s = htx::load_image(screen);
   const htx::Image f = htx::load_image(frame);

@@ -164,17 +164,17 @@ TEST(HalFramebuffer, ReadRowTakesEveryStartAndLength) {
   }
 }
 
-// With two colour pages the reads are of the page the raster unit draws into: page 1 starts at
-// pixel FB_MEM.PIXELS of the colour window.
+// With several colour pages the reads are of the page the raster unit draws into: page p starts
+// at pixel p x FB_MEM.PIXELS of the colour window.
 TEST(HalFramebuffer, ReadsThePageTheRasterDrawsInto) {
   FakeBus bus;
   ScopedBus attach(bus);
-  bus.poke(HTX_RASTER_BASE + RASTER_FB_MEM_Offset, 10u | (2u << RASTER_FB_MEM_PAGES_Pos));
-  EXPECT_EQ(htx::hal::fb_pages(), 2u);
+  bus.poke(HTX_RASTER_BASE + RASTER_FB_MEM_Offset, 10u | (3u << RASTER_FB_MEM_PAGES_Pos));
+  EXPECT_EQ(htx::hal::fb_pages(), 3u);
   EXPECT_EQ(htx::hal::fb_page_pixels(), 10u);
-  for (uint32_t w = 0; w < 10; ++w) bus.poke(htx::hal::kFbColorBase + 4 * w, ((2 * w + 1) << 16) | (2 * w));
+  for (uint32_t w = 0; w < 15; ++w) bus.poke(htx::hal::kFbColorBase + 4 * w, ((2 * w + 1) << 16) | (2 * w));
   EXPECT_EQ(htx::hal::fb_read_pixel(4, 1, 1), 5);  // page 0
-  bus.poke(HTX_RASTER_BASE + RASTER_FB_PAGE_Offset, RASTER_FB_PAGE_DRAW_Msk);
+  bus.poke(HTX_RASTER_BASE + RASTER_FB_PAGE_Offset, 1u << RASTER_FB_PAGE_DRAW_Pos);
   EXPECT_EQ(htx::hal::fb_draw_page(), 1u);
   EXPECT_EQ(htx::hal::fb_read_pixel(4, 1, 1), 15);  // pixel 5 of page 1: window pixel 15
   uint16_t row[3] = {};
@@ -182,24 +182,34 @@ TEST(HalFramebuffer, ReadsThePageTheRasterDrawsInto) {
   EXPECT_EQ(row[0], 11);
   EXPECT_EQ(row[1], 12);
   EXPECT_EQ(row[2], 13);
+  bus.poke(HTX_RASTER_BASE + RASTER_FB_PAGE_Offset, 2u << RASTER_FB_PAGE_DRAW_Pos);
+  EXPECT_EQ(htx::hal::fb_draw_page(), 2u);
+  EXPECT_EQ(htx::hal::fb_read_pixel(4, 1, 1), 25);  // pixel 5 of page 2: window pixel 25
+  htx::hal::fb_read_row(4, 2, 0, 2, row);  // page 2's pixels 8, 9: window pixels 28, 29
+  EXPECT_EQ(row[0], 28);
+  EXPECT_EQ(row[1], 29);
   htx::hal::fb_set_draw_page(0);
-  EXPECT_EQ(bus.writes_to(HTX_RASTER_BASE + RASTER_FB_PAGE_Offset), (std::vector<uint32_t>{0u}));
+  htx::hal::fb_set_draw_page(2);
+  EXPECT_EQ(bus.writes_to(HTX_RASTER_BASE + RASTER_FB_PAGE_Offset),
+            (std::vector<uint32_t>{0u, 2u << RASTER_FB_PAGE_DRAW_Pos}));
 }
 
 // The video's page is taken with its enable: each keeps the other when written.
 TEST(HalVideo, PageAndEnableKeepEachOther) {
   FakeBus bus;
   ScopedBus attach(bus);
-  bus.poke(HTX_VIDEO_BASE + VIDEO_CTRL_Offset, VIDEO_CTRL_PAGE_Msk);
+  const uint32_t page2 = 2u << VIDEO_CTRL_PAGE_Pos;
+  bus.poke(HTX_VIDEO_BASE + VIDEO_CTRL_Offset, page2);
   htx::hal::video_enable(true);
+  EXPECT_EQ(htx::hal::video_requested_page(), 2u);
   bus.poke(HTX_VIDEO_BASE + VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk);
-  htx::hal::video_show_page(1);
+  htx::hal::video_show_page(2);
   EXPECT_EQ(bus.writes_to(HTX_VIDEO_BASE + VIDEO_CTRL_Offset),
-            (std::vector<uint32_t>{VIDEO_CTRL_ENABLE_Msk | VIDEO_CTRL_PAGE_Msk, VIDEO_CTRL_ENABLE_Msk | VIDEO_CTRL_PAGE_Msk}));
-  bus.poke(HTX_VIDEO_BASE + VIDEO_STATUS_Offset, VIDEO_STATUS_PAGE_Msk);
-  EXPECT_EQ(htx::hal::video_shown_page(), 1u);
-  bus.poke(HTX_VIDEO_BASE + VIDEO_MODE_Offset, 2u << VIDEO_MODE_PAGES_Pos);
-  EXPECT_EQ(htx::hal::video_pages(), 2u);
+            (std::vector<uint32_t>{VIDEO_CTRL_ENABLE_Msk | page2, VIDEO_CTRL_ENABLE_Msk | page2}));
+  bus.poke(HTX_VIDEO_BASE + VIDEO_STATUS_Offset, 2u << VIDEO_STATUS_PAGE_Pos);
+  EXPECT_EQ(htx::hal::video_shown_page(), 2u);
+  bus.poke(HTX_VIDEO_BASE + VIDEO_MODE_Offset, 3u << VIDEO_MODE_PAGES_Pos);
+  EXPECT_EQ(htx::hal::video_pages(), 3u);
 }
 
 TEST(HalSystemDevices, TimerFollowsTheClockUartCollectsBytes) {

@@ -215,7 +215,7 @@ bool draw_and_show(const render_app::SceneData& scene, bool checksum = true) {
     error("render failed: ", g_last.error);
     return false;
   }
-  present_frame_page();
+  present_frame_page(kFlipPolls);
   return true;
 }
 

@@ -66,7 +66,7 @@ struct SocSim::Impl {
         ->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__g_gpu__DOT__u_gpu__DOT__u_subsys__DOT__u_fb__DOT__u_color__DOT__g_behav__DOT__mem_q;
   }
 
-  bool fb_draw_page() {
+  uint32_t fb_draw_page() {
     return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__g_gpu__DOT__u_gpu__DOT__u_subsys__DOT__u_raster__DOT__draw_page_q;
   }
 
@@ -244,7 +244,7 @@ std::vector<uint16_t> SocSim::read_frame(uint32_t width, uint32_t height) const 
   }
   auto& mem = impl_->fb_color();
   // The colour page the raster unit draws into (FB_PAGE.DRAW), which holds the frame drawn last.
-  const size_t first = impl_->fb_draw_page() ? size_t{kFbPixels} : 0;
+  const size_t first = size_t{impl_->fb_draw_page()} * kFbPixels;
   std::vector<uint16_t> out(size_t{width} * height);
   for (size_t i = 0; i < out.size(); ++i)
     out[i] = static_cast<uint16_t>(mem[(first + i) / 2] >> (16 * ((first + i) % 2)));

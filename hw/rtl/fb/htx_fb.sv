@@ -8,16 +8,17 @@
 // and may be single-ported; Spram = 1 builds them from the UP5K's SPRAM (htx_fb_ram; ZBits = 16).
 // A third user, the video scan-out (htx_video), reads colour words through vr_*: it waits only for
 // the raster's colour writes (SinglePort) and goes before the bus, whose colour reads then wait.
-// ColorPages = 2 (double buffering, docs/video.md): the colour memory holds two pages of FbPixels,
-// page 1 from word FbPixels / 2 of the window; the raster's colour writes go to page c_page_i (its
-// FB_PAGE.DRAW), the video and the bus address both pages directly. Depth has one page.
+// ColorPages = 2 or 3 (double or triple buffering, docs/video.md): the colour memory holds that many
+// pages of FbPixels, page p from word p * FbPixels / 2 of the window; the raster's colour writes go
+// to page c_page_i (its FB_PAGE.DRAW, always below ColorPages), the video and the bus address every
+// page directly. Depth has one page.
 module htx_fb #(
   parameter int unsigned ZBits      = 24,
   parameter int unsigned AddrW      = 24,
   parameter int unsigned FbPixels   = 76800,   // even
   parameter bit          SinglePort = 1'b0,
   parameter bit          Spram      = 1'b0,    // needs SinglePort and one colour page
-  parameter int unsigned ColorPages = 1        // 1 or 2
+  parameter int unsigned ColorPages = 1        // 1, 2 or 3
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -29,7 +30,7 @@ module htx_fb #(
   input  logic              wz_en_i,
   input  logic [AddrW-1:0]  w_addr_i,
   input  logic [15:0]       wc_data_i,
-  input  logic              c_page_i,     // the page wc_* writes (ColorPages = 2)
+  input  logic [1:0]        c_page_i,     // the page wc_* writes (below ColorPages)
   input  logic [ZBits-1:0]  wz_data_i,
 
   input  logic              vr_req_i,     // video: read colour word vr_addr_i (two pixels)
@@ -48,7 +49,7 @@ module htx_fb #(
   output logic              rsp_err_o
 );
   localparam int unsigned CWords = FbPixels / 2;                // a page
-  localparam int unsigned CAW    = $clog2(CWords * ColorPages);  // both pages
+  localparam int unsigned CAW    = $clog2(CWords * ColorPages);  // every page
   localparam int unsigned ZAW    = $clog2(FbPixels);
 
   // ---- Bus decode ------------------------------------------------------------------------------
@@ -83,7 +84,11 @@ module htx_fb #(
   logic [1:0]     c_we;
   logic [CAW-1:0] c_waddr, w_word;
   // The raster's word in its page (its addresses are below FbPixels: htx_raster_fragment).
-  assign w_word = (ColorPages > 1 && c_page_i) ? CAW'(w_addr_i >> 1) + CAW'(CWords) : CAW'(w_addr_i >> 1);
+  // Page p starts at p * CWords: page bit 0 adds CWords, bit 1 twice that (page 3 never comes).
+  logic [CAW-1:0] page_base;
+  assign page_base = ((ColorPages > 1 && c_page_i[0]) ? CAW'(CWords) : '0) +
+                     ((ColorPages > 2 && c_page_i[1]) ? CAW'(2 * CWords) : '0);
+  assign w_word = CAW'(w_addr_i >> 1) + page_base;
   logic [31:0]    c_wdata, c_rdata;
   always_comb begin
     if (wc_en_i) begin

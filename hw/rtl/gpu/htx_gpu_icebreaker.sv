@@ -15,7 +15,7 @@ module htx_gpu_icebreaker #(
   // Framebuffer and depth in the UP5K's SPRAM (the board's builds; Yosys only, docs/gpu.md). The
   // memories are single-ported in every build, so simulation arbitrates as the board does.
   parameter bit          FbSpram = 1'b0,
-  // Colour pages (2: double buffering; the SoC's simulated and ULX3S builds). With FbSpram, 1.
+  // Colour pages (3: triple buffering; the SoC's simulated and ULX3S builds). With FbSpram, 1.
   parameter int unsigned ColorPages = 1
 ) (
   input  logic        clk_i,

@@ -20,7 +20,7 @@ module htx_gpu_subsys #(
   parameter int unsigned FifoDepth   = 64,
   parameter int unsigned FbPixels    = 76800,
   parameter bit          FbSpram     = 1'b0,   // htx_fb's Spram (needs Iterative)
-  parameter int unsigned ColorPages  = 1,      // htx_fb's colour pages (2: double buffering)
+  parameter int unsigned ColorPages  = 1,      // htx_fb's colour pages (2 or 3: double or triple buffering)
   parameter int unsigned QBits       = 32,
   parameter int unsigned UvIntBits   = 16,
   parameter int unsigned PixelSteps  = 2,
@@ -129,7 +129,7 @@ module htx_gpu_subsys #(
   logic             zr_en, wc_en, wz_en;
   logic [AddrW-1:0] zr_addr, w_addr;
   logic [ZBits-1:0] zr_data, wz_data;
-  logic             draw_page;
+  logic [1:0]       draw_page;
   logic [15:0]      wc_data;
 
   logic              tq_valid, tq_ready, tq_direct;

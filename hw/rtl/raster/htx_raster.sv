@@ -47,7 +47,8 @@ module htx_raster #(
   // takes plane records, which htx_raster_planes_in writes into the traversal's plane RAM, in place
   // of the input stage and htx_raster_setup. Needs Iterative (the traversal's planes in RAM).
   parameter bit          FwSetup    = 1'b0,
-  // Colour pages in htx_fb (FB_MEM.PAGES; 2: double buffering, FB_PAGE.DRAW chooses the one written).
+  // Colour pages in htx_fb (FB_MEM.PAGES; 2 or 3: double or triple buffering, FB_PAGE.DRAW chooses
+  // the one written).
   parameter int unsigned ColorPages = 1
 ) (
   input  logic              clk_i,
@@ -74,7 +75,7 @@ module htx_raster #(
   output logic [AddrW-1:0]  w_addr_o,
   output logic [15:0]       wc_data_o,
   output logic [ZBits-1:0]  wz_data_o,
-  output logic              draw_page_o,    // FB_PAGE.DRAW: the colour page wc_* writes
+  output logic [1:0]        draw_page_o,    // FB_PAGE.DRAW: the colour page wc_* writes
 
   // Texture request / response (docs/contracts.md, GPU join §1; mirrors htx_texture's req_* / out_*).
   output logic               tex_req_valid_o,
@@ -130,7 +131,7 @@ module htx_raster #(
   logic [11:0] offset;
   logic        accept, wr, is_fifo, fifo_full, fifo_empty;
   logic        enable_q, err_state_q;
-  logic        draw_page_q /* verilator public_flat_rd */;  // (htx sim reads the page drawn)
+  logic [1:0]  draw_page_q /* verilator public_flat_rd */;  // (htx sim reads the page drawn)
   logic [15:0] clear_color_q;
   logic [23:0] clear_depth_q;
   logic [12:0] width_q, height_q, stride_q;
@@ -1038,7 +1039,7 @@ module htx_raster #(
         rdata_d[htx_raster_reg_pkg::RASTER_FB_MEM_PAGES_LSB +: 2]   = 2'(ColorPages);
       end
       htx_raster_reg_pkg::RASTER_FB_PAGE_OFFSET:
-        rdata_d[htx_raster_reg_pkg::RASTER_FB_PAGE_DRAW_LSB] = draw_page_q;
+        rdata_d[htx_raster_reg_pkg::RASTER_FB_PAGE_DRAW_LSB +: 2] = draw_page_q;
       htx_raster_reg_pkg::RASTER_CAPS_OFFSET: begin
         rdata_d[htx_raster_reg_pkg::RASTER_CAPS_METHODS_LSB +: 5]  = Methods;
         rdata_d[htx_raster_reg_pkg::RASTER_CAPS_COUNTERS_LSB]      = Counters;
@@ -1062,7 +1063,7 @@ module htx_raster #(
     if (!rst_ni) begin
       enable_q      <= 1'(htx_raster_reg_pkg::RASTER_CTRL_ENABLE_RESET >> htx_raster_reg_pkg::RASTER_CTRL_ENABLE_LSB);
       err_state_q   <= 1'b0;
-      draw_page_q   <= 1'b0;
+      draw_page_q   <= 2'd0;
       clear_color_q <= '0;
       clear_depth_q <= 24'(htx_raster_reg_pkg::RASTER_CLEAR_DEPTH_RESET);
       width_q       <= 13'(htx_raster_reg_pkg::RASTER_FB_SIZE_WIDTH_RESET >> htx_raster_reg_pkg::RASTER_FB_SIZE_WIDTH_LSB);
@@ -1094,7 +1095,10 @@ module htx_raster #(
           end
           htx_raster_reg_pkg::RASTER_FB_STRIDE_OFFSET: stride_q <= req_wdata_i[12:0];
           htx_raster_reg_pkg::RASTER_FB_PAGE_OFFSET:
-            draw_page_q <= (ColorPages > 1) && req_wdata_i[htx_raster_reg_pkg::RASTER_FB_PAGE_DRAW_LSB];
+            // A page the memory does not have leaves the register as it was.
+            if (32'(req_wdata_i[htx_raster_reg_pkg::RASTER_FB_PAGE_DRAW_LSB +: 2]) < ColorPages) begin
+              draw_page_q <= req_wdata_i[htx_raster_reg_pkg::RASTER_FB_PAGE_DRAW_LSB +: 2];
+            end
           default: ;
         endcase
       end

@@ -84,7 +84,7 @@ module htx_raster_subsys #(
   logic             zr_en, wc_en, wz_en;
   logic [AddrW-1:0] zr_addr, w_addr;
   logic [ZBits-1:0] zr_data, wz_data;
-  logic             draw_page;  // (one colour page: always 0)
+  logic [1:0]       draw_page;  // (one colour page: always 0)
   logic [15:0]      wc_data;
 
   htx_raster #(

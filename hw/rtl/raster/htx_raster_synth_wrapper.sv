@@ -34,9 +34,9 @@ module htx_raster_synth_wrapper #(
   logic [AddrW-1:0] zr_addr, w_addr;
   logic [15:0]      wc_data;
   logic [ZBits-1:0] wz_data;
-  logic             draw_page;  // (one colour page: always 0)
+  logic [1:0]       draw_page;  // (one colour page: always 0)
   logic             unused_draw_page;
-  assign unused_draw_page = draw_page;
+  assign unused_draw_page = ^draw_page;
   logic              tq_valid, tq_lod_direct, to_ready;
   logic [ReqBits-1:0] tq_bits;
   logic [TagW-1:0]   tq_tag, to_tag_q;

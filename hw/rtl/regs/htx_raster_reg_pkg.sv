@@ -180,12 +180,12 @@ package htx_raster_reg_pkg;
   localparam logic [31:0] RASTER_FB_MEM_PAGES_MASK = 32'h03000000;
   localparam logic [31:0] RASTER_FB_MEM_PAGES_RESET = 32'h01000000;
 
-  // FB_PAGE (rw): The colour page drawn into (double buffering; docs/video.md)
+  // FB_PAGE (rw): The colour page drawn into (double or triple buffering; docs/video.md)
   localparam logic [11:0] RASTER_FB_PAGE_OFFSET = 12'h028;
   localparam logic [31:0] RASTER_FB_PAGE_RESET = 32'h00000000;
   localparam int unsigned RASTER_FB_PAGE_DRAW_LSB = 0;
-  localparam int unsigned RASTER_FB_PAGE_DRAW_WIDTH = 1;
-  localparam logic [31:0] RASTER_FB_PAGE_DRAW_MASK = 32'h00000001;
+  localparam int unsigned RASTER_FB_PAGE_DRAW_WIDTH = 2;
+  localparam logic [31:0] RASTER_FB_PAGE_DRAW_MASK = 32'h00000003;
   localparam logic [31:0] RASTER_FB_PAGE_DRAW_RESET = 32'h00000000;
 
   // CNT_BUSY (ro): Clocks with STATUS.BUSY set. CNT_BUSY to CNT_PIXELS live in block RAM: a read of one waits up to 17 clocks and returns the count three clocks before it completes (exact once the unit is idle)

@@ -12,8 +12,8 @@ package htx_video_reg_pkg;
   localparam logic [31:0] VIDEO_CTRL_ENABLE_MASK = 32'h00000001;
   localparam logic [31:0] VIDEO_CTRL_ENABLE_RESET = 32'h00000000;
   localparam int unsigned VIDEO_CTRL_PAGE_LSB = 1;
-  localparam int unsigned VIDEO_CTRL_PAGE_WIDTH = 1;
-  localparam logic [31:0] VIDEO_CTRL_PAGE_MASK = 32'h00000002;
+  localparam int unsigned VIDEO_CTRL_PAGE_WIDTH = 2;
+  localparam logic [31:0] VIDEO_CTRL_PAGE_MASK = 32'h00000006;
   localparam logic [31:0] VIDEO_CTRL_PAGE_RESET = 32'h00000000;
 
   // STATUS (rw): Scan-out state
@@ -32,8 +32,8 @@ package htx_video_reg_pkg;
   localparam logic [31:0] VIDEO_STATUS_SHOWING_MASK = 32'h00000004;
   localparam logic [31:0] VIDEO_STATUS_SHOWING_RESET = 32'h00000000;
   localparam int unsigned VIDEO_STATUS_PAGE_LSB = 3;
-  localparam int unsigned VIDEO_STATUS_PAGE_WIDTH = 1;
-  localparam logic [31:0] VIDEO_STATUS_PAGE_MASK = 32'h00000008;
+  localparam int unsigned VIDEO_STATUS_PAGE_WIDTH = 2;
+  localparam logic [31:0] VIDEO_STATUS_PAGE_MASK = 32'h00000018;
   localparam logic [31:0] VIDEO_STATUS_PAGE_RESET = 32'h00000000;
 
   // FRAME (ro): Frame counter

@@ -15,7 +15,7 @@
 // are switched on by stall_en_i.
 //
 // The GPU is htx_gpu_icebreaker (docs/soc.md, "GPU"): raster and texture units in the `icebreaker`
-// configuration of the UP5K board, with framebuffer and depth memories of FbPixels pixels (two
+// configuration of the UP5K board, with framebuffer and depth memories of FbPixels pixels (three
 // colour pages of them, except in SPRAM). Its two
 // register blocks and its memory windows are each claimed by their own demux entry (so every other
 // address answers an error here) and joined onto the GPU's two ports: a demux sends requests to one
@@ -77,9 +77,9 @@ module htx_soc_fabric #(
   input  logic        stall_en_i,
   input  logic [31:0] stall_seed_i
 );
-  // Two colour pages (double buffering, docs/video.md) where the memories are block RAM; the UP5K's
-  // SPRAM holds one page beside the depth buffer.
-  localparam int unsigned FbPages = GpuFbSpram ? 1 : 2;
+  // Three colour pages (triple buffering, docs/video.md) where the memories are block RAM; the
+  // UP5K's SPRAM holds one page beside the depth buffer.
+  localparam int unsigned FbPages = GpuFbSpram ? 1 : 3;
   localparam logic [31:0] RamBase = 32'h0000_0000;
   localparam logic [31:0] RamMask = ~(32'(RamBytes) - 32'd1);
   localparam logic [31:0] IoBase  = 32'h2000_0000;

@@ -7,9 +7,9 @@
 // line is due sets STATUS.UNDERRUN and the line shows the half's old words. The output is RGB888
 // (RGB565 widened by bit replication, as `htx render` writes PNGs), the display enable and both
 // syncs (active low), two clocks after the timing counters.
-// Pages = 2 (the GPU double-buffers): the colour memory holds two frames, page 1 at word PageWords;
-// CTRL.PAGE chooses the one shown and, like ENABLE, is taken at a frame's start, so firmware draws
-// into the other page and a flip never splits a frame.
+// Pages = 2 or 3 (the GPU double- or triple-buffers): the colour memory holds that many frames, page
+// p at word p * PageWords; CTRL.PAGE chooses the one shown and, like ENABLE, is taken at a frame's
+// start, so firmware draws into another page and a flip never splits a frame.
 module htx_video #(
   parameter int unsigned SrcW    = 160,   // even
   parameter int unsigned SrcH    = 120,
@@ -23,8 +23,8 @@ module htx_video #(
   parameter int unsigned VSync   = 2,
   parameter int unsigned VBack   = 33,    // VFront + VSync + VBack > Scale
   parameter int unsigned AddrW   = 24,    // framebuffer word addresses
-  parameter int unsigned Pages   = 1,     // colour pages (1 or 2)
-  parameter int unsigned PageWords = SrcW / 2 * SrcH  // page 1's first word (>= the words shown)
+  parameter int unsigned Pages   = 1,     // colour pages (1, 2 or 3)
+  parameter int unsigned PageWords = SrcW / 2 * SrcH  // words from a page's start to the next's (>= those shown)
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
@@ -102,7 +102,8 @@ module htx_video #(
   end
 
   // ---- Registers -------------------------------------------------------------------------------
-  logic        enable_q, underrun_q, show_q, page_q, shown_page_q;
+  logic        enable_q, underrun_q, show_q;
+  logic [1:0]  page_q, shown_page_q;
   logic [31:0] frame_count_q;
   logic        act_write_q;
   logic [11:0] act_offset_q;
@@ -119,13 +120,13 @@ module htx_video #(
     unique case (act_offset_q)
       htx_video_reg_pkg::VIDEO_CTRL_OFFSET: begin
         rdata_d[htx_video_reg_pkg::VIDEO_CTRL_ENABLE_LSB] = enable_q;
-        rdata_d[htx_video_reg_pkg::VIDEO_CTRL_PAGE_LSB]   = page_q;
+        rdata_d[htx_video_reg_pkg::VIDEO_CTRL_PAGE_LSB +: 2] = page_q;
       end
       htx_video_reg_pkg::VIDEO_STATUS_OFFSET: begin
         rdata_d[htx_video_reg_pkg::VIDEO_STATUS_VBLANK_LSB]   = !v_active;
         rdata_d[htx_video_reg_pkg::VIDEO_STATUS_UNDERRUN_LSB] = underrun_q;
         rdata_d[htx_video_reg_pkg::VIDEO_STATUS_SHOWING_LSB]  = show_q;
-        rdata_d[htx_video_reg_pkg::VIDEO_STATUS_PAGE_LSB]     = shown_page_q;
+        rdata_d[htx_video_reg_pkg::VIDEO_STATUS_PAGE_LSB +: 2] = shown_page_q;
       end
       htx_video_reg_pkg::VIDEO_FRAME_OFFSET: rdata_d = frame_count_q;
       htx_video_reg_pkg::VIDEO_LINE_OFFSET:  rdata_d = 32'(v);
@@ -158,8 +159,8 @@ module htx_video #(
   assign start_next  = line_due && (SrcH > 1) && (frame_end || (32'(ys_q) < 32'(SrcH - 2)));
   assign start  = (start_frame && enable_q) || start_next;
   assign f_last = (f_idx_q == LbAW'(Wpl - 1));
-  // The page a frame shows is taken at its start, with the enable (page_q is 0 with one page).
-  assign page_base = page_q ? FAW'(PageWords) : '0;
+  // The page a frame shows is taken at its start, with the enable (page_q is below Pages).
+  assign page_base = (page_q[0] ? FAW'(PageWords) : '0) + (page_q[1] ? FAW'(2 * PageWords) : '0);
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -172,7 +173,7 @@ module htx_video #(
       w_bank_q    <= 1'b0;
       w_idx_q     <= '0;
       show_q      <= 1'b0;
-      shown_page_q <= 1'b0;
+      shown_page_q <= 2'd0;
     end else begin
       w_pend_q <= f_busy_q && fb_gnt_i;
       if (f_busy_q && fb_gnt_i) begin
@@ -204,13 +205,16 @@ module htx_video #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       enable_q      <= 1'b0;
-      page_q        <= 1'b0;
+      page_q        <= 2'd0;
       underrun_q    <= 1'b0;
       frame_count_q <= '0;
     end else begin
       if (act_write_q && (act_offset_q == htx_video_reg_pkg::VIDEO_CTRL_OFFSET)) begin
         enable_q <= act_wdata_q[htx_video_reg_pkg::VIDEO_CTRL_ENABLE_LSB];
-        page_q   <= (Pages > 1) && act_wdata_q[htx_video_reg_pkg::VIDEO_CTRL_PAGE_LSB];
+        // A page the memory does not have leaves the field as it was.
+        if (32'(act_wdata_q[htx_video_reg_pkg::VIDEO_CTRL_PAGE_LSB +: 2]) < Pages) begin
+          page_q <= act_wdata_q[htx_video_reg_pkg::VIDEO_CTRL_PAGE_LSB +: 2];
+        end
       end
       // A line due while its read is unfinished (this wins over a clear).
       if (line_due && f_busy_q) begin

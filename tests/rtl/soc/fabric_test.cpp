@@ -89,9 +89,10 @@ TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
   ASSERT_FALSE(soc.write(kFbColor + 8, 0x1111'2222).err);
   soc.write(kFbColor + 8, 0xAAAA'0000, 0xC);
   EXPECT_EQ(soc.read(kFbColor + 8).rdata, 0xAAAA'2222u);
-  // Two colour pages (double buffering) of kFbPixels pixels each.
-  soc.write(kFbColor + 4 * kFbPixels - 4, 0xBEEF'CAFE);  // the last word of page 1
-  EXPECT_EQ(soc.read(kFbColor + 4 * kFbPixels - 4).rdata, 0xBEEF'CAFEu);
+  // Three colour pages (triple buffering) of kFbPixels pixels, kFbPixels / 2 words, each.
+  const uint32_t colour_end = kFbColor + 4 * (3 * kFbPixels / 2);
+  soc.write(colour_end - 4, 0xBEEF'CAFE);  // the last word of page 2
+  EXPECT_EQ(soc.read(colour_end - 4).rdata, 0xBEEF'CAFEu);
   ASSERT_FALSE(soc.write(kFbDepth + 4 * 17, 0x0001'2345).err);
   EXPECT_EQ(soc.read(kFbDepth + 4 * 17).rdata & 0xFFFFu, 0x2345u);
   ASSERT_FALSE(soc.write(kFbDepth + 4 * (kFbPixels - 1), 0x0000'6789).err);  // the last pixel
@@ -118,7 +119,7 @@ TEST_P(FabricTest, GpuRegistersAndMemoryWindows) {
     EXPECT_EQ(r.rdata, 0u) << std::hex << a;
   }
   // Beyond the memories and holes of the windows answer errors.
-  for (uint32_t a : {kFbColor + 4 * kFbPixels, kFbDepth + 4 * kFbPixels, 0x3020'0000u, kTexMem + tex_bytes,
+  for (uint32_t a : {colour_end, kFbDepth + 4 * kFbPixels, 0x3020'0000u, kTexMem + tex_bytes,
                      kTexMem + 0x10'0000u, 0x2000'6000u}) {
     const auto r = soc.read(a);
     EXPECT_TRUE(r.err) << std::hex << a;
@@ -499,7 +500,7 @@ TEST_P(FabricTest, RandomTrafficOnBothPortsMatchesTheModel) {
 TEST_P(FabricTest, VideoShowsTheColourWindowWhileTheBusReadsIt) {
   constexpr uint32_t kVideo = HTX_VIDEO_BASE;
   EXPECT_EQ(soc.read(kVideo + VIDEO_MODE_Offset).rdata,
-            160u | (120u << 12) | (4u << 24) | (2u << VIDEO_MODE_PAGES_Pos));
+            160u | (120u << 12) | (4u << 24) | (3u << VIDEO_MODE_PAGES_Pos));
   std::vector<uint32_t> words(kFbPixels / 2);
   uint32_t seed = 99;
   for (uint32_t i = 0; i < words.size(); ++i) {
@@ -565,18 +566,20 @@ TEST_P(FabricTest, FastClearsYieldToTheVideoReads) {
   EXPECT_EQ(std::count(monitor.last_frame().begin(), monitor.last_frame().end(), 0xFF00FFu), 640 * 480);
 }
 
-// Double buffering: the raster unit's fast clear goes to the page FB_PAGE.DRAW names while the
-// video shows the other; the flip to the drawn page is taken at the next frame's start.
-TEST_P(FabricTest, DrawsIntoOnePageWhileTheVideoShowsTheOther) {
+// Triple buffering: the raster unit's fast clear goes to the page FB_PAGE.DRAW names while the
+// video shows another; the flip to the drawn page is taken at the next frame's start. A page the
+// memory does not have (3) leaves either register as it was.
+TEST_P(FabricTest, DrawsIntoOnePageWhileTheVideoShowsAnother) {
   constexpr uint32_t kVideo = HTX_VIDEO_BASE;
   constexpr uint32_t kPageWords = kFbPixels / 2;
-  EXPECT_EQ(soc.read(kRaster + RASTER_FB_MEM_Offset).rdata, kFbPixels | (2u << RASTER_FB_MEM_PAGES_Pos));
+  EXPECT_EQ(soc.read(kRaster + RASTER_FB_MEM_Offset).rdata, kFbPixels | (3u << RASTER_FB_MEM_PAGES_Pos));
   EXPECT_EQ(soc.read(kRaster + RASTER_FB_PAGE_Offset).rdata, 0u);
-  for (uint32_t i = 0; i < kPageWords; ++i) soc.dbus.pending.push_back({kFbColor + 4 * i, true, 0xF, 0xFFFF'FFFFu});
-  ASSERT_TRUE(soc.drain(1'000'000));
+  for (uint32_t i = 0; i < 2 * kPageWords; ++i) soc.dbus.pending.push_back({kFbColor + 4 * i, true, 0xF, 0xFFFF'FFFFu});
+  ASSERT_TRUE(soc.drain(2'000'000));
   ASSERT_FALSE(soc.write(kVideo + VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk).err);
-  ASSERT_FALSE(soc.write(kRaster + RASTER_FB_PAGE_Offset, RASTER_FB_PAGE_DRAW_Msk).err);
-  EXPECT_EQ(soc.read(kRaster + RASTER_FB_PAGE_Offset).rdata, RASTER_FB_PAGE_DRAW_Msk);
+  ASSERT_FALSE(soc.write(kRaster + RASTER_FB_PAGE_Offset, 2u << RASTER_FB_PAGE_DRAW_Pos).err);
+  ASSERT_FALSE(soc.write(kRaster + RASTER_FB_PAGE_Offset, 3u << RASTER_FB_PAGE_DRAW_Pos).err);
+  EXPECT_EQ(soc.read(kRaster + RASTER_FB_PAGE_Offset).rdata, 2u << RASTER_FB_PAGE_DRAW_Pos) << "3 is ignored";
   soc.write(kRaster + RASTER_FB_SIZE_Offset, 160u | (120u << RASTER_FB_SIZE_HEIGHT_Pos));
   soc.write(kRaster + RASTER_FB_STRIDE_Offset, 160u);
   soc.write(kRaster + RASTER_CLEAR_COLOR_Offset, 0x07E0u);  // green
@@ -596,15 +599,19 @@ TEST_P(FabricTest, DrawsIntoOnePageWhileTheVideoShowsTheOther) {
   EXPECT_EQ(soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_BUSY_Msk, 0u);
   for (uint32_t w : {0u, 4799u, kPageWords - 1}) {
     EXPECT_EQ(soc.read(kFbColor + 4 * w).rdata, 0xFFFF'FFFFu) << w;
-    EXPECT_EQ(soc.read(kFbColor + 4 * (kPageWords + w)).rdata, 0x07E0'07E0u) << w;
+    EXPECT_EQ(soc.read(kFbColor + 4 * (kPageWords + w)).rdata, 0xFFFF'FFFFu) << "page 1 untouched " << w;
+    EXPECT_EQ(soc.read(kFbColor + 4 * (2 * kPageWords + w)).rdata, 0x07E0'07E0u) << w;
   }
-  ASSERT_FALSE(soc.write(kVideo + VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk | VIDEO_CTRL_PAGE_Msk).err);
+  const uint32_t page2 = 2u << VIDEO_CTRL_PAGE_Pos;
+  ASSERT_FALSE(soc.write(kVideo + VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk | page2).err);
+  ASSERT_FALSE(soc.write(kVideo + VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk | (3u << VIDEO_CTRL_PAGE_Pos)).err);
+  EXPECT_EQ(soc.read(kVideo + VIDEO_CTRL_Offset).rdata, VIDEO_CTRL_ENABLE_Msk | page2) << "3 is ignored";
   px = capture();  // the frame under way when the flip was written, or the next
   px = capture();
   ASSERT_EQ(px.size(), 640u * 480u);
-  EXPECT_EQ(std::count(px.begin(), px.end(), 0x00FF00u), 640 * 480) << "page 1 shown";
+  EXPECT_EQ(std::count(px.begin(), px.end(), 0x00FF00u), 640 * 480) << "page 2 shown";
   const uint32_t status = soc.read(kVideo + VIDEO_STATUS_Offset).rdata;
-  EXPECT_EQ(status & VIDEO_STATUS_PAGE_Msk, VIDEO_STATUS_PAGE_Msk);
+  EXPECT_EQ((status & VIDEO_STATUS_PAGE_Msk) >> VIDEO_STATUS_PAGE_Pos, 2u);
   EXPECT_EQ(status & VIDEO_STATUS_UNDERRUN_Msk, 0u);
 }
 

@@ -2,7 +2,7 @@
 // framebuffer shown scaled x4 while its port refuses reads at random (as the raster's colour writes
 // make htx_fb's port do), the registers, the frame taken at its start, and an underrun when the
 // port refuses every read, and the page flip taken at a frame's start (label `rtl`). The model
-// is built with two colour pages (CMakeLists.txt: Pages = 2, page 1 from word 9,600).
+// is built with three colour pages (CMakeLists.txt: Pages = 3, page p from word p x 9,600).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,7 +26,7 @@ constexpr uint32_t kPageWords = kSrcW * kSrcH / 2;
 template <class Model>
 struct BenchOf {
   Model v;
-  std::vector<uint32_t> fb = std::vector<uint32_t>(2 * kPageWords);  // pages 0 and 1
+  std::vector<uint32_t> fb = std::vector<uint32_t>(3 * kPageWords);  // pages 0, 1 and 2
   std::mt19937 rng{20261205};
   unsigned refuse_percent = 0;  // a read is refused in this share of the clocks it is asked in
   uint32_t word_read = 0;       // the word of the last granted read, on fb_data_i until the next
@@ -151,7 +151,7 @@ TEST(Video, ShowsTheFramebufferScaledWhileItsPortRefusesHalfTheReads) {
 
 TEST(Video, RegistersCountFramesAndLinesAndDescribeTheMode) {
   Bench b;
-  EXPECT_EQ(b.read(VIDEO_MODE_Offset), kSrcW | (kSrcH << 12) | (kScale << 24) | (2u << VIDEO_MODE_PAGES_Pos));
+  EXPECT_EQ(b.read(VIDEO_MODE_Offset), kSrcW | (kSrcH << 12) | (kScale << 24) | (3u << VIDEO_MODE_PAGES_Pos));
   EXPECT_EQ(b.read(VIDEO_CTRL_Offset), 0u);
   b.write(VIDEO_CTRL_Offset, 1);
   EXPECT_EQ(b.read(VIDEO_CTRL_Offset), 1u);
@@ -208,7 +208,9 @@ TEST(Video, APageFlipTakesEffectAtTheFrameStart) {
   for (uint32_t i = 0; i < kPageWords; ++i) {
     b.fb[i] = 0xFFFFFFFFu;
     b.fb[kPageWords + i] = 0x001F001Fu;
+    b.fb[2 * kPageWords + i] = 0xF800F800u;
   }
+  const uint32_t page1 = 1u << VIDEO_CTRL_PAGE_Pos, page2 = 2u << VIDEO_CTRL_PAGE_Pos;
   b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk);
   std::vector<uint32_t> px = b.capture();
   ASSERT_EQ(px.size(), kW * kH);
@@ -216,8 +218,8 @@ TEST(Video, APageFlipTakesEffectAtTheFrameStart) {
   EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_PAGE_Msk, 0u);
   b.to_vsync();
   for (uint32_t i = 0; i < (35 + 200) * kHTotal; ++i) b.clock();  // line 200 or so
-  b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk | VIDEO_CTRL_PAGE_Msk);
-  EXPECT_EQ(b.read(VIDEO_CTRL_Offset), VIDEO_CTRL_ENABLE_Msk | VIDEO_CTRL_PAGE_Msk);
+  b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk | page1);
+  EXPECT_EQ(b.read(VIDEO_CTRL_Offset), VIDEO_CTRL_ENABLE_Msk | page1);
   EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_PAGE_Msk, 0u) << "not before the frame's end";
   uint32_t white = 0, other = 0;
   for (uint32_t i = 0; i < kHTotal * kVTotal && b.v.vsync_no; ++i) {  // to the frame's sync pulse
@@ -230,8 +232,16 @@ TEST(Video, APageFlipTakesEffectAtTheFrameStart) {
   px = b.capture();
   ASSERT_EQ(px.size(), kW * kH);
   EXPECT_EQ(std::count(px.begin(), px.end(), 0x0000FFu), kW * kH);
-  EXPECT_EQ(b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_PAGE_Msk, VIDEO_STATUS_PAGE_Msk);
+  EXPECT_EQ((b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_PAGE_Msk) >> VIDEO_STATUS_PAGE_Pos, 1u);
   EXPECT_GE(b.reads - reads_before, kPageWords);
+  // Page 2 at the next start; a page the memory does not have (3) leaves CTRL.PAGE as it was.
+  b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk | page2);
+  b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk | (3u << VIDEO_CTRL_PAGE_Pos));
+  EXPECT_EQ(b.read(VIDEO_CTRL_Offset), VIDEO_CTRL_ENABLE_Msk | page2);
+  b.to_vsync();
+  px = b.capture();
+  EXPECT_EQ(std::count(px.begin(), px.end(), 0xFF0000u), kW * kH);
+  EXPECT_EQ((b.read(VIDEO_STATUS_Offset) & VIDEO_STATUS_PAGE_Msk) >> VIDEO_STATUS_PAGE_Pos, 2u);
   // Back to page 0 at the next start.
   b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk);
   b.to_vsync();
@@ -245,8 +255,10 @@ TEST(Video, WithOnePageThePageIsAlwaysZero) {
   BenchOf<Vhtx_video_1p> b;
   for (uint32_t i = 0; i < kPageWords; ++i) b.fb[i] = 0xFFFFFFFFu;
   EXPECT_EQ(b.read(VIDEO_MODE_Offset) >> VIDEO_MODE_PAGES_Pos, 1u);
-  b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk | VIDEO_CTRL_PAGE_Msk);
-  EXPECT_EQ(b.read(VIDEO_CTRL_Offset), VIDEO_CTRL_ENABLE_Msk);
+  for (uint32_t page = 1; page < 4; ++page) {
+    b.write(VIDEO_CTRL_Offset, VIDEO_CTRL_ENABLE_Msk | (page << VIDEO_CTRL_PAGE_Pos));
+    EXPECT_EQ(b.read(VIDEO_CTRL_Offset), VIDEO_CTRL_ENABLE_Msk) << page;
+  }
   const std::vector<uint32_t> px = b.capture();
   ASSERT_EQ(px.size(), kW * kH);
   EXPECT_EQ(std::count(px.begin(), px.end(), 0xFFFFFFu), kW * kH);

@@ -1,6 +1,6 @@
 // Framebuffer readback: colour (RGB565, one pixel per half-word) and depth (one word per pixel)
-// windows of docs/contracts.md, addressed by pixel index y * stride + x. Where the GPU has two
-// colour pages (double buffering, docs/video.md), the colour reads are of the page the raster
+// windows of docs/contracts.md, addressed by pixel index y * stride + x. Where the GPU has several
+// colour pages (double or triple buffering, docs/video.md), the colour reads are of the page the raster
 // unit draws into (FB_PAGE.DRAW), which holds the frame drawn last.
 #pragma once
 
@@ -14,7 +14,7 @@ inline constexpr uint32_t kFbColorBase = 0x30000000u;
 inline constexpr uint32_t kFbDepthBase = 0x30100000u;
 inline constexpr uint32_t kFbWindowBytes = 0x00100000u;
 
-// Colour pages (RASTER.FB_MEM.PAGES: 1, or 2 for double buffering) and the pixels of each.
+// Colour pages (RASTER.FB_MEM.PAGES: 1, or 2 or 3 for double or triple buffering) and the pixels of each.
 inline uint32_t fb_pages() {
   return (HTX_RASTER->FB_MEM & RASTER_FB_MEM_PAGES_Msk) >> RASTER_FB_MEM_PAGES_Pos;
 }
@@ -33,7 +33,7 @@ inline uint32_t fb_draw_page() {
 
 // The colour window's pixel index of the draw page's first pixel.
 inline uint32_t fb_draw_page_first_pixel() {
-  return fb_draw_page() != 0 ? fb_page_pixels() : 0u;
+  return fb_draw_page() * fb_page_pixels();
 }
 
 inline uint16_t fb_read_pixel(uint32_t stride, uint32_t x, uint32_t y) {

@@ -32,7 +32,7 @@ inline bool video_enabled() {
   return (HTX_VIDEO->CTRL & VIDEO_CTRL_ENABLE_Msk) != 0;
 }
 
-// Colour pages the unit can show (MODE.PAGES: 2 where the GPU double-buffers).
+// Colour pages the unit can show (MODE.PAGES: 3 where the GPU triple-buffers).
 inline uint32_t video_pages() {
   return (HTX_VIDEO->MODE & VIDEO_MODE_PAGES_Msk) >> VIDEO_MODE_PAGES_Pos;
 }
