@@ -14,6 +14,7 @@
 #include "htx/console/serial_port.hpp"
 #include "console_payload.hpp"
 #include "htx/model/image_io.hpp"
+#include "output_path.hpp"
 
 namespace htx {
 
@@ -38,6 +39,7 @@ std::chrono::milliseconds timeout_of(const PortArgs& a) {
 
 // Downloads the frame into a PNG, showing progress on stderr.
 void grab_to_png(console::ConsoleClient& client, const std::string& out) {
+  require_output_dir(out);
   size_t shown = 0;
   const console::GrabbedFrame f = client.grab([&shown](size_t bytes) {
     if (bytes >= shown + 4096) {
@@ -133,6 +135,7 @@ struct GrabArgs : PortArgs {
 };
 
 void run_grab(const GrabArgs& a) {
+  require_output_dir(a.out);
   console::SerialPort port(a.port, a.baud);
   console::ConsoleClient client(port, timeout_of(a));
   client.sync();

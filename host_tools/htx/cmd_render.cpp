@@ -20,6 +20,7 @@
 #include "htx/model/scenes.hpp"
 #if __has_include("htx/rtl/raster_engine.hpp")
 #include "htx/rtl/raster_engine.hpp"
+#include "output_path.hpp"
 #define HTX_HAVE_RTL_ENGINE 1
 #endif
 
@@ -43,6 +44,8 @@ struct RenderArgs {
 void run_render(const RenderArgs& a) {
   int width = 0, height = 0;
   parse_size(a.size, width, height);
+  require_output_dir(a.out);
+  require_output_dir(a.metrics);
 #ifdef HTX_HAVE_RTL_ENGINE
   if (a.engine != "ref" && a.engine != "model" && a.engine != "rtl")
     throw std::invalid_argument("--engine '" + a.engine + "': this build renders on ref, model or rtl");

@@ -21,6 +21,7 @@
 #include "htx/sim/function_profile.hpp"
 #include "htx/sim/serial_endpoint.hpp"
 #include "htx/sim/soc_sim.hpp"
+#include "output_path.hpp"
 #else
 #define HTX_HAVE_SOC_SIM 0  // configured with -DHTX_BUILD_RTL=OFF: no Verilated SoC
 #endif
@@ -165,12 +166,7 @@ int run_sim(const SimArgs& a) {
   // What can only fail after the run is checked before it, so a long run is not lost to a typo.
   if (!a.signature.empty() && (!elf.symbol("begin_signature") || !elf.symbol("end_signature")))
     throw std::runtime_error(a.signature + ": the ELF has no begin_signature/end_signature symbols");
-  for (const std::string* out : {&a.signature, &a.screen, &a.frame, &a.trace}) {
-    if (out->empty()) continue;
-    const std::filesystem::path dir = std::filesystem::path(*out).parent_path();
-    if (!dir.empty() && !std::filesystem::is_directory(dir))
-      throw std::runtime_error(*out + ": no directory " + dir.string() + " to write it in");
-  }
+  for (const std::string* out : {&a.signature, &a.screen, &a.frame, &a.trace}) require_output_dir(*out);
   sim::SimOptions opt;
   opt.max_cycles = a.max_cycles;
   opt.stall_seed = a.stall_seed;

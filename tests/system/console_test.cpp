@@ -98,6 +98,13 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   const std::string crc = field_after(r.out.substr(r.out.find("render cube method auto")), "crc32 ");
   ASSERT_EQ(crc.size(), 8u) << r.out;
 
+  // A PNG that could not be written is refused before the frame is asked for, so the console is
+  // not left sending it: the grab after it works.
+  const std::string missing = ::testing::TempDir() + "htx_console_no_such_dir";
+  const auto bad = htx::test::run_program({HTX_BIN, "grab", "--port", pty, "--out", missing + "/g.png"}, 60s);
+  EXPECT_EQ(bad.status, 1) << bad.err;
+  EXPECT_NE(bad.err.find("no directory " + missing + " to write it in"), std::string::npos) << bad.err;
+
   const std::string png = ::testing::TempDir() + "htx_console_grab.png";
   const auto g = htx::test::run_program({HTX_BIN, "grab", "--port", pty, "--out", png, "--timeout", "60"}, 180s);
   ASSERT_FALSE(g.timed_out);

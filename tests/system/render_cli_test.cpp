@@ -1,12 +1,16 @@
 // htx render's board configuration: `--config icebreaker-board` is `icebreaker` with the board
 // GPU's methods only (AFFINE, RECIP_LUT). The rtl engine draws it on the Verilated board GPU (the
 // design gpu_icebreaker_up5k synthesises) bit for bit with the model; a scene asking for another
-// method is refused with a clear error.
+// method is refused with a clear error. An output in a directory that does not exist is refused
+// before anything is rendered or written.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "subprocess.hpp"
 
@@ -50,6 +54,27 @@ TEST(SystemRenderCli, BoardConfigurationRefusesAMethodItDoesNotBuild) {
     EXPECT_EQ(r.status, 1) << engine;
     EXPECT_NE(r.err.find("recip_nr is not built"), std::string::npos) << engine << ": " << r.err;
   }
+}
+
+TEST(SystemRenderCli, OutputsInAMissingDirectoryAreRefusedBeforeRendering) {
+  const std::string missing = temp_path("no_such_dir");
+  const std::string png = temp_path("before_metrics.png");
+  std::filesystem::remove(png);
+  for (const auto& [option, path] : {std::pair<std::string, std::string>{"--out", missing + "/x.png"},
+                                     std::pair<std::string, std::string>{"--metrics", missing + "/m.json"}}) {
+    std::vector<std::string> args = {HTX_BIN, "render", "cube", "--size", "32x24"};
+    if (option == "--out") {
+      args.insert(args.end(), {"--out", path});
+    } else {
+      args.insert(args.end(), {"--out", png, "--metrics", path});
+    }
+    const auto r = htx::test::run_program(args, 60s);
+    ASSERT_FALSE(r.timed_out);
+    EXPECT_EQ(r.status, 1) << option;
+    EXPECT_NE(r.err.find(path + ": no directory " + missing + " to write it in"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("rendered"), std::string::npos) << option << ": rendered first: " << r.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(png)) << "the PNG was written before the metrics were refused";
 }
 
 }  // namespace
