@@ -53,7 +53,9 @@ void run_render(const RenderArgs& a) {
   if (a.engine != "ref" && a.engine != "model")
     throw std::invalid_argument("--engine '" + a.engine + "': this build renders on ref or model");
 #endif
-  ScreenScene screen = prepare_screen_scene(load_scene(a.scene), width, height);
+  const Scene scene = load_scene(a.scene);
+  for (const std::string& note : scene.notes) std::cerr << "htx: " << note << "\n";
+  ScreenScene screen = prepare_screen_scene(scene, width, height);
   if (a.untextured)
     for (ScreenTri& t : screen.tris) t.state.textured = false;
   if (!a.method.empty()) {

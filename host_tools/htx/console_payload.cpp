@@ -69,8 +69,9 @@ ScenePayload scene_payload(const std::string& spec, const std::string& size, boo
   const size_t whole_meshes = rs.meshes.size();
   host::split_meshes(&rs, mesh_vertices);
   ScenePayload p;
+  for (const std::string& n : scene.notes) p.note += (p.note.empty() ? "" : "; ") + n;
   if (rs.meshes.size() != whole_meshes)
-    p.note = std::to_string(whole_meshes) + " meshes sent as " + std::to_string(rs.meshes.size()) + " of at most " +
+    p.note += std::string(p.note.empty() ? "" : "; ") + std::to_string(whole_meshes) + " meshes sent as " + std::to_string(rs.meshes.size()) + " of at most " +
              std::to_string(mesh_vertices) + " vertices";
   std::vector<render::Mesh> meshes;
   for (const host::RenderScene::MeshData& d : rs.meshes) meshes.push_back(d.mesh);

@@ -123,6 +123,67 @@ TEST(RefIo, ObjErrorsAreClear) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(RefIo, HalvingAnImageAveragesEachTwoByTwoBlockRoundingHalvesUp) {
+  Image img;
+  img.width = 4;
+  img.height = 2;
+  img.rgba = {0, 0, 0, 0, 1, 1, 1, 1, 10, 20, 30, 40, 255, 255, 255, 255,  // top row
+              1, 0, 0, 0, 0, 1, 1, 1, 11, 21, 31, 41, 255, 255, 255, 254};
+  const Image half = halve_image(img);
+  ASSERT_EQ(half.width, 2);
+  ASSERT_EQ(half.height, 1);
+  // (0 + 1 + 1 + 0 + 2) >> 2 = 1 for red, (0 + 1 + 0 + 1 + 2) >> 2 = 1 for the others; then
+  // (10 + 255 + 11 + 255 + 2) >> 2 = 133, ..., alpha (40 + 255 + 41 + 254 + 2) >> 2 = 148.
+  EXPECT_EQ(half.rgba, (std::vector<uint8_t>{1, 1, 1, 1, 133, 138, 143, 148}));
+  img.width = 3;
+  EXPECT_THROW(halve_image(img), std::invalid_argument);
+}
+
+// A map_Kd image larger than the GPU takes is drawn from its largest mip level that fits, with a
+// note; one whose every fitting level would have a side below 8 is refused.
+TEST(RefIo, ObjTexturesLargerThanTheGpuTakesAreHalvedUntilTheyFit) {
+  const auto dir = std::filesystem::temp_directory_path() / "htx_ref_io_big_texture";
+  std::filesystem::create_directories(dir);
+  Image big;
+  big.width = 1024;
+  big.height = 512;
+  big.rgba.resize(1024 * 512 * 4);
+  for (size_t i = 0; i < big.rgba.size(); ++i) big.rgba[i] = static_cast<uint8_t>((i * 2654435761u) >> 24);
+  write_png((dir / "big.png").string(), big);
+  Image thin;
+  thin.width = 2048;
+  thin.height = 8;
+  thin.rgba.assign(2048 * 8 * 4, 200);
+  write_png((dir / "thin.png").string(), thin);
+  const char* obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl m\nf 1/1 2/2 3/3\n";
+  std::ofstream(dir / "big.mtl") << "newmtl m\nmap_Kd big.png\n";
+  std::ofstream(dir / "thin.mtl") << "newmtl m\nmap_Kd thin.png\n";
+  std::ofstream(dir / "big.obj") << std::string(obj).replace(7, 1, "big");   // mtllib big.mtl
+  std::ofstream(dir / "thin.obj") << std::string(obj).replace(7, 1, "thin");
+
+  const Scene s = load_obj_scene((dir / "big.obj").string());
+  ASSERT_EQ(s.textures.size(), 1u);
+  EXPECT_EQ(s.textures[0].log2_width, 8u);
+  EXPECT_EQ(s.textures[0].log2_height, 7u);
+  ASSERT_EQ(s.notes.size(), 1u);
+  EXPECT_NE(s.notes[0].find("is 1024x512: drawn from its 256x128 mip level"), std::string::npos) << s.notes[0];
+  // Level 0 is the image halved twice, then made a texture as any other (bottom row first, RGB565).
+  const Image quarter = halve_image(halve_image(load_image((dir / "big.png").string())));
+  const Texture expected = texture_from_image(quarter, "expected");
+  EXPECT_EQ(s.textures[0].levels[0], expected.levels[0]);
+
+  try {
+    load_obj_scene((dir / "thin.obj").string());
+    ADD_FAILURE() << "a 2048x8 texture has no level with both sides in 8..256";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("is 2048x8; no mip level of it has both sides in 8..256"), std::string::npos)
+        << e.what();
+  }
+  // Within the GPU's sizes nothing changes and nothing is said.
+  EXPECT_TRUE(load_obj_scene(kData + "/quad.obj").notes.empty());
+  std::filesystem::remove_all(dir);
+}
+
 TEST(RefIo, PngRoundTripAndRgb565Expansion) {
   const Image img = image_from_rgb565(2, 1, {0xFFFF, 0x8410});
   EXPECT_EQ(img.rgba[0], 255);

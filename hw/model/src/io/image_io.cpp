@@ -55,4 +55,23 @@ Image image_from_rgb565(int width, int height, const std::vector<uint16_t>& pixe
   return image_from_rgb888(width, height, rgb);
 }
 
+Image halve_image(const Image& image) {
+  if (image.width < 2 || image.height < 2 || image.width % 2 || image.height % 2 ||
+      image.rgba.size() != static_cast<size_t>(image.width) * image.height * 4)
+    throw std::invalid_argument("halve_image: sides must be even and at least 2");
+  Image half;
+  half.width = image.width / 2;
+  half.height = image.height / 2;
+  half.rgba.resize(static_cast<size_t>(half.width) * half.height * 4);
+  const size_t stride = static_cast<size_t>(image.width) * 4;
+  for (int y = 0; y < half.height; ++y)
+    for (int x = 0; x < half.width; ++x)
+      for (int c = 0; c < 4; ++c) {
+        const size_t i = 2 * static_cast<size_t>(y) * stride + 8 * static_cast<size_t>(x) + static_cast<size_t>(c);
+        const unsigned sum = image.rgba[i] + image.rgba[i + 4] + image.rgba[i + stride] + image.rgba[i + stride + 4];
+        half.rgba[(static_cast<size_t>(y) * half.width + x) * 4 + c] = static_cast<uint8_t>((sum + 2) >> 2);
+      }
+  return half;
+}
+
 }  // namespace htx

@@ -111,6 +111,25 @@ std::set<std::string> check_obj_text(const std::string& path) {
   return used;
 }
 
+// A map_Kd image larger than the texture unit takes (a side above 256 texels; sides powers of two)
+// is halved, as its mip levels are made, until it fits, so that a model's usual 1024 x 1024 texture
+// draws from its 256 x 256 level; `note` says so. Other images pass unchanged (texture_from_image
+// judges them).
+Image fit_texture_image(Image img, const std::string& path, std::string* note) {
+  const unsigned lw = log2_exact(img.width), lh = log2_exact(img.height);
+  if (lw == 0 || lh == 0 || (lw <= kMaxTexLog2 && lh <= kMaxTexLog2)) return img;
+  const int width = img.width, height = img.height;
+  while (log2_exact(img.width) > kMaxTexLog2 || log2_exact(img.height) > kMaxTexLog2) {
+    if (log2_exact(img.width) <= kMinTexLog2 || log2_exact(img.height) <= kMinTexLog2)
+      throw std::runtime_error("texture '" + path + "' is " + std::to_string(width) + "x" + std::to_string(height) +
+                               "; no mip level of it has both sides in 8..256");
+    img = halve_image(img);
+  }
+  *note = "texture '" + path + "' is " + std::to_string(width) + "x" + std::to_string(height) + ": drawn from its " +
+          std::to_string(img.width) + "x" + std::to_string(img.height) + " mip level (the GPU takes sides up to 256)";
+  return img;
+}
+
 }  // namespace
 
 Texture texture_from_image(const Image& img, const std::string& path, TexFormat format) {
@@ -153,7 +172,9 @@ Scene load_obj_scene(const std::string& path) {
     const std::string full = (std::filesystem::path(config.mtl_search_path) / tex).string();
     auto it = texture_index.find(full);
     if (it == texture_index.end()) {
-      scene.textures.push_back(texture_from_image(load_image(full), full));
+      std::string note;
+      scene.textures.push_back(texture_from_image(fit_texture_image(load_image(full), full, &note), full));
+      if (!note.empty()) scene.notes.push_back(note);
       it = texture_index.emplace(full, static_cast<int>(scene.textures.size()) - 1).first;
     }
     material_texture[m] = it->second;

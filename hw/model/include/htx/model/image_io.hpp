@@ -30,4 +30,8 @@ Image image_from_rgb888(int width, int height, const std::vector<uint32_t>& pixe
 // Expands RGB565 to RGB8 by bit replication (0x1F -> 0xFF), alpha 255.
 Image image_from_rgb565(int width, int height, const std::vector<uint16_t>& pixels);
 
+// The image at half its width and height by a 2x2 box filter, (a + b + c + d + 2) >> 2 per
+// channel, as the texture unit's mip levels are made. Needs even sides (std::invalid_argument).
+Image halve_image(const Image& image);
+
 }  // namespace htx

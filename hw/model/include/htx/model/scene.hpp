@@ -41,6 +41,9 @@ struct Scene {
   Camera camera;
   uint16_t clear_color = 0;  // RGB565
   bool cull_backfaces = true;  // front faces are counter-clockwise in NDC
+  // What loading changed that the user should hear of (an OBJ's texture drawn from a smaller mip
+  // level); the tools print each line.
+  std::vector<std::string> notes;
 };
 
 }  // namespace htx
