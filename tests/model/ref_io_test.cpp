@@ -53,17 +53,19 @@ TEST(RefIo, ObjErrorsAreClear) {
   const auto dir = std::filesystem::temp_directory_path() / "htx_ref_io_test";
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "bad.mtl") << "newmtl m\nmap_Kd odd.png\n";
-  Image odd;
+  Image odd;  // 12 x 4: its power-of-two form, 8 x 4, is too small
   odd.width = 12;
-  odd.height = 8;
-  odd.rgba.assign(12 * 8 * 4, 128);
+  odd.height = 4;
+  odd.rgba.assign(12 * 4 * 4, 128);
   write_png((dir / "odd.png").string(), odd);
   std::ofstream(dir / "bad.obj") << "mtllib bad.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n";
   try {
     load_obj_scene((dir / "bad.obj").string());
-    FAIL() << "a 12-texel-wide texture must be rejected";
+    FAIL() << "a 12 x 4 texture must be rejected";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("powers of two"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("is 12x4; no mip level of it (or of its power-of-two form) has both sides"),
+              std::string::npos)
+        << e.what();
   }
   // A non-finite vertex in any mesh (here the second one) is rejected, not only in the first.
   for (const char* f : {"quad.mtl", "checker8x16.png"})
@@ -123,6 +125,24 @@ TEST(RefIo, ObjErrorsAreClear) {
   std::filesystem::remove_all(dir);
 }
 
+// Area averaging: 3 pixels into 2 cells of 1.5 pixels each, [a, b/2] and [b/2, c]; rows alike.
+TEST(RefIo, ShrinkingAnImageAveragesTheAreaEachPixelCovers) {
+  Image img;
+  img.width = 3;
+  img.height = 1;
+  img.rgba = {0, 0, 0, 255, 90, 30, 3, 255, 180, 60, 9, 255};
+  const Image out = shrink_image(img, 2, 1);
+  ASSERT_EQ(out.width, 2);
+  ASSERT_EQ(out.height, 1);
+  // (0 + 90 / 2) / 1.5 = 30, (90 / 2 + 180) / 1.5 = 150; green 10 and 50; blue (1.5 / 1.5) = 1 and
+  // (1.5 + 9) / 1.5 = 7; alpha stays 255.
+  EXPECT_EQ(out.rgba, (std::vector<uint8_t>{30, 10, 1, 255, 150, 50, 7, 255}));
+  const Image same = shrink_image(img, 3, 1);
+  EXPECT_EQ(same.rgba, img.rgba) << "the same size is the image itself";
+  EXPECT_THROW(shrink_image(img, 4, 1), std::invalid_argument);
+  EXPECT_THROW(shrink_image(img, 0, 1), std::invalid_argument);
+}
+
 TEST(RefIo, HalvingAnImageAveragesEachTwoByTwoBlockRoundingHalvesUp) {
   Image img;
   img.width = 4;
@@ -140,7 +160,8 @@ TEST(RefIo, HalvingAnImageAveragesEachTwoByTwoBlockRoundingHalvesUp) {
 }
 
 // A map_Kd image larger than the GPU takes is drawn from its largest mip level that fits, with a
-// note; one whose every fitting level would have a side below 8 is refused.
+// note; one whose every fitting level would have a side below 8 is refused; sides that are not
+// powers of two are resampled first.
 TEST(RefIo, ObjTexturesLargerThanTheGpuTakesAreHalvedUntilTheyFit) {
   const auto dir = std::filesystem::temp_directory_path() / "htx_ref_io_big_texture";
   std::filesystem::create_directories(dir);
@@ -176,9 +197,29 @@ TEST(RefIo, ObjTexturesLargerThanTheGpuTakesAreHalvedUntilTheyFit) {
     load_obj_scene((dir / "thin.obj").string());
     ADD_FAILURE() << "a 2048x8 texture has no level with both sides in 8..256";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("is 2048x8; no mip level of it has both sides in 8..256"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("is 2048x8; no mip level of it"), std::string::npos) << e.what();
   }
+  // Sides that are not powers of two: shrunk to the largest within them (area averaging), then
+  // halved if still above 256: 600 x 300 -> 512 x 256 -> 256 x 128.
+  Image npot;
+  npot.width = 600;
+  npot.height = 300;
+  npot.rgba.resize(600 * 300 * 4);
+  for (size_t i = 0; i < npot.rgba.size(); ++i) npot.rgba[i] = static_cast<uint8_t>((i * 40503u) >> 8);
+  write_png((dir / "npot.png").string(), npot);
+  std::ofstream(dir / "npot.mtl") << "newmtl m\nmap_Kd npot.png\n";
+  std::ofstream(dir / "npot.obj") << std::string(obj).replace(7, 1, "npot");
+  const Scene n = load_obj_scene((dir / "npot.obj").string());
+  ASSERT_EQ(n.textures.size(), 1u);
+  EXPECT_EQ(n.textures[0].log2_width, 8u);
+  EXPECT_EQ(n.textures[0].log2_height, 7u);
+  ASSERT_EQ(n.notes.size(), 1u);
+  EXPECT_NE(n.notes[0].find("is 600x300: resampled to 512x256 (the GPU takes sides that are powers of two), then "
+                            "drawn from its 256x128 mip level"),
+            std::string::npos)
+      << n.notes[0];
+  const Image expected_npot = halve_image(shrink_image(load_image((dir / "npot.png").string()), 512, 256));
+  EXPECT_EQ(n.textures[0].levels[0], texture_from_image(expected_npot, "expected").levels[0]);
   // Within the GPU's sizes nothing changes and nothing is said.
   EXPECT_TRUE(load_obj_scene(kData + "/quad.obj").notes.empty());
   std::filesystem::remove_all(dir);

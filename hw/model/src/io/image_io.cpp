@@ -3,7 +3,9 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 namespace htx {
 
@@ -53,6 +55,61 @@ Image image_from_rgb565(int width, int height, const std::vector<uint16_t>& pixe
   std::vector<uint32_t> rgb(pixels.size());
   for (size_t i = 0; i < pixels.size(); ++i) rgb[i] = rgb888_from_rgb565(pixels[i]);
   return image_from_rgb888(width, height, rgb);
+}
+
+namespace {
+
+// For each of `to` cells over `from` source pixels (to <= from): the first source pixel it touches
+// and the weights of the pixels it covers, in units of 1/from of a cell's width times `to`
+// (cell c covers [c * from, (c + 1) * from) in units of 1/to of a source pixel).
+struct Coverage {
+  int first = 0;
+  std::vector<int> weights;  // summing to `from`
+};
+std::vector<Coverage> coverage(int from, int to) {
+  std::vector<Coverage> cells(static_cast<size_t>(to));
+  for (int c = 0; c < to; ++c) {
+    const long lo = static_cast<long>(c) * from, hi = static_cast<long>(c + 1) * from;  // in 1/to pixels
+    Coverage& cov = cells[static_cast<size_t>(c)];
+    cov.first = static_cast<int>(lo / to);
+    for (long p = lo / to; p * to < hi; ++p) {
+      const long a = std::max(lo, p * to), b = std::min(hi, (p + 1) * to);
+      cov.weights.push_back(static_cast<int>(b - a));
+    }
+  }
+  return cells;
+}
+
+}  // namespace
+
+Image shrink_image(const Image& image, int width, int height) {
+  if (width < 1 || height < 1 || width > image.width || height > image.height ||
+      image.rgba.size() != static_cast<size_t>(image.width) * image.height * 4)
+    throw std::invalid_argument("shrink_image: the new size must be within the image's");
+  const std::vector<Coverage> cx = coverage(image.width, width), cy = coverage(image.height, height);
+  Image out;
+  out.width = width;
+  out.height = height;
+  out.rgba.resize(static_cast<size_t>(width) * height * 4);
+  // Each weight is in units of 1/(to) source pixels per axis; a pixel's weights sum to
+  // image.width * image.height, so the mean is the weighted sum over that, rounded.
+  const uint64_t total = static_cast<uint64_t>(image.width) * image.height;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < 4; ++c) {
+        uint64_t sum = 0;
+        const Coverage& vy = cy[static_cast<size_t>(y)];
+        const Coverage& vx = cx[static_cast<size_t>(x)];
+        for (size_t j = 0; j < vy.weights.size(); ++j)
+          for (size_t i = 0; i < vx.weights.size(); ++i) {
+            const size_t px = (static_cast<size_t>(vy.first + static_cast<int>(j)) * image.width + vx.first +
+                               static_cast<int>(i)) * 4 + static_cast<size_t>(c);
+            sum += static_cast<uint64_t>(vy.weights[j]) * static_cast<uint64_t>(vx.weights[i]) * image.rgba[px];
+          }
+        out.rgba[(static_cast<size_t>(y) * width + x) * 4 + static_cast<size_t>(c)] =
+            static_cast<uint8_t>((sum + total / 2) / total);
+      }
+  return out;
 }
 
 Image halve_image(const Image& image) {

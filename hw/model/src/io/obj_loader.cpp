@@ -111,22 +111,39 @@ std::set<std::string> check_obj_text(const std::string& path) {
   return used;
 }
 
-// A map_Kd image larger than the texture unit takes (a side above 256 texels; sides powers of two)
-// is halved, as its mip levels are made, until it fits, so that a model's usual 1024 x 1024 texture
-// draws from its 256 x 256 level; `note` says so. Other images pass unchanged (texture_from_image
-// judges them).
+// The largest power of two not above n (n >= 1).
+int floor_pow2(int n) {
+  int p = 1;
+  while (p <= n / 2) p *= 2;
+  return p;
+}
+
+// A map_Kd image the texture unit cannot take as it is becomes one it can, and `note` says how:
+// sides that are not powers of two are shrunk to the largest powers of two within them (area
+// averaging), and a side above 256 texels is brought within it by halving the image, as its mip
+// levels are made, so that a model's usual 1024 x 1024 texture draws from its 256 x 256 level.
+// An image with no such form whose sides are both at least 8 is refused.
 Image fit_texture_image(Image img, const std::string& path, std::string* note) {
-  const unsigned lw = log2_exact(img.width), lh = log2_exact(img.height);
-  if (lw == 0 || lh == 0 || (lw <= kMaxTexLog2 && lh <= kMaxTexLog2)) return img;
-  const int width = img.width, height = img.height;
-  while (log2_exact(img.width) > kMaxTexLog2 || log2_exact(img.height) > kMaxTexLog2) {
-    if (log2_exact(img.width) <= kMinTexLog2 || log2_exact(img.height) <= kMinTexLog2)
-      throw std::runtime_error("texture '" + path + "' is " + std::to_string(width) + "x" + std::to_string(height) +
-                               "; no mip level of it has both sides in 8..256");
-    img = halve_image(img);
+  const std::string size = std::to_string(img.width) + "x" + std::to_string(img.height);
+  if (img.width < 1 || img.height < 1) throw std::runtime_error("texture '" + path + "' is empty");
+  std::string resampled, halved;
+  if (floor_pow2(img.width) != img.width || floor_pow2(img.height) != img.height) {
+    img = shrink_image(img, floor_pow2(img.width), floor_pow2(img.height));
+    resampled = "resampled to " + std::to_string(img.width) + "x" + std::to_string(img.height) +
+                " (the GPU takes sides that are powers of two)";
   }
-  *note = "texture '" + path + "' is " + std::to_string(width) + "x" + std::to_string(height) + ": drawn from its " +
-          std::to_string(img.width) + "x" + std::to_string(img.height) + " mip level (the GPU takes sides up to 256)";
+  constexpr int kMin = 1 << kMinTexLog2, kMax = 1 << kMaxTexLog2;
+  while ((img.width > kMax || img.height > kMax) && img.width > kMin && img.height > kMin) {
+    img = halve_image(img);
+    halved = "drawn from its " + std::to_string(img.width) + "x" + std::to_string(img.height) +
+             " mip level (the GPU takes sides up to 256)";
+  }
+  if (img.width < kMin || img.height < kMin || img.width > kMax || img.height > kMax)
+    throw std::runtime_error("texture '" + path + "' is " + size +
+                             "; no mip level of it (or of its power-of-two form) has both sides in 8..256");
+  if (!resampled.empty() || !halved.empty())
+    *note = "texture '" + path + "' is " + size + ": " + resampled + (resampled.empty() || halved.empty() ? "" : ", then ") +
+            halved;
   return img;
 }
 

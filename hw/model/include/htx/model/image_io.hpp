@@ -30,6 +30,11 @@ Image image_from_rgb888(int width, int height, const std::vector<uint32_t>& pixe
 // Expands RGB565 to RGB8 by bit replication (0x1F -> 0xFF), alpha 255.
 Image image_from_rgb565(int width, int height, const std::vector<uint16_t>& pixels);
 
+// The image shrunk to width x height (each at most the image's, at least 1) by area averaging: a
+// new pixel is the mean of the source area it covers, partly covered pixels weighted by their
+// share, each channel rounded to nearest. std::invalid_argument for a size it cannot make.
+Image shrink_image(const Image& image, int width, int height);
+
 // The image at half its width and height by a 2x2 box filter, (a + b + c + d + 2) >> 2 per
 // channel, as the texture unit's mip levels are made. Needs even sides (std::invalid_argument).
 Image halve_image(const Image& image);

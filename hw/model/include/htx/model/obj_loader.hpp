@@ -1,8 +1,9 @@
 // Scenes from Wavefront OBJ/MTL files with PNG textures (tinyobjloader, stb_image).
 //
 // - One mesh per (shape, material); faces are triangulated; front faces counter-clockwise.
-// - A material's map_Kd image becomes a texture (RGB565): its sides must be powers of two in 8..256;
-//   a larger one is halved (its mip levels' box filter) until it fits, with a line in Scene::notes.
+// - A material's map_Kd image becomes a texture (RGB565) with sides that are powers of two in
+//   8..256: other sides are shrunk to the largest powers of two within them (area averaging), a
+//   side above 256 halved as the mip levels are made, each with a line in Scene::notes.
 //   OBJ's vt has v = 0 at the image bottom, so image rows are stored bottom-up (texel row 0 = v 0).
 // - Colour: the material's Kd times the vertex colour (white when absent), modulating the texture.
 // - The camera frames the bounding sphere from +z, slightly above, 60 degree vertical field of view.
