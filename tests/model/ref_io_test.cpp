@@ -165,22 +165,23 @@ TEST(RefIo, HalvingAnImageAveragesEachTwoByTwoBlockRoundingHalvesUp) {
 TEST(RefIo, ObjTexturesLargerThanTheGpuTakesAreHalvedUntilTheyFit) {
   const auto dir = std::filesystem::temp_directory_path() / "htx_ref_io_big_texture";
   std::filesystem::create_directories(dir);
-  Image big;
-  big.width = 1024;
-  big.height = 512;
-  big.rgba.resize(1024 * 512 * 4);
-  for (size_t i = 0; i < big.rgba.size(); ++i) big.rgba[i] = static_cast<uint8_t>((i * 2654435761u) >> 24);
-  write_png((dir / "big.png").string(), big);
-  Image thin;
-  thin.width = 2048;
-  thin.height = 8;
-  thin.rgba.assign(2048 * 8 * 4, 200);
-  write_png((dir / "thin.png").string(), thin);
-  const char* obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl m\nf 1/1 2/2 3/3\n";
-  std::ofstream(dir / "big.mtl") << "newmtl m\nmap_Kd big.png\n";
-  std::ofstream(dir / "thin.mtl") << "newmtl m\nmap_Kd thin.png\n";
-  std::ofstream(dir / "big.obj") << std::string(obj).replace(7, 1, "big");   // mtllib big.mtl
-  std::ofstream(dir / "thin.obj") << std::string(obj).replace(7, 1, "thin");
+  // NAME.obj, a textured triangle whose NAME.mtl maps NAME.png: a width x height image of hashed
+  // bytes (constant 200 with flat).
+  const auto write_textured = [&dir](const std::string& name, int width, int height, bool flat) {
+    Image img;
+    img.width = width;
+    img.height = height;
+    img.rgba.resize(static_cast<size_t>(width) * height * 4);
+    for (size_t i = 0; i < img.rgba.size(); ++i) img.rgba[i] = flat ? 200 : static_cast<uint8_t>((i * 2654435761u) >> 24);
+    write_png((dir / (name + ".png")).string(), img);
+    std::ofstream(dir / (name + ".mtl")) << "newmtl m\nmap_Kd " << name << ".png\n";
+    std::ofstream(dir / (name + ".obj")) << "mtllib " << name
+                                         << ".mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl m\n"
+                                            "f 1/1 2/2 3/3\n";
+  };
+  write_textured("big", 1024, 512, false);
+  write_textured("thin", 2048, 8, true);
+  write_textured("npot", 600, 300, false);
 
   const Scene s = load_obj_scene((dir / "big.obj").string());
   ASSERT_EQ(s.textures.size(), 1u);
@@ -201,14 +202,6 @@ TEST(RefIo, ObjTexturesLargerThanTheGpuTakesAreHalvedUntilTheyFit) {
   }
   // Sides that are not powers of two: shrunk to the largest within them (area averaging), then
   // halved if still above 256: 600 x 300 -> 512 x 256 -> 256 x 128.
-  Image npot;
-  npot.width = 600;
-  npot.height = 300;
-  npot.rgba.resize(600 * 300 * 4);
-  for (size_t i = 0; i < npot.rgba.size(); ++i) npot.rgba[i] = static_cast<uint8_t>((i * 40503u) >> 8);
-  write_png((dir / "npot.png").string(), npot);
-  std::ofstream(dir / "npot.mtl") << "newmtl m\nmap_Kd npot.png\n";
-  std::ofstream(dir / "npot.obj") << std::string(obj).replace(7, 1, "npot");
   const Scene n = load_obj_scene((dir / "npot.obj").string());
   ASSERT_EQ(n.textures.size(), 1u);
   EXPECT_EQ(n.textures[0].log2_width, 8u);
