@@ -37,9 +37,9 @@ std::chrono::milliseconds timeout_of(const PortArgs& a) {
   return std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000));
 }
 
-// Downloads the frame into a PNG, showing progress on stderr.
+// Downloads the frame into a PNG, showing progress on stderr (the callers check `out`'s directory
+// first, before the port is opened or the frame asked for).
 void grab_to_png(console::ConsoleClient& client, const std::string& out) {
-  require_output_dir(out);
   size_t shown = 0;
   const console::GrabbedFrame f = client.grab([&shown](size_t bytes) {
     if (bytes >= shown + 4096) {
@@ -93,8 +93,10 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
       throw std::invalid_argument(verb == "grab"     ? "usage: grab FRAME.png"
                                   : verb == "upload" ? "usage: upload SCENE (built-in or FILE.obj)"
                                                      : "usage: texture IMAGE.png [rgb565|rgba4444]");
-    if (verb == "grab") grab_to_png(client, arg);
-    else if (verb == "upload") upload_scene(client, scene_payload(arg, "160x120", true));
+    if (verb == "grab") {
+      require_output_dir(arg);
+      grab_to_png(client, arg);
+    } else if (verb == "upload") upload_scene(client, scene_payload(arg, "160x120", true));
     else
       upload(client, packed_texture(arg, format.empty() ? "rgb565" : format),
              console::ConsoleClient::Payload::kTexture);

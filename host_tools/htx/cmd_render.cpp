@@ -20,9 +20,9 @@
 #include "htx/model/scenes.hpp"
 #if __has_include("htx/rtl/raster_engine.hpp")
 #include "htx/rtl/raster_engine.hpp"
-#include "output_path.hpp"
 #define HTX_HAVE_RTL_ENGINE 1
 #endif
+#include "output_path.hpp"
 
 namespace htx {
 

@@ -106,13 +106,20 @@ void print_hotspots(const std::vector<sim::FunctionCost>& costs, uint64_t total)
   }
 }
 
-void write_signature(const sim::SocSim& soc, const sim::ElfImage& elf, const std::string& path) {
+// The words from begin_signature to end_signature: found before the run, so that an ELF without
+// them is refused then.
+struct SignatureRange {
+  uint32_t begin = 0, end = 0;
+};
+SignatureRange signature_range(const sim::ElfImage& elf, const std::string& path) {
   const auto begin = elf.symbol("begin_signature");
   const auto end = elf.symbol("end_signature");
-  if (!begin || !end) {
-    throw std::runtime_error(path + ": the ELF has no begin_signature/end_signature symbols");
-  }
-  const auto words = soc.read_words(*begin, *end);
+  if (!begin || !end) throw std::runtime_error(path + ": the ELF has no begin_signature/end_signature symbols");
+  return {*begin, *end};
+}
+
+void write_signature(const sim::SocSim& soc, SignatureRange range, const std::string& path) {
+  const auto words = soc.read_words(range.begin, range.end);
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot write the signature");
   for (uint32_t w : words) {
@@ -164,8 +171,7 @@ int run_sim(const SimArgs& a) {
                              std::to_string(sim::SocSim::kFbPixels) + " pixels");
   const sim::ElfImage elf = sim::load_elf(a.elf);
   // What can only fail after the run is checked before it, so a long run is not lost to a typo.
-  if (!a.signature.empty() && (!elf.symbol("begin_signature") || !elf.symbol("end_signature")))
-    throw std::runtime_error(a.signature + ": the ELF has no begin_signature/end_signature symbols");
+  const SignatureRange signature = a.signature.empty() ? SignatureRange{} : signature_range(elf, a.signature);
   for (const std::string* out : {&a.signature, &a.screen, &a.frame, &a.trace}) require_output_dir(*out);
   sim::SimOptions opt;
   opt.max_cycles = a.max_cycles;
@@ -189,7 +195,7 @@ int run_sim(const SimArgs& a) {
   sim::SocSim soc(elf, opt, uart.get(), std::cout);
   const sim::SimResult r = soc.run();
   uart.reset();  // flushes the UART's last bytes before the summary
-  if (!a.signature.empty()) write_signature(soc, elf, a.signature);
+  if (!a.signature.empty()) write_signature(soc, signature, a.signature);
   if (!a.screen.empty()) write_screen(*soc.screen(), a.screen);
   const std::vector<uint16_t> frame = soc.read_frame(frame_w, frame_h);
   if (!a.frame.empty())

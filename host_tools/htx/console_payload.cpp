@@ -33,6 +33,13 @@ std::vector<uint8_t> pack_level(const Texture& t, unsigned level) {
   return packed;
 }
 
+// Adds a note to a "; "-separated list of them (an empty note adds nothing).
+void add_note(std::string* notes, const std::string& note) {
+  if (note.empty()) return;
+  if (!notes->empty()) *notes += "; ";
+  *notes += note;
+}
+
 // The largest mip level of `t` the console takes (at most render::kConsoleTextureTexels texels,
 // sides at least 8), packed; empty with a note when none is.
 std::vector<uint8_t> packed_texture_level(const Texture& t, std::string* note) {
@@ -53,7 +60,7 @@ std::vector<uint8_t> packed_texture_level(const Texture& t, std::string* note) {
     *note = "the scene's " + size0 + " texture sent as its " + std::to_string(1u << lw) + "x" +
             std::to_string(1u << lh) + " mip level (the console takes at most " + std::to_string(max_texels) +
             " texels)";
-  if (t.format == TexFormat::RGBA8888) *note += std::string(note->empty() ? "" : "; ") + "RGBA8888 sent as RGB565";
+  if (t.format == TexFormat::RGBA8888) add_note(note, "RGBA8888 sent as RGB565");
   return pack_level(t, level);
 }
 
@@ -69,10 +76,10 @@ ScenePayload scene_payload(const std::string& spec, const std::string& size, boo
   const size_t whole_meshes = rs.meshes.size();
   host::split_meshes(&rs, mesh_vertices);
   ScenePayload p;
-  for (const std::string& n : scene.notes) p.note += (p.note.empty() ? "" : "; ") + n;
+  for (const std::string& n : scene.notes) add_note(&p.note, n);
   if (rs.meshes.size() != whole_meshes)
-    p.note += std::string(p.note.empty() ? "" : "; ") + std::to_string(whole_meshes) + " meshes sent as " + std::to_string(rs.meshes.size()) + " of at most " +
-             std::to_string(mesh_vertices) + " vertices";
+    add_note(&p.note, std::to_string(whole_meshes) + " meshes sent as " + std::to_string(rs.meshes.size()) +
+                          " of at most " + std::to_string(mesh_vertices) + " vertices");
   std::vector<render::Mesh> meshes;
   for (const host::RenderScene::MeshData& d : rs.meshes) meshes.push_back(d.mesh);
   const uint32_t count = static_cast<uint32_t>(meshes.size());
@@ -89,10 +96,10 @@ ScenePayload scene_payload(const std::string& spec, const std::string& size, boo
   if (used.empty() || used[0] < 0 || static_cast<size_t>(used[0]) >= scene.textures.size()) return p;
   std::string texture_note;
   p.texture = packed_texture_level(scene.textures[static_cast<size_t>(used[0])], &texture_note);
+  add_note(&p.note, texture_note);
   if (used.size() > 1)
-    texture_note += std::string(texture_note.empty() ? "" : "; ") + "the scene uses " + std::to_string(used.size()) +
-                    " textures and the console draws every mesh with the first";
-  if (!texture_note.empty()) p.note += (p.note.empty() ? "" : "; ") + texture_note;
+    add_note(&p.note, "the scene uses " + std::to_string(used.size()) +
+                          " textures and the console draws every mesh with the first");
   return p;
 }
 

@@ -70,9 +70,9 @@ void for_each_line(const std::filesystem::path& file, Visit visit) {
 // Every word a finite decimal number and their count one the format allows: otherwise a clear
 // error naming the file and line, instead of tinyobjloader's silent 0 (a Kd of one number, which
 // the MTL format reads as grey, it reads as red: three are required).
-void check_decimals(const std::string& file, size_t line, const std::string& keyword,
+void check_decimals(const std::string& source, size_t line, const std::string& keyword,
                     const std::vector<std::string>& words, bool count_ok, const char* counts) {
-  const std::string where = file + " line " + std::to_string(line) + ": ";
+  const std::string where = source + " line " + std::to_string(line) + ": ";
   for (const std::string& w : words)
     if (!is_decimal(w) || !std::isfinite(std::strtod(w.c_str(), nullptr)))
       throw std::runtime_error(where + "'" + w + "' is not a finite decimal number");
@@ -174,9 +174,9 @@ Scene load_obj_scene(const std::string& path) {
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   const auto& materials = reader.GetMaterials();
   for (const std::string& name : used_materials) {
-    bool found = false;
-    for (const auto& m : materials) found = found || m.name == name;
-    if (!found) throw std::runtime_error("OBJ '" + path + "': usemtl '" + name + "' is in none of its material libraries");
+    const auto named = [&name](const tinyobj::material_t& m) { return m.name == name; };
+    if (std::none_of(materials.begin(), materials.end(), named))
+      throw std::runtime_error("OBJ '" + path + "': usemtl '" + name + "' is in none of its material libraries");
   }
 
   Scene scene;
