@@ -547,7 +547,7 @@ TEST(SystemConsole, MeshesLargerThanTheVertexCacheGoInParts) {
   ASSERT_EQ(rand.status, 0) << rand.err;
   EXPECT_NE(rand.out.find("upload ok: 7248 bytes, 4 meshes"), std::string::npos) << rand.out;
   const auto drawn = cs.console({"render upload", "quit"});
-  EXPECT_NE(drawn.out.find("render upload method auto triangles"), std::string::npos) << drawn.out;
+  EXPECT_NE(drawn.out.find("render upload method auto filter scene triangles"), std::string::npos) << drawn.out;
   EXPECT_EQ(drawn.out.find("error"), std::string::npos) << drawn.out;
   EXPECT_EQ(sim.wait(60s), 0);
 }

@@ -5,6 +5,7 @@
 // texture units), with the same scenes, texture and render state (whose frame equals the model's
 // for the same vertex records and texture).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -12,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -31,6 +33,7 @@
 #include "htx/rtl/raster_engine.hpp"
 #include "render_scene.hpp"
 #include "render_state.hpp"
+#include "scene_render.hpp"
 #include "scene_turn.hpp"
 #include "scenes.hpp"
 #include "soc_config.hpp"
@@ -85,7 +88,8 @@ struct CosimFrame {
   uint32_t sent = 0;
 };
 
-CosimFrame cosim_frame(const std::string& scene_name) {
+// `filter`: every mesh's filter (the console's `set filter`), or kSceneFilter for the scene's own.
+CosimFrame cosim_frame(const std::string& scene_name, uint8_t filter = render_app::kSceneFilter) {
   using namespace htx;
   constexpr int kW = render_app::kWidth, kH = render_app::kHeight;
   test::RenderScene rs = test::to_render_scene(make_builtin_scene(scene_name), kW, kH);
@@ -93,6 +97,7 @@ CosimFrame cosim_frame(const std::string& scene_name) {
   uint32_t max_vertices = 0;
   for (auto& d : rs.meshes) {
     render_app::apply_soc_render_state(&d.mesh);
+    if (filter != render_app::kSceneFilter) d.mesh.state.filter = filter;
     meshes.push_back(d.mesh);
     max_vertices = std::max(max_vertices, d.mesh.vertex_count);
   }
@@ -298,6 +303,44 @@ TEST(SystemRender, FirmwareFrameOnTheSocEqualsTheCosimFrame) {
               fw.at("raster_cycles").c_str(), fw.at("crc32").c_str());
   std::printf("cosim cube: raster %u cycles, crc32 %s\nwhole run: %s\n", cube.raster_busy, want.c_str(),
               json.dump().c_str());
+}
+
+// The console's `set filter` draws every triangle with that filter: its frames are the cosim
+// frames drawn so (the cube's own filter is bilinear, so `nearest` gives another frame), `scene`
+// gives the scene's own again, and the filter the SoC's texture unit does not build (trilinear,
+// TEXTURE CAPS.FILTERS) is refused and leaves the setting as it was.
+TEST(SystemRender, ConsoleFilterSettingDrawsTheCosimFrames) {
+  const std::string script = ::testing::TempDir() + "htx_console_filter_" + std::to_string(getpid()) + ".txt";
+  std::ofstream(script) << "info\nset filter nearest\nrender cube\nset filter trilinear\nrender cube\n"
+                           "set filter scene\nrender cube\nset filter cubic\nquit\n";
+  const auto r = htx::test::run_program(
+      {"/bin/sh", "-c",
+       std::string(HTX_BIN) + " sim --elf " HTX_FIRMWARE_DIR "/console.elf --uart stdio --max-cycles 100000000 < " +
+           script},
+      180s);
+  std::filesystem::remove(script);
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("; filters nearest bilinear\r\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("error: this GPU does not build the filter trilinear"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("error: unknown filter (nearest, bilinear, trilinear, scene): cubic"), std::string::npos)
+      << r.out;
+  std::vector<std::string> crcs;  // of the three renders, in order
+  for (size_t at = r.out.find("render cube method auto filter "); at != std::string::npos;
+       at = r.out.find("render cube method auto filter ", at + 1)) {
+    const size_t c = r.out.find("crc32 ", at);
+    ASSERT_NE(c, std::string::npos) << r.out;
+    crcs.push_back(r.out.substr(c + 6, 8));
+  }
+  ASSERT_EQ(crcs.size(), 3u) << r.out;
+  const std::string nearest = hex8(crc32_bitwise(cosim_frame("cube", 0).color));
+  const std::string own = hex8(crc32_bitwise(cosim_frame("cube").color));
+  EXPECT_NE(nearest, own);
+  EXPECT_EQ(crcs[0], nearest) << r.out;
+  EXPECT_EQ(crcs[1], nearest) << "trilinear was refused: still nearest\n" << r.out;
+  EXPECT_EQ(crcs[2], own) << r.out;
+  EXPECT_NE(r.out.find("render cube method auto filter nearest"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("render cube method auto filter scene"), std::string::npos) << r.out;
 }
 
 // The SoC model stops the GPU's clock while the GPU is idle (htx_soc_fabric, Sim only), which must

@@ -12,6 +12,8 @@
 #include "scene_turn.hpp"
 #include "scene_upload.hpp"
 #include "texture_store.hpp"
+#include "htx/hal/raster.h"
+#include "htx/hal/texture.h"
 #include "htx/hal/timer.h"
 #include "htx/hal/uart.h"
 #include "htx/hal/video.h"
@@ -30,11 +32,24 @@ constexpr const char* kVersion = "0.1";
 constexpr uint32_t kFlipPolls = 1'000'000;
 constexpr uint32_t kSpinDefaultFrames = 60, kSpinMaxFrames = 3600;
 
+// The methods' names by method number (TriState::method; SUBDIV is `subdivN` in `set method`).
+constexpr const char* kMethodNames[] = {"affine", "subdiv", "recip_lut", "recip_nr", "divfree"};
+constexpr uint32_t kMethodCount = sizeof kMethodNames / sizeof kMethodNames[0];
+static_assert(htx::render::kMethodSubdiv == 1 && htx::render::kMethodDivFree == kMethodCount - 1,
+              "kMethodNames follows htx::render::MethodId");
+
+// `set filter`'s names, by filter number (TriState::filter); `scene` keeps each mesh's own.
+constexpr const char* kFilterNames[] = {"nearest", "bilinear", "trilinear"};
+constexpr uint32_t kFilterCount = sizeof kFilterNames / sizeof kFilterNames[0];
+
+const char* filter_text(uint8_t filter) { return filter < kFilterCount ? kFilterNames[filter] : "scene"; }
+
 struct Settings {
   render_app::DrawSettings draw;
   uint32_t tolerance_denominator = 16;  // AUTO's tolerance: 1 / this texel (1..65536)
   char method_text[12] = "auto";
 };
+
 Settings g_settings;
 render_app::DrawResult g_last;
 const char* g_last_scene = nullptr;
@@ -75,6 +90,7 @@ void cmd_help() {
         "  scenes                the scenes `render` draws\r\n"
         "  set method NAME       auto, affine, subdivN (N = 2..64), recip_lut, recip_nr, divfree\r\n"
         "  set tolerance 1/N     AUTO's largest predicted texel error (N = 1..65536)\r\n"
+        "  set filter NAME       nearest, bilinear, trilinear, or scene (each mesh's own)\r\n"
         "  render SCENE          draw a scene; prints its figures and the frame's CRC-32\r\n"
         "  spin SCENE [FRAMES] [crc]  FRAMES renders (60) turning once about its middle; a key stops\r\n"
         "  upload SIZE CRC32     receive a packed scene as packets (for `htx upload`); SCENE `upload`\r\n"
@@ -89,10 +105,19 @@ void cmd_help() {
 void cmd_info() {
   printf("hypertex console %s: soc %08lx at %lu Hz\r\n", kVersion, static_cast<unsigned long>(HTX_SYSCTRL->ID),
          static_cast<unsigned long>(HTX_SYSCTRL->CLOCK_HZ));
-  printf("screen %ldx%ld rgb565; methods affine subdiv recip_lut recip_nr divfree\r\n",
-         static_cast<long>(render_app::kWidth), static_cast<long>(render_app::kHeight));
-  printf("method %s; tolerance 1/%lu texel\r\n", g_settings.method_text,
-         static_cast<unsigned long>(g_settings.tolerance_denominator));
+  printf("screen %ldx%ld rgb565; methods", static_cast<long>(render_app::kWidth),
+         static_cast<long>(render_app::kHeight));
+  // What this GPU builds (CAPS), in `set`'s names.
+  const uint32_t methods = htx::hal::raster_caps().methods;
+  for (uint32_t m = 0; m < kMethodCount; ++m)
+    if ((methods >> m) & 1u) printf(" %s", kMethodNames[m]);
+  fputs("; filters", stdout);
+  const uint32_t filters = htx::hal::texture_caps().filters;
+  for (uint32_t f = 0; f < kFilterCount; ++f)
+    if ((filters >> f) & 1u) printf(" %s", kFilterNames[f]);
+  fputs("\r\n", stdout);
+  printf("method %s; tolerance 1/%lu texel; filter %s\r\n", g_settings.method_text,
+         static_cast<unsigned long>(g_settings.tolerance_denominator), filter_text(g_settings.draw.filter));
   const TextureInfo t = current_texture();
   printf("texture %ux%u %s (%s)\r\n", 1u << t.log2_width, 1u << t.log2_height, texture_format_name(t.format),
          t.uploaded ? "uploaded" : "checkerboard");
@@ -146,37 +171,75 @@ void cmd_receive(char* rest, const char* usage, void (*receive)(uint32_t size, u
   receive(size, crc);
 }
 
+// `set method NAME`: refused here when the raster unit does not build it (RASTER CAPS.METHODS),
+// rather than at the next render.
 bool set_method(const char* name) {
   using namespace htx::render;
   uint8_t method = 0, n = 16;
   uint32_t span = 0;
-  if (strcmp(name, "auto") == 0) method = kMethodAuto;
-  else if (strcmp(name, "affine") == 0) method = kMethodAffine;
-  else if (strcmp(name, "recip_lut") == 0) method = kMethodRecipLut;
-  else if (strcmp(name, "recip_nr") == 0) method = kMethodRecipNr;
-  else if (strcmp(name, "divfree") == 0) method = kMethodDivFree;
-  else if (strncmp(name, "subdiv", 6) == 0 && parse_uint(name + 6, 2, 64, &span)) {
+  if (strcmp(name, "auto") == 0) {
+    method = kMethodAuto;
+  } else if (strncmp(name, "subdiv", 6) == 0) {
+    if (!parse_uint(name + 6, 2, 64, &span)) {
+      error("unknown method ", name);
+      return false;
+    }
     method = kMethodSubdiv;
     n = static_cast<uint8_t>(span);
-  } else return false;
+  } else {
+    method = kMethodCount;
+    for (uint32_t m = 0; m < kMethodCount; ++m)
+      if (m != kMethodSubdiv && strcmp(name, kMethodNames[m]) == 0) method = static_cast<uint8_t>(m);
+    if (method == kMethodCount) {
+      error("unknown method ", name);
+      return false;
+    }
+  }
+  if (method != kMethodAuto && !((htx::hal::raster_caps().methods >> method) & 1u)) {
+    error("this GPU does not build the method ", name);
+    return false;
+  }
   g_settings.draw.method = method;
   g_settings.draw.subdiv_n = n;
   strncpy(g_settings.method_text, name, sizeof g_settings.method_text - 1);
   return true;
 }
 
+// `set filter NAME`: refused here when the texture unit does not build it (TEXTURE CAPS.FILTERS),
+// rather than at the next render.
+bool set_filter(const char* name) {
+  if (strcmp(name, "scene") == 0) {
+    g_settings.draw.filter = render_app::kSceneFilter;
+    return true;
+  }
+  for (uint32_t f = 0; f < kFilterCount; ++f) {
+    if (strcmp(name, kFilterNames[f]) != 0) continue;
+    if (!((htx::hal::texture_caps().filters >> f) & 1u)) {
+      error("this GPU does not build the filter ", name);
+      return false;
+    }
+    g_settings.draw.filter = static_cast<uint8_t>(f);
+    return true;
+  }
+  error("unknown filter (nearest, bilinear, trilinear, scene): ", name);
+  return false;
+}
+
 void cmd_set(char* rest) {
   const char* what = next_word(&rest);
   const char* value = next_word(&rest);
-  if (!what || !value || next_word(&rest)) return error("usage: set method NAME | set tolerance 1/N");
+  if (!what || !value || next_word(&rest))
+    return error("usage: set method NAME | set tolerance 1/N | set filter NAME");
   if (strcmp(what, "method") == 0) {
-    if (!set_method(value)) return error("unknown method ", value);
+    if (!set_method(value)) return;
   } else if (strcmp(what, "tolerance") == 0) {
     uint32_t d = 0;
     if (strncmp(value, "1/", 2) != 0 || !parse_uint(value + 2, 1, 65536, &d))
       return error("tolerance wants 1/N with N = 1..65536, not ", value);
     g_settings.tolerance_denominator = d;
     g_settings.draw.auto_tolerance = htx::render::kOne / d;
+  } else if (strcmp(what, "filter") == 0) {
+    if (!set_filter(value)) return;
   } else {
     return error("unknown setting ", what);
   }
@@ -224,9 +287,9 @@ void cmd_render(char* rest) {
   if (!name || next_word(&rest)) return error("usage: render SCENE");
   const render_app::SceneData* scene = find_scene(name);
   if (!scene || !draw_and_show(*scene)) return;
-  printf("render %s method %s triangles %lu sent %lu frame_cycles %lu ", name, g_settings.method_text,
-         static_cast<unsigned long>(g_last.stats.triangles), static_cast<unsigned long>(g_last.stats.sent),
-         static_cast<unsigned long>(g_last.frame_cycles));
+  printf("render %s method %s filter %s triangles %lu sent %lu frame_cycles %lu ", name, g_settings.method_text,
+         filter_text(g_settings.draw.filter), static_cast<unsigned long>(g_last.stats.triangles),
+         static_cast<unsigned long>(g_last.stats.sent), static_cast<unsigned long>(g_last.frame_cycles));
   render_app::print_raster_figures(g_last.counters);
   printf(" crc32 %08lx\r\n", static_cast<unsigned long>(g_last.crc));
 }

@@ -6,6 +6,7 @@
 
 #include <stdint.h>
 
+#include "scene_render.hpp"
 #include "scenes.hpp"
 
 namespace console_app {
@@ -14,7 +15,7 @@ namespace console_app {
 // size would fill the 128 KiB RAM.
 inline constexpr uint32_t kStoreBytes = 16384;
 // Meshes of a scene: htx upload splits larger meshes into parts of at most kMaxMeshVertices.
-inline constexpr uint32_t kStoreMeshes = 32;
+inline constexpr uint32_t kStoreMeshes = render_app::kMaxSceneMeshes;
 
 // Where a scene or texture is received (kStoreBytes, 4-byte aligned); at boot, before anything
 // arrives, the scratch image of the checkerboard's upload (soc_texture.hpp).

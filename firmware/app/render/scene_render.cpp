@@ -3,6 +3,7 @@
 #include <stdio.h>
 
 #include "frame_crc.hpp"
+#include "htx/hal/texture.h"
 #include "htx/hal/timer.h"
 #include "htx/render/frame.h"
 #include "render_state.hpp"
@@ -35,6 +36,23 @@ void time_geometry(const SceneData& sc, const htx::render::Viewport& vp, htx::re
   }
 }
 
+// Each mesh's own filter, put back when it goes out of scope.
+class SceneFilters {
+ public:
+  explicit SceneFilters(const SceneData& sc) : sc_(sc) {
+    for (uint32_t m = 0; m < sc_.mesh_count; ++m) filter_[m] = sc_.meshes[m].state.filter;
+  }
+  ~SceneFilters() {
+    for (uint32_t m = 0; m < sc_.mesh_count; ++m) sc_.meshes[m].state.filter = filter_[m];
+  }
+  SceneFilters(const SceneFilters&) = delete;
+  SceneFilters& operator=(const SceneFilters&) = delete;
+
+ private:
+  const SceneData& sc_;
+  uint8_t filter_[kMaxSceneMeshes];
+};
+
 }  // namespace
 
 void print_ratio(uint64_t num, uint64_t den) {
@@ -58,6 +76,18 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
     r.error = "this GPU does not build that perspective method (CAPS.METHODS)";
     return r;
   }
+  if (settings.filter != kSceneFilter &&
+      (settings.filter > 2 || !((htx::hal::texture_caps().filters >> settings.filter) & 1u))) {
+    r.error = "this GPU does not build that filter (TEXTURE CAPS.FILTERS)";
+    return r;
+  }
+  if (sc.mesh_count > kMaxSceneMeshes) {
+    r.error = "the scene has more meshes than draw_scene draws";
+    return r;
+  }
+  // The meshes are the scene's own: a filter set for this draw is undone when it ends, so that
+  // the next draw with the scene's filters gets them (the other fields are set every draw).
+  SceneFilters own_filters(sc);
   for (uint32_t m = 0; m < sc.mesh_count; ++m) {
     if (sc.meshes[m].vertex_count > kMaxVertices) {
       r.error = "a mesh has more vertices than the vertex cache";
@@ -67,6 +97,7 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
     sc.meshes[m].tex = {settings.texture_log2_width, settings.texture_log2_height};
     sc.meshes[m].state.method = settings.method;
     sc.meshes[m].state.subdiv_n = settings.subdiv_n;
+    if (settings.filter != kSceneFilter) sc.meshes[m].state.filter = settings.filter;
   }
   htx::render::VertexCache cache{g_clip, g_screen, g_codes, kMaxVertices};
   htx::render::FrameParams frame;

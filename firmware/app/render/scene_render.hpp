@@ -12,9 +12,16 @@
 
 namespace render_app {
 
+// DrawSettings::filter: each mesh keeps the filter its scene gives it.
+inline constexpr uint8_t kSceneFilter = 0xFF;
+// The most meshes draw_scene draws in one scene (the console's uploads hold as many).
+inline constexpr uint32_t kMaxSceneMeshes = 32;
+
 struct DrawSettings {
   uint8_t method = htx::render::kMethodAuto;  // every triangle's method (AUTO: the firmware picks)
   uint8_t subdiv_n = 16;                      // for SUBDIV
+  uint8_t filter = kSceneFilter;              // every textured triangle's filter (0 nearest, 1 bilinear,
+                                              // 2 trilinear), or each mesh's own
   int64_t auto_tolerance = 0;                 // AUTO's tolerance, Q16.16 texels (0: soc_config's)
   bool time_geometry = true;                  // also time the geometry stage alone (kGeometryRuns runs)
   bool checksum = true;                       // compute the frame's CRC-32 (DrawResult::crc; about 0.8 M cycles)
