@@ -141,7 +141,7 @@ void register_render(CLI::App& app) {
   cmd->add_option("scene", args->scene, "built-in scene spec (see `htx scenes`) or an OBJ file")->required();
   cmd->add_option("--engine", args->engine, "ref | model | rtl (when built)")->capture_default_str();
   cmd->add_flag("--untextured", args->untextured,
-                "draw every triangle untextured (its Gouraud colour only)");
+                "draw every triangle untextured (its colour only)");
   cmd->add_option("--method", args->method,
                   "override every triangle's perspective method: affine, subdivN (2..64), recip_lut, recip_nr, "
                   "divfree, quadratic, auto");
