@@ -343,6 +343,53 @@ TEST(SystemRender, ConsoleFilterSettingDrawsTheCosimFrames) {
   EXPECT_NE(r.out.find("render cube method auto filter scene"), std::string::npos) << r.out;
 }
 
+// draw_scene (the console's and the render firmware's draw) on the host over the Verilated
+// icebreaker GPU: a filter set for a draw gives the cosim frame drawn with it and is undone after
+// it, so the compiled-in scene keeps its own; a filter the texture unit does not build (trilinear
+// here), set or a mesh's own, is refused before anything is drawn (the texture unit would sample
+// it bilinear at level 0 without a word).
+TEST(SystemRender, DrawSceneTakesASetFilterAndRefusesOneTheGpuLacks) {
+  const std::string nearest = hex8(crc32_bitwise(cosim_frame("cube", 0).color));
+  const std::string own = hex8(crc32_bitwise(cosim_frame("cube").color));
+  htx::hal::sim::GpuSimBus bus("icebreaker");
+  htx::hal::sim::ScopedBus attach(bus);
+  std::vector<uint32_t> image(render_app::kTextureTexels);
+  ASSERT_EQ(render_app::upload_scene_texture(1000, image.data()), htx::render::kUploadOk);
+  uint32_t n = 0;
+  const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
+  const render_app::SceneData* cube =
+      std::find_if(scenes, scenes + n, [](const render_app::SceneData& s) { return std::strcmp(s.name, "cube") == 0; });
+  ASSERT_NE(cube, scenes + n);
+  ASSERT_EQ(cube->mesh_count, 1u);
+  const uint8_t cube_filter = cube->meshes[0].state.filter;
+  ASSERT_EQ(cube_filter, 1) << "the built-in cube is bilinear";
+
+  render_app::DrawSettings settings;
+  settings.time_geometry = false;
+  settings.filter = 0;  // nearest
+  render_app::DrawResult r = render_app::draw_scene(*cube, settings);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(hex8(r.crc), nearest);
+  EXPECT_EQ(cube->meshes[0].state.filter, cube_filter) << "the set filter was left in the scene";
+
+  settings.filter = 2;  // trilinear: not built by icebreaker's texture unit
+  r = render_app::draw_scene(*cube, settings);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(std::string(r.error).find("does not build"), std::string::npos) << r.error;
+  EXPECT_EQ(cube->meshes[0].state.filter, cube_filter);
+
+  settings.filter = render_app::kSceneFilter;
+  cube->meshes[0].state.filter = 2;  // as an uploaded scene may ask
+  r = render_app::draw_scene(*cube, settings);
+  cube->meshes[0].state.filter = cube_filter;
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(std::string(r.error).find("does not build"), std::string::npos) << r.error;
+
+  r = render_app::draw_scene(*cube, settings);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(hex8(r.crc), own);
+}
+
 // The SoC model stops the GPU's clock while the GPU is idle (htx_soc_fabric, Sim only), which must
 // change nothing: the same run with the clock free-running (--no-gpu-gate) ends in the same cycle
 // with the same instruction count, the same frame, and the same firmware report, whose figures

@@ -76,11 +76,7 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
     r.error = "this GPU does not build that perspective method (CAPS.METHODS)";
     return r;
   }
-  if (settings.filter != kSceneFilter &&
-      (settings.filter > 2 || !((htx::hal::texture_caps().filters >> settings.filter) & 1u))) {
-    r.error = "this GPU does not build that filter (TEXTURE CAPS.FILTERS)";
-    return r;
-  }
+  const uint32_t filters_built = htx::hal::texture_caps().filters;
   if (sc.mesh_count > kMaxSceneMeshes) {
     r.error = "the scene has more meshes than draw_scene draws";
     return r;
@@ -98,6 +94,13 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
     sc.meshes[m].state.method = settings.method;
     sc.meshes[m].state.subdiv_n = settings.subdiv_n;
     if (settings.filter != kSceneFilter) sc.meshes[m].state.filter = settings.filter;
+    // Every mesh is textured here: a filter the texture unit lacks would be sampled bilinear at
+    // level 0 (TEXTURE ERR_FILTER) without a word, so it is refused before anything is drawn.
+    const uint8_t filter = sc.meshes[m].state.filter;
+    if (filter > 2 || !((filters_built >> filter) & 1u)) {
+      r.error = "a mesh's filter is one this GPU does not build (TEXTURE CAPS.FILTERS; `set filter` another)";
+      return r;
+    }
   }
   htx::render::VertexCache cache{g_clip, g_screen, g_codes, kMaxVertices};
   htx::render::FrameParams frame;
