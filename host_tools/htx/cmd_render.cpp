@@ -1,5 +1,6 @@
 // htx render: render a built-in scene or an OBJ file on the `ref`, `model` or (when built) `rtl`
-// engine, write a PNG, and optionally the metrics of the frame against `ref` as JSON.
+// engine, write a PNG, and optionally the metrics of the frame against `ref` as JSON. `soc` and
+// `board` draw it on the console firmware (render_on_console.cpp).
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -23,36 +24,35 @@
 #define HTX_HAVE_RTL_ENGINE 1
 #endif
 #include "output_path.hpp"
+#include "render_args.hpp"
 
 namespace htx {
 
 namespace {
 
-struct RenderArgs {
-  std::string scene;
-  std::string engine = "ref";
-  std::string method;
-  std::string filter;
-  std::string config = "full";
-  std::string size = "320x240";
-  std::string out;
-  std::string metrics;
-  double tolerance = 1.0 / 64;
-  bool untextured = false;
-};
+#ifdef HTX_HAVE_RTL_ENGINE
+constexpr const char* kEngines = "ref, model, rtl, soc or board";
+#else
+constexpr const char* kEngines = "ref, model, soc or board";
+#endif
 
-void run_render(const RenderArgs& a) {
+void run_render(const RenderArgs& given) {
+  require_output_dir(given.out);
+  require_output_dir(given.metrics);
+  if (given.engine == "soc" || given.engine == "board") return render_on_console(given);
+#ifdef HTX_HAVE_RTL_ENGINE
+  const bool known = given.engine == "ref" || given.engine == "model" || given.engine == "rtl";
+#else
+  const bool known = given.engine == "ref" || given.engine == "model";
+#endif
+  if (!known) throw std::invalid_argument("--engine '" + given.engine + "': this build renders on " + kEngines);
+  for (const std::string* o : {&given.firmware, &given.port})
+    if (!o->empty()) throw std::invalid_argument("--firmware and --port are for --engine soc and board");
+  RenderArgs a = given;
+  if (a.size.empty()) a.size = "320x240";
+  if (a.config.empty()) a.config = "full";
   int width = 0, height = 0;
   parse_size(a.size, width, height);
-  require_output_dir(a.out);
-  require_output_dir(a.metrics);
-#ifdef HTX_HAVE_RTL_ENGINE
-  if (a.engine != "ref" && a.engine != "model" && a.engine != "rtl")
-    throw std::invalid_argument("--engine '" + a.engine + "': this build renders on ref, model or rtl");
-#else
-  if (a.engine != "ref" && a.engine != "model")
-    throw std::invalid_argument("--engine '" + a.engine + "': this build renders on ref or model");
-#endif
   const Scene scene = load_scene(a.scene);
   for (const std::string& note : scene.notes) std::cerr << "htx: " << note << "\n";
   ScreenScene screen = prepare_screen_scene(scene, width, height);
@@ -139,7 +139,10 @@ void register_render(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   auto* cmd = app.add_subcommand("render", "Render a scene (built-in NAME[:k=v,...] or FILE.obj) to a PNG");
   cmd->add_option("scene", args->scene, "built-in scene spec (see `htx scenes`) or an OBJ file")->required();
-  cmd->add_option("--engine", args->engine, "ref | model | rtl (when built)")->capture_default_str();
+  cmd->add_option("--engine", args->engine,
+                  "ref | model | rtl (when built) | soc (the console firmware on the simulated SoC) | board "
+                  "(the console firmware on a board, --port)")
+      ->capture_default_str();
   cmd->add_flag("--untextured", args->untextured,
                 "draw every triangle untextured (its colour only)");
   cmd->add_option("--method", args->method,
@@ -150,11 +153,15 @@ void register_render(CLI::App& app) {
   cmd->add_option("--filter", args->filter, "override every triangle's filter: nearest, bilinear, trilinear");
   cmd->add_option("--config", args->config,
                   "model configuration: full | icebreaker | icebreaker-board (icebreaker with the board GPU's "
-                  "methods only: affine, recip_lut)")
-      ->capture_default_str();
-  cmd->add_option("--size", args->size, "frame size WxH")->capture_default_str();
+                  "methods only: affine, recip_lut); default full, on soc and board icebreaker (the SoC's GPU)");
+  cmd->add_option("--size", args->size, "frame size WxH; default 320x240, on soc and board 160x120 (the console's screen)");
   cmd->add_option("--out", args->out, "output PNG")->required();
   cmd->add_option("--metrics", args->metrics, "also render ref and write the metrics JSON here");
+  cmd->add_option("--firmware", args->firmware, "soc: the console firmware's ELF (default: the build's console.elf)");
+  cmd->add_option("--port", args->port, "board: its serial port (or the pty of `htx sim --uart pty`)");
+  cmd->add_option("--baud", args->baud, "board: baud rate (a pty ignores it)")->capture_default_str();
+  cmd->add_option("--timeout", args->timeout_s, "soc and board: longest silence to wait through, seconds")
+      ->capture_default_str();
   cmd->callback([args] { run_render(*args); });
 }
 

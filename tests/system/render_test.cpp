@@ -88,8 +88,10 @@ struct CosimFrame {
   uint32_t sent = 0;
 };
 
-// `filter`: every mesh's filter (the console's `set filter`), or kSceneFilter for the scene's own.
-CosimFrame cosim_frame(const std::string& scene_name, uint8_t filter = render_app::kSceneFilter) {
+// `filter`: every mesh's filter (the console's `set filter`), or kSceneFilter for the scene's own;
+// `method`: every mesh's method (the console's `set method`; AUTO within 1/16 texel by default).
+CosimFrame cosim_frame(const std::string& scene_name, uint8_t filter = render_app::kSceneFilter,
+                       uint8_t method = htx::render::kMethodAuto) {
   using namespace htx;
   constexpr int kW = render_app::kWidth, kH = render_app::kHeight;
   test::RenderScene rs = test::to_render_scene(make_builtin_scene(scene_name), kW, kH);
@@ -98,6 +100,7 @@ CosimFrame cosim_frame(const std::string& scene_name, uint8_t filter = render_ap
   for (auto& d : rs.meshes) {
     render_app::apply_soc_render_state(&d.mesh);
     if (filter != render_app::kSceneFilter) d.mesh.state.filter = filter;
+    d.mesh.state.method = method;
     meshes.push_back(d.mesh);
     max_vertices = std::max(max_vertices, d.mesh.vertex_count);
   }
@@ -388,6 +391,88 @@ TEST(SystemRender, DrawSceneTakesASetFilterAndRefusesOneTheGpuLacks) {
   r = render_app::draw_scene(*cube, settings);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(hex8(r.crc), own);
+}
+
+// `htx render --engine soc`: the cube uploaded to the console firmware on the simulated SoC, drawn
+// there with the scene's own method (RECIP_NR; the console's default is AUTO) and sent back, is the
+// cosim frame drawn so (the scene's 64 x 64 checkerboard goes as its 32 x 32 level, the console's
+// own texture, so the uploaded cube draws what the compiled-in one does), and its metrics carry the
+// console's figures. `--engine board` through the pty of `htx sim --uart pty` (a board as far as
+// htx can tell), with AUTO within 1/16 texel and nearest filtering, gives the cosim frame drawn so.
+// What the console cannot draw is refused before anything runs.
+TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
+                                    ("htx_render_engines_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string soc_png = (dir / "soc.png").string(), board_png = (dir / "board.png").string(),
+                    metrics = (dir / "soc.json").string();
+  const auto soc = htx::test::run_program(
+      {HTX_BIN, "render", "cube", "--engine", "soc", "--out", soc_png, "--metrics", metrics}, 180s);
+  ASSERT_FALSE(soc.timed_out);
+  ASSERT_EQ(soc.status, 0) << soc.out << soc.err;
+  const CosimFrame cube = cosim_frame("cube", render_app::kSceneFilter, htx::render::kMethodRecipNr);
+  const std::string want = hex8(crc32_bitwise(cube.color));
+  EXPECT_NE(soc.out.find("crc32 " + want), std::string::npos) << soc.out;
+  const htx::Image img = htx::load_image(soc_png);
+  ASSERT_EQ(img.width, render_app::kWidth);
+  ASSERT_EQ(img.height, render_app::kHeight);
+  EXPECT_EQ(img.rgba, htx::image_from_rgb565(img.width, img.height, cube.color).rgba);
+  std::ifstream in(metrics);
+  const nlohmann::json m = nlohmann::json::parse(in);
+  EXPECT_EQ(m.at("engine"), "soc");
+  EXPECT_EQ(m.at("config"), "icebreaker");
+  EXPECT_EQ(m.at("method"), "recip_nr");
+  EXPECT_EQ(m.at("crc32"), want);
+  EXPECT_EQ(m.at("sent"), cube.sent);
+  EXPECT_GT(m.at("cycles").get<uint64_t>(), 0u);
+  EXPECT_GT(m.at("cpu_frame_cycles").get<uint64_t>(), 0u);
+  EXPECT_TRUE(m.at("max_texel_error").is_null());
+  // Against ref on the console's background; the rest is the texture's smaller level and the
+  // fixed-point pipeline (27 dB when written).
+  EXPECT_GT(m.at("psnr_db").get<double>(), 20.0);
+
+  {
+    htx::test::Child sim({HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--uart", "pty",
+                          "--max-cycles", "2000000000"});
+    ASSERT_TRUE(sim.read_until("\n", 30s));
+    const std::string marker = "htx sim: UART on ";
+    const size_t at = sim.output().find(marker);
+    ASSERT_NE(at, std::string::npos) << sim.output();
+    const std::string pty = sim.output().substr(at + marker.size(), sim.output().find('\n', at) - at - marker.size());
+    const auto board =
+        htx::test::run_program({HTX_BIN, "render", "cube", "--engine", "board", "--port", pty, "--method", "auto",
+                                "--tolerance", "0.0625", "--filter", "nearest", "--out", board_png},
+                               180s);
+    EXPECT_EQ(board.status, 0) << board.out << board.err;
+    const CosimFrame nearest = cosim_frame("cube", 0, htx::render::kMethodAuto);
+    EXPECT_NE(nearest.color, cube.color);
+    EXPECT_EQ(htx::load_image(board_png).rgba,
+              htx::image_from_rgb565(render_app::kWidth, render_app::kHeight, nearest.color).rgba);
+    EXPECT_EQ(htx::test::run_program({HTX_BIN, "console", "--port", pty, "-c", "quit"}, 60s).status, 0);
+    EXPECT_EQ(sim.wait(60s), 0) << sim.output();
+  }
+
+  const auto refused = [&](std::vector<std::string> extra, const std::string& why) {
+    std::vector<std::string> argv = {HTX_BIN, "render", "cube", "--out", (dir / "no.png").string()};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    const auto r = htx::test::run_program(argv, 60s);
+    EXPECT_NE(r.status, 0) << r.out;
+    EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "no.png"));
+  };
+  refused({"--engine", "soc", "--size", "320x240"}, "draws the console's 160x120 screen only");
+  refused({"--engine", "soc", "--config", "full"}, "draws on the SoC's GPU, icebreaker");
+  refused({"--engine", "soc", "--tolerance", "0.3"}, "the console takes 1/N texel");
+  refused({"--engine", "soc", "--method", "quadratic"}, "only the model builds it");
+  refused({"--engine", "soc", "--untextured"}, "the console draws every triangle textured");
+  refused({"--engine", "soc", "--firmware", (dir / "none.elf").string()}, "no console firmware at");
+  refused({"--engine", "board"}, "needs --port");
+  refused({"--engine", "model", "--port", "/dev/null"}, "are for --engine soc and board");
+  // Refused by the console itself, after the SoC started: htx reports its error and stops the
+  // SoC's run instead of waiting for it (SimOptions::stop; the run's own limit is hours away).
+  refused({"--engine", "soc", "--filter", "trilinear"}, "console: set filter trilinear: error: this GPU does not "
+                                                        "build the filter trilinear");
+  std::filesystem::remove_all(dir);
 }
 
 // The SoC model stops the GPU's clock while the GPU is idle (htx_soc_fabric, Sim only), which must

@@ -34,6 +34,7 @@ const char* to_string(StopReason r) {
     case StopReason::ToHost: return "tohost";
     case StopReason::CycleLimit: return "cycle_limit";
     case StopReason::InputEnded: return "input_ended";
+    case StopReason::Stopped: return "stopped";
   }
   return "?";
 }
@@ -189,6 +190,10 @@ SimResult SocSim::run() {
         if (!(v & 1u)) s.console << "htx sim: tohost = " << hex(v) << " is a syscall request, which is not supported\n";
         done = true;
       }
+    }
+    if (s.opt.stop && c % kPollInterval == 0 && s.opt.stop->load(std::memory_order_relaxed)) {
+      res.reason = StopReason::Stopped;
+      done = true;
     }
     if (s.uart && c % kPollInterval == 0) {
       if (!s.uart->paced()) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -34,10 +35,14 @@ struct SimOptions {
   // Charge every clock to an instruction address (SimResult::pcs): the instruction in execute, or
   // while execute is empty the last one it held (a bubble's clocks go to the instruction before it).
   bool profile_pcs = false;
+  // Set by another thread to end the run (StopReason::Stopped), looked at every few hundred
+  // clocks: how a host tool that runs the SoC in a thread of its own ends it when it gives up.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // InputEnded: a script's input ended and the firmware then waited for more (SocSim::run).
-enum class StopReason { Exit, ToHost, CycleLimit, InputEnded };
+// Stopped: SimOptions::stop was set.
+enum class StopReason { Exit, ToHost, CycleLimit, InputEnded, Stopped };
 
 // Where the CPU's clocks went (hw/platform/sim/htx_cpu_profile.sv): every clock after reset is
 // charged to one cause, judged at the execute stage, so the counts add up to the clocks run.

@@ -1,0 +1,59 @@
+#include "console_render.hpp"
+
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+#include "console_payload.hpp"
+
+namespace htx {
+
+namespace {
+
+// The screen the console draws (its render firmware's kWidth x kHeight), for the camera's aspect.
+constexpr const char* kConsoleScreen = "160x120";
+
+// A command whose whole answer must be `ok`.
+void set(console::ConsoleClient& client, const std::string& what, const std::string& value) {
+  const std::string line = "set " + what + " " + value;
+  const std::string out = client.command(line);
+  if (out != "ok\n") throw std::runtime_error("console: " + line + ": " + out.substr(0, out.find('\n')));
+}
+
+// "render upload method M filter F triangles T ... crc32 C": the pairs after the scene's name.
+std::map<std::string, std::string> render_figures(const std::string& out) {
+  const std::string head = "render upload ";
+  if (out.compare(0, head.size(), head) != 0)
+    throw std::runtime_error("console: render upload: " + out.substr(0, out.find('\n')));
+  std::istringstream words(out.substr(head.size(), out.find('\n') - head.size()));
+  std::map<std::string, std::string> f;
+  std::string key, value;
+  while (words >> key >> value) f[key] = value;
+  for (const char* k : {"triangles", "sent", "frame_cycles", "raster_cycles", "fragments", "crc32"})
+    if (!f.count(k)) throw std::runtime_error(std::string("console: render upload printed no ") + k + ": " + out);
+  return f;
+}
+
+}  // namespace
+
+ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& draw) {
+  const ScenePayload payload = scene_payload(draw.scene, kConsoleScreen, true);
+  ConsoleDrawn d;
+  d.note = payload.note;
+  // The scene first: a refused scene leaves the console's texture as it was too.
+  client.upload(payload.scene);
+  if (!payload.texture.empty()) client.upload(payload.texture, {}, console::ConsoleClient::Payload::kTexture);
+  set(client, "method", draw.method);
+  set(client, "tolerance", draw.tolerance);
+  set(client, "filter", draw.filter);
+  d.figures = render_figures(client.command("render upload"));
+  d.frame = client.grab();
+  char crc[16];
+  std::snprintf(crc, sizeof crc, "%08x", d.frame.crc32);
+  if (d.figures.at("crc32") != crc)
+    throw std::runtime_error("console: the frame sent has CRC-32 " + std::string(crc) + ", the render printed " +
+                             d.figures.at("crc32"));
+  return d;
+}
+
+}  // namespace htx

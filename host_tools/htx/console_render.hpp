@@ -1,0 +1,33 @@
+// A scene drawn by the console firmware (docs/console.md) and brought back: the `soc` and `board`
+// engines of htx render (docs/engines.md). The scene is uploaded in its packed form with its
+// texture, the console is set up, draws it (`render upload`) and sends the frame (`grab`).
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "htx/console/console_client.hpp"
+
+namespace htx {
+
+struct ConsoleDraw {
+  std::string scene;      // built-in spec or OBJ file, as htx upload takes it
+  std::string method;     // `set method`'s name: auto, affine, subdivN, recip_lut, recip_nr, divfree
+  std::string tolerance;  // `set tolerance`'s 1/N
+  std::string filter;     // `set filter`'s name; `scene` keeps the meshes' own
+};
+
+struct ConsoleDrawn {
+  console::GrabbedFrame frame;
+  // The render line's figures: triangles, sent, frame_cycles, raster_cycles, fragments, crc32
+  // (raster_cycles and fragments are `-` on a GPU without counters).
+  std::map<std::string, std::string> figures;
+  std::string note;  // what the upload did to the scene or its texture, when worth saying
+};
+
+// Uploads, sets, renders and grabs on a console at its prompt (ConsoleClient::sync done). Throws
+// std::runtime_error with the console's own error line when it refuses a step, and when the
+// frame's checksum is not the one its render printed.
+ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& draw);
+
+}  // namespace htx

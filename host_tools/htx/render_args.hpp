@@ -1,0 +1,32 @@
+// htx render's options, shared by its engines on the host (cmd_render.cpp) and on the console
+// firmware (render_on_console.cpp).
+#pragma once
+
+#include <string>
+
+namespace htx {
+
+struct RenderArgs {
+  std::string scene;
+  std::string engine = "ref";
+  std::string method;
+  std::string filter;
+  std::string config;  // empty: full on the host engines, icebreaker (the SoC's GPU) on soc and board
+  std::string size;    // empty: 320x240 on the host engines, 160x120 (the console's screen) on soc and board
+  std::string out;
+  std::string metrics;
+  double tolerance = 1.0 / 64;
+  bool untextured = false;
+  // soc and board
+  std::string firmware;  // soc: the console firmware's ELF (empty: the build's)
+  std::string port;      // board: its serial port
+  unsigned baud = 115200;
+  double timeout_s = 120;
+};
+
+// `--engine soc` and `--engine board` (docs/engines.md): the scene uploaded to the console
+// firmware on the simulated SoC or on a board, drawn there and downloaded; the PNG and the
+// metrics as the host engines write them.
+void render_on_console(const RenderArgs& a);
+
+}  // namespace htx

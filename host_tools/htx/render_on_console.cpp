@@ -1,0 +1,168 @@
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "console_render.hpp"
+#include "htx/console/console_client.hpp"
+#include "htx/console/serial_port.hpp"
+#include "htx/model/geometry.hpp"
+#include "htx/model/image_io.hpp"
+#include "htx/model/metrics.hpp"
+#include "htx/model/model.hpp"
+#include "htx/model/names.hpp"
+#include "htx/model/ref.hpp"
+#include "htx/model/scenes.hpp"
+#include "htx_paths.h"
+#include "render_args.hpp"
+#include "soc_config.hpp"
+#if __has_include("htx/sim/soc_sim.hpp")
+#include "soc_console.hpp"
+#define HTX_HAVE_SOC_CONSOLE 1
+#endif
+
+namespace htx {
+
+namespace {
+
+// The console's screen and clear colour: its render firmware's (firmware/app/render).
+constexpr int kScreenWidth = render_app::kWidth, kScreenHeight = render_app::kHeight;
+constexpr const char* kSocConfig = "icebreaker";         // the simulated SoC's and the ULX3S's GPU
+
+// `set tolerance`'s 1/N for `t` texels, when it is one (N = 1..65536).
+std::string tolerance_fraction(double t) {
+  const double n = std::round(1.0 / t);
+  if (!(t > 0) || n < 1 || n > 65536 || std::fabs(1.0 / n - t) > 1e-9 * t)
+    throw std::invalid_argument("--tolerance " + std::to_string(t) +
+                                ": the console takes 1/N texel (N = 1..65536), e.g. 0.015625 for 1/64");
+  return "1/" + std::to_string(static_cast<long>(n));
+}
+
+// The console draws every triangle with one method (`set method`): --method, else the scene's
+// own when all its triangles have the same one.
+std::string console_method(const RenderArgs& a, const ScreenScene& screen) {
+  if (!a.method.empty()) {
+    const MethodChoice m = parse_method(a.method);
+    if (m.method == Method::Quadratic) throw std::invalid_argument("--method quadratic: only the model builds it");
+    return method_name(m.method, m.subdiv_n);
+  }
+  std::optional<std::string> name;
+  for (const ScreenTri& t : screen.tris) {
+    const std::string n = method_name(t.state.method, t.state.subdiv_n);
+    if (name && *name != n)
+      throw std::invalid_argument("the scene's triangles use more than one method, and the console draws every "
+                                  "triangle with one: give --method");
+    name = n;
+  }
+  return name.value_or("auto");
+}
+
+std::string console_firmware(const RenderArgs& a) {
+  const std::string elf = a.firmware.empty() ? std::string(HTX_PATH_FIRMWARE_DIR) + "/console.elf" : a.firmware;
+  if (!std::filesystem::exists(elf))
+    throw std::invalid_argument("no console firmware at '" + elf +
+                                "' (build the `firmware` target, or give --firmware FILE)");
+  return elf;
+}
+
+}  // namespace
+
+void render_on_console(const RenderArgs& a) {
+  const bool soc = a.engine == "soc";
+  const std::string screen_size = std::to_string(kScreenWidth) + "x" + std::to_string(kScreenHeight);
+  if (!a.size.empty() && a.size != screen_size)
+    throw std::invalid_argument("--size " + a.size + ": --engine " + a.engine + " draws the console's " + screen_size +
+                                " screen only");
+  if (!a.config.empty() && a.config != kSocConfig)
+    throw std::invalid_argument("--config " + a.config + ": --engine " + a.engine + " draws on the SoC's GPU, " +
+                                kSocConfig);
+  if (a.untextured) throw std::invalid_argument("--untextured: the console draws every triangle textured");
+  if (soc && !a.port.empty()) throw std::invalid_argument("--port is for --engine board (soc runs its own SoC)");
+  if (!soc && a.port.empty()) throw std::invalid_argument("--engine board needs --port (the board's serial port)");
+  if (!soc && !a.firmware.empty()) throw std::invalid_argument("--firmware is for --engine soc");
+  if (!(a.timeout_s > 0)) throw std::invalid_argument("--timeout must be > 0 seconds");
+
+  const Scene scene = load_scene(a.scene);
+  for (const std::string& note : scene.notes) std::cerr << "htx: " << note << "\n";
+  ScreenScene screen = prepare_screen_scene(scene, kScreenWidth, kScreenHeight);
+  screen.clear_color = render_app::kClearColor;  // for ref: the background the console draws on
+  ConsoleDraw draw;
+  draw.scene = a.scene;
+  draw.method = console_method(a, screen);
+  draw.tolerance = tolerance_fraction(a.tolerance);
+  draw.filter = a.filter.empty() ? "scene" : std::string(filter_name(parse_filter(a.filter)));
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto timeout = std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000));
+  ConsoleDrawn drawn;
+  std::string where;
+  if (soc) {
+#ifdef HTX_HAVE_SOC_CONSOLE
+    SocConsole sim(console_firmware(a));
+    console::SerialPort port(sim.pty(), a.baud);
+    console::ConsoleClient client(port, timeout);
+    client.sync();
+    drawn = draw_on_console(client, draw);
+    port.write("quit\r");
+    const sim::SimResult r = sim.finish(timeout);
+    where = "the simulated SoC, " + std::to_string(r.cycles) + " clocks";
+#else
+    throw std::invalid_argument("--engine soc: this build has no SoC simulation");
+#endif
+  } else {
+    console::SerialPort port(a.port, a.baud);
+    console::ConsoleClient client(port, timeout);
+    client.sync();
+    drawn = draw_on_console(client, draw);
+    where = a.port;
+  }
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!drawn.note.empty()) std::cerr << "htx: " << drawn.note << "\n";
+  const console::GrabbedFrame& g = drawn.frame;
+  if (g.width != kScreenWidth || g.height != kScreenHeight)
+    throw std::runtime_error("the console sent a " + std::to_string(g.width) + "x" + std::to_string(g.height) +
+                             " frame, not " + screen_size);
+  write_png(a.out, image_from_rgb565(g.width, g.height, g.pixels));
+  std::cout << a.engine << " rendered " << a.scene << " (" << drawn.figures.at("triangles") << " triangles, "
+            << drawn.figures.at("sent") << " sent, "
+            << screen_size << ", method " << draw.method << ") on " << where << " in " << s << " s, crc32 "
+            << drawn.figures.at("crc32") << " -> " << a.out << "\n";
+
+  if (!a.metrics.empty()) {
+    RefOptions ref_options;
+    ref_options.depth_bits = model_config(kSocConfig).z_bits;
+    const Frame ref = render_ref(screen, ref_options);
+    Frame frame;
+    frame.width = g.width;
+    frame.height = g.height;
+    frame.color = g.pixels;
+    frame.probe.assign(g.pixels.size(), PixelProbe{});  // the console has no per-pixel probe
+    const MetricsLabels labels{a.engine, a.scene, draw.method, draw.filter, kSocConfig};
+    nlohmann::json j = metrics_to_json(compute_metrics(frame, ref, labels));
+    // The figures the console printed: the raster unit's busy clocks (CNT_BUSY; null on a GPU
+    // without counters), the CPU's clocks for the frame, the triangles it drew and sent.
+    const auto number_or_null = [](const std::string& v) -> nlohmann::json {
+      if (v == "-") return nullptr;
+      return std::stoull(v);
+    };
+    j["cycles"] = number_or_null(drawn.figures.at("raster_cycles"));
+    j["cpu_frame_cycles"] = number_or_null(drawn.figures.at("frame_cycles"));
+    j["triangles"] = number_or_null(drawn.figures.at("triangles"));
+    j["sent"] = number_or_null(drawn.figures.at("sent"));
+    j["crc32"] = drawn.figures.at("crc32");
+    for (const char* key : {"max_texel_error", "rms_texel_error", "p999_texel_error", "coverage_diff_pixels"})
+      j[key] = nullptr;
+    std::ofstream out(a.metrics);
+    out << j.dump(2) << "\n";
+    if (!out) throw std::runtime_error("cannot write metrics to '" + a.metrics + "'");
+    std::cout << "metrics -> " << a.metrics << "\n";
+  }
+}
+
+}  // namespace htx

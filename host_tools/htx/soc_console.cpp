@@ -1,0 +1,46 @@
+#if __has_include("htx/sim/soc_sim.hpp")
+#include "soc_console.hpp"
+
+#include <stdexcept>
+
+#include "htx/sim/elf_image.hpp"
+
+namespace htx {
+
+namespace {
+
+// Far beyond any exchange htx has with the console (a render and a grab of a scene of 16 KiB is
+// some 40 M clocks); finish() and the destructor end it sooner.
+constexpr uint64_t kMaxCycles = 20'000'000'000ull;
+
+}  // namespace
+
+SocConsole::SocConsole(const std::string& elf_path) {
+  const sim::ElfImage elf = sim::load_elf(elf_path);
+  uart_ = sim::open_pty_serial(pty_);
+  sim::SimOptions opt;
+  opt.max_cycles = kMaxCycles;
+  opt.stop = &stop_;
+  soc_ = std::make_unique<sim::SocSim>(elf, opt, uart_.get(), putchar_);
+  std::packaged_task<sim::SimResult()> task([this] { return soc_->run(); });
+  result_ = task.get_future();
+  thread_ = std::thread(std::move(task));
+}
+
+SocConsole::~SocConsole() {
+  stop_ = true;
+  if (thread_.joinable()) thread_.join();
+}
+
+sim::SimResult SocConsole::finish(std::chrono::milliseconds limit) {
+  if (result_.wait_for(limit) != std::future_status::ready) {
+    stop_ = true;
+    thread_.join();
+    throw std::runtime_error("the simulated SoC did not end after quit");
+  }
+  thread_.join();
+  return result_.get();  // rethrows what the run threw
+}
+
+}  // namespace htx
+#endif
