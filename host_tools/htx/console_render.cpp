@@ -38,15 +38,25 @@ std::map<std::string, std::string> render_figures(const std::string& out) {
 
 ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& draw) {
   const ScenePayload payload = scene_payload(draw.scene, kConsoleScreen, true);
+  const auto step = [&draw](const std::string& what) {
+    if (draw.on_step) draw.on_step(what);
+  };
   ConsoleDrawn d;
   d.note = payload.note;
+  if (!payload.note.empty()) step(payload.note);
   // The scene first: a refused scene leaves the console's texture as it was too.
+  step("upload: scene of " + std::to_string(payload.scene.size()) + " bytes");
   client.upload(payload.scene);
-  if (!payload.texture.empty()) client.upload(payload.texture, {}, console::ConsoleClient::Payload::kTexture);
+  if (!payload.texture.empty()) {
+    step("upload: texture of " + std::to_string(payload.texture.size()) + " bytes");
+    client.upload(payload.texture, {}, console::ConsoleClient::Payload::kTexture);
+  }
+  step("set method " + draw.method + ", tolerance " + draw.tolerance + ", filter " + draw.filter + "; render");
   set(client, "method", draw.method);
   set(client, "tolerance", draw.tolerance);
   set(client, "filter", draw.filter);
   d.figures = render_figures(client.command("render upload"));
+  step("grab: the frame");
   d.frame = client.grab();
   char crc[16];
   std::snprintf(crc, sizeof crc, "%08x", d.frame.crc32);

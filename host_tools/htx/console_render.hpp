@@ -3,6 +3,7 @@
 // texture, the console is set up, draws it (`render upload`) and sends the frame (`grab`).
 #pragma once
 
+#include <functional>
 #include <map>
 #include <string>
 
@@ -15,6 +16,9 @@ struct ConsoleDraw {
   std::string method;     // `set method`'s name: auto, affine, subdivN, recip_lut, recip_nr, divfree
   std::string tolerance;  // `set tolerance`'s 1/N
   std::string filter;     // `set filter`'s name; `scene` keeps the meshes' own
+  // Told each step as it begins ("upload: scene of 816 bytes", ..., "grab: the frame"), and what
+  // the upload does to the scene or its texture (ConsoleDrawn::note), for progress.
+  std::function<void(const std::string&)> on_step;
 };
 
 struct ConsoleDrawn {

@@ -97,6 +97,7 @@ void render_on_console(const RenderArgs& a) {
   draw.method = console_method(a, screen);
   draw.tolerance = tolerance_fraction(a.tolerance);
   draw.filter = a.filter.empty() ? "scene" : std::string(filter_name(parse_filter(a.filter)));
+  draw.on_step = [&a](const std::string& what) { std::cerr << a.engine << ": " << what << std::endl; };
 
   const auto t0 = std::chrono::steady_clock::now();
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000));
@@ -104,6 +105,7 @@ void render_on_console(const RenderArgs& a) {
   std::string where;
   if (soc) {
 #ifdef HTX_HAVE_SOC_CONSOLE
+    std::cerr << "soc: starting the console firmware on the simulated SoC" << std::endl;
     SocConsole sim(console_firmware(a));
     console::SerialPort port(sim.pty(), a.baud);
     console::ConsoleClient client(port, timeout);
@@ -123,7 +125,6 @@ void render_on_console(const RenderArgs& a) {
     where = a.port;
   }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (!drawn.note.empty()) std::cerr << "htx: " << drawn.note << "\n";
   const console::GrabbedFrame& g = drawn.frame;
   if (g.width != kScreenWidth || g.height != kScreenHeight)
     throw std::runtime_error("the console sent a " + std::to_string(g.width) + "x" + std::to_string(g.height) +
