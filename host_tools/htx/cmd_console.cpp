@@ -77,7 +77,8 @@ struct ConsoleArgs : PortArgs {
 };
 
 // One line typed or given with -c. `grab FILE.png`, `upload SCENE` and `texture FILE.png` are
-// carried out by htx (their exchanges are binary); everything else goes to the console as it is.
+// carried out by htx (their exchanges are binary), and `baud N` switches the port with the
+// console; everything else goes to the console as it is.
 // Returns false after quit.
 bool run_line(console::SerialPort& port, console::ConsoleClient& client, const std::string& line) {
   if (line == "quit") {
@@ -87,6 +88,18 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
   std::istringstream words(line);
   std::string verb, arg, format, extra;
   words >> verb >> arg >> format >> extra;
+  if (verb == "baud") {
+    // The console switches after its `ok`; the port must follow it there.
+    if (arg.empty() || !format.empty() || arg.find_first_not_of("0123456789") != std::string::npos || arg.size() > 9)
+      throw std::invalid_argument("usage: baud N");
+    try {
+      client.set_baud(static_cast<unsigned>(std::stoul(arg)));
+      std::cout << "baud " << arg << "\n" << std::flush;
+    } catch (const std::invalid_argument& e) {
+      std::cout << e.what() << "\n" << std::flush;  // the console's refusal: the line is as it was
+    }
+    return true;
+  }
   if (verb == "grab" || verb == "upload" || verb == "texture") {
     // Only `texture` takes a third word: the format.
     if (arg.empty() || !extra.empty() || (verb != "texture" && !format.empty()))
@@ -173,8 +186,9 @@ void register_console(CLI::App& app) {
   auto* cmd = app.add_subcommand("console", "Talk to the console firmware: run commands, or type them");
   add_port_options(cmd, args.get());
   cmd->add_option("-c,--command", args->commands,
-                  "run this command and print its output (repeatable; `grab FILE.png`, `upload SCENE` and "
-                  "`texture FILE.png [rgb565|rgba4444]` are carried out by htx); without any, read commands from stdin");
+                  "run this command and print its output (repeatable; `grab FILE.png`, `upload SCENE`, "
+                  "`texture FILE.png [rgb565|rgba4444]` and `baud N` are carried out by htx); without any, read "
+                  "commands from stdin");
   cmd->callback([args] { run_console(*args); });
 
   auto gargs = std::make_shared<GrabArgs>();

@@ -34,6 +34,7 @@ namespace {
 // The console's screen and clear colour: its render firmware's (firmware/app/render).
 constexpr int kScreenWidth = render_app::kWidth, kScreenHeight = render_app::kHeight;
 constexpr const char* kSocConfig = "icebreaker";         // the simulated SoC's and the ULX3S's GPU
+constexpr unsigned kSocBaud = 1'000'000;                 // soc: the console's `baud` once it is up
 
 // `set tolerance`'s 1/N for `t` texels, when it is one (N = 1..65536).
 std::string tolerance_fraction(double t) {
@@ -110,6 +111,10 @@ void render_on_console(const RenderArgs& a) {
     console::SerialPort port(sim.pty(), a.baud);
     console::ConsoleClient client(port, timeout);
     client.sync();
+    // The simulated line has no cable to limit it: 1 Mbaud (12 clocks a bit) takes the transfers,
+    // most of the run at 115,200 baud, down by a factor of nine.
+    draw.on_step("serial line to " + std::to_string(kSocBaud) + " baud");
+    client.set_baud(kSocBaud);
     drawn = draw_on_console(client, draw);
     port.write("quit\r");
     const sim::SimResult r = sim.finish(timeout);

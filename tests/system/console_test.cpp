@@ -185,6 +185,33 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   EXPECT_NE(cmp.out.find("differing_pixels 0"), std::string::npos) << cmp.out;
 }
 
+// `baud N` switches the serial line after its `ok` (htx console switches the port with it, and the
+// harness's end of the line follows the UART's divisor, as a terminal set to match would): rates
+// the UART cannot make within 2 % at 12 MHz are refused and leave the line as it was; after the
+// switch to 1 Mbaud commands, a render and a grab work at the new rate, and back to 115,200.
+TEST(SystemConsole, BaudSwitchesTheLineBothWays) {
+  ConsoleSim cs;
+  ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
+  const auto r = cs.console({"baud 5000000", "baud 7", "baud 1000000", "info", "render cube"});
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("error: 5000000 baud is not one this UART makes at 12000000 Hz"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("error: 7 baud is not one this UART makes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("htx> baud 1000000\nbaud 1000000\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("at 12000000 Hz, serial 1000000 baud"), std::string::npos) << r.out;
+  const std::string crc = field_after(r.out.substr(r.out.find("render cube method auto")), "crc32 ");
+  ASSERT_EQ(crc.size(), 8u) << r.out;
+  const std::string png = ::testing::TempDir() + "htx_console_baud_grab.png";
+  const auto g = htx::test::run_program({HTX_BIN, "grab", "--port", cs.pty, "--out", png, "--timeout", "60"}, 180s);
+  ASSERT_EQ(g.status, 0) << g.err;
+  EXPECT_EQ(field_after(g.out, "crc32 "), crc) << g.out;
+  std::filesystem::remove(png);
+  const auto back = cs.console({"baud 115200", "info", "quit"});
+  EXPECT_EQ(back.status, 0) << back.err;
+  EXPECT_NE(back.out.find("serial 115384 baud"), std::string::npos) << back.out;
+  ASSERT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
+}
+
 // The screen: the console turns the video on at boot, so after a render and enough serial output
 // for two frames (each `info` is some 300,000 clocks of UART at 115,200 baud), `htx sim --screen`
 // holds the frame the render left, each framebuffer pixel a 4 x 4 block (the framebuffer itself

@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <pty.h>
+#include <termios.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -79,6 +80,8 @@ class FakeConsole {
     if (line.empty()) return put("\r\nhtx> ");
     put(line + "\r\n");
     if (line == "info") return put("line one\r\nline two\r\nhtx> ");
+    if (line == "baud 1000000") return put("ok 1000000 baud\r\nhtx> ");
+    if (line.rfind("baud ", 0) == 0) return put("error: " + line.substr(5) + " baud is not one this UART makes\r\nhtx> ");
     if (line != "grab") return put("error: unknown command (type help): " + line + "\r\nhtx> ");
     if (mode_ == GrabMode::kSilent) return;
     if (mode_ == GrabMode::kNoFrame) return put("error: no framebuffer\r\nhtx> ");
@@ -278,6 +281,33 @@ TEST(ConsoleClient, AClosedOtherEndIsAnErrorNotAHang) {
     EXPECT_NE(std::string(e.what()).find("closed at the other end"), std::string::npos) << e.what();
   }
   EXPECT_LT(std::chrono::steady_clock::now() - t0, 2s);
+}
+
+// `baud N`: the port takes the new rate once the console said `ok`, and the exchange goes on at
+// its prompt; a refusal is the console's error line, and the port keeps its rate.
+TEST(ConsoleClient, BaudSwitchesThePortAfterTheConsolesOk) {
+  FakeConsole fake(GrabMode::kGood);
+  SerialPort port(fake.path(), 115200);
+  ConsoleClient client(port, 2s);
+  client.sync();
+  const auto speed = [&fake] {
+    const int fd = ::open(fake.path().c_str(), O_RDONLY | O_NOCTTY);
+    termios t{};
+    ::tcgetattr(fd, &t);
+    ::close(fd);
+    return ::cfgetospeed(&t);
+  };
+  try {
+    client.set_baud(5000000);
+    ADD_FAILURE() << "a refused rate was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "error: 5000000 baud is not one this UART makes");
+  }
+  EXPECT_EQ(speed(), static_cast<speed_t>(B115200));
+  client.set_baud(1000000);
+  EXPECT_EQ(speed(), static_cast<speed_t>(B1000000));
+  EXPECT_EQ(client.command("info"), "line one\nline two\n");
+  EXPECT_THROW(port.set_baud(12345), std::invalid_argument);
 }
 
 TEST(ConsoleClient, RefusesAPathThatIsNotATerminal) {

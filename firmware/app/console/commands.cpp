@@ -31,6 +31,8 @@ constexpr const char* kVersion = "0.1";
 // Status reads to wait for the video's last flip: a frame is 420,000 clocks, a read takes a few.
 constexpr uint32_t kFlipPolls = 1'000'000;
 constexpr uint32_t kSpinDefaultFrames = 60, kSpinMaxFrames = 3600;
+// Status reads to wait for the line to drain: the longest answer is a few hundred bytes.
+constexpr uint32_t kFlushPolls = 10'000'000;
 
 // The methods' names by method number (TriState::method; SUBDIV is `subdivN` in `set method`).
 constexpr const char* kMethodNames[] = {"affine", "subdiv", "recip_lut", "recip_nr", "divfree"};
@@ -97,14 +99,17 @@ void cmd_help() {
         "  texture SIZE CRC32    receive a packed texture as packets (for `htx upload --texture`)\r\n"
         "  stats                 the raster unit's counters after the last render\r\n"
         "  video on|off          show the framebuffer on the board's screen (640x480, 60 Hz), or black\r\n"
+        "  baud N                switch the serial line to N baud (after `ok`; the host must follow)\r\n"
         "  grab                  send the frame as binary packets (for `htx grab`)\r\n"
         "  quit                  leave the console (the simulation ends)\r\n",
         stdout);
 }
 
 void cmd_info() {
-  printf("hypertex console %s: soc %08lx at %lu Hz\r\n", kVersion, static_cast<unsigned long>(HTX_SYSCTRL->ID),
-         static_cast<unsigned long>(HTX_SYSCTRL->CLOCK_HZ));
+  const uint32_t hz = HTX_SYSCTRL->CLOCK_HZ;
+  printf("hypertex console %s: soc %08lx at %lu Hz, serial %lu baud\r\n", kVersion,
+         static_cast<unsigned long>(HTX_SYSCTRL->ID), static_cast<unsigned long>(hz),
+         static_cast<unsigned long>(hz / htx::hal::uart_divisor()));
   printf("screen %ldx%ld rgb565; methods", static_cast<long>(render_app::kWidth),
          static_cast<long>(render_app::kHeight));
   // What this GPU builds (CAPS), in `set`'s names.
@@ -136,6 +141,31 @@ void cmd_video(char* rest) {
   htx::hal::video_enable(strcmp(what, "on") == 0);
   htx::hal::video_clear_underrun();
   printf("video %s\r\n", what);
+}
+
+// `baud N`: the UART's divisor for N at the SoC's clock, when it is one (4..65535 clocks a bit,
+// within 2 % of N: two ends 2 % apart drift a fifth of a bit over a frame). `ok` goes out at the old
+// rate; then the line drains, a pause of 20 ms gives the host time to switch its port, and the
+// prompt comes at the new rate.
+void cmd_baud(char* rest) {
+  const char* text = next_word(&rest);
+  uint32_t baud = 0;
+  if (!text || next_word(&rest) || !parse_uint(text, 1, 100'000'000, &baud)) return error("usage: baud N");
+  const uint32_t hz = HTX_SYSCTRL->CLOCK_HZ;
+  const uint32_t divisor = (hz + baud / 2) / baud;
+  const uint32_t actual = divisor ? hz / divisor : 0;
+  const uint32_t off = actual > baud ? actual - baud : baud - actual;
+  if (divisor < 4 || divisor > 0xFFFF || uint64_t{off} * 50 > baud) {
+    printf("error: %lu baud is not one this UART makes at %lu Hz (4..65535 clocks a bit, within 2 %%)\r\n",
+           static_cast<unsigned long>(baud), static_cast<unsigned long>(hz));
+    return;
+  }
+  printf("ok %lu baud\r\n", static_cast<unsigned long>(actual));
+  htx::hal::uart_flush(kFlushPolls);
+  const uint64_t until = htx::hal::cpu_cycles() + hz / 50;
+  while (htx::hal::cpu_cycles() < until) {
+  }
+  htx::hal::uart_set_divisor(divisor);
 }
 
 void cmd_scenes() {
@@ -368,6 +398,8 @@ CommandResult run_command(char* line) {
     cmd_spin(rest);
   } else if (strcmp(cmd, "video") == 0) {
     cmd_video(rest);
+  } else if (strcmp(cmd, "baud") == 0) {
+    cmd_baud(rest);
   } else if (strcmp(cmd, "upload") == 0) {
     cmd_receive(rest, "usage: upload SIZE CRC32 (decimal bytes, hex checksum; `htx upload` sends them)",
                 receive_scene);

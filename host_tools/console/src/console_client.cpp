@@ -114,6 +114,20 @@ std::string ConsoleClient::command(const std::string& line) {
   return unix_lines(without_echo(read_until_prompt()));
 }
 
+void ConsoleClient::set_baud(unsigned baud) {
+  port_.write("baud " + std::to_string(baud) + "\r");
+  std::string text;
+  // The answer ends with `ok ... baud` and its line end, or (a refusal) with the prompt.
+  if (!read_text_until("baud\r\n", &text)) {
+    std::string why = unix_lines(without_echo(text));
+    while (!why.empty() && why.back() == '\n') why.pop_back();
+    throw std::invalid_argument(why);
+  }
+  port_.set_baud(baud);
+  const std::string rest = read_until_prompt();
+  if (!rest.empty()) throw std::runtime_error("baud: the console sent more than its prompt at the new rate: " + rest);
+}
+
 GrabbedFrame ConsoleClient::grab(const std::function<void(size_t)>& progress) {
   port_.write("grab\r");
   // The echo and any message come as text; the packets start at the first zero byte.

@@ -23,7 +23,14 @@ speed_t speed_of(unsigned baud) {
     case 230400: return B230400;
     case 460800: return B460800;
     case 921600: return B921600;
-    default: throw std::invalid_argument("--baud " + std::to_string(baud) + ": want 9600 ... 921600");
+    case 1000000: return B1000000;
+    case 1500000: return B1500000;
+    case 2000000: return B2000000;
+    case 3000000: return B3000000;
+    default:
+      throw std::invalid_argument("baud " + std::to_string(baud) +
+                                  ": want 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600, 1000000, "
+                                  "1500000, 2000000 or 3000000");
   }
 }
 
@@ -50,6 +57,16 @@ SerialPort::SerialPort(const std::string& path, unsigned baud) : path_(path) {
     ::close(fd_);
     throw std::runtime_error("cannot configure '" + path + "': " + why);
   }
+}
+
+void SerialPort::set_baud(unsigned baud) {
+  const speed_t speed = speed_of(baud);
+  termios t{};
+  if (::tcgetattr(fd_, &t) != 0) throw std::runtime_error("reading '" + path_ + "''s settings: " + std::strerror(errno));
+  ::cfsetispeed(&t, speed);
+  ::cfsetospeed(&t, speed);
+  if (::tcsetattr(fd_, TCSADRAIN, &t) != 0)
+    throw std::runtime_error("cannot set '" + path_ + "' to " + std::to_string(baud) + " baud: " + std::strerror(errno));
 }
 
 SerialPort::~SerialPort() {

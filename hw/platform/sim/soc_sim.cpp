@@ -15,6 +15,9 @@ namespace {
 // How often (in clocks) the host endpoint is polled for input: a syscall per poll, and far shorter
 // than one serial bit time would need (104 clocks at 115200 baud).
 constexpr uint64_t kPollInterval = 256;
+// The UART's divisor at reset (hw/regs/uart.json), where the host's end of the line starts; from
+// the first clock on it follows the register.
+constexpr uint32_t kUartResetDivisor = 104;
 // A script's input is over when the firmware has read the empty receiver this many times in a row,
 // each within kWaitPollGap clocks of the last, sending nothing: a loop waiting for a byte (the
 // console polls every few clocks), not a check between frames (`spin` polls once a frame).
@@ -54,9 +57,11 @@ struct SocSim::Impl {
 
   Impl(const SimOptions& o, SerialEndpoint* u, std::ostream& c)
       : opt(o), uart(u), console(c), ctx(std::make_unique<VerilatedContext>()),
-        rx_decoder(kClockHz / o.baud), tx_encoder(kClockHz / o.baud) {}
+        rx_decoder(kUartResetDivisor), tx_encoder(kUartResetDivisor) {}
 
   auto& ram() { return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_ram__DOT__mem_q; }
+  // The UART's clocks per bit (its divisor, at least 4), which the host's end of the line follows.
+  uint32_t uart_divisor() const { return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_uart__DOT__divisor; }
   bool uart_rx_full() const { return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_uart__DOT__rx_full; }
   bool uart_rx_empty_read() const {
     return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__u_uart__DOT__rx_empty_read;
@@ -153,6 +158,12 @@ SimResult SocSim::run() {
       }
       res.pcs->charge(last_pc, completes);
       if (completes && last_pc < kRamBytes) res.pcs->completed(last_pc, ram[last_pc / 4]);
+    }
+    // The host's end of the line runs at the rate the firmware set (the console's `baud` command
+    // changes it while the line is quiet; a user's terminal is set to match).
+    if (const uint32_t cpb = s.uart_divisor(); cpb != s.rx_decoder.clocks_per_bit()) {
+      s.rx_decoder.set_clocks_per_bit(cpb);
+      s.tx_encoder.set_clocks_per_bit(cpb);
     }
     s.top->uart_rx_i = s.tx_encoder.step();
     s.cycle();

@@ -4,9 +4,18 @@
 
 namespace htx::sim {
 
-UartLineDecoder::UartLineDecoder(uint32_t clocks_per_bit) : cpb_(clocks_per_bit) {
-  if (cpb_ < 4) throw std::invalid_argument("UART: at least 4 clocks per bit are needed");
+namespace {
+
+uint32_t checked_cpb(uint32_t clocks_per_bit) {
+  if (clocks_per_bit < 4) throw std::invalid_argument("UART: at least 4 clocks per bit are needed");
+  return clocks_per_bit;
 }
+
+}  // namespace
+
+UartLineDecoder::UartLineDecoder(uint32_t clocks_per_bit) : cpb_(checked_cpb(clocks_per_bit)) {}
+
+void UartLineDecoder::set_clocks_per_bit(uint32_t clocks_per_bit) { cpb_ = checked_cpb(clocks_per_bit); }
 
 std::optional<uint8_t> UartLineDecoder::step(bool line) {
   if (state_ == State::Idle) {
@@ -47,9 +56,9 @@ std::optional<uint8_t> UartLineDecoder::step(bool line) {
   return std::nullopt;
 }
 
-UartLineEncoder::UartLineEncoder(uint32_t clocks_per_bit) : cpb_(clocks_per_bit) {
-  if (cpb_ < 4) throw std::invalid_argument("UART: at least 4 clocks per bit are needed");
-}
+UartLineEncoder::UartLineEncoder(uint32_t clocks_per_bit) : cpb_(checked_cpb(clocks_per_bit)) {}
+
+void UartLineEncoder::set_clocks_per_bit(uint32_t clocks_per_bit) { cpb_ = checked_cpb(clocks_per_bit); }
 
 bool UartLineEncoder::step() {
   if (bits_left_ == 0) {

@@ -47,4 +47,10 @@ inline bool uart_flush(uint32_t max_polls) {
   return false;
 }
 
+// The UART's clocks per bit (CTRL.DIVISOR; the UART takes at least 4).
+inline uint32_t uart_divisor() { return (HTX_UART->CTRL & UART_CTRL_DIVISOR_Msk) >> UART_CTRL_DIVISOR_Pos; }
+inline void uart_set_divisor(uint32_t divisor) {
+  HTX_UART->CTRL = (HTX_UART->CTRL & ~UART_CTRL_DIVISOR_Msk) | ((divisor << UART_CTRL_DIVISOR_Pos) & UART_CTRL_DIVISOR_Msk);
+}
+
 }  // namespace htx::hal

@@ -45,6 +45,10 @@ class ConsoleClient {
   std::string upload(const std::vector<uint8_t>& bytes, const std::function<void(size_t sent)>& progress = {},
                      Payload payload = Payload::kScene);
   static constexpr int kUploadTries = 8;
+  // `baud N`: the console answers `ok` at the old rate and switches; the port follows, and the
+  // prompt then comes at the new rate. Throws std::invalid_argument with the console's error line
+  // when it refuses N (the line stays as it was), std::runtime_error when the port cannot take N.
+  void set_baud(unsigned baud);
 
  private:
   uint8_t next_byte();

@@ -18,6 +18,8 @@ class SerialPort {
   SerialPort(const SerialPort&) = delete;
   SerialPort& operator=(const SerialPort&) = delete;
 
+  // Another rate from now on (after what was written has gone). Throws on a rate it does not know.
+  void set_baud(unsigned baud);
   void write(const std::string& bytes);
   // Waits up to `timeout` for at least one byte; returns how many were read (0: the time passed).
   // Throws when the other end has gone (the simulation ended) or on a read error.

@@ -24,7 +24,6 @@ struct SimOptions {
   uint64_t max_cycles = 1'000'000'000;
   std::optional<uint32_t> stall_seed;  // random wait states on every bus slave
   std::string trace_path;              // FST waveform; empty = none
-  uint32_t baud = 115200;              // the host side of the serial line
   // Stop the GPU's clock while it is idle (htx_soc_fabric, Sim only): the same results, several
   // times faster. false runs it free, to check that claim.
   bool gpu_clock_gate = true;

@@ -1,6 +1,7 @@
 // The host end of the SoC's serial line, clock by clock: an 8N1 decoder for the UART's TX pin and
-// an 8N1 encoder that drives its RX pin. Both run at a fixed number of clocks per bit, as a serial
-// terminal runs at a configured baud rate.
+// an 8N1 encoder that drives its RX pin. Both run at a number of clocks per bit, as a serial
+// terminal runs at a configured baud rate; the SoC harness sets it to the UART's divisor whenever
+// the firmware changes that (set_clocks_per_bit), as a user sets the terminal to the board's rate.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +13,9 @@ namespace htx::sim {
 class UartLineDecoder {
  public:
   explicit UartLineDecoder(uint32_t clocks_per_bit);
+  // From the next bit on (at least 4; a change inside a frame garbles that frame).
+  void set_clocks_per_bit(uint32_t clocks_per_bit);
+  uint32_t clocks_per_bit() const { return cpb_; }
   // Samples the line once per clock; returns a byte when its stop bit has been sampled.
   std::optional<uint8_t> step(bool line);
   uint64_t framing_errors() const { return framing_errors_; }
@@ -29,6 +33,8 @@ class UartLineDecoder {
 class UartLineEncoder {
  public:
   explicit UartLineEncoder(uint32_t clocks_per_bit);
+  // From the next bit on (at least 4).
+  void set_clocks_per_bit(uint32_t clocks_per_bit);
   void push(uint8_t byte) { queue_.push_back(byte); }
   // Line level for this clock (idle high); advances one clock.
   bool step();
