@@ -108,7 +108,7 @@ void render_on_console(const RenderArgs& a) {
 #ifdef HTX_HAVE_SOC_CONSOLE
     std::cerr << "soc: starting the console firmware on the simulated SoC" << std::endl;
     SocConsole sim(console_firmware(a));
-    console::SerialPort port(sim.pty(), a.baud);
+    console::SerialPort port(sim.pty(), 115200);  // (a pseudo-terminal has no rate; --baud is the board's)
     console::ConsoleClient client(port, timeout);
     client.sync();
     // The simulated line has no cable to limit it: 1 Mbaud (12 clocks a bit) takes the transfers,
