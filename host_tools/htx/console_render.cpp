@@ -5,13 +5,14 @@
 #include <stdexcept>
 
 #include "console_payload.hpp"
+#include "soc_config.hpp"
 
 namespace htx {
 
 namespace {
 
-// The screen the console draws (its render firmware's kWidth x kHeight), for the camera's aspect.
-constexpr const char* kConsoleScreen = "160x120";
+// The screen the console draws, for the camera's aspect.
+const std::string kConsoleScreen = std::to_string(render_app::kWidth) + "x" + std::to_string(render_app::kHeight);
 
 // A command whose whole answer must be `ok`.
 void set(console::ConsoleClient& client, const std::string& what, const std::string& value) {
