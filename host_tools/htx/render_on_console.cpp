@@ -83,7 +83,7 @@ void render_on_console(const RenderArgs& a) {
   if (!a.config.empty() && a.config != kSocConfig)
     throw std::invalid_argument("--config " + a.config + ": --engine " + a.engine + " draws on the SoC's GPU, " +
                                 kSocConfig);
-  if (a.untextured) throw std::invalid_argument("--untextured: the console draws every triangle textured");
+  if (a.untextured) throw std::invalid_argument("--untextured: the soc and board engines draw the scene as its meshes say (textured or not)");
   if (soc && !a.port.empty()) throw std::invalid_argument("--port is for --engine board (soc runs its own SoC)");
   if (!soc && a.port.empty()) throw std::invalid_argument("--engine board needs --port (the board's serial port)");
   if (!soc && !a.firmware.empty()) throw std::invalid_argument("--firmware is for --engine soc");

@@ -464,7 +464,7 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
   refused({"--engine", "soc", "--config", "full"}, "draws on the SoC's GPU, icebreaker");
   refused({"--engine", "soc", "--tolerance", "0.3"}, "the console takes 1/N texel");
   refused({"--engine", "soc", "--method", "quadratic"}, "only the model builds it");
-  refused({"--engine", "soc", "--untextured"}, "the console draws every triangle textured");
+  refused({"--engine", "soc", "--untextured"}, "draw the scene as its meshes say");
   refused({"--engine", "soc", "--firmware", (dir / "none.elf").string()}, "no console firmware at");
   refused({"--engine", "board"}, "needs --port");
   refused({"--engine", "model", "--port", "/dev/null"}, "are for --engine soc and board");
@@ -472,6 +472,28 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
   // SoC's run instead of waiting for it (SimOptions::stop; the run's own limit is hours away).
   refused({"--engine", "soc", "--filter", "trilinear"}, "console: set filter trilinear: error: this GPU does not "
                                                         "build the filter trilinear");
+  std::filesystem::remove_all(dir);
+}
+
+// An uploaded scene keeps its own textured and Gouraud flags (the compiled-in ones are drawn
+// textured): an OBJ triangle of one material colour and no texture, drawn by `--engine soc`, is
+// the colour `ref` draws, not that colour modulated by the console's texture (22 dB against ref
+// when it was).
+TEST(SystemRender, SocEngineDrawsAnUntexturedSceneUntextured) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
+                                    ("htx_render_untextured_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "tri.mtl") << "newmtl red\nKd 0.9 0.2 0.1\n";
+  std::ofstream(dir / "tri.obj") << "mtllib tri.mtl\nusemtl red\nv -1 -1 -3\nv 1 -1 -3\nv 0 1 -3\nf 1 2 3\n";
+  const std::string metrics = (dir / "m.json").string();
+  const auto r = htx::test::run_program({HTX_BIN, "render", (dir / "tri.obj").string(), "--engine", "soc", "--out",
+                                         (dir / "tri.png").string(), "--metrics", metrics},
+                                        180s);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  std::ifstream in(metrics);
+  const nlohmann::json m = nlohmann::json::parse(in);
+  EXPECT_LE(m.at("max_channel_diff").get<int>(), 8) << m.dump();
+  EXPECT_TRUE(m.at("psnr_db").is_null() || m.at("psnr_db").get<double>() > 40.0) << m.dump();
   std::filesystem::remove_all(dir);
 }
 

@@ -27,7 +27,7 @@ const char* commit_staged(uint32_t size) {
   const char* why = htx::render::unpack_scene(reinterpret_cast<const uint8_t*>(g_bytes[s]), size, g_meshes[s],
                                               kStoreMeshes, render_app::kMaxMeshVertices, &u);
   if (why) return why;
-  g_scene[s] = {"upload", g_meshes[s], u.mesh_count, u.view_proj, u.cull_backfaces};
+  g_scene[s] = {"upload", g_meshes[s], u.mesh_count, u.view_proj, u.cull_backfaces, true};
   g_size[s] = size;
   g_committed = s;
   return nullptr;

@@ -89,15 +89,21 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
       r.error = "a mesh has more vertices than the vertex cache";
       return r;
     }
+    const bool textured = sc.meshes[m].state.textured, gouraud = sc.meshes[m].state.gouraud;
     apply_soc_render_state(&sc.meshes[m]);
+    if (sc.own_shading) {
+      sc.meshes[m].state.textured = textured;
+      sc.meshes[m].state.gouraud = gouraud;
+    }
     sc.meshes[m].tex = {settings.texture_log2_width, settings.texture_log2_height};
     sc.meshes[m].state.method = settings.method;
     sc.meshes[m].state.subdiv_n = settings.subdiv_n;
     if (settings.filter != kSceneFilter) sc.meshes[m].state.filter = settings.filter;
-    // Every mesh is textured here: a filter the texture unit lacks would be sampled bilinear at
-    // level 0 (TEXTURE ERR_FILTER) without a word, so it is refused before anything is drawn.
+    // A filter the texture unit lacks would be sampled bilinear at level 0 (TEXTURE ERR_FILTER)
+    // without a word, so a textured mesh that asks for one is refused before anything is drawn
+    // (an untextured one samples nothing).
     const uint8_t filter = sc.meshes[m].state.filter;
-    if (filter > 2 || !((filters_built >> filter) & 1u)) {
+    if (sc.meshes[m].state.textured && (filter > 2 || !((filters_built >> filter) & 1u))) {
       r.error = "a mesh's filter is one this GPU does not build (TEXTURE CAPS.FILTERS; `set filter` another)";
       return r;
     }

@@ -16,6 +16,9 @@ struct SceneData {
   uint32_t mesh_count;
   htx::render::Mat4 view_proj;  // projection * view, for the screen's 4:3 aspect
   bool cull_backfaces;
+  // Its meshes keep their own textured and Gouraud flags (an uploaded scene); the compiled-in
+  // scenes are drawn textured and Gouraud-shaded (render_state.hpp).
+  bool own_shading = false;
 };
 
 // The scenes in drawing order (the last one stays in the framebuffer at exit).
