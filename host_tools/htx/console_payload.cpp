@@ -67,7 +67,7 @@ std::vector<uint8_t> packed_texture_level(const Texture& t, std::string* note) {
 }  // namespace
 
 ScenePayload scene_payload(const std::string& spec, const std::string& size, bool with_texture,
-                           uint32_t mesh_vertices) {
+                           uint32_t mesh_vertices, bool untextured) {
   int width = 0, height = 0;
   parse_size(size, width, height);
   const Scene scene = load_scene(spec);
@@ -81,13 +81,16 @@ ScenePayload scene_payload(const std::string& spec, const std::string& size, boo
     add_note(&p.note, std::to_string(whole_meshes) + " meshes sent as " + std::to_string(rs.meshes.size()) +
                           " of at most " + std::to_string(mesh_vertices) + " vertices");
   std::vector<render::Mesh> meshes;
-  for (const host::RenderScene::MeshData& d : rs.meshes) meshes.push_back(d.mesh);
+  for (const host::RenderScene::MeshData& d : rs.meshes) {
+    meshes.push_back(d.mesh);
+    if (untextured) meshes.back().state.textured = false;
+  }
   const uint32_t count = static_cast<uint32_t>(meshes.size());
   p.scene.resize(render::packed_scene_size(meshes.data(), count));
   if (render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(), count, p.scene.data(), p.scene.size()) == 0)
     throw std::runtime_error("'" + spec +
                              "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
-  if (!with_texture) return p;
+  if (!with_texture || untextured) return p;
   // The console draws every mesh with one texture: the first textured mesh's.
   std::vector<int> used;
   for (const Mesh& m : scene.meshes)

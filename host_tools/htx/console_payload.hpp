@@ -15,14 +15,14 @@ namespace htx {
 // mesh_vertices vertices (host::split_meshes), and, unless with_texture is false, the scene has no
 // texture or none of its levels can be sent, its texture packed (htx/render/texture_pack.h): the
 // first textured mesh's, as its largest mip level of at most render::kConsoleTextureTexels texels
-// with sides of 8 or more. `note` says what was done with the meshes and the texture when it is
-// worth saying.
+// with sides of 8 or more. `untextured`: every mesh marked untextured, and no texture. `note` says
+// what was done with the meshes and the texture when it is worth saying.
 struct ScenePayload {
   std::vector<uint8_t> scene, texture;
   std::string note;
 };
 ScenePayload scene_payload(const std::string& spec, const std::string& size, bool with_texture,
-                           uint32_t mesh_vertices = render::kMaxPackedMeshVertices);
+                           uint32_t mesh_vertices = render::kMaxPackedMeshVertices, bool untextured = false);
 
 // An image as the console's texture: sides powers of two in 8..256, each pixel encoded in
 // `format_name` (rgb565 or rgba4444), the image's bottom row as texel row 0 (v = 0), as the model

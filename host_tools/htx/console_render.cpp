@@ -38,7 +38,8 @@ std::map<std::string, std::string> render_figures(const std::string& out) {
 }  // namespace
 
 ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& draw) {
-  const ScenePayload payload = scene_payload(draw.scene, kConsoleScreen, true);
+  const ScenePayload payload =
+      scene_payload(draw.scene, kConsoleScreen, true, render::kMaxPackedMeshVertices, draw.untextured);
   const auto step = [&draw](const std::string& what) {
     if (draw.on_step) draw.on_step(what);
   };

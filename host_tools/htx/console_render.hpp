@@ -16,6 +16,7 @@ struct ConsoleDraw {
   std::string method;     // `set method`'s name: auto, affine, subdivN, recip_lut, recip_nr, divfree
   std::string tolerance;  // `set tolerance`'s 1/N
   std::string filter;     // `set filter`'s name; `scene` keeps the meshes' own
+  bool untextured = false;  // every mesh uploaded untextured (the console keeps its texture)
   // Told each step as it begins ("upload: scene of 816 bytes", ..., "grab: the frame"), and what
   // the upload does to the scene or its texture (ConsoleDrawn::note), for progress.
   std::function<void(const std::string&)> on_step;

@@ -83,21 +83,23 @@ void render_on_console(const RenderArgs& a) {
   if (!a.config.empty() && a.config != kSocConfig)
     throw std::invalid_argument("--config " + a.config + ": --engine " + a.engine + " draws on the SoC's GPU, " +
                                 kSocConfig);
-  if (a.untextured) throw std::invalid_argument("--untextured: the soc and board engines draw the scene as its meshes say (textured or not)");
   if (soc && !a.port.empty()) throw std::invalid_argument("--port is for --engine board (soc runs its own SoC)");
   if (!soc && a.port.empty()) throw std::invalid_argument("--engine board needs --port (the board's serial port)");
   if (!soc && !a.firmware.empty()) throw std::invalid_argument("--firmware is for --engine soc");
   if (!(a.timeout_s > 0)) throw std::invalid_argument("--timeout must be > 0 seconds");
 
+  // (The scene's notes come with the upload's, as a step.)
   const Scene scene = load_scene(a.scene);
-  for (const std::string& note : scene.notes) std::cerr << "htx: " << note << "\n";
   ScreenScene screen = prepare_screen_scene(scene, kScreenWidth, kScreenHeight);
   screen.clear_color = render_app::kClearColor;  // for ref: the background the console draws on
+  if (a.untextured)
+    for (ScreenTri& t : screen.tris) t.state.textured = false;
   ConsoleDraw draw;
   draw.scene = a.scene;
   draw.method = console_method(a, screen);
   draw.tolerance = tolerance_fraction(a.tolerance);
   draw.filter = a.filter.empty() ? "scene" : std::string(filter_name(parse_filter(a.filter)));
+  draw.untextured = a.untextured;
   draw.on_step = [&a](const std::string& what) { std::cerr << a.engine << ": " << what << std::endl; };
 
   const auto t0 = std::chrono::steady_clock::now();

@@ -464,7 +464,6 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
   refused({"--engine", "soc", "--config", "full"}, "draws on the SoC's GPU, icebreaker");
   refused({"--engine", "soc", "--tolerance", "0.3"}, "the console takes 1/N texel");
   refused({"--engine", "soc", "--method", "quadratic"}, "only the model builds it");
-  refused({"--engine", "soc", "--untextured"}, "draw the scene as its meshes say");
   refused({"--engine", "soc", "--firmware", (dir / "none.elf").string()}, "no console firmware at");
   refused({"--engine", "board"}, "needs --port");
   refused({"--engine", "model", "--port", "/dev/null"}, "are for --engine soc and board");
@@ -478,7 +477,7 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
 // An uploaded scene keeps its own textured and Gouraud flags (the compiled-in ones are drawn
 // textured): an OBJ triangle of one material colour and no texture, drawn by `--engine soc`, is
 // the colour `ref` draws, not that colour modulated by the console's texture (22 dB against ref
-// when it was).
+// when it was); so is the cube with `--untextured`.
 TEST(SystemRender, SocEngineDrawsAnUntexturedSceneUntextured) {
   const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
                                     ("htx_render_untextured_" + std::to_string(getpid()));
@@ -494,6 +493,14 @@ TEST(SystemRender, SocEngineDrawsAnUntexturedSceneUntextured) {
   const nlohmann::json m = nlohmann::json::parse(in);
   EXPECT_LE(m.at("max_channel_diff").get<int>(), 8) << m.dump();
   EXPECT_TRUE(m.at("psnr_db").is_null() || m.at("psnr_db").get<double>() > 40.0) << m.dump();
+  const auto cube = htx::test::run_program({HTX_BIN, "render", "cube", "--engine", "soc", "--untextured", "--out",
+                                            (dir / "cube.png").string(), "--metrics", metrics},
+                                           180s);
+  ASSERT_EQ(cube.status, 0) << cube.out << cube.err;
+  std::ifstream cube_in(metrics);
+  const nlohmann::json c = nlohmann::json::parse(cube_in);
+  EXPECT_LE(c.at("max_channel_diff").get<int>(), 8) << c.dump();
+  EXPECT_EQ(cube.err.find("upload: texture"), std::string::npos) << "no texture is sent\n" << cube.err;
   std::filesystem::remove_all(dir);
 }
 
