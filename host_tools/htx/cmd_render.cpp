@@ -3,7 +3,6 @@
 // `board` draw it on the console firmware (render_on_console.cpp).
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -23,6 +22,7 @@
 #include "htx/rtl/raster_engine.hpp"
 #define HTX_HAVE_RTL_ENGINE 1
 #endif
+#include "metrics_output.hpp"
 #include "output_path.hpp"
 #include "render_args.hpp"
 
@@ -119,17 +119,12 @@ void run_render(const RenderArgs& given) {
       // CNT_DIVFREE_STEPS and the model's divfree_steps_total on the same records.
       j["divfree_steps_total"] = rtl_stats.divfree_steps;
       j["model_divfree_steps_total"] = model.counters.divfree_steps_total;
-      // The Verilated GPU has no per-pixel probe (texel coordinates, coverage): the figures taken
-      // from it would describe an empty probe, so they are null (docs/metrics.md). Where
-      // model_mismatch_pixels is 0, the model engine's figures for the same options apply.
-      for (const char* key : {"max_texel_error", "rms_texel_error", "p999_texel_error", "coverage_diff_pixels"})
-        j[key] = nullptr;
+      // The Verilated GPU has no per-pixel probe (docs/metrics.md). Where model_mismatch_pixels is
+      // 0, the model engine's figures for the same options apply.
+      null_probe_figures(&j);
     }
 #endif
-    std::ofstream out(a.metrics);
-    out << j.dump(2) << "\n";
-    if (!out) throw std::runtime_error("cannot write metrics to '" + a.metrics + "'");
-    std::cout << "metrics -> " << a.metrics << "\n";
+    write_metrics(a.metrics, j);
   }
 }
 

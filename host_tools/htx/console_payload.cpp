@@ -68,9 +68,13 @@ std::vector<uint8_t> packed_texture_level(const Texture& t, std::string* note) {
 
 ScenePayload scene_payload(const std::string& spec, const std::string& size, bool with_texture,
                            uint32_t mesh_vertices, bool untextured) {
+  return scene_payload(load_scene(spec), spec, size, with_texture, mesh_vertices, untextured);
+}
+
+ScenePayload scene_payload(const Scene& scene, const std::string& spec, const std::string& size, bool with_texture,
+                           uint32_t mesh_vertices, bool untextured) {
   int width = 0, height = 0;
   parse_size(size, width, height);
-  const Scene scene = load_scene(spec);
   // The firmware's form of the scene (as the render firmware's compiled-in scenes are made), packed.
   host::RenderScene rs = host::to_render_scene(scene, width, height);
   const size_t whole_meshes = rs.meshes.size();

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "htx/model/scene.hpp"
 #include "htx/render/scene_pack.h"
 #include "htx/render/texture_pack.h"
 
@@ -22,6 +23,9 @@ struct ScenePayload {
   std::string note;
 };
 ScenePayload scene_payload(const std::string& spec, const std::string& size, bool with_texture,
+                           uint32_t mesh_vertices = render::kMaxPackedMeshVertices, bool untextured = false);
+// The same for a scene already loaded from `spec` (which names it in errors).
+ScenePayload scene_payload(const Scene& scene, const std::string& spec, const std::string& size, bool with_texture,
                            uint32_t mesh_vertices = render::kMaxPackedMeshVertices, bool untextured = false);
 
 // An image as the console's texture: sides powers of two in 8..256, each pixel encoded in

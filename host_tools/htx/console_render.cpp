@@ -4,15 +4,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "console_payload.hpp"
-#include "soc_config.hpp"
 
 namespace htx {
 
 namespace {
-
-// The screen the console draws, for the camera's aspect.
-const std::string kConsoleScreen = std::to_string(render_app::kWidth) + "x" + std::to_string(render_app::kHeight);
 
 // A command whose whole answer must be `ok`.
 void set(console::ConsoleClient& client, const std::string& what, const std::string& value) {
@@ -38,13 +33,11 @@ std::map<std::string, std::string> render_figures(const std::string& out) {
 }  // namespace
 
 ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& draw) {
-  const ScenePayload payload =
-      scene_payload(draw.scene, kConsoleScreen, true, render::kMaxPackedMeshVertices, draw.untextured);
+  const ScenePayload& payload = draw.payload;
   const auto step = [&draw](const std::string& what) {
     if (draw.on_step) draw.on_step(what);
   };
   ConsoleDrawn d;
-  d.note = payload.note;
   if (!payload.note.empty()) step(payload.note);
   // The scene first: a refused scene leaves the console's texture as it was too.
   step("upload: scene of " + std::to_string(payload.scene.size()) + " bytes");

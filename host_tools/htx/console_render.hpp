@@ -7,18 +7,18 @@
 #include <map>
 #include <string>
 
+#include "console_payload.hpp"
 #include "htx/console/console_client.hpp"
 
 namespace htx {
 
 struct ConsoleDraw {
-  std::string scene;      // built-in spec or OBJ file, as htx upload takes it
+  ScenePayload payload;   // the scene as htx upload sends it (console_payload.hpp)
   std::string method;     // `set method`'s name: auto, affine, subdivN, recip_lut, recip_nr, divfree
   std::string tolerance;  // `set tolerance`'s 1/N
   std::string filter;     // `set filter`'s name; `scene` keeps the meshes' own
-  bool untextured = false;  // every mesh uploaded untextured (the console keeps its texture)
   // Told each step as it begins ("upload: scene of 816 bytes", ..., "grab: the frame"), and what
-  // the upload does to the scene or its texture (ConsoleDrawn::note), for progress.
+  // the payload's packing did to the scene or its texture (its note), for progress.
   std::function<void(const std::string&)> on_step;
 };
 
@@ -27,7 +27,6 @@ struct ConsoleDrawn {
   // The render line's figures: triangles, sent, frame_cycles, raster_cycles, fragments, crc32
   // (raster_cycles and fragments are `-` on a GPU without counters).
   std::map<std::string, std::string> figures;
-  std::string note;  // what the upload did to the scene or its texture, when worth saying
 };
 
 // Uploads, sets, renders and grabs on a console at its prompt (ConsoleClient::sync done). Throws

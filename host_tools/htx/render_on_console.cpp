@@ -2,13 +2,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "console_payload.hpp"
 #include "console_render.hpp"
 #include "htx/console/console_client.hpp"
 #include "htx/console/serial_port.hpp"
@@ -20,6 +20,7 @@
 #include "htx/model/ref.hpp"
 #include "htx/model/scenes.hpp"
 #include "htx_paths.h"
+#include "metrics_output.hpp"
 #include "render_args.hpp"
 #include "soc_config.hpp"
 #if __has_include("htx/sim/soc_sim.hpp")
@@ -95,11 +96,10 @@ void render_on_console(const RenderArgs& a) {
   if (a.untextured)
     for (ScreenTri& t : screen.tris) t.state.textured = false;
   ConsoleDraw draw;
-  draw.scene = a.scene;
+  draw.payload = scene_payload(scene, a.scene, screen_size, true, render::kMaxPackedMeshVertices, a.untextured);
   draw.method = console_method(a, screen);
   draw.tolerance = tolerance_fraction(a.tolerance);
   draw.filter = a.filter.empty() ? "scene" : std::string(filter_name(parse_filter(a.filter)));
-  draw.untextured = a.untextured;
   draw.on_step = [&a](const std::string& what) { std::cerr << a.engine << ": " << what << std::endl; };
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -164,12 +164,8 @@ void render_on_console(const RenderArgs& a) {
     j["triangles"] = number_or_null(drawn.figures.at("triangles"));
     j["sent"] = number_or_null(drawn.figures.at("sent"));
     j["crc32"] = drawn.figures.at("crc32");
-    for (const char* key : {"max_texel_error", "rms_texel_error", "p999_texel_error", "coverage_diff_pixels"})
-      j[key] = nullptr;
-    std::ofstream out(a.metrics);
-    out << j.dump(2) << "\n";
-    if (!out) throw std::runtime_error("cannot write metrics to '" + a.metrics + "'");
-    std::cout << "metrics -> " << a.metrics << "\n";
+    null_probe_figures(&j);
+    write_metrics(a.metrics, j);
   }
 }
 

@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
              << unsigned{d.mesh.tex.log2_width} << ", " << unsigned{d.mesh.tex.log2_height} << "}, "
              << int{d.mesh.position_bits} << "},\n";
     }
-    o << "Mesh g_" << name << "_meshes[] = {\n" << meshes.str() << "};\n\n";
+    o << "const Mesh g_" << name << "_meshes[] = {\n" << meshes.str() << "};\n\n";
     table << "    {\"" << name << "\", g_" << name << "_meshes, " << rs.meshes.size() << ", " << mat4(rs.view_proj) << ", "
           << (rs.cull_backfaces ? "true" : "false") << "},\n";
   }

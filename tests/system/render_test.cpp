@@ -347,7 +347,7 @@ TEST(SystemRender, ConsoleFilterSettingDrawsTheCosimFrames) {
 }
 
 // draw_scene (the console's and the render firmware's draw) on the host over the Verilated
-// icebreaker GPU: a filter set for a draw gives the cosim frame drawn with it and is undone after
+// icebreaker GPU: a filter set for a draw gives the cosim frame drawn with it and is not left in
 // it, so the compiled-in scene keeps its own; a filter the texture unit does not build (trilinear
 // here), set or a mesh's own, is refused before anything is drawn (the texture unit would sample
 // it bilinear at level 0 without a word).
@@ -382,15 +382,35 @@ TEST(SystemRender, DrawSceneTakesASetFilterAndRefusesOneTheGpuLacks) {
   EXPECT_EQ(cube->meshes[0].state.filter, cube_filter);
 
   settings.filter = render_app::kSceneFilter;
-  cube->meshes[0].state.filter = 2;  // as an uploaded scene may ask
-  r = render_app::draw_scene(*cube, settings);
-  cube->meshes[0].state.filter = cube_filter;
+  htx::render::Mesh trilinear_mesh = cube->meshes[0];
+  trilinear_mesh.state.filter = 2;  // as an uploaded scene may ask
+  render_app::SceneData trilinear_cube = *cube;
+  trilinear_cube.meshes = &trilinear_mesh;
+  r = render_app::draw_scene(trilinear_cube, settings);
   EXPECT_FALSE(r.ok);
   EXPECT_NE(std::string(r.error).find("does not build"), std::string::npos) << r.error;
 
   r = render_app::draw_scene(*cube, settings);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(hex8(r.crc), own);
+}
+
+// `htx render SCENE --engine soc --out PNG --metrics JSON EXTRA...` and the metrics it wrote (null
+// when it failed).
+struct SocRender {
+  htx::test::RunResult run;
+  nlohmann::json metrics;
+};
+SocRender render_on_soc(const std::string& scene, const std::string& png, const std::string& metrics,
+                        const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> argv = {HTX_BIN, "render", scene, "--engine", "soc", "--out", png, "--metrics", metrics};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  SocRender r{htx::test::run_program(argv, 180s), nullptr};
+  if (r.run.status == 0) {
+    std::ifstream in(metrics);
+    r.metrics = nlohmann::json::parse(in);
+  }
+  return r;
 }
 
 // `htx render --engine soc`: the cube uploaded to the console firmware on the simulated SoC, drawn
@@ -406,8 +426,8 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
   std::filesystem::create_directories(dir);
   const std::string soc_png = (dir / "soc.png").string(), board_png = (dir / "board.png").string(),
                     metrics = (dir / "soc.json").string();
-  const auto soc = htx::test::run_program(
-      {HTX_BIN, "render", "cube", "--engine", "soc", "--out", soc_png, "--metrics", metrics}, 180s);
+  const SocRender rendered = render_on_soc("cube", soc_png, metrics);
+  const htx::test::RunResult& soc = rendered.run;
   ASSERT_FALSE(soc.timed_out);
   ASSERT_EQ(soc.status, 0) << soc.out << soc.err;
   const CosimFrame cube = cosim_frame("cube", render_app::kSceneFilter, htx::render::kMethodRecipNr);
@@ -417,8 +437,7 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
   ASSERT_EQ(img.width, render_app::kWidth);
   ASSERT_EQ(img.height, render_app::kHeight);
   EXPECT_EQ(img.rgba, htx::image_from_rgb565(img.width, img.height, cube.color).rgba);
-  std::ifstream in(metrics);
-  const nlohmann::json m = nlohmann::json::parse(in);
+  const nlohmann::json& m = rendered.metrics;
   EXPECT_EQ(m.at("engine"), "soc");
   EXPECT_EQ(m.at("config"), "icebreaker");
   EXPECT_EQ(m.at("method"), "recip_nr");
@@ -485,22 +504,16 @@ TEST(SystemRender, SocEngineDrawsAnUntexturedSceneUntextured) {
   std::ofstream(dir / "tri.mtl") << "newmtl red\nKd 0.9 0.2 0.1\n";
   std::ofstream(dir / "tri.obj") << "mtllib tri.mtl\nusemtl red\nv -1 -1 -3\nv 1 -1 -3\nv 0 1 -3\nf 1 2 3\n";
   const std::string metrics = (dir / "m.json").string();
-  const auto r = htx::test::run_program({HTX_BIN, "render", (dir / "tri.obj").string(), "--engine", "soc", "--out",
-                                         (dir / "tri.png").string(), "--metrics", metrics},
-                                        180s);
-  ASSERT_EQ(r.status, 0) << r.out << r.err;
-  std::ifstream in(metrics);
-  const nlohmann::json m = nlohmann::json::parse(in);
+  const SocRender tri = render_on_soc((dir / "tri.obj").string(), (dir / "tri.png").string(), metrics);
+  ASSERT_EQ(tri.run.status, 0) << tri.run.out << tri.run.err;
+  const nlohmann::json& m = tri.metrics;
   EXPECT_LE(m.at("max_channel_diff").get<int>(), 8) << m.dump();
   EXPECT_TRUE(m.at("psnr_db").is_null() || m.at("psnr_db").get<double>() > 40.0) << m.dump();
-  const auto cube = htx::test::run_program({HTX_BIN, "render", "cube", "--engine", "soc", "--untextured", "--out",
-                                            (dir / "cube.png").string(), "--metrics", metrics},
-                                           180s);
-  ASSERT_EQ(cube.status, 0) << cube.out << cube.err;
-  std::ifstream cube_in(metrics);
-  const nlohmann::json c = nlohmann::json::parse(cube_in);
+  const SocRender cube = render_on_soc("cube", (dir / "cube.png").string(), metrics, {"--untextured"});
+  ASSERT_EQ(cube.run.status, 0) << cube.run.out << cube.run.err;
+  const nlohmann::json& c = cube.metrics;
   EXPECT_LE(c.at("max_channel_diff").get<int>(), 8) << c.dump();
-  EXPECT_EQ(cube.err.find("upload: texture"), std::string::npos) << "no texture is sent\n" << cube.err;
+  EXPECT_EQ(cube.run.err.find("upload: texture"), std::string::npos) << "no texture is sent\n" << cube.run.err;
   std::filesystem::remove_all(dir);
 }
 

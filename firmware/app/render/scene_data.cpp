@@ -116,7 +116,7 @@ const uint16_t k_floor_0_indices[] = {
     70, 71, 80, 70, 80, 79,
 };
 
-Mesh g_floor_meshes[] = {
+const Mesh g_floor_meshes[] = {
     {k_floor_0_vertices, 81, k_floor_0_indices, 128,
      {{{268435456, 0, 0, 0}, {0, 268435456, 0, 0}, {0, 0, 268435456, 0}, {0, 0, 0, 65536}}, 28},
      {3, 16, 1, 0, 0, 1, true, true, true, 1, 0}, {6, 6}, 9},
@@ -153,7 +153,7 @@ const uint16_t k_cube_0_indices[] = {
     12, 13, 15, 12, 15, 14, 16, 17, 19, 16, 19, 18, 20, 21, 23, 20, 23, 22,
 };
 
-Mesh g_cube_meshes[] = {
+const Mesh g_cube_meshes[] = {
     {k_cube_0_vertices, 24, k_cube_0_indices, 12,
      {{{464943848, 0, -268435456, 0}, {-113445726, 486570288, -196493761, 0}, {243285144, 226891452, 421382230, 0}, {0, 0, 0, 65536}}, 29},
      {3, 16, 1, 0, 0, 1, true, true, true, 1, 0}, {6, 6}, 1},

@@ -36,22 +36,9 @@ void time_geometry(const SceneData& sc, const htx::render::Viewport& vp, htx::re
   }
 }
 
-// Each mesh's own filter, put back when it goes out of scope.
-class SceneFilters {
- public:
-  explicit SceneFilters(const SceneData& sc) : sc_(sc) {
-    for (uint32_t m = 0; m < sc_.mesh_count; ++m) filter_[m] = sc_.meshes[m].state.filter;
-  }
-  ~SceneFilters() {
-    for (uint32_t m = 0; m < sc_.mesh_count; ++m) sc_.meshes[m].state.filter = filter_[m];
-  }
-  SceneFilters(const SceneFilters&) = delete;
-  SceneFilters& operator=(const SceneFilters&) = delete;
-
- private:
-  const SceneData& sc_;
-  uint8_t filter_[kMaxSceneMeshes];
-};
+// The meshes as drawn: the scene's own with the render state set for the draw, so that the scene
+// itself stays as it is (a setting for one draw does not stay in the next).
+htx::render::Mesh g_draw_meshes[kMaxSceneMeshes];
 
 }  // namespace
 
@@ -81,29 +68,27 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
     r.error = "the scene has more meshes than draw_scene draws";
     return r;
   }
-  // The meshes are the scene's own: a filter set for this draw is undone when it ends, so that
-  // the next draw with the scene's filters gets them (the other fields are set every draw).
-  SceneFilters own_filters(sc);
   for (uint32_t m = 0; m < sc.mesh_count; ++m) {
     if (sc.meshes[m].vertex_count > kMaxVertices) {
       r.error = "a mesh has more vertices than the vertex cache";
       return r;
     }
-    const bool textured = sc.meshes[m].state.textured, gouraud = sc.meshes[m].state.gouraud;
-    apply_soc_render_state(&sc.meshes[m]);
+    htx::render::Mesh& mesh = g_draw_meshes[m];
+    mesh = sc.meshes[m];
+    apply_soc_render_state(&mesh);
     if (sc.own_shading) {
-      sc.meshes[m].state.textured = textured;
-      sc.meshes[m].state.gouraud = gouraud;
+      mesh.state.textured = sc.meshes[m].state.textured;
+      mesh.state.gouraud = sc.meshes[m].state.gouraud;
     }
-    sc.meshes[m].tex = {settings.texture_log2_width, settings.texture_log2_height};
-    sc.meshes[m].state.method = settings.method;
-    sc.meshes[m].state.subdiv_n = settings.subdiv_n;
-    if (settings.filter != kSceneFilter) sc.meshes[m].state.filter = settings.filter;
+    mesh.tex = {settings.texture_log2_width, settings.texture_log2_height};
+    mesh.state.method = settings.method;
+    mesh.state.subdiv_n = settings.subdiv_n;
+    if (settings.filter != kSceneFilter) mesh.state.filter = settings.filter;
     // A filter the texture unit lacks would be sampled bilinear at level 0 (TEXTURE ERR_FILTER)
     // without a word, so a textured mesh that asks for one is refused before anything is drawn
     // (an untextured one samples nothing).
-    const uint8_t filter = sc.meshes[m].state.filter;
-    if (sc.meshes[m].state.textured && (filter > 2 || !((filters_built >> filter) & 1u))) {
+    const uint8_t filter = mesh.state.filter;
+    if (mesh.state.textured && (filter > 2 || !((filters_built >> filter) & 1u))) {
       r.error = "a mesh's filter is one this GPU does not build (TEXTURE CAPS.FILTERS; `set filter` another)";
       return r;
     }
@@ -124,7 +109,7 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
   htx::hal::raster_clear_state_error();
   const uint64_t f0 = htx::hal::cpu_cycles();
   const htx::render::FrameStatus st = htx::render::render_frame(
-      frame, {kClearColor, kClearDepth}, sc.view_proj, sc.meshes, sc.mesh_count, &cache, kMaxPolls, &r.stats,
+      frame, {kClearColor, kClearDepth}, sc.view_proj, g_draw_meshes, sc.mesh_count, &cache, kMaxPolls, &r.stats,
       &mesh_status);
   r.frame_cycles = htx::hal::cpu_cycles() - f0;
   if (st != htx::render::kFrameOk) {

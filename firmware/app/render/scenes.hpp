@@ -12,7 +12,7 @@ namespace render_app {
 
 struct SceneData {
   const char* name;
-  htx::render::Mesh* meshes;  // writable: the firmware chooses the render state
+  const htx::render::Mesh* meshes;  // as the scene gives them (draw_scene sets the render state on copies)
   uint32_t mesh_count;
   htx::render::Mat4 view_proj;  // projection * view, for the screen's 4:3 aspect
   bool cull_backfaces;

@@ -7,6 +7,7 @@
 #include "Vhtx_soc_sim_top.h"
 #include "Vhtx_soc_sim_top___024root.h"
 #include "htx/sim/uart_line.hpp"
+#include "htx_regs.h"
 #include "verilated.h"
 #include "verilated_fst_c.h"
 
@@ -17,7 +18,7 @@ namespace {
 constexpr uint64_t kPollInterval = 256;
 // The UART's divisor at reset (hw/regs/uart.json), where the host's end of the line starts; from
 // the first clock on it follows the register.
-constexpr uint32_t kUartResetDivisor = 104;
+constexpr uint32_t kUartResetDivisor = UART_CTRL_DIVISOR_Reset;
 // A script's input is over when the firmware has read the empty receiver this many times in a row,
 // each within kWaitPollGap clocks of the last, sending nothing: a loop waiting for a byte (the
 // console polls every few clocks), not a check between frames (`spin` polls once a frame).
