@@ -56,20 +56,23 @@ void grab_to_png(console::ConsoleClient& client, const std::string& out) {
 }
 
 void upload(console::ConsoleClient& client, const std::vector<uint8_t>& packed,
-            console::ConsoleClient::Payload payload = console::ConsoleClient::Payload::kScene) {
+            console::ConsoleClient::Payload payload = console::ConsoleClient::Payload::kScene, unsigned slot = 0) {
   const std::string verdict = client.upload(
       packed,
       [&packed](size_t sent) { std::cerr << "\rupload: " << sent << " of " << packed.size() << " bytes" << std::flush; },
-      payload);
+      payload, slot);
   std::cerr << "\n";
   std::cout << verdict;
 }
 
-// The scene, then its texture (only once the scene was taken: a refused scene changes nothing).
+// The scene, then its textures, each into its slot (only once the scene was taken: a refused
+// scene changes nothing).
 void upload_scene(console::ConsoleClient& client, const ScenePayload& p) {
   upload(client, p.scene);
   if (!p.note.empty()) std::cerr << "upload: " << p.note << "\n";
-  if (!p.texture.empty()) upload(client, p.texture, console::ConsoleClient::Payload::kTexture);
+  for (size_t slot = 0; slot < p.textures.size(); ++slot)
+    if (!p.textures[slot].empty())
+      upload(client, p.textures[slot], console::ConsoleClient::Payload::kTexture, static_cast<unsigned>(slot));
 }
 
 struct ConsoleArgs : PortArgs {
@@ -86,8 +89,8 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
     return false;
   }
   std::istringstream words(line);
-  std::string verb, arg, format, extra;
-  words >> verb >> arg >> format >> extra;
+  std::string verb, arg, format, extra, more;
+  words >> verb >> arg >> format >> extra >> more;
   if (verb == "baud") {
     // The console switches after its `ok`; the port must follow it there.
     if (arg.empty() || !format.empty() || arg.find_first_not_of("0123456789") != std::string::npos || arg.size() > 9)
@@ -101,18 +104,19 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
     return true;
   }
   if (verb == "grab" || verb == "upload" || verb == "texture") {
-    // Only `texture` takes a third word: the format.
-    if (arg.empty() || !extra.empty() || (verb != "texture" && !format.empty()))
+    // Only `texture` takes more words: the format, then the slot.
+    const bool is_slot = extra.empty() || extra.find_first_not_of("0123456789") == std::string::npos;
+    if (arg.empty() || !more.empty() || !is_slot || extra.size() > 3 || (verb != "texture" && !format.empty()))
       throw std::invalid_argument(verb == "grab"     ? "usage: grab FRAME.png"
                                   : verb == "upload" ? "usage: upload SCENE (built-in or FILE.obj)"
-                                                     : "usage: texture IMAGE.png [rgb565|rgba4444]");
+                                                     : "usage: texture IMAGE.png [rgb565|rgba4444 [SLOT]]");
     if (verb == "grab") {
       require_output_dir(arg);
       grab_to_png(client, arg);
     } else if (verb == "upload") upload_scene(client, scene_payload(arg, "160x120", true));
     else
       upload(client, packed_texture(arg, format.empty() ? "rgb565" : format),
-             console::ConsoleClient::Payload::kTexture);
+             console::ConsoleClient::Payload::kTexture, extra.empty() ? 0u : static_cast<unsigned>(std::stoul(extra)));
     return true;
   }
   std::cout << client.command(line) << std::flush;
@@ -162,6 +166,7 @@ struct UploadArgs : PortArgs {
   std::string size = "160x120";
   std::string texture;
   std::string format = "rgb565";
+  unsigned slot = 0;
   bool no_texture = false;
   uint32_t mesh_vertices = render::kMaxPackedMeshVertices;
 };
@@ -171,12 +176,15 @@ void run_upload(const UploadArgs& a) {
   // Bad scenes and images fail before the port opens.
   ScenePayload scene;
   if (!a.scene.empty()) scene = scene_payload(a.scene, a.size, a.texture.empty() && !a.no_texture, a.mesh_vertices);
-  if (!a.texture.empty()) scene.texture = packed_texture(a.texture, a.format);
+  if (!a.texture.empty()) {
+    scene.textures.assign(a.slot + 1, {});
+    scene.textures[a.slot] = packed_texture(a.texture, a.format);
+  }
   console::SerialPort port(a.port, a.baud);
   console::ConsoleClient client(port, timeout_of(a));
   client.sync();
   if (!scene.scene.empty()) upload_scene(client, scene);
-  else upload(client, scene.texture, console::ConsoleClient::Payload::kTexture);
+  else upload(client, scene.textures[a.slot], console::ConsoleClient::Payload::kTexture, a.slot);
 }
 
 }  // namespace
@@ -187,7 +195,7 @@ void register_console(CLI::App& app) {
   add_port_options(cmd, args.get());
   cmd->add_option("-c,--command", args->commands,
                   "run this command and print its output (repeatable; `grab FILE.png`, `upload SCENE`, "
-                  "`texture FILE.png [rgb565|rgba4444]` and `baud N` are carried out by htx); without any, read "
+                  "`texture FILE.png [rgb565|rgba4444 [SLOT]]` and `baud N` are carried out by htx); without any, read "
                   "commands from stdin");
   cmd->callback([args] { run_console(*args); });
 
@@ -206,15 +214,20 @@ void register_console(CLI::App& app) {
   up->add_option("scene", uargs->scene, "built-in scene spec or an OBJ file");
   up->add_option("--size", uargs->size, "the console's screen, for the camera's aspect")->capture_default_str();
   up->add_option("--texture", uargs->texture,
-                 "an image (PNG, ...) whose sides are powers of two in 8..256, at most 1,024 texels: every render "
-                 "then draws with it");
+                 "an image (PNG, ...) whose sides are powers of two in 8..256, at most 1,024 texels, sent instead "
+                 "of the scene's textures into texture slot --slot: the compiled-in scenes draw with slot 0, an "
+                 "uploaded scene's meshes each with their own slot");
+  up->add_option("--slot", uargs->slot, "the texture slot --texture goes into")
+      ->check(CLI::Range(0u, render::kConsoleTextureSlots - 1))
+      ->needs(up->get_option("--texture"))
+      ->capture_default_str();
   up->add_option("--format", uargs->format, "the texture's texel format: rgb565 or rgba4444")->capture_default_str();
   up->add_option("--mesh-vertices", uargs->mesh_vertices,
                  "split meshes into parts of at most this many vertices (the console's vertex cache)")
       ->check(CLI::Range(4u, render::kMaxPackedMeshVertices))
       ->capture_default_str();
   up->add_flag("--no-texture", uargs->no_texture,
-               "send the scene without its texture (the console keeps the one it has)")
+               "send the scene without its textures (the console keeps the ones it has)")
       ->excludes(up->get_option("--texture"));
   up->callback([uargs] { run_upload(*uargs); });
 }

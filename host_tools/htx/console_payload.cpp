@@ -84,29 +84,46 @@ ScenePayload scene_payload(const Scene& scene, const std::string& spec, const st
   if (rs.meshes.size() != whole_meshes)
     add_note(&p.note, std::to_string(whole_meshes) + " meshes sent as " + std::to_string(rs.meshes.size()) +
                           " of at most " + std::to_string(mesh_vertices) + " vertices");
+  // The scene's textures in the order its textured meshes first use them, each in that slot.
+  std::vector<int> used;
+  for (const host::RenderScene::MeshData& d : rs.meshes)
+    if (d.mesh.state.textured && std::find(used.begin(), used.end(), d.mesh.state.texture) == used.end())
+      used.push_back(d.mesh.state.texture);
+  const bool send_textures = with_texture && !untextured;
+  std::vector<int> slot_of(256, 0);  // scene texture index -> console slot
+  std::string texture_note;
+  for (size_t slot = 0; send_textures && slot < used.size() && slot < render::kConsoleTextureSlots; ++slot) {
+    const size_t index = static_cast<size_t>(used[slot]);
+    if (index >= scene.textures.size()) continue;
+    std::string level_note;
+    std::vector<uint8_t> packed = packed_texture_level(scene.textures[index], &level_note);
+    if (packed.empty()) {
+      add_note(&texture_note, level_note);
+      continue;
+    }
+    if (!level_note.empty())
+      add_note(&texture_note, (used.size() > 1 ? "texture " + std::to_string(slot) + ": " : "") + level_note);
+    slot_of[index] = static_cast<int>(slot);
+    p.textures.resize(slot + 1);
+    p.textures[slot] = std::move(packed);
+  }
+  if (send_textures && used.size() > render::kConsoleTextureSlots)
+    add_note(&texture_note, "the scene uses " + std::to_string(used.size()) + " textures and the console keeps " +
+                                std::to_string(render::kConsoleTextureSlots) +
+                                "; the meshes of the others draw with the first");
+
   std::vector<render::Mesh> meshes;
   for (const host::RenderScene::MeshData& d : rs.meshes) {
     meshes.push_back(d.mesh);
     if (untextured) meshes.back().state.textured = false;
+    meshes.back().state.texture = static_cast<uint8_t>(slot_of[d.mesh.state.texture]);
   }
   const uint32_t count = static_cast<uint32_t>(meshes.size());
   p.scene.resize(render::packed_scene_size(meshes.data(), count));
   if (render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(), count, p.scene.data(), p.scene.size()) == 0)
     throw std::runtime_error("'" + spec +
                              "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
-  if (!with_texture || untextured) return p;
-  // The console draws every mesh with one texture: the first textured mesh's.
-  std::vector<int> used;
-  for (const Mesh& m : scene.meshes)
-    if (m.state.textured && std::find(used.begin(), used.end(), m.state.texture) == used.end())
-      used.push_back(m.state.texture);
-  if (used.empty() || used[0] < 0 || static_cast<size_t>(used[0]) >= scene.textures.size()) return p;
-  std::string texture_note;
-  p.texture = packed_texture_level(scene.textures[static_cast<size_t>(used[0])], &texture_note);
   add_note(&p.note, texture_note);
-  if (used.size() > 1)
-    add_note(&p.note, "the scene uses " + std::to_string(used.size()) +
-                          " textures and the console draws every mesh with the first");
   return p;
 }
 

@@ -13,13 +13,16 @@
 namespace htx {
 
 // A scene's packed form (htx/render/scene_pack.h), its meshes split into parts of at most
-// mesh_vertices vertices (host::split_meshes), and, unless with_texture is false, the scene has no
-// texture or none of its levels can be sent, its texture packed (htx/render/texture_pack.h): the
-// first textured mesh's, as its largest mip level of at most render::kConsoleTextureTexels texels
-// with sides of 8 or more. `untextured`: every mesh marked untextured, and no texture. `note` says
-// what was done with the meshes and the texture when it is worth saying.
+// mesh_vertices vertices (host::split_meshes), and, unless with_texture is false, its textures
+// packed (htx/render/texture_pack.h), one per console texture slot: the textures its textured
+// meshes use, in the order of first use, each as its largest mip level of at most
+// render::kConsoleTextureTexels texels with sides of 8 or more; each mesh names its texture's slot.
+// A texture past the console's render::kConsoleTextureSlots, or with no level it takes, is not
+// sent, and its meshes name slot 0. `untextured`: every mesh marked untextured, and no texture.
+// `note` says what was done with the meshes and the textures when it is worth saying.
 struct ScenePayload {
-  std::vector<uint8_t> scene, texture;
+  std::vector<uint8_t> scene;
+  std::vector<std::vector<uint8_t>> textures;  // [slot]; an empty one is not sent
   std::string note;
 };
 ScenePayload scene_payload(const std::string& spec, const std::string& size, bool with_texture,

@@ -39,12 +39,14 @@ ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& 
   };
   ConsoleDrawn d;
   if (!payload.note.empty()) step(payload.note);
-  // The scene first: a refused scene leaves the console's texture as it was too.
+  // The scene first: a refused scene leaves the console's textures as they were too.
   step("upload: scene of " + std::to_string(payload.scene.size()) + " bytes");
   client.upload(payload.scene);
-  if (!payload.texture.empty()) {
-    step("upload: texture of " + std::to_string(payload.texture.size()) + " bytes");
-    client.upload(payload.texture, {}, console::ConsoleClient::Payload::kTexture);
+  for (size_t slot = 0; slot < payload.textures.size(); ++slot) {
+    if (payload.textures[slot].empty()) continue;
+    step("upload: texture " + std::to_string(slot) + " of " + std::to_string(payload.textures[slot].size()) +
+         " bytes");
+    client.upload(payload.textures[slot], {}, console::ConsoleClient::Payload::kTexture, static_cast<unsigned>(slot));
   }
   step("set method " + draw.method + ", tolerance " + draw.tolerance + ", filter " + draw.filter + "; render");
   set(client, "method", draw.method);

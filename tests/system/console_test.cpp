@@ -442,7 +442,7 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
   };
   const auto boot = cs.console({"info", "render cube"});
   ASSERT_EQ(boot.status, 0) << boot.err;
-  EXPECT_NE(boot.out.find("texture 32x32 rgb565 (checkerboard)"), std::string::npos) << boot.out;
+  EXPECT_NE(boot.out.find("texture 0: 32x32 rgb565 (checkerboard)"), std::string::npos) << boot.out;
   const std::string checker_crc = render_crc(boot.out);
   ASSERT_EQ(checker_crc.size(), 8u) << boot.out;
 
@@ -454,7 +454,7 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
   const auto same = cs.console({"texture " + checker, "info", "render cube"});
   ASSERT_EQ(same.status, 0) << same.err;
   EXPECT_NE(same.out.find("texture ok: 32x32 rgb565, 6 levels"), std::string::npos) << same.out;
-  EXPECT_NE(same.out.find("texture 32x32 rgb565 (uploaded)"), std::string::npos) << same.out;
+  EXPECT_NE(same.out.find("texture 0: 32x32 rgb565 (uploaded)"), std::string::npos) << same.out;
   EXPECT_EQ(render_crc(same.out), checker_crc) << same.out;
 
   // Another texture, another shape and format, through `htx upload --texture`.
@@ -509,7 +509,7 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
     close(fd);
   }
   const auto after = cs.console({"info", "render cube"});
-  EXPECT_NE(after.out.find("texture 16x64 rgba4444 (uploaded)"), std::string::npos) << after.out;
+  EXPECT_NE(after.out.find("texture 0: 16x64 rgba4444 (uploaded)"), std::string::npos) << after.out;
   EXPECT_EQ(render_crc(after.out), ramp_crc) << after.out;
 
   // A scene without its texture keeps the ramp: the uploaded cube draws the ramp's frame.
@@ -539,11 +539,90 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
   const auto line = cs.console({"texture " + ramp + " rgba4444", "info", "texture " + ramp + " rgba4444 extra"});
   EXPECT_NE(line.status, 0);
   EXPECT_NE(line.out.find("texture ok: 16x64 rgba4444, 7 levels"), std::string::npos) << line.out;
-  EXPECT_NE(line.err.find("usage: texture IMAGE.png [rgb565|rgba4444]"), std::string::npos) << line.err;
+  EXPECT_NE(line.err.find("usage: texture IMAGE.png [rgb565|rgba4444 [SLOT]]"), std::string::npos) << line.err;
   const auto with = cs.console({"upload cube", "render cube", "quit"});
   EXPECT_NE(with.out.find("texture ok: 32x32 rgb565, 6 levels"), std::string::npos) << with.out;
   EXPECT_NE(with.err.find("the scene's 64x64 texture sent as its 32x32 mip level"), std::string::npos) << with.err;
   EXPECT_EQ(render_crc(with.out), checker_crc) << with.out;
+  EXPECT_EQ(sim.wait(60s), 0);
+}
+
+// Texture slots: `htx upload nearclip` sends its two textures into slots 0 and 1, each beside the
+// textures in use (the boot checkerboard's blocks freed once slot 0 moved off them); a third
+// 32 x 32 chain does not fit the 340 blocks left and is refused with every texture kept; a new
+// texture for slot 1 goes over slot 1's own; a small one fits beside; a slot the console does not
+// have is refused before anything is sent. The uploaded scene draws with its meshes' slots.
+TEST(SystemConsole, TextureSlotsShareTheTextureMemory) {
+  ConsoleSim cs;
+  htx::test::Child& sim = cs.sim;
+  const std::string& pty = cs.pty;
+  ASSERT_FALSE(pty.empty()) << sim.output();
+  const auto up = htx::test::run_program({HTX_BIN, "upload", "nearclip", "--port", pty, "--timeout", "60"}, 180s);
+  ASSERT_EQ(up.status, 0) << up.err;
+  EXPECT_NE(up.out.find("texture ok: 32x32 rgb565, 6 levels, slot 0 at blocks 342..683 (342 of 1024 in use)"),
+            std::string::npos)
+      << up.out;
+  EXPECT_NE(up.out.find("texture ok: 32x32 rgb565, 6 levels, slot 1 at blocks 0..341 (684 of 1024 in use)"),
+            std::string::npos)
+      << up.out;
+  const auto two = cs.console({"info", "render upload"});
+  ASSERT_EQ(two.status, 0) << two.err;
+  EXPECT_NE(two.out.find("texture 1: 32x32 rgb565 (uploaded)"), std::string::npos) << two.out;
+  EXPECT_NE(two.out.find("texture 2: none (its meshes draw with texture 0)"), std::string::npos) << two.out;
+  EXPECT_NE(two.out.find("texture memory: 684 of 1024 blocks"), std::string::npos) << two.out;
+  const std::string two_crc = field_after(two.out, "crc32 ");
+  ASSERT_EQ(two_crc.size(), 8u) << two.out;
+
+  const std::string ramp = ::testing::TempDir() + "htx_console_slot_ramp.png";
+  write_texture_png(ramp, 32, 32, [](int x, int v) {
+    return std::array<uint8_t, 4>{static_cast<uint8_t>(x * 8), static_cast<uint8_t>(v * 8), 90, 255};
+  });
+  const auto third =
+      htx::test::run_program({HTX_BIN, "upload", "--texture", ramp, "--slot", "2", "--port", pty, "--timeout", "60"}, 180s);
+  EXPECT_NE(third.status, 0);
+  EXPECT_NE(third.err.find("error: not a valid texture (its mip chain does not fit beside the other slots' textures); "
+                           "the texture is unchanged"),
+            std::string::npos)
+      << third.err;
+  const auto kept = cs.console({"info", "render upload"});
+  EXPECT_NE(kept.out.find("texture 2: none"), std::string::npos) << kept.out;
+  EXPECT_EQ(field_after(kept.out, "crc32 "), two_crc) << kept.out;
+
+  const auto over =
+      htx::test::run_program({HTX_BIN, "upload", "--texture", ramp, "--slot", "1", "--port", pty, "--timeout", "60"}, 180s);
+  ASSERT_EQ(over.status, 0) << over.err;
+  EXPECT_NE(over.out.find("slot 1 at blocks 0..341 (684 of 1024 in use)"), std::string::npos) << over.out;
+  const auto small = cs.console({"texture " + ramp + " rgba4444 3", "render upload", "render cube"});
+  EXPECT_NE(small.status, 0) << "32 x 32 does not fit beside two others\n" << small.out;
+  const std::string tiny = ::testing::TempDir() + "htx_console_slot_tiny.png";
+  write_texture_png(tiny, 8, 8, [](int x, int) { return std::array<uint8_t, 4>{static_cast<uint8_t>(x * 30), 0, 0, 255}; });
+  const auto fits = cs.console({"texture " + tiny + " rgb565 3", "info", "render upload"});
+  ASSERT_EQ(fits.status, 0) << fits.err;
+  EXPECT_NE(fits.out.find("texture ok: 8x8 rgb565, 4 levels, slot 3 at blocks 684..705 (706 of 1024 in use)"),
+            std::string::npos)
+      << fits.out;
+  EXPECT_NE(fits.out.find("texture 3: 8x8 rgb565 (uploaded)"), std::string::npos) << fits.out;
+  const std::string ramp_crc = field_after(fits.out, "crc32 ");
+  EXPECT_EQ(ramp_crc.size(), 8u) << fits.out;
+  EXPECT_NE(ramp_crc, two_crc) << "slot 1's meshes draw with the ramp now";
+
+  const auto no_slot =
+      htx::test::run_program({HTX_BIN, "upload", "--texture", tiny, "--slot", "4", "--port", pty}, 60s);
+  EXPECT_NE(no_slot.status, 0);
+  EXPECT_NE(no_slot.err.find("--slot"), std::string::npos) << no_slot.err;
+  {  // the console's own check, typed (htx console takes `texture` as its own command)
+    const int fd = htx::test::open_raw_terminal(pty);
+    ASSERT_GE(fd, 0) << "cannot open " << pty << " raw";
+    const std::string cmd = "texture 2060 12345678 7\r";
+    ASSERT_EQ(write(fd, cmd.data(), cmd.size()), static_cast<ssize_t>(cmd.size()));
+    std::string got;
+    EXPECT_TRUE(htx::test::read_fd_until(fd, got, "htx> ", 60s)) << got;
+    EXPECT_NE(got.find("error: texture slot 7 is not one of the console's 0..3; nothing was received"),
+              std::string::npos)
+        << got;
+    close(fd);
+  }
+  EXPECT_EQ(cs.console({"quit"}).status, 0);
   EXPECT_EQ(sim.wait(60s), 0);
 }
 

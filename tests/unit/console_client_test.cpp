@@ -238,7 +238,7 @@ TEST(ConsoleClient, UploadResendsWhatWasNotTakenAndReportsTheVerdict) {
             "upload: packet 0 was not taken after 8 tries; the console's scene is unchanged");
 }
 
-// A texture goes the same way, announced as `texture SIZE CRC32` (zlib's CRC-32 of its bytes).
+// A texture goes the same way, announced as `texture SIZE CRC32 [SLOT]` (zlib's CRC-32 of its bytes).
 TEST(ConsoleClient, TextureUploadIsAnnouncedAsTexture) {
   const std::vector<uint8_t> texture = {'1', '2', '3', '4', '5', '6', '7', '8', '9'};  // CRC-32 cbf43926
   {
@@ -250,6 +250,9 @@ TEST(ConsoleClient, TextureUploadIsAnnouncedAsTexture) {
     EXPECT_EQ(fake.upload_line(), "texture 9 cbf43926");
     EXPECT_EQ(client.upload(texture), "upload ok: 9 bytes\n");
     EXPECT_EQ(fake.upload_line(), "upload 9 cbf43926");
+    // Another slot is named; slot 0 is not (a console from before the slots takes it so).
+    EXPECT_EQ(client.upload(texture, {}, ConsoleClient::Payload::kTexture, 2), "upload ok: 9 bytes\n");
+    EXPECT_EQ(fake.upload_line(), "texture 9 cbf43926 2");
   }
   FakeConsole fake(GrabMode::kNeverAck);
   SerialPort port(fake.path(), 115200);

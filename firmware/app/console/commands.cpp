@@ -96,7 +96,7 @@ void cmd_help() {
         "  render SCENE          draw a scene; prints its figures and the frame's CRC-32\r\n"
         "  spin SCENE [FRAMES] [crc]  FRAMES renders (60) turning once about its middle; a key stops\r\n"
         "  upload SIZE CRC32     receive a packed scene as packets (for `htx upload`); SCENE `upload`\r\n"
-        "  texture SIZE CRC32    receive a packed texture as packets (for `htx upload --texture`)\r\n"
+        "  texture SIZE CRC32 [SLOT]  receive a packed texture into a slot (for `htx upload`)\r\n"
         "  stats                 the raster unit's counters after the last render\r\n"
         "  video on|off          show the framebuffer on the board's screen (640x480, 60 Hz), or black\r\n"
         "  baud N                switch the serial line to N baud (after `ok`; the host must follow)\r\n"
@@ -123,9 +123,18 @@ void cmd_info() {
   fputs("\r\n", stdout);
   printf("method %s; tolerance 1/%lu texel; filter %s\r\n", g_settings.method_text,
          static_cast<unsigned long>(g_settings.tolerance_denominator), filter_text(g_settings.draw.filter));
-  const TextureInfo t = current_texture();
-  printf("texture %ux%u %s (%s)\r\n", 1u << t.log2_width, 1u << t.log2_height, texture_format_name(t.format),
-         t.uploaded ? "uploaded" : "checkerboard");
+  uint32_t blocks = 0;
+  for (uint32_t slot = 0; slot < texture_slot_count(); ++slot) {
+    const TextureInfo t = texture_in_slot(slot);
+    blocks += t.region.blocks;
+    if (t.present)
+      printf("texture %lu: %ux%u %s (%s)\r\n", static_cast<unsigned long>(slot), 1u << t.log2_width,
+             1u << t.log2_height, texture_format_name(t.format), t.uploaded ? "uploaded" : "checkerboard");
+    else
+      printf("texture %lu: none (its meshes draw with texture 0)\r\n", static_cast<unsigned long>(slot));
+  }
+  printf("texture memory: %lu of %lu blocks (2x2 texels) in use\r\n", static_cast<unsigned long>(blocks),
+         static_cast<unsigned long>(texture_memory_blocks()));
   const htx::hal::VideoMode m = htx::hal::video_mode();
   printf("video 640x480 60 Hz showing %lux%lu x%lu: %s, frame %lu, page %lu of %lu%s\r\n",
          static_cast<unsigned long>(m.src_width), static_cast<unsigned long>(m.src_height),
@@ -189,16 +198,15 @@ bool parse_hex(const char* s, uint32_t* out) {
   return true;
 }
 
-// `upload SIZE CRC32` and `texture SIZE CRC32`: the size and checksum of what the packets bring,
-// handed to `receive`.
-void cmd_receive(char* rest, const char* usage, void (*receive)(uint32_t size, uint32_t crc32)) {
+// `upload SIZE CRC32` and `texture SIZE CRC32 [SLOT]`: the size and checksum of what the packets
+// bring, and for a texture its slot (0 when not given).
+bool parse_receive(char* rest, bool with_slot, uint32_t* size, uint32_t* crc, uint32_t* slot) {
   const char* size_text = next_word(&rest);
   const char* crc_text = next_word(&rest);
-  uint32_t size = 0, crc = 0;
-  if (!size_text || !crc_text || next_word(&rest) || !parse_uint(size_text, 0, 0x7FFFFFFF, &size) ||
-      !parse_hex(crc_text, &crc))
-    return error(usage);
-  receive(size, crc);
+  const char* slot_text = with_slot ? next_word(&rest) : nullptr;
+  *slot = 0;
+  return size_text && crc_text && !next_word(&rest) && parse_uint(size_text, 0, 0x7FFFFFFF, size) &&
+         parse_hex(crc_text, crc) && (!slot_text || parse_uint(slot_text, 0, 255, slot));
 }
 
 // `set method NAME`: refused here when the raster unit does not build it (RASTER CAPS.METHODS),
@@ -298,9 +306,7 @@ bool draw_and_show(const render_app::SceneData& scene, bool checksum = true) {
   render_app::DrawSettings draw = g_settings.draw;
   draw.time_geometry = false;
   draw.checksum = checksum;
-  const TextureInfo t = current_texture();
-  draw.texture_log2_width = t.log2_width;
-  draw.texture_log2_height = t.log2_height;
+  fill_draw_textures(&draw);
   begin_frame_page(kFlipPolls);
   g_last = render_app::draw_scene(scene, draw);
   g_last_scene = scene.name;
@@ -401,11 +407,18 @@ CommandResult run_command(char* line) {
   } else if (strcmp(cmd, "baud") == 0) {
     cmd_baud(rest);
   } else if (strcmp(cmd, "upload") == 0) {
-    cmd_receive(rest, "usage: upload SIZE CRC32 (decimal bytes, hex checksum; `htx upload` sends them)",
-                receive_scene);
+    uint32_t size = 0, crc = 0, slot = 0;
+    if (parse_receive(rest, false, &size, &crc, &slot))
+      receive_scene(size, crc);
+    else
+      error("usage: upload SIZE CRC32 (decimal bytes, hex checksum; `htx upload` sends them)");
   } else if (strcmp(cmd, "texture") == 0) {
-    cmd_receive(rest, "usage: texture SIZE CRC32 (decimal bytes, hex checksum; `htx upload --texture` sends them)",
-                receive_texture);
+    uint32_t size = 0, crc = 0, slot = 0;
+    if (parse_receive(rest, true, &size, &crc, &slot))
+      receive_texture(size, crc, slot);
+    else
+      error("usage: texture SIZE CRC32 [SLOT] (decimal bytes, hex checksum, slot 0 by default; `htx upload` sends "
+            "them)");
   } else if (next_word(&rest)) {
     error("this command takes no arguments: ", cmd);
   } else if (strcmp(cmd, "help") == 0) {

@@ -80,7 +80,15 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
       mesh.state.textured = sc.meshes[m].state.textured;
       mesh.state.gouraud = sc.meshes[m].state.gouraud;
     }
-    mesh.tex = {settings.texture_log2_width, settings.texture_log2_height};
+    uint32_t slot = kTextureSlot;
+    if (sc.own_shading) slot = sc.meshes[m].state.texture;
+    if (slot >= kDrawTextureSlots || !settings.textures[slot].present) slot = kTextureSlot;
+    if (mesh.state.textured && !settings.textures[slot].present) {
+      r.error = "a textured mesh's texture slot and slot 0 hold no texture (upload one)";
+      return r;
+    }
+    mesh.state.texture = static_cast<uint8_t>(slot);
+    mesh.tex = {settings.textures[slot].log2_width, settings.textures[slot].log2_height};
     mesh.state.method = settings.method;
     mesh.state.subdiv_n = settings.subdiv_n;
     if (settings.filter != kSceneFilter) mesh.state.filter = settings.filter;

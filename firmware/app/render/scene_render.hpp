@@ -7,6 +7,7 @@
 #include "htx/hal/raster.h"
 #include "htx/render/pipeline.h"
 #include "htx/render/scene_pack.h"
+#include "htx/render/texture_pack.h"
 #include "scenes.hpp"
 #include "soc_texture.hpp"
 
@@ -17,6 +18,13 @@ inline constexpr uint8_t kSceneFilter = 0xFF;
 // The most meshes draw_scene draws in one scene (the console's uploads hold as many).
 inline constexpr uint32_t kMaxSceneMeshes = 32;
 
+// A texture slot as draw_scene sees it (slot 0: soc_texture.hpp's checkerboard by default).
+struct SlotTexture {
+  uint8_t log2_width = 0, log2_height = 0;
+  bool present = false;
+};
+inline constexpr uint32_t kDrawTextureSlots = htx::render::kConsoleTextureSlots;
+
 struct DrawSettings {
   uint8_t method = htx::render::kMethodAuto;  // every triangle's method (AUTO: the firmware picks)
   uint8_t subdiv_n = 16;                      // for SUBDIV
@@ -25,8 +33,10 @@ struct DrawSettings {
   int64_t auto_tolerance = 0;                 // AUTO's tolerance, Q16.16 texels (0: soc_config's)
   bool time_geometry = true;                  // also time the geometry stage alone (kGeometryRuns runs)
   bool checksum = true;                       // compute the frame's CRC-32 (DrawResult::crc; about 0.8 M cycles)
-  uint8_t texture_log2_width = kTextureLog2;  // the size of slot 0's texture (soc_texture.hpp's by default)
-  uint8_t texture_log2_height = kTextureLog2;
+  // The texture in each slot (its size scales the meshes' texture coordinates). A compiled-in
+  // scene draws with slot 0; an uploaded one (SceneData::own_shading) with each mesh's own slot,
+  // or slot 0 when that slot holds no texture.
+  SlotTexture textures[kDrawTextureSlots] = {{kTextureLog2, kTextureLog2, true}};
 };
 
 inline constexpr uint32_t kGeometryRuns = 4;

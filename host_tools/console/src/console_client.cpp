@@ -195,11 +195,12 @@ GrabbedFrame ConsoleClient::grab(const std::function<void(size_t)>& progress) {
 }
 
 std::string ConsoleClient::upload(const std::vector<uint8_t>& bytes, const std::function<void(size_t)>& progress,
-                                  Payload payload) {
+                                  Payload payload, unsigned slot) {
   const bool texture = payload == Payload::kTexture;
   char crc[16];
   std::snprintf(crc, sizeof crc, "%08x", fw::crc32(bytes.data(), bytes.size()));
-  port_.write((texture ? "texture " : "upload ") + std::to_string(bytes.size()) + " " + crc + "\r");
+  const std::string slot_word = texture && slot != 0 ? " " + std::to_string(slot) : "";
+  port_.write((texture ? "texture " : "upload ") + std::to_string(bytes.size()) + " " + crc + slot_word + "\r");
   // The console answers `ready`, or refuses with a message and a prompt.
   std::string text;
   if (!read_text_until("ready\r\n", &text))

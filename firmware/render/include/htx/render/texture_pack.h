@@ -15,10 +15,14 @@ namespace htx::render {
 inline constexpr uint16_t kTexturePackVersion = 1;
 inline constexpr size_t kTexturePackHeader = 12;
 
-// The most texels of a texture the console takes: half of the board's texture memory (512 of its
-// 1,024 blocks) holds the chain of any such texture (352 blocks at most, 128 x 8), not of 2,048.
-// htx upload sends a scene's texture as its largest mip level within it.
+// The most texels of a texture the console takes: two such chains (352 blocks at most, 128 x 8) fit
+// the board's texture memory (1,024 blocks) beside each other, with room for a small third; a
+// chain of 2,048 texels takes 683. htx upload sends a scene's texture as its largest mip level
+// within it.
 inline constexpr uint32_t kConsoleTextureTexels = 1024;
+// The texture slots the console keeps (the board's texture unit builds 4, CAPS.SLOTS; the console
+// uses as many of these as the unit builds). A mesh names its slot in its state (MeshState::texture).
+inline constexpr uint32_t kConsoleTextureSlots = 4;
 
 // The bytes of a packed 2^log2_w x 2^log2_h texture.
 inline constexpr size_t packed_texture_size(uint32_t log2_w, uint32_t log2_h) {

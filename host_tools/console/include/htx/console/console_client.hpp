@@ -37,13 +37,15 @@ class ConsoleClient {
   // error (a bad packet, a gap in the sequence, a checksum or size that does not match).
   GrabbedFrame grab(const std::function<void(size_t coded_bytes)>& progress = {});
   // What an upload carries: a packed scene (`upload SIZE CRC32`) or a packed texture (`texture SIZE
-  // CRC32`); both then go as the same packets.
+  // CRC32 [SLOT]`); both then go as the same packets.
   enum class Payload { kScene, kTexture };
   // Sends a packed scene or texture (the command, then packets, each resent until acknowledged, at
-  // most kUploadTries times) and returns the console's verdict line. Throws std::runtime_error when
-  // the console refuses it or the transfer fails; the console's scene or texture is then unchanged.
+  // most kUploadTries times) and returns the console's verdict line. A texture goes into texture
+  // slot `slot` (the slot is named only when not 0, as consoles before texture slots took it).
+  // Throws std::runtime_error when the console refuses it or the transfer fails; the console's
+  // scene or textures are then unchanged.
   std::string upload(const std::vector<uint8_t>& bytes, const std::function<void(size_t sent)>& progress = {},
-                     Payload payload = Payload::kScene);
+                     Payload payload = Payload::kScene, unsigned slot = 0);
   static constexpr int kUploadTries = 8;
   // `baud N`: the console answers `ok` at the old rate and switches; the port follows, and the
   // prompt then comes at the new rate. Throws std::invalid_argument with the console's error line
