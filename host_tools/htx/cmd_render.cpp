@@ -48,6 +48,7 @@ void run_render(const RenderArgs& given) {
   if (!known) throw std::invalid_argument("--engine '" + given.engine + "': this build renders on " + kEngines);
   for (const std::string* o : {&given.firmware, &given.port})
     if (!o->empty()) throw std::invalid_argument("--firmware and --port are for --engine soc and board");
+  if (given.fast_baud != 0) throw std::invalid_argument("--fast-baud is for --engine board");
   RenderArgs a = given;
   if (a.size.empty()) a.size = "320x240";
   if (a.config.empty()) a.config = "full";
@@ -155,6 +156,9 @@ void register_render(CLI::App& app) {
   cmd->add_option("--firmware", args->firmware, "soc: the console firmware's ELF (default: the build's console.elf)");
   cmd->add_option("--port", args->port, "board: its serial port (or the pty of `htx sim --uart pty`)");
   cmd->add_option("--baud", args->baud, "board: baud rate (a pty ignores it)")->capture_default_str();
+  cmd->add_option("--fast-baud", args->fast_baud,
+                  "board: switch the console and the port to this rate for the transfers (the console's `baud`) "
+                  "and back to --baud at the end, also after an error");
   cmd->add_option("--timeout", args->timeout_s, "soc and board: longest silence to wait through, seconds")
       ->capture_default_str();
   cmd->callback([args] { run_render(*args); });

@@ -21,6 +21,7 @@ struct RenderArgs {
   std::string firmware;  // soc: the console firmware's ELF (empty: the build's)
   std::string port;      // board: its serial port
   unsigned baud = 115200;
+  unsigned fast_baud = 0;  // board: the rate for the transfers (0: stay at baud)
   double timeout_s = 120;
 };
 

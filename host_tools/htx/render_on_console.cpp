@@ -87,6 +87,9 @@ void render_on_console(const RenderArgs& a) {
   if (soc && !a.port.empty()) throw std::invalid_argument("--port is for --engine board (soc runs its own SoC)");
   if (!soc && a.port.empty()) throw std::invalid_argument("--engine board needs --port (the board's serial port)");
   if (!soc && !a.firmware.empty()) throw std::invalid_argument("--firmware is for --engine soc");
+  if (soc && a.fast_baud != 0)
+    throw std::invalid_argument("--fast-baud is for --engine board (soc switches its own line to " +
+                                std::to_string(kSocBaud) + " baud)");
   if (!(a.timeout_s > 0)) throw std::invalid_argument("--timeout must be > 0 seconds");
 
   // (The scene's notes come with the upload's, as a step.)
@@ -128,7 +131,28 @@ void render_on_console(const RenderArgs& a) {
     console::SerialPort port(a.port, a.baud);
     console::ConsoleClient client(port, timeout);
     client.sync();
-    drawn = draw_on_console(client, draw);
+    if (a.fast_baud == 0) {
+      drawn = draw_on_console(client, draw);
+    } else {
+      // The board is left at --baud, where the next `htx console` expects it, whatever happened.
+      draw.on_step("serial line to " + std::to_string(a.fast_baud) + " baud");
+      client.set_baud(a.fast_baud);
+      const auto back = [&] {
+        draw.on_step("serial line back to " + std::to_string(a.baud) + " baud");
+        client.set_baud(a.baud);
+      };
+      try {
+        drawn = draw_on_console(client, draw);
+      } catch (...) {
+        try {
+          back();
+        } catch (const std::exception& again) {
+          std::cerr << "board: could not switch the line back to " << a.baud << " baud: " << again.what() << "\n";
+        }
+        throw;
+      }
+      back();
+    }
     where = a.port;
   }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

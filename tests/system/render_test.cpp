@@ -424,7 +424,8 @@ SocRender render_on_soc(const std::string& scene, const std::string& png, const 
 // cosim frame drawn so (the scene's 64 x 64 checkerboard goes as its 32 x 32 level, the console's
 // own texture, so the uploaded cube draws what the compiled-in one does), and its metrics carry the
 // console's figures. `--engine board` through the pty of `htx sim --uart pty` (a board as far as
-// htx can tell), with AUTO within 1/16 texel and nearest filtering, gives the cosim frame drawn so.
+// htx can tell), with AUTO within 1/16 texel and nearest filtering, gives the cosim frame drawn so,
+// with the transfers at 1 Mbaud (`--fast-baud`) and the board left at 115,200 baud afterwards.
 // What the console cannot draw is refused before anything runs.
 TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
   const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
@@ -466,14 +467,19 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
     const std::string pty = sim.output().substr(at + marker.size(), sim.output().find('\n', at) - at - marker.size());
     const auto board =
         htx::test::run_program({HTX_BIN, "render", "cube", "--engine", "board", "--port", pty, "--method", "auto",
-                                "--tolerance", "0.0625", "--filter", "nearest", "--out", board_png},
+                                "--tolerance", "0.0625", "--filter", "nearest", "--fast-baud", "1000000", "--out",
+                                board_png},
                                180s);
     EXPECT_EQ(board.status, 0) << board.out << board.err;
+    EXPECT_NE(board.err.find("board: serial line back to 115200 baud"), std::string::npos) << board.err;
     const CosimFrame nearest = cosim_frame("cube", 0, htx::render::kMethodAuto);
     EXPECT_NE(nearest.color, cube.color);
     EXPECT_EQ(htx::load_image(board_png).rgba,
               htx::image_from_rgb565(render_app::kWidth, render_app::kHeight, nearest.color).rgba);
-    EXPECT_EQ(htx::test::run_program({HTX_BIN, "console", "--port", pty, "-c", "quit"}, 60s).status, 0);
+    // --fast-baud left the board at --baud's rate (the UART at 12 MHz / 104).
+    const auto info = htx::test::run_program({HTX_BIN, "console", "--port", pty, "-c", "info", "-c", "quit"}, 60s);
+    EXPECT_EQ(info.status, 0);
+    EXPECT_NE(info.out.find("serial 115384 baud"), std::string::npos) << info.out;
     EXPECT_EQ(sim.wait(60s), 0) << sim.output();
   }
 
@@ -492,6 +498,8 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
   refused({"--engine", "soc", "--firmware", (dir / "none.elf").string()}, "no console firmware at");
   refused({"--engine", "board"}, "needs --port");
   refused({"--engine", "model", "--port", "/dev/null"}, "are for --engine soc and board");
+  refused({"--engine", "model", "--fast-baud", "1000000"}, "--fast-baud is for --engine board");
+  refused({"--engine", "soc", "--fast-baud", "1000000"}, "--fast-baud is for --engine board");
   // Refused by the console itself, after the SoC started: htx reports its error and stops the
   // SoC's run instead of waiting for it (SimOptions::stop; the run's own limit is hours away).
   refused({"--engine", "soc", "--filter", "trilinear"}, "console: set filter trilinear: error: this GPU does not "
