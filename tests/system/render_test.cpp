@@ -33,6 +33,7 @@
 #include "htx/render/texture_pack.h"
 #include "htx/render/texture_upload.h"
 #include "htx/hal/texture.h"
+#include "htx/fw/texel.h"
 #include "console_payload.hpp"
 #include "frame_records.hpp"
 #include "hal_frame.hpp"
@@ -595,6 +596,69 @@ TEST(SystemRender, SocEngineDrawsEachMeshWithItsOwnTexture) {
   const render_app::DrawResult none = render_app::draw_scene(sc, settings);
   EXPECT_FALSE(none.ok);
   EXPECT_NE(std::string(none.error).find("hold no texture"), std::string::npos) << none.error;
+  std::filesystem::remove_all(dir);
+}
+
+// A scene with more textures than the console's four slots: the first four (in the order the
+// meshes first use them) go into slots 0..3 and each mesh names its own; the fifth is not sent,
+// its meshes name slot 0, and the note says so. An untextured upload sends none.
+TEST(SystemRender, UploadPayloadPutsFourTexturesInSlotsAndTheFifthOnSlotZero) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
+                                    ("htx_render_five_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream mtl(dir / "five.mtl");
+  std::ofstream obj(dir / "five.obj");
+  obj << "mtllib five.mtl\nvt 0 0\nvt 1 0\nvt 0 1\n";
+  for (int k = 0; k < 5; ++k) {
+    htx::Image img;
+    img.width = img.height = 8;
+    img.rgba.assign(8 * 8 * 4, static_cast<uint8_t>(40 * k + 10));
+    htx::write_png((dir / ("t" + std::to_string(k) + ".png")).string(), img);
+    mtl << "newmtl m" << k << "\nKd 1 1 1\nmap_Kd t" << k << ".png\n";
+    // Triangle k uses material 4 - k (the loader's mesh order is read back below).
+    obj << "v " << k << " 0 -3\nv " << k + 1 << " 0 -3\nv " << k << " 1 -3\n";
+  }
+  for (int k = 0; k < 5; ++k)
+    obj << "usemtl m" << 4 - k << "\nf " << 3 * k + 1 << "/1 " << 3 * k + 2 << "/2 " << 3 * k + 3 << "/3\n";
+  mtl.close();
+  obj.close();
+  const std::string spec = (dir / "five.obj").string();
+  const htx::ScenePayload p = htx::scene_payload(spec, "160x120", true);
+  ASSERT_EQ(p.textures.size(), htx::render::kConsoleTextureSlots);
+  EXPECT_NE(p.note.find("the scene uses 5 textures and the console keeps 4"), std::string::npos) << p.note;
+  std::vector<htx::render::Mesh> meshes(render_app::kMaxSceneMeshes);
+  htx::render::UnpackedScene up;
+  std::vector<uint8_t> packed = p.scene;
+  ASSERT_EQ(htx::render::unpack_scene(packed.data(), packed.size(), meshes.data(), render_app::kMaxSceneMeshes,
+                                      render_app::kMaxMeshVertices, &up),
+            nullptr);
+  ASSERT_EQ(up.mesh_count, 5u);
+  // Mesh m is the loaded scene's mesh m; the slot it names holds its texture's level 0 as RGB565,
+  // the slots filled in the order of first use, and the texture used last is on slot 0 unsent.
+  const htx::Scene scene = htx::load_scene(spec);
+  ASSERT_EQ(scene.meshes.size(), 5u);
+  std::vector<int> first_use;
+  for (uint32_t m = 0; m < 5; ++m) {
+    const int index = scene.meshes[m].state.texture;
+    const bool sent = first_use.size() < 4;
+    first_use.push_back(index);
+    EXPECT_EQ(meshes[m].state.texture, sent ? m : 0u) << "mesh " << m;
+    if (!sent) continue;
+    const htx::Texture& want = scene.textures[static_cast<size_t>(index)];
+    const uint32_t rgba8 = want.format == htx::TexFormat::RGBA8888
+                               ? want.levels[0][0]
+                               : htx::fw::decode_texel(static_cast<uint8_t>(want.format), want.levels[0][0]);
+    htx::render::UnpackedTexture t;
+    std::vector<uint8_t> tex = p.textures[m];
+    ASSERT_EQ(htx::render::unpack_texture(tex.data(), tex.size(), htx::render::kConsoleTextureTexels, &t), nullptr);
+    EXPECT_EQ(t.log2_width, 3);
+    EXPECT_EQ(static_cast<uint32_t>(t.texels[0] | (t.texels[1] << 8)),
+              htx::fw::encode_texel(htx::fw::kTexelRgb565, rgba8))
+        << "slot " << m;
+  }
+  std::sort(first_use.begin(), first_use.end());
+  EXPECT_EQ(std::unique(first_use.begin(), first_use.end()) - first_use.begin(), 5) << "five textures, one a mesh";
+  EXPECT_TRUE(htx::scene_payload(spec, "160x120", true, htx::render::kMaxPackedMeshVertices, true).textures.empty());
   std::filesystem::remove_all(dir);
 }
 
