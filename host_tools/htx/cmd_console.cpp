@@ -68,8 +68,8 @@ void upload(console::ConsoleClient& client, const std::vector<uint8_t>& packed,
 // The scene, then its textures, each into its slot (only once the scene was taken: a refused
 // scene changes nothing).
 void upload_scene(console::ConsoleClient& client, const ScenePayload& p) {
-  upload(client, p.scene);
   if (!p.note.empty()) std::cerr << "upload: " << p.note << "\n";
+  upload(client, p.scene);
   for (size_t slot = 0; slot < p.textures.size(); ++slot)
     if (!p.textures[slot].empty())
       upload(client, p.textures[slot], console::ConsoleClient::Payload::kTexture, static_cast<unsigned>(slot));

@@ -123,6 +123,25 @@ ScenePayload scene_payload(const Scene& scene, const std::string& spec, const st
   if (render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(), count, p.scene.data(), p.scene.size()) == 0)
     throw std::runtime_error("'" + spec +
                              "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
+  // The parts one console upload holds, meshes in order.
+  for (size_t first = 0; first < meshes.size();) {
+    size_t end = first + 1;
+    while (end < meshes.size() && end - first < render::kConsoleSceneMeshes &&
+           render::packed_scene_size(&meshes[first], static_cast<uint32_t>(end + 1 - first)) <=
+               render::kConsoleSceneBytes)
+      ++end;
+    const uint32_t n = static_cast<uint32_t>(end - first);
+    std::vector<uint8_t> part(render::packed_scene_size(&meshes[first], n));
+    if (render::pack_scene(rs.view_proj, rs.cull_backfaces, &meshes[first], n, part.data(), part.size()) == 0)
+      throw std::logic_error("pack_scene refused a part of a scene it packed whole");
+    p.parts.push_back(std::move(part));
+    first = end;
+  }
+  if (p.parts.size() > 1)
+    add_note(&p.note, "the packed scene is " + std::to_string(p.scene.size()) +
+                          " bytes, more than the console's store holds (" +
+                          std::to_string(render::kConsoleSceneBytes) + "): `htx render --engine soc|board` draws it in " +
+                          std::to_string(p.parts.size()) + " parts, each over the last");
   add_note(&p.note, texture_note);
   return p;
 }

@@ -20,8 +20,12 @@ namespace htx {
 // A texture past the console's render::kConsoleTextureSlots, or with no level it takes, is not
 // sent, and its meshes name slot 0. `untextured`: every mesh marked untextured, and no texture.
 // `note` says what was done with the meshes and the textures when it is worth saying.
+// `parts`: the same meshes packed as scenes of at most render::kConsoleSceneBytes bytes and
+// render::kConsoleSceneMeshes meshes each, in order (one part, equal to `scene`, when it fits), for
+// drawing one over the other (`render upload over`); each has the whole scene's camera.
 struct ScenePayload {
   std::vector<uint8_t> scene;
+  std::vector<std::vector<uint8_t>> parts;
   std::vector<std::vector<uint8_t>> textures;  // [slot]; an empty one is not sent
   std::string note;
 };

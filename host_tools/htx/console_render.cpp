@@ -1,6 +1,7 @@
 #include "console_render.hpp"
 
 #include <cstdio>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -30,6 +31,12 @@ std::map<std::string, std::string> render_figures(const std::string& out) {
   return f;
 }
 
+// Two of the render line's counts added; `-` (a GPU without counters) stays `-`.
+std::string sum_figure(const std::string& a, const std::string& b) {
+  if (a == "-" || b == "-") return "-";
+  return std::to_string(std::stoull(a) + std::stoull(b));
+}
+
 }  // namespace
 
 ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& draw) {
@@ -38,21 +45,41 @@ ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& 
     if (draw.on_step) draw.on_step(what);
   };
   ConsoleDrawn d;
+  d.parts = payload.parts.size();
+  if (d.parts == 0) throw std::logic_error("draw_on_console: a payload without scene parts");
   if (!payload.note.empty()) step(payload.note);
-  // The scene first: a refused scene leaves the console's textures as they were too.
-  step("upload: scene of " + std::to_string(payload.scene.size()) + " bytes");
-  client.upload(payload.scene);
-  for (size_t slot = 0; slot < payload.textures.size(); ++slot) {
-    if (payload.textures[slot].empty()) continue;
-    step("upload: texture " + std::to_string(slot) + " of " + std::to_string(payload.textures[slot].size()) +
-         " bytes");
-    client.upload(payload.textures[slot], {}, console::ConsoleClient::Payload::kTexture, static_cast<unsigned>(slot));
+  for (size_t k = 0; k < d.parts; ++k) {
+    const std::string part = d.parts > 1 ? " part " + std::to_string(k + 1) + " of " + std::to_string(d.parts) : "";
+    // The scene first: a refused scene leaves the console's textures as they were too.
+    step("upload: scene" + part + " of " + std::to_string(payload.parts[k].size()) + " bytes");
+    client.upload(payload.parts[k]);
+    if (k == 0) {
+      for (size_t slot = 0; slot < payload.textures.size(); ++slot) {
+        if (payload.textures[slot].empty()) continue;
+        step("upload: texture " + std::to_string(slot) + " of " + std::to_string(payload.textures[slot].size()) +
+             " bytes");
+        client.upload(payload.textures[slot], {}, console::ConsoleClient::Payload::kTexture,
+                      static_cast<unsigned>(slot));
+      }
+      step("set method " + draw.method + ", tolerance " + draw.tolerance + ", filter " + draw.filter + "; render");
+      set(client, "method", draw.method);
+      set(client, "tolerance", draw.tolerance);
+      set(client, "filter", draw.filter);
+    } else {
+      step("render" + part + " over the frame");
+    }
+    // Each part over the last, the frame shown once the last is drawn.
+    const std::string command =
+        std::string("render upload") + (k > 0 ? " over" : "") + (k + 1 < d.parts ? " hold" : "");
+    std::map<std::string, std::string> f = render_figures(client.command(command));
+    if (k == 0) {
+      d.figures = f;
+      continue;
+    }
+    for (const char* key : {"triangles", "sent", "frame_cycles", "raster_cycles", "fragments"})
+      d.figures[key] = sum_figure(d.figures[key], f[key]);
+    d.figures["crc32"] = f["crc32"];
   }
-  step("set method " + draw.method + ", tolerance " + draw.tolerance + ", filter " + draw.filter + "; render");
-  set(client, "method", draw.method);
-  set(client, "tolerance", draw.tolerance);
-  set(client, "filter", draw.filter);
-  d.figures = render_figures(client.command("render upload"));
   step("grab: the frame");
   d.frame = client.grab();
   char crc[16];

@@ -1,6 +1,8 @@
 // A scene drawn by the console firmware (docs/console.md) and brought back: the `soc` and `board`
 // engines of htx render (docs/engines.md). The scene is uploaded in its packed form with its
-// texture, the console is set up, draws it (`render upload`) and sends the frame (`grab`).
+// textures, the console is set up, draws it (`render upload`) and sends the frame (`grab`). A
+// scene larger than the console's store goes in parts, each uploaded and drawn over the last
+// (`render upload over`), the frame shown once the last is drawn.
 #pragma once
 
 #include <functional>
@@ -24,9 +26,10 @@ struct ConsoleDraw {
 
 struct ConsoleDrawn {
   console::GrabbedFrame frame;
-  // The render line's figures: triangles, sent, frame_cycles, raster_cycles, fragments, crc32
-  // (raster_cycles and fragments are `-` on a GPU without counters).
+  // The render line's figures: triangles, sent, frame_cycles, raster_cycles, fragments (summed
+  // over the parts; `-` on a GPU without counters) and crc32 (the whole frame's, after the last).
   std::map<std::string, std::string> figures;
+  size_t parts = 0;
 };
 
 // Uploads, sets, renders and grabs on a console at its prompt (ConsoleClient::sync done). Throws

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <set>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -353,6 +354,60 @@ TEST(SystemRender, ConsoleFilterSettingDrawsTheCosimFrames) {
   EXPECT_NE(r.out.find("render cube method auto filter scene"), std::string::npos) << r.out;
 }
 
+// `render SCENE over`: drawn over the frame drawn last, its colour and depth kept; `hold`: not
+// shown yet. The console's cube over its floor is the host's draw_scene of the floor and then of
+// the cube without clearing, over the Verilated GPU; the screen keeps the boot page through a held
+// render; bad words are refused.
+TEST(SystemRender, ConsoleRenderOverDrawsOnTheLastFrame) {
+  const std::string script = ::testing::TempDir() + "htx_console_over_" + std::to_string(getpid()) + ".txt";
+  std::ofstream(script) << "render floor hold\ninfo\nrender cube over\nrender cube\nrender cube over over\n"
+                           "render cube under\nquit\n";
+  const auto r = htx::test::run_program(
+      {"/bin/sh", "-c",
+       std::string(HTX_BIN) + " sim --elf " HTX_FIRMWARE_DIR "/console.elf --uart stdio --max-cycles 100000000 < " +
+           script},
+      180s);
+  std::filesystem::remove(script);
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("page 0 of 3"), std::string::npos) << "the held floor is not shown\n" << r.out;
+  std::vector<std::string> crcs;  // of the render lines, in order: floor held, cube over it, cube alone
+  const std::regex render_line(R"(render (floor|cube) method [^\r\n]* crc32 ([0-9a-f]{8}))");
+  for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), render_line); it != std::sregex_iterator(); ++it)
+    crcs.push_back((*it)[2]);
+  ASSERT_EQ(crcs.size(), 3u) << r.out;
+  size_t usage = 0;
+  for (size_t at = r.out.find("error: usage: render SCENE [over] [hold]"); at != std::string::npos;
+       at = r.out.find("error: usage: render SCENE [over] [hold]", at + 1))
+    ++usage;
+  EXPECT_EQ(usage, 2u) << r.out;
+
+  htx::hal::sim::GpuSimBus bus("icebreaker");
+  htx::hal::sim::ScopedBus attach(bus);
+  std::vector<uint32_t> image(render_app::kTextureTexels);
+  ASSERT_EQ(render_app::upload_scene_texture(1000, image.data()), htx::render::kUploadOk);
+  uint32_t n = 0;
+  const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
+  const auto named = [&](const char* name) {
+    return std::find_if(scenes, scenes + n, [name](const render_app::SceneData& s) { return std::strcmp(s.name, name) == 0; });
+  };
+  ASSERT_NE(named("floor"), scenes + n);
+  ASSERT_NE(named("cube"), scenes + n);
+  render_app::DrawSettings settings;
+  settings.time_geometry = false;
+  const render_app::DrawResult floor = render_app::draw_scene(*named("floor"), settings);
+  ASSERT_TRUE(floor.ok) << floor.error;
+  EXPECT_EQ(crcs[0], hex8(floor.crc));
+  settings.clear = false;
+  const render_app::DrawResult over = render_app::draw_scene(*named("cube"), settings);
+  ASSERT_TRUE(over.ok) << over.error;
+  EXPECT_EQ(crcs[1], hex8(over.crc));
+  settings.clear = true;
+  const render_app::DrawResult alone = render_app::draw_scene(*named("cube"), settings);
+  EXPECT_EQ(crcs[2], hex8(alone.crc));
+  EXPECT_NE(crcs[1], crcs[2]);
+}
+
 // draw_scene (the console's and the render firmware's draw) on the host over the Verilated
 // icebreaker GPU: a filter set for a draw gives the cosim frame drawn with it and is not left in
 // it, so the compiled-in scene keeps its own; a filter the texture unit does not build (trilinear
@@ -532,6 +587,48 @@ TEST(SystemRender, SocEngineDrawsAnUntexturedSceneUntextured) {
   std::filesystem::remove_all(dir);
 }
 
+// The console's own drawing of an uploaded payload, on the host over the Verilated icebreaker GPU:
+// the whole packed scene unpacked in one piece (as one upload holds it, at most kMaxSceneMeshes
+// meshes), each texture written into its slot, and draw_scene with the uploaded scene's own
+// shading and the given method (the console's code, without the SoC, its CPU or the serial line).
+struct ConsoleCosim {
+  ConsoleCosim(const htx::ScenePayload& payload, uint8_t method)
+      : scene_bytes(payload.scene), textures(payload.textures), meshes(render_app::kMaxSceneMeshes) {
+    using namespace htx;
+    render::UnpackedScene up;
+    if (const char* why = render::unpack_scene(scene_bytes.data(), scene_bytes.size(), meshes.data(),
+                                               render_app::kMaxSceneMeshes, render_app::kMaxMeshVertices, &up))
+      throw std::runtime_error(std::string("unpack_scene: ") + why);
+    scene = {"upload", meshes.data(), up.mesh_count, up.view_proj, up.cull_backfaces, true};
+    settings.time_geometry = false;
+    settings.method = method;
+    uint32_t base = 0;
+    for (size_t slot = 0; slot < textures.size(); ++slot) {
+      render::UnpackedTexture t;
+      if (const char* why =
+              render::unpack_texture(textures[slot].data(), textures[slot].size(), render::kConsoleTextureTexels, &t))
+        throw std::runtime_error(std::string("unpack_texture: ") + why);
+      if (render::upload_texture_texels16(static_cast<uint32_t>(slot), base, t.log2_width, t.log2_height, t.format,
+                                          t.texels, 1000) != render::kUploadOk)
+        throw std::runtime_error("texture upload failed");
+      base += hal::texture_chain_blocks(t.log2_width, t.log2_height);
+      settings.textures[slot] = {t.log2_width, t.log2_height, true};
+    }
+  }
+  // The frame the last draw_scene left.
+  std::vector<uint16_t> frame() const {
+    return htx::test::read_frame_through_hal(render_app::kWidth, render_app::kHeight, 0).color;
+  }
+
+  htx::hal::sim::GpuSimBus bus{"icebreaker"};
+  htx::hal::sim::ScopedBus attach{bus};
+  std::vector<uint8_t> scene_bytes;              // unpack_scene reads the meshes in place
+  std::vector<std::vector<uint8_t>> textures;    // upload_texture_texels16 filters in place
+  std::vector<htx::render::Mesh> meshes;
+  render_app::SceneData scene{};
+  render_app::DrawSettings settings;
+};
+
 // A scene with two textures (nearclip: a checkerboard floor and a striped wall, both 64 x 64)
 // uploaded by `htx render --engine soc` goes with each texture into its own console slot and each
 // mesh naming its slot, and is the frame the console's own code draws from that payload on the
@@ -548,45 +645,20 @@ TEST(SystemRender, SocEngineDrawsEachMeshWithItsOwnTexture) {
   EXPECT_NE(rendered.run.err.find("upload: texture 1 of 2060 bytes"), std::string::npos) << rendered.run.err;
   EXPECT_GT(rendered.metrics.at("psnr_db").get<double>(), 20.0) << rendered.metrics.dump();
 
-  using namespace htx;
-  const ScenePayload payload = scene_payload("nearclip", "160x120", true);
+  const htx::ScenePayload payload = htx::scene_payload("nearclip", "160x120", true);
   ASSERT_EQ(payload.textures.size(), 2u);
-  std::vector<uint8_t> packed_scene = payload.scene;
-  std::vector<render::Mesh> meshes(render_app::kMaxSceneMeshes);
-  render::UnpackedScene up;
-  ASSERT_EQ(render::unpack_scene(packed_scene.data(), packed_scene.size(), meshes.data(), render_app::kMaxSceneMeshes,
-                                 render_app::kMaxMeshVertices, &up),
-            nullptr);
+  ConsoleCosim cosim(payload, htx::render::kMethodRecipNr);  // the scene's own, as the soc engine sets it
   std::set<uint8_t> slots_named;
-  for (uint32_t m = 0; m < up.mesh_count; ++m)
-    if (meshes[m].state.textured) slots_named.insert(meshes[m].state.texture);
+  for (uint32_t m = 0; m < cosim.scene.mesh_count; ++m)
+    if (cosim.meshes[m].state.textured) slots_named.insert(cosim.meshes[m].state.texture);
   EXPECT_EQ(slots_named, (std::set<uint8_t>{0, 1}));
-
-  hal::sim::GpuSimBus bus("icebreaker");
-  hal::sim::ScopedBus attach(bus);
-  render_app::DrawSettings settings;
-  settings.time_geometry = false;
-  settings.method = render::kMethodRecipNr;  // the scene's own, as the soc engine sets it
-  std::vector<std::vector<uint8_t>> textures = payload.textures;
-  uint32_t base = 0;
-  for (size_t slot = 0; slot < textures.size(); ++slot) {
-    render::UnpackedTexture t;
-    ASSERT_EQ(render::unpack_texture(textures[slot].data(), textures[slot].size(), render::kConsoleTextureTexels, &t),
-              nullptr);
-    ASSERT_EQ(render::upload_texture_texels16(static_cast<uint32_t>(slot), base, t.log2_width, t.log2_height, t.format,
-                                              t.texels, 1000),
-              render::kUploadOk);
-    base += hal::texture_chain_blocks(t.log2_width, t.log2_height);
-    settings.textures[slot] = {t.log2_width, t.log2_height, true};
-  }
-  const render_app::SceneData sc{"upload", meshes.data(), up.mesh_count, up.view_proj, up.cull_backfaces, true};
+  render_app::DrawSettings settings = cosim.settings;
+  const render_app::SceneData& sc = cosim.scene;
   const render_app::DrawResult r = render_app::draw_scene(sc, settings);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_NE(rendered.run.out.find("crc32 " + hex8(r.crc)), std::string::npos) << rendered.run.out;
   EXPECT_EQ(htx::load_image(png).rgba,
-            htx::image_from_rgb565(render_app::kWidth, render_app::kHeight,
-                                   test::read_frame_through_hal(render_app::kWidth, render_app::kHeight, 0).color)
-                .rgba);
+            htx::image_from_rgb565(render_app::kWidth, render_app::kHeight, cosim.frame()).rgba);
 
   // Both slots given slot 0's texture (the console before slots): another frame.
   settings.textures[1].present = false;
@@ -596,6 +668,32 @@ TEST(SystemRender, SocEngineDrawsEachMeshWithItsOwnTexture) {
   const render_app::DrawResult none = render_app::draw_scene(sc, settings);
   EXPECT_FALSE(none.ok);
   EXPECT_NE(std::string(none.error).find("hold no texture"), std::string::npos) << none.error;
+  std::filesystem::remove_all(dir);
+}
+
+// A scene larger than the console's store (a tunnel of 8 rings, about 21 KB) goes in parts, each
+// uploaded and drawn over the last (`render upload [over] [hold]`), and the frame is the one the
+// console's code draws from the whole scene at once (ConsoleCosim: one draw_scene over every
+// mesh): the depth and colour a part leaves are what the next part draws over.
+TEST(SystemRender, SocEngineDrawsASceneLargerThanTheStoreInParts) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
+                                    ("htx_render_parts_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string spec = "tunnel:rings=8";
+  const htx::ScenePayload payload = htx::scene_payload(spec, "160x120", true);
+  ASSERT_GT(payload.scene.size(), htx::render::kConsoleSceneBytes);
+  ASSERT_EQ(payload.parts.size(), 2u);
+  const SocRender r = render_on_soc(spec, (dir / "t.png").string(), (dir / "m.json").string());
+  ASSERT_EQ(r.run.status, 0) << r.run.out << r.run.err;
+  EXPECT_NE(r.run.err.find("soc: render part 2 of 2 over the frame"), std::string::npos) << r.run.err;
+  ConsoleCosim whole(payload, htx::render::kMethodRecipNr);
+  const render_app::DrawResult once = render_app::draw_scene(whole.scene, whole.settings);
+  ASSERT_TRUE(once.ok) << once.error;
+  EXPECT_EQ(r.metrics.at("crc32"), hex8(once.crc));
+  EXPECT_EQ(r.metrics.at("sent"), once.stats.sent) << "the parts' figures are summed";
+  EXPECT_EQ(htx::load_image((dir / "t.png").string()).rgba,
+            htx::image_from_rgb565(render_app::kWidth, render_app::kHeight, whole.frame()).rgba);
+  // (A console that cleared for each part would leave the second part alone: not this frame.)
   std::filesystem::remove_all(dir);
 }
 

@@ -93,7 +93,7 @@ void cmd_help() {
         "  set method NAME       auto, affine, subdivN (N = 2..64), recip_lut, recip_nr, divfree\r\n"
         "  set tolerance 1/N     AUTO's largest predicted texel error (N = 1..65536)\r\n"
         "  set filter NAME       nearest, bilinear, trilinear, or scene (each mesh's own)\r\n"
-        "  render SCENE          draw a scene; prints its figures and the frame's CRC-32\r\n"
+        "  render SCENE [over] [hold]  draw a scene (over the last frame; not shown yet); its figures\r\n"
         "  spin SCENE [FRAMES] [crc]  FRAMES renders (60) turning once about its middle; a key stops\r\n"
         "  upload SIZE CRC32     receive a packed scene as packets (for `htx upload`); SCENE `upload`\r\n"
         "  texture SIZE CRC32 [SLOT]  receive a packed texture into a slot (for `htx upload`)\r\n"
@@ -301,28 +301,41 @@ const render_app::SceneData* find_scene(const char* name) {
 
 // Draws `scene` with the console's settings into the page not shown and shows it from the next
 // frame on (frame_pages.hpp); a failed render stays off the screen (`grab` still sends it: it
-// reads the page drawn last). Prints the error and returns false on failure.
-bool draw_and_show(const render_app::SceneData& scene, bool checksum = true) {
+// reads the page drawn last). `over`: drawn over the page drawn last, its colour and depth kept
+// (a scene sent in parts, or several scenes in one frame); `hold`: not shown yet (a later render
+// that shows, shows it). Prints the error and returns false on failure.
+bool draw_and_show(const render_app::SceneData& scene, bool checksum = true, bool over = false, bool hold = false) {
   render_app::DrawSettings draw = g_settings.draw;
   draw.time_geometry = false;
   draw.checksum = checksum;
+  draw.clear = !over;
   fill_draw_textures(&draw);
-  begin_frame_page(kFlipPolls);
+  if (!over) begin_frame_page(kFlipPolls);
   g_last = render_app::draw_scene(scene, draw);
   g_last_scene = scene.name;
   if (!g_last.ok) {
     error("render failed: ", g_last.error);
     return false;
   }
-  present_frame_page(kFlipPolls);
+  if (!hold) present_frame_page(kFlipPolls);
   return true;
 }
 
+// `render SCENE [over] [hold]`.
 void cmd_render(char* rest) {
   const char* name = next_word(&rest);
-  if (!name || next_word(&rest)) return error("usage: render SCENE");
+  bool over = false, hold = false, bad = !name;
+  for (const char* w = name ? next_word(&rest) : nullptr; w; w = next_word(&rest)) {
+    if (strcmp(w, "over") == 0 && !over)
+      over = true;
+    else if (strcmp(w, "hold") == 0 && !hold)
+      hold = true;
+    else
+      bad = true;
+  }
+  if (bad) return error("usage: render SCENE [over] [hold]");
   const render_app::SceneData* scene = find_scene(name);
-  if (!scene || !draw_and_show(*scene)) return;
+  if (!scene || !draw_and_show(*scene, true, over, hold)) return;
   printf("render %s method %s filter %s triangles %lu sent %lu frame_cycles %lu ", name, g_settings.method_text,
          filter_text(g_settings.draw.filter), static_cast<unsigned long>(g_last.stats.triangles),
          static_cast<unsigned long>(g_last.stats.sent), static_cast<unsigned long>(g_last.frame_cycles));

@@ -11,9 +11,9 @@
 
 namespace console_app {
 
-// Per buffer: randmesh's 7,248 bytes fit; tunnel's 62,520 (split into parts) do not: two buffers that
-// size would fill the 128 KiB RAM.
-inline constexpr uint32_t kStoreBytes = 16384;
+// Per buffer: randmesh's 7,248 bytes fit; tunnel's 62,520 do not (two buffers that size would fill
+// the 128 KiB RAM): htx sends it in parts, each drawn over the last.
+inline constexpr uint32_t kStoreBytes = htx::render::kConsoleSceneBytes;
 // Meshes of a scene: htx upload splits larger meshes into parts of at most kMaxMeshVertices.
 inline constexpr uint32_t kStoreMeshes = render_app::kMaxSceneMeshes;
 

@@ -117,7 +117,7 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
   htx::hal::raster_clear_state_error();
   const uint64_t f0 = htx::hal::cpu_cycles();
   const htx::render::FrameStatus st = htx::render::render_frame(
-      frame, {kClearColor, kClearDepth}, sc.view_proj, g_draw_meshes, sc.mesh_count, &cache, kMaxPolls, &r.stats,
+      frame, {kClearColor, kClearDepth, settings.clear}, sc.view_proj, g_draw_meshes, sc.mesh_count, &cache, kMaxPolls, &r.stats,
       &mesh_status);
   r.frame_cycles = htx::hal::cpu_cycles() - f0;
   if (st != htx::render::kFrameOk) {

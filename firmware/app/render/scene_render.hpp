@@ -16,7 +16,7 @@ namespace render_app {
 // DrawSettings::filter: each mesh keeps the filter its scene gives it.
 inline constexpr uint8_t kSceneFilter = 0xFF;
 // The most meshes draw_scene draws in one scene (the console's uploads hold as many).
-inline constexpr uint32_t kMaxSceneMeshes = 32;
+inline constexpr uint32_t kMaxSceneMeshes = htx::render::kConsoleSceneMeshes;
 
 // A texture slot as draw_scene sees it (slot 0: soc_texture.hpp's checkerboard by default).
 struct SlotTexture {
@@ -33,6 +33,7 @@ struct DrawSettings {
   int64_t auto_tolerance = 0;                 // AUTO's tolerance, Q16.16 texels (0: soc_config's)
   bool time_geometry = true;                  // also time the geometry stage alone (kGeometryRuns runs)
   bool checksum = true;                       // compute the frame's CRC-32 (DrawResult::crc; about 0.8 M cycles)
+  bool clear = true;                          // false: draw over the frame there (colour and depth)
   // The texture in each slot (its size scales the meshes' texture coordinates). A compiled-in
   // scene draws with slot 0; an uploaded one (SceneData::own_shading) with each mesh's own slot,
   // or slot 0 when that slot holds no texture.

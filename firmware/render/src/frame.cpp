@@ -9,7 +9,7 @@ FrameStatus render_frame(const FrameParams& frame, const FrameClear& clear, cons
                          DrawStatus* mesh_status) {
   const uint32_t w = static_cast<uint32_t>(frame.viewport.width), h = static_cast<uint32_t>(frame.viewport.height);
   hal::raster_configure(w, h, w);
-  hal::raster_clear(true, clear.color, true, clear.depth);
+  hal::raster_clear(clear.enabled, clear.color, clear.enabled, clear.depth);
   if (!hal::raster_wait_idle(max_polls)) return kFrameTimeout;
   hal::raster_reset_counters();
   const TriangleSink sink = raster_fifo_sink();

@@ -11,6 +11,7 @@ namespace htx::render {
 struct FrameClear {
   uint16_t color = 0;          // RGB565
   uint32_t depth = 0xFFFFFFu;  // clipped by the unit to its depth width
+  bool enabled = true;         // false: draw over the colour and depth there (a scene in parts)
 };
 
 enum FrameStatus : int {

@@ -24,6 +24,10 @@ inline constexpr uint16_t kScenePackVersion = 1;
 // The most vertices of a mesh the firmware takes: its applications' vertex caches hold a mesh whole
 // (render_app::kMaxMeshVertices); the console refuses larger meshes and htx upload splits them.
 inline constexpr uint32_t kMaxPackedMeshVertices = 96;
+// What one upload to the console holds (its scene store, firmware/app/console/scene_store.hpp):
+// htx sends a larger scene in parts, each drawn over the last (docs/console.md, "Scene upload").
+inline constexpr uint32_t kConsoleSceneBytes = 16384;
+inline constexpr uint32_t kConsoleSceneMeshes = 32;
 inline constexpr size_t kScenePackHeader = 80;
 inline constexpr size_t kScenePackMeshHeader = 88;
 
