@@ -64,6 +64,59 @@ std::vector<uint8_t> packed_texture_level(const Texture& t, std::string* note) {
   return pack_level(t, level);
 }
 
+// The textures the scene's textured meshes use, in the order they first use them, packed for
+// console slots 0, 1, ... (at most render::kConsoleTextureSlots; one with no level the console
+// takes leaves its slot empty); (*slot_of)[index] is the slot of scene texture `index`, 0 for a
+// texture not sent.
+std::vector<std::vector<uint8_t>> textures_in_slots(const Scene& scene, const host::RenderScene& rs,
+                                                    std::vector<int>* slot_of, std::string* note) {
+  std::vector<int> used;
+  for (const host::RenderScene::MeshData& d : rs.meshes)
+    if (d.mesh.state.textured && std::find(used.begin(), used.end(), d.mesh.state.texture) == used.end())
+      used.push_back(d.mesh.state.texture);
+  std::vector<std::vector<uint8_t>> textures;
+  for (size_t slot = 0; slot < used.size() && slot < render::kConsoleTextureSlots; ++slot) {
+    const size_t index = static_cast<size_t>(used[slot]);
+    if (index >= scene.textures.size()) continue;
+    std::string level_note;
+    std::vector<uint8_t> packed = packed_texture_level(scene.textures[index], &level_note);
+    if (packed.empty()) {
+      add_note(note, level_note);
+      continue;
+    }
+    if (!level_note.empty())
+      add_note(note, (used.size() > 1 ? "texture " + std::to_string(slot) + ": " : "") + level_note);
+    (*slot_of)[index] = static_cast<int>(slot);
+    textures.resize(slot + 1);
+    textures[slot] = std::move(packed);
+  }
+  if (used.size() > render::kConsoleTextureSlots)
+    add_note(note, "the scene uses " + std::to_string(used.size()) + " textures and the console keeps " +
+                       std::to_string(render::kConsoleTextureSlots) + "; the meshes of the others draw with texture 0");
+  return textures;
+}
+
+// The meshes, in order, packed as scenes of at most render::kConsoleSceneBytes bytes and
+// render::kConsoleSceneMeshes meshes (a single mesh larger than that is a part of its own, which
+// the console refuses), each with the whole scene's camera.
+std::vector<std::vector<uint8_t>> scene_parts(const host::RenderScene& rs, const std::vector<render::Mesh>& meshes) {
+  std::vector<std::vector<uint8_t>> parts;
+  for (size_t first = 0; first < meshes.size();) {
+    size_t end = first + 1;
+    while (end < meshes.size() && end - first < render::kConsoleSceneMeshes &&
+           render::packed_scene_size(&meshes[first], static_cast<uint32_t>(end + 1 - first)) <=
+               render::kConsoleSceneBytes)
+      ++end;
+    const uint32_t n = static_cast<uint32_t>(end - first);
+    std::vector<uint8_t> part(render::packed_scene_size(&meshes[first], n));
+    if (render::pack_scene(rs.view_proj, rs.cull_backfaces, &meshes[first], n, part.data(), part.size()) == 0)
+      throw std::logic_error("pack_scene refused a part of a scene it packed whole");
+    parts.push_back(std::move(part));
+    first = end;
+  }
+  return parts;
+}
+
 }  // namespace
 
 ScenePayload scene_payload(const std::string& spec, const std::string& size, bool with_texture,
@@ -84,33 +137,9 @@ ScenePayload scene_payload(const Scene& scene, const std::string& spec, const st
   if (rs.meshes.size() != whole_meshes)
     add_note(&p.note, std::to_string(whole_meshes) + " meshes sent as " + std::to_string(rs.meshes.size()) +
                           " of at most " + std::to_string(mesh_vertices) + " vertices");
-  // The scene's textures in the order its textured meshes first use them, each in that slot.
-  std::vector<int> used;
-  for (const host::RenderScene::MeshData& d : rs.meshes)
-    if (d.mesh.state.textured && std::find(used.begin(), used.end(), d.mesh.state.texture) == used.end())
-      used.push_back(d.mesh.state.texture);
-  const bool send_textures = with_texture && !untextured;
-  std::vector<int> slot_of(256, 0);  // scene texture index -> console slot
   std::string texture_note;
-  for (size_t slot = 0; send_textures && slot < used.size() && slot < render::kConsoleTextureSlots; ++slot) {
-    const size_t index = static_cast<size_t>(used[slot]);
-    if (index >= scene.textures.size()) continue;
-    std::string level_note;
-    std::vector<uint8_t> packed = packed_texture_level(scene.textures[index], &level_note);
-    if (packed.empty()) {
-      add_note(&texture_note, level_note);
-      continue;
-    }
-    if (!level_note.empty())
-      add_note(&texture_note, (used.size() > 1 ? "texture " + std::to_string(slot) + ": " : "") + level_note);
-    slot_of[index] = static_cast<int>(slot);
-    p.textures.resize(slot + 1);
-    p.textures[slot] = std::move(packed);
-  }
-  if (send_textures && used.size() > render::kConsoleTextureSlots)
-    add_note(&texture_note, "the scene uses " + std::to_string(used.size()) + " textures and the console keeps " +
-                                std::to_string(render::kConsoleTextureSlots) +
-                                "; the meshes of the others draw with the first");
+  std::vector<int> slot_of(256, 0);  // scene texture index -> console slot
+  if (with_texture && !untextured) p.textures = textures_in_slots(scene, rs, &slot_of, &texture_note);
 
   std::vector<render::Mesh> meshes;
   for (const host::RenderScene::MeshData& d : rs.meshes) {
@@ -123,20 +152,7 @@ ScenePayload scene_payload(const Scene& scene, const std::string& spec, const st
   if (render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(), count, p.scene.data(), p.scene.size()) == 0)
     throw std::runtime_error("'" + spec +
                              "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
-  // The parts one console upload holds, meshes in order.
-  for (size_t first = 0; first < meshes.size();) {
-    size_t end = first + 1;
-    while (end < meshes.size() && end - first < render::kConsoleSceneMeshes &&
-           render::packed_scene_size(&meshes[first], static_cast<uint32_t>(end + 1 - first)) <=
-               render::kConsoleSceneBytes)
-      ++end;
-    const uint32_t n = static_cast<uint32_t>(end - first);
-    std::vector<uint8_t> part(render::packed_scene_size(&meshes[first], n));
-    if (render::pack_scene(rs.view_proj, rs.cull_backfaces, &meshes[first], n, part.data(), part.size()) == 0)
-      throw std::logic_error("pack_scene refused a part of a scene it packed whole");
-    p.parts.push_back(std::move(part));
-    first = end;
-  }
+  p.parts = scene_parts(rs, meshes);
   if (p.parts.size() > 1)
     add_note(&p.note, "the packed scene is " + std::to_string(p.scene.size()) +
                           " bytes, more than the console's store holds (" +
