@@ -316,20 +316,27 @@ TEST(SystemRender, FirmwareFrameOnTheSocEqualsTheCosimFrame) {
               json.dump().c_str());
 }
 
+// The console firmware on `htx sim --uart stdio`, fed `script` (its lines as typed).
+htx::test::RunResult run_console_script(const std::string& name, const std::string& script) {
+  const std::string path = ::testing::TempDir() + "htx_console_" + name + "_" + std::to_string(getpid()) + ".txt";
+  std::ofstream(path) << script;
+  const auto r = htx::test::run_program(
+      {"/bin/sh", "-c",
+       std::string(HTX_BIN) + " sim --elf " HTX_FIRMWARE_DIR "/console.elf --uart stdio --max-cycles 100000000 < " +
+           path},
+      180s);
+  std::filesystem::remove(path);
+  return r;
+}
+
 // The console's `set filter` draws every triangle with that filter: its frames are the cosim
 // frames drawn so (the cube's own filter is bilinear, so `nearest` gives another frame), `scene`
 // gives the scene's own again, and the filter the SoC's texture unit does not build (trilinear,
 // TEXTURE CAPS.FILTERS) is refused and leaves the setting as it was.
 TEST(SystemRender, ConsoleFilterSettingDrawsTheCosimFrames) {
-  const std::string script = ::testing::TempDir() + "htx_console_filter_" + std::to_string(getpid()) + ".txt";
-  std::ofstream(script) << "info\nset filter nearest\nrender cube\nset filter trilinear\nrender cube\n"
-                           "set filter scene\nrender cube\nset filter cubic\nquit\n";
-  const auto r = htx::test::run_program(
-      {"/bin/sh", "-c",
-       std::string(HTX_BIN) + " sim --elf " HTX_FIRMWARE_DIR "/console.elf --uart stdio --max-cycles 100000000 < " +
-           script},
-      180s);
-  std::filesystem::remove(script);
+  const auto r = run_console_script("filter",
+                                    "info\nset filter nearest\nrender cube\nset filter trilinear\nrender cube\n"
+                                    "set filter scene\nrender cube\nset filter cubic\nquit\n");
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("; filters nearest bilinear\r\n"), std::string::npos) << r.out;
@@ -359,15 +366,8 @@ TEST(SystemRender, ConsoleFilterSettingDrawsTheCosimFrames) {
 // the cube without clearing, over the Verilated GPU; the screen keeps the boot page through a held
 // render; bad words are refused.
 TEST(SystemRender, ConsoleRenderOverDrawsOnTheLastFrame) {
-  const std::string script = ::testing::TempDir() + "htx_console_over_" + std::to_string(getpid()) + ".txt";
-  std::ofstream(script) << "render floor hold\ninfo\nrender cube over\nrender cube\nrender cube over over\n"
-                           "render cube under\nquit\n";
-  const auto r = htx::test::run_program(
-      {"/bin/sh", "-c",
-       std::string(HTX_BIN) + " sim --elf " HTX_FIRMWARE_DIR "/console.elf --uart stdio --max-cycles 100000000 < " +
-           script},
-      180s);
-  std::filesystem::remove(script);
+  const auto r = run_console_script("over", "render floor hold\ninfo\nrender cube over\nrender cube\n"
+                                            "render cube over over\nrender cube under\nquit\n");
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("page 0 of 3"), std::string::npos) << "the held floor is not shown\n" << r.out;
