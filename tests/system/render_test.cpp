@@ -316,6 +316,15 @@ TEST(SystemRender, FirmwareFrameOnTheSocEqualsTheCosimFrame) {
               json.dump().c_str());
 }
 
+// The firmware's compiled-in scene of that name, or nullptr.
+const render_app::SceneData* compiled_in_scene(const char* name) {
+  uint32_t n = 0;
+  const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
+  const render_app::SceneData* s =
+      std::find_if(scenes, scenes + n, [name](const render_app::SceneData& sc) { return std::strcmp(sc.name, name) == 0; });
+  return s == scenes + n ? nullptr : s;
+}
+
 // The console firmware on `htx sim --uart stdio`, fed `script` (its lines as typed).
 htx::test::RunResult run_console_script(const std::string& name, const std::string& script) {
   const std::string path = ::testing::TempDir() + "htx_console_" + name + "_" + std::to_string(getpid()) + ".txt";
@@ -386,24 +395,20 @@ TEST(SystemRender, ConsoleRenderOverDrawsOnTheLastFrame) {
   htx::hal::sim::ScopedBus attach(bus);
   std::vector<uint32_t> image(render_app::kTextureTexels);
   ASSERT_EQ(render_app::upload_scene_texture(1000, image.data()), htx::render::kUploadOk);
-  uint32_t n = 0;
-  const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
-  const auto named = [&](const char* name) {
-    return std::find_if(scenes, scenes + n, [name](const render_app::SceneData& s) { return std::strcmp(s.name, name) == 0; });
-  };
-  ASSERT_NE(named("floor"), scenes + n);
-  ASSERT_NE(named("cube"), scenes + n);
+  const render_app::SceneData* floor_scene = compiled_in_scene("floor");
+  const render_app::SceneData* cube_scene = compiled_in_scene("cube");
+  ASSERT_TRUE(floor_scene && cube_scene);
   render_app::DrawSettings settings;
   settings.time_geometry = false;
-  const render_app::DrawResult floor = render_app::draw_scene(*named("floor"), settings);
+  const render_app::DrawResult floor = render_app::draw_scene(*floor_scene, settings);
   ASSERT_TRUE(floor.ok) << floor.error;
   EXPECT_EQ(crcs[0], hex8(floor.crc));
   settings.clear = false;
-  const render_app::DrawResult over = render_app::draw_scene(*named("cube"), settings);
+  const render_app::DrawResult over = render_app::draw_scene(*cube_scene, settings);
   ASSERT_TRUE(over.ok) << over.error;
   EXPECT_EQ(crcs[1], hex8(over.crc));
   settings.clear = true;
-  const render_app::DrawResult alone = render_app::draw_scene(*named("cube"), settings);
+  const render_app::DrawResult alone = render_app::draw_scene(*cube_scene, settings);
   EXPECT_EQ(crcs[2], hex8(alone.crc));
   EXPECT_NE(crcs[1], crcs[2]);
 }
@@ -420,11 +425,8 @@ TEST(SystemRender, DrawSceneTakesASetFilterAndRefusesOneTheGpuLacks) {
   htx::hal::sim::ScopedBus attach(bus);
   std::vector<uint32_t> image(render_app::kTextureTexels);
   ASSERT_EQ(render_app::upload_scene_texture(1000, image.data()), htx::render::kUploadOk);
-  uint32_t n = 0;
-  const render_app::SceneData* scenes = render_app::builtin_scenes(&n);
-  const render_app::SceneData* cube =
-      std::find_if(scenes, scenes + n, [](const render_app::SceneData& s) { return std::strcmp(s.name, "cube") == 0; });
-  ASSERT_NE(cube, scenes + n);
+  const render_app::SceneData* cube = compiled_in_scene("cube");
+  ASSERT_NE(cube, nullptr);
   ASSERT_EQ(cube->mesh_count, 1u);
   const uint8_t cube_filter = cube->meshes[0].state.filter;
   ASSERT_EQ(cube_filter, 1) << "the built-in cube is bilinear";
