@@ -208,7 +208,7 @@ void register_console(CLI::App& app) {
   auto uargs = std::make_shared<UploadArgs>();
   auto* up = app.add_subcommand(
       "upload",
-      "Send a scene (built-in NAME[:k=v,...] or FILE.obj, with its texture) and/or a texture (an image) to the console "
+      "Send a scene (built-in NAME[:k=v,...] or FILE.obj, with its textures) and/or a texture (an image) to the console "
       "firmware");
   add_port_options(up, uargs.get());
   up->add_option("scene", uargs->scene, "built-in scene spec or an OBJ file");
