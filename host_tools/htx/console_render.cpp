@@ -80,6 +80,8 @@ ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& 
       d.figures[key] = sum_figure(d.figures[key], f[key]);
     d.figures["crc32"] = f["crc32"];
   }
+  if (client.resent_packets() > 0)
+    step("upload: " + std::to_string(client.resent_packets()) + " packets sent again (the console missed them)");
   step("grab: the frame");
   d.frame = client.grab();
   char crc[16];

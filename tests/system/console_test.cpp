@@ -188,16 +188,21 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
 
 // `baud N` switches the serial line after its `ok` (htx console switches the port with it, and the
 // harness's end of the line follows the UART's divisor, as a terminal set to match would): rates
-// the UART cannot make within 2 % at 12 MHz are refused and leave the line as it was; after the
-// switch to 1 Mbaud commands, a render and a grab work at the new rate, and back to 115,200.
+// the UART cannot make within 2 % at 12 MHz, and 3 Mbaud, faster than the console reads an upload,
+// are refused and leave the line as it was; after the switch to 1 Mbaud commands, a render and a
+// grab work at the new rate, and back to 115,200.
 TEST(SystemConsole, BaudSwitchesTheLineBothWays) {
   ConsoleSim cs;
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
-  const auto r = cs.console({"baud 5000000", "baud 7", "baud 1000000", "info", "render cube"});
+  const auto r = cs.console({"baud 5000000", "baud 7", "baud 3000000", "baud 1000000", "info", "render cube"});
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("error: 5000000 baud is not one this UART makes at 12000000 Hz"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error: 7 baud is not one this UART makes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("error: 3000000 baud is faster than the console reads an upload (6 clocks a bit or more: up "
+                       "to 2000000 baud at 12000000 Hz)"),
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("htx> baud 1000000\nbaud 1000000\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("at 12000000 Hz, serial 1000000 baud"), std::string::npos) << r.out;
   const std::string crc = field_after(r.out.substr(r.out.find("render cube method auto")), "crc32 ");

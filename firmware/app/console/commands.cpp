@@ -152,10 +152,16 @@ void cmd_video(char* rest) {
   printf("video %s\r\n", what);
 }
 
+// The fewest clocks a bit the console takes: its packet receive loop (an upload) must read each
+// byte before the 16-byte receive FIFO fills. Measured on the simulated SoC (docs/console.md):
+// at 4 clocks a bit (3 Mbaud at 12 MHz) every packet overflowed it, at 6 (2 Mbaud) the 62 KB of
+// `tunnel` went without one packet sent again.
+constexpr uint32_t kMinClocksPerBit = 6;
+
 // `baud N`: the UART's divisor for N at the SoC's clock, when it is one (4..65535 clocks a bit,
-// within 2 % of N: two ends 2 % apart drift a fifth of a bit over a frame). `ok` goes out at the old
-// rate; then the line drains, a pause of 20 ms gives the host time to switch its port, and the
-// prompt comes at the new rate.
+// within 2 % of N: two ends 2 % apart drift a fifth of a bit over a frame) and not faster than
+// kMinClocksPerBit. `ok` goes out at the old rate; then the line drains, a pause of 20 ms gives
+// the host time to switch its port, and the prompt comes at the new rate.
 void cmd_baud(char* rest) {
   const char* text = next_word(&rest);
   uint32_t baud = 0;
@@ -167,6 +173,13 @@ void cmd_baud(char* rest) {
   if (divisor < 4 || divisor > 0xFFFF || uint64_t{off} * 50 > baud) {
     printf("error: %lu baud is not one this UART makes at %lu Hz (4..65535 clocks a bit, within 2 %%)\r\n",
            static_cast<unsigned long>(baud), static_cast<unsigned long>(hz));
+    return;
+  }
+  if (divisor < kMinClocksPerBit) {
+    printf("error: %lu baud is faster than the console reads an upload (%lu clocks a bit or more: up to %lu baud "
+           "at %lu Hz)\r\n",
+           static_cast<unsigned long>(baud), static_cast<unsigned long>(kMinClocksPerBit),
+           static_cast<unsigned long>(hz / kMinClocksPerBit), static_cast<unsigned long>(hz));
     return;
   }
   printf("ok %lu baud\r\n", static_cast<unsigned long>(actual));

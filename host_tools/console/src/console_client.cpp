@@ -211,6 +211,7 @@ std::string ConsoleClient::upload(const std::vector<uint8_t>& bytes, const std::
     const size_t len = std::min(fw::kPacketMaxPayload, bytes.size() - sent);
     bool taken = false;
     for (int attempt = 0; attempt < kUploadTries && !taken; ++attempt) {
+      if (attempt > 0) ++resent_;
       send_packet(fw::kPacketSceneData, static_cast<uint8_t>(seq), bytes.data() + sent, len);
       fw::Packet answer;
       if (next_packet(&answer) != fw::kPacketReady || answer.len < 1) continue;  // a damaged answer: send again

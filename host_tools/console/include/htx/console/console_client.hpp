@@ -47,6 +47,9 @@ class ConsoleClient {
   std::string upload(const std::vector<uint8_t>& bytes, const std::function<void(size_t sent)>& progress = {},
                      Payload payload = Payload::kScene, unsigned slot = 0);
   static constexpr int kUploadTries = 8;
+  // Packets sent again since this client began (a Nak, a damaged answer or none): a line too fast
+  // for the console's receive loop shows here first.
+  size_t resent_packets() const { return resent_; }
   // `baud N`: the console answers `ok` at the old rate and switches; the port follows, and the
   // prompt then comes at the new rate. Throws std::invalid_argument with the console's error line
   // when it refuses N (the line stays as it was), std::runtime_error when the port cannot take N.
@@ -66,6 +69,7 @@ class ConsoleClient {
   std::vector<uint8_t> buf_;
   size_t pos_ = 0;
   fw::PacketDecoder decoder_;
+  size_t resent_ = 0;
 };
 
 }  // namespace htx::console
