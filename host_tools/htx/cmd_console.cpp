@@ -57,11 +57,14 @@ void grab_to_png(console::ConsoleClient& client, const std::string& out) {
 
 void upload(console::ConsoleClient& client, const std::vector<uint8_t>& packed,
             console::ConsoleClient::Payload payload = console::ConsoleClient::Payload::kScene, unsigned slot = 0) {
+  const size_t resent = client.resent_packets();
   const std::string verdict = client.upload(
       packed,
       [&packed](size_t sent) { std::cerr << "\rupload: " << sent << " of " << packed.size() << " bytes" << std::flush; },
       payload, slot);
   std::cerr << "\n";
+  if (client.resent_packets() > resent)
+    std::cerr << "upload: " << client.resent_packets() - resent << " packets sent again (the console missed them)\n";
   std::cout << verdict;
 }
 

@@ -218,6 +218,7 @@ TEST(ConsoleClient, UploadResendsWhatWasNotTakenAndReportsTheVerdict) {
     EXPECT_EQ(client.upload(scene), "upload ok: 600 bytes\n");
     EXPECT_EQ(fake.naks(), 1);
     EXPECT_EQ(fake.upload_packets(), 3u);  // 240 + 240 + 120, the first sent twice
+    EXPECT_EQ(client.resent_packets(), 1u);
     EXPECT_EQ(client.command("info"), "line one\nline two\n");
   }
   const auto upload_error = [&scene](GrabMode mode) -> std::string {
@@ -264,6 +265,7 @@ TEST(ConsoleClient, TextureUploadIsAnnouncedAsTexture) {
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "upload: packet 0 was not taken after 8 tries; the console's texture is unchanged");
   }
+  EXPECT_EQ(client.resent_packets(), 7u);
 }
 
 // The simulation ends (its side of the pseudo-terminal closes) while htx waits: an error at once,
