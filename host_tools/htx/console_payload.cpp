@@ -152,7 +152,10 @@ ScenePayload scene_payload(const Scene& scene, const std::string& spec, const st
   if (render::pack_scene(rs.view_proj, rs.cull_backfaces, meshes.data(), count, p.scene.data(), p.scene.size()) == 0)
     throw std::runtime_error("'" + spec +
                              "' does not fit the packed scene format (65535 vertices or triangles a mesh)");
-  p.parts = scene_parts(rs, meshes);
+  // (One part, the scene itself, when it fits one upload.)
+  p.parts = p.scene.size() <= render::kConsoleSceneBytes && count <= render::kConsoleSceneMeshes
+                ? std::vector<std::vector<uint8_t>>{p.scene}
+                : scene_parts(rs, meshes);
   if (p.parts.size() > 1)
     add_note(&p.note, "the packed scene is " + std::to_string(p.scene.size()) +
                           " bytes, more than the console's store holds (" +

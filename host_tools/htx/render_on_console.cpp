@@ -65,6 +65,12 @@ std::string console_method(const RenderArgs& a, const ScreenScene& screen) {
   return name.value_or("auto");
 }
 
+// The console's `baud`, with the port following, announced as a step.
+void switch_line(console::ConsoleClient& client, const ConsoleDraw& draw, unsigned baud, const char* how = "to") {
+  draw.on_step(std::string("serial line ") + how + " " + std::to_string(baud) + " baud");
+  client.set_baud(baud);
+}
+
 std::string console_firmware(const RenderArgs& a) {
   const std::string elf = a.firmware.empty() ? std::string(HTX_PATH_FIRMWARE_DIR) + "/console.elf" : a.firmware;
   if (!std::filesystem::exists(elf))
@@ -118,8 +124,7 @@ void render_on_console(const RenderArgs& a) {
     client.sync();
     // The simulated line has no cable to limit it: 1 Mbaud (12 clocks a bit) takes the transfers,
     // most of the run at 115,200 baud, down by a factor of nine.
-    draw.on_step("serial line to " + std::to_string(kSocBaud) + " baud");
-    client.set_baud(kSocBaud);
+    switch_line(client, draw, kSocBaud);
     drawn = draw_on_console(client, draw);
     port.write("quit\r");
     const sim::SimResult r = sim.finish(timeout);
@@ -135,12 +140,8 @@ void render_on_console(const RenderArgs& a) {
       drawn = draw_on_console(client, draw);
     } else {
       // The board is left at --baud, where the next `htx console` expects it, whatever happened.
-      draw.on_step("serial line to " + std::to_string(a.fast_baud) + " baud");
-      client.set_baud(a.fast_baud);
-      const auto back = [&] {
-        draw.on_step("serial line back to " + std::to_string(a.baud) + " baud");
-        client.set_baud(a.baud);
-      };
+      switch_line(client, draw, a.fast_baud);
+      const auto back = [&] { switch_line(client, draw, a.baud, "back to"); };
       try {
         drawn = draw_on_console(client, draw);
       } catch (...) {

@@ -123,18 +123,17 @@ void cmd_info() {
   fputs("\r\n", stdout);
   printf("method %s; tolerance 1/%lu texel; filter %s\r\n", g_settings.method_text,
          static_cast<unsigned long>(g_settings.tolerance_denominator), filter_text(g_settings.draw.filter));
-  uint32_t blocks = 0;
-  for (uint32_t slot = 0; slot < texture_slot_count(); ++slot) {
+  const uint32_t slots = texture_slot_count();
+  for (uint32_t slot = 0; slot < slots; ++slot) {
     const TextureInfo t = texture_in_slot(slot);
-    blocks += t.region.blocks;
-    if (t.present)
+    if (t.present())
       printf("texture %lu: %ux%u %s (%s)\r\n", static_cast<unsigned long>(slot), 1u << t.log2_width,
              1u << t.log2_height, texture_format_name(t.format), t.uploaded ? "uploaded" : "checkerboard");
     else
       printf("texture %lu: none (its meshes draw with texture 0)\r\n", static_cast<unsigned long>(slot));
   }
-  printf("texture memory: %lu of %lu blocks (2x2 texels) in use\r\n", static_cast<unsigned long>(blocks),
-         static_cast<unsigned long>(texture_memory_blocks()));
+  printf("texture memory: %lu of %lu blocks (2x2 texels) in use\r\n",
+         static_cast<unsigned long>(texture_blocks_in_use()), static_cast<unsigned long>(texture_memory_blocks()));
   const htx::hal::VideoMode m = htx::hal::video_mode();
   printf("video 640x480 60 Hz showing %lux%lu x%lu: %s, frame %lu, page %lu of %lu%s\r\n",
          static_cast<unsigned long>(m.src_width), static_cast<unsigned long>(m.src_height),
@@ -212,12 +211,12 @@ bool parse_hex(const char* s, uint32_t* out) {
 }
 
 // `upload SIZE CRC32` and `texture SIZE CRC32 [SLOT]`: the size and checksum of what the packets
-// bring, and for a texture its slot (0 when not given).
-bool parse_receive(char* rest, bool with_slot, uint32_t* size, uint32_t* crc, uint32_t* slot) {
+// bring, and for a texture (`slot` given) its slot, 0 when the line names none.
+bool parse_receive(char* rest, uint32_t* size, uint32_t* crc, uint32_t* slot = nullptr) {
   const char* size_text = next_word(&rest);
   const char* crc_text = next_word(&rest);
-  const char* slot_text = with_slot ? next_word(&rest) : nullptr;
-  *slot = 0;
+  const char* slot_text = slot ? next_word(&rest) : nullptr;
+  if (slot) *slot = 0;
   return size_text && crc_text && !next_word(&rest) && parse_uint(size_text, 0, 0x7FFFFFFF, size) &&
          parse_hex(crc_text, crc) && (!slot_text || parse_uint(slot_text, 0, 255, slot));
 }
@@ -433,14 +432,14 @@ CommandResult run_command(char* line) {
   } else if (strcmp(cmd, "baud") == 0) {
     cmd_baud(rest);
   } else if (strcmp(cmd, "upload") == 0) {
-    uint32_t size = 0, crc = 0, slot = 0;
-    if (parse_receive(rest, false, &size, &crc, &slot))
+    uint32_t size = 0, crc = 0;
+    if (parse_receive(rest, &size, &crc))
       receive_scene(size, crc);
     else
       error("usage: upload SIZE CRC32 (decimal bytes, hex checksum; `htx upload` sends them)");
   } else if (strcmp(cmd, "texture") == 0) {
     uint32_t size = 0, crc = 0, slot = 0;
-    if (parse_receive(rest, true, &size, &crc, &slot))
+    if (parse_receive(rest, &size, &crc, &slot))
       receive_texture(size, crc, slot);
     else
       error("usage: texture SIZE CRC32 [SLOT] (decimal bytes, hex checksum, slot 0 by default; `htx upload` sends "

@@ -22,7 +22,7 @@ constexpr uint32_t kMaxPolls = 20'000'000;
 
 // Slot 0 at boot: the checkerboard the render firmware uploaded at block 0.
 TextureInfo g_slots[kSlots] = {
-    {render_app::kTextureLog2, render_app::kTextureLog2, 0, true, false,
+    {render_app::kTextureLog2, render_app::kTextureLog2, 0, false,
      {0, htx::hal::texture_chain_blocks(render_app::kTextureLog2, render_app::kTextureLog2)}}};
 
 htx::render::TextureRegion g_live[kSlots];
@@ -33,13 +33,13 @@ const htx::render::TextureRegion* live_regions(uint32_t except) {
   return g_live;
 }
 
-uint32_t blocks_in_use() {
+}  // namespace
+
+uint32_t texture_blocks_in_use() {
   uint32_t n = 0;
   for (const TextureInfo& t : g_slots) n += t.region.blocks;
   return n;
 }
-
-}  // namespace
 
 uint32_t texture_slot_count() {
   const uint32_t built = htx::hal::texture_caps().slots;
@@ -54,7 +54,7 @@ void fill_draw_textures(render_app::DrawSettings* draw) {
   const uint32_t n = texture_slot_count();
   for (uint32_t s = 0; s < render_app::kDrawTextureSlots; ++s) {
     const TextureInfo t = s < n ? g_slots[s] : TextureInfo{};
-    draw->textures[s] = {t.log2_width, t.log2_height, t.present};
+    draw->textures[s] = {t.log2_width, t.log2_height, t.present()};
   }
 }
 
@@ -93,12 +93,12 @@ void receive_texture(uint32_t size, uint32_t crc32, uint32_t slot) {
            over_own ? "the slot's texture was being overwritten and the slot is now empty" : "the texture is unchanged");
     return;
   }
-  s = {t.log2_width, t.log2_height, t.format, true, true, {base, need}};
+  s = {t.log2_width, t.log2_height, t.format, true, {base, need}};
   printf("texture ok: %ux%u %s, %lu levels, slot %lu at blocks %lu..%lu (%lu of %lu in use)\r\n",
          1u << t.log2_width, 1u << t.log2_height, texture_format_name(t.format),
          static_cast<unsigned long>(htx::fw::mip_level_count(t.log2_width, t.log2_height)),
          static_cast<unsigned long>(slot), static_cast<unsigned long>(base), static_cast<unsigned long>(base + need - 1),
-         static_cast<unsigned long>(blocks_in_use()), static_cast<unsigned long>(total));
+         static_cast<unsigned long>(texture_blocks_in_use()), static_cast<unsigned long>(total));
 }
 
 }  // namespace console_app

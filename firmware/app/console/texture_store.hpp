@@ -21,15 +21,16 @@ void receive_texture(uint32_t size, uint32_t crc32, uint32_t slot);
 
 struct TextureInfo {
   uint8_t log2_width = 0, log2_height = 0, format = 0;
-  bool present = false;                // false: the slot holds no texture
   bool uploaded = false;               // false: the checkerboard of boot
-  htx::render::TextureRegion region;   // where its chain is, in 2 x 2-texel blocks
+  htx::render::TextureRegion region;   // where its chain is, in 2 x 2-texel blocks (none: no texture)
+  bool present() const { return region.blocks != 0; }
 };
 // The slots the console uses: the texture unit's (CAPS.SLOTS), at most kConsoleTextureSlots.
 uint32_t texture_slot_count();
 TextureInfo texture_in_slot(uint32_t slot);
-// Texture memory's size, in blocks (CAPS.BLOCK_BITS).
+// Texture memory's size, and the blocks the slots' chains take, in 2 x 2-texel blocks.
 uint32_t texture_memory_blocks();
+uint32_t texture_blocks_in_use();
 
 // The slots' sizes as draw_scene takes them.
 void fill_draw_textures(render_app::DrawSettings* draw);

@@ -76,12 +76,12 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
     htx::render::Mesh& mesh = g_draw_meshes[m];
     mesh = sc.meshes[m];
     apply_soc_render_state(&mesh);
+    uint32_t slot = kTextureSlot;
     if (sc.own_shading) {
       mesh.state.textured = sc.meshes[m].state.textured;
       mesh.state.gouraud = sc.meshes[m].state.gouraud;
+      slot = sc.meshes[m].state.texture;
     }
-    uint32_t slot = kTextureSlot;
-    if (sc.own_shading) slot = sc.meshes[m].state.texture;
     if (slot >= kDrawTextureSlots || !settings.textures[slot].present) slot = kTextureSlot;
     if (mesh.state.textured && !settings.textures[slot].present) {
       r.error = "a textured mesh's texture slot and slot 0 hold no texture (upload one)";
