@@ -116,13 +116,21 @@ void run_render(const RenderArgs& given) {
       j["triangles"] = rtl_stats.triangles;
       j["setup_cycles_per_triangle"] = rtl_stats.setup_cycles_per_triangle;
       const Frame model = render_model(screen, config);
-      j["model_mismatch_pixels"] = frame_mismatch_pixels(frame, model);
+      const uint64_t mismatch = frame_mismatch_pixels(frame, model);
+      j["model_mismatch_pixels"] = mismatch;
       // CNT_DIVFREE_STEPS and the model's divfree_steps_total on the same records.
       j["divfree_steps_total"] = rtl_stats.divfree_steps;
       j["model_divfree_steps_total"] = model.counters.divfree_steps_total;
-      // The Verilated GPU has no per-pixel probe (docs/metrics.md). Where model_mismatch_pixels is
-      // 0, the model engine's figures for the same options apply.
-      null_probe_figures(&j);
+      // The Verilated GPU has no per-pixel probe (docs/metrics.md). Where its frame is the model's
+      // on the same records, colour and depth at every pixel, the model's probe is the frame's (the
+      // coordinates themselves are checked bit for bit by the rtl tests); otherwise none is given.
+      if (mismatch == 0) {
+        take_probe_figures(metrics_to_json(compute_metrics(model, ref, labels)), &j);
+        j["probe"] = "model";
+      } else {
+        null_probe_figures(&j);
+        j["probe"] = nullptr;
+      }
     }
 #endif
     write_metrics(a.metrics, j);
