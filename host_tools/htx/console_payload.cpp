@@ -140,10 +140,13 @@ ScenePayload scene_payload(const Scene& scene, const std::string& spec, const st
   std::string texture_note;
   std::vector<int> slot_of(256, 0);  // scene texture index -> console slot
   if (with_texture && !untextured) p.textures = textures_in_slots(scene, rs, &slot_of, &texture_note);
+  p.slot_of_texture.assign(slot_of.begin(),
+                           slot_of.begin() + static_cast<std::ptrdiff_t>(std::min(scene.textures.size(), slot_of.size())));
 
   std::vector<render::Mesh> meshes;
   for (const host::RenderScene::MeshData& d : rs.meshes) {
     meshes.push_back(d.mesh);
+    p.source_mesh.push_back(d.source);
     if (untextured) meshes.back().state.textured = false;
     meshes.back().state.texture = static_cast<uint8_t>(slot_of[d.mesh.state.texture]);
   }

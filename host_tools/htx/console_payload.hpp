@@ -27,6 +27,8 @@ struct ScenePayload {
   std::vector<uint8_t> scene;
   std::vector<std::vector<uint8_t>> parts;
   std::vector<std::vector<uint8_t>> textures;  // [slot]; an empty one is not sent
+  std::vector<int> slot_of_texture;            // [scene texture index]: the slot its meshes name
+  std::vector<uint32_t> source_mesh;           // [packed mesh, over the parts in order]: its Scene mesh
   std::string note;
 };
 ScenePayload scene_payload(const std::string& spec, const std::string& size, bool with_texture,

@@ -1,6 +1,7 @@
 #include "console_render.hpp"
 
 #include <cstdio>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -37,6 +38,26 @@ std::string sum_figure(const std::string& a, const std::string& b) {
   return std::to_string(std::stoull(a) + std::stoull(b));
 }
 
+// The methods and filters the console's `info` lists ("screen 160x120 rgb565; methods affine subdiv
+// ...; filters nearest bilinear"), as bit sets by the console's numbering.
+void parse_built(const std::string& info, ConsoleDrawn* d) {
+  static const char* const kMethods[] = {"affine", "subdiv", "recip_lut", "recip_nr", "divfree"};
+  static const char* const kFilters[] = {"nearest", "bilinear", "trilinear"};
+  const size_t m = info.find("; methods"), f = info.find("; filters", m == std::string::npos ? 0 : m);
+  if (m == std::string::npos || f == std::string::npos)
+    throw std::runtime_error("console: info lists no methods and filters: " + info.substr(0, info.find('\n')));
+  const auto bits = [](const std::string& list, const char* const* names, size_t count) {
+    std::istringstream words(list);
+    uint32_t set = 0;
+    for (std::string w; words >> w;)
+      for (size_t i = 0; i < count; ++i)
+        if (w == names[i]) set |= 1u << i;
+    return set;
+  };
+  d->methods_built = bits(info.substr(m + 9, f - m - 9), kMethods, std::size(kMethods));
+  d->filters_built = bits(info.substr(f + 9, info.find('\n', f) - f - 9), kFilters, std::size(kFilters));
+}
+
 }  // namespace
 
 ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& draw) {
@@ -65,6 +86,7 @@ ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& 
       set(client, "method", draw.method);
       set(client, "tolerance", draw.tolerance);
       set(client, "filter", draw.filter);
+      parse_built(client.command("info"), &d);
     } else {
       step("render" + part + " over the frame");
     }

@@ -30,6 +30,10 @@ struct ConsoleDrawn {
   // over the parts; `-` on a GPU without counters) and crc32 (the whole frame's, after the last).
   std::map<std::string, std::string> figures;
   size_t parts = 0;
+  // What the console's GPU builds, as its `info` lists them: bit i of methods is STATE method i
+  // (affine, subdiv, recip_lut, recip_nr, divfree), of filters filter i (nearest, bilinear,
+  // trilinear).
+  uint32_t methods_built = 0, filters_built = 0;
 };
 
 // Uploads, sets, renders and grabs on a console at its prompt (ConsoleClient::sync done). Throws

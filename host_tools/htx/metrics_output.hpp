@@ -12,7 +12,8 @@ namespace htx {
 // An engine without a per-pixel probe (soc, board; rtl where its frame is not the model's): the
 // figures taken from the probe would describe an empty one, so they are null.
 inline void null_probe_figures(nlohmann::json* j) {
-  for (const char* key : {"max_texel_error", "rms_texel_error", "p999_texel_error", "coverage_diff_pixels"})
+  for (const char* key :
+       {"max_texel_error", "rms_texel_error", "p999_texel_error", "coverage_diff_pixels", "surface_diff_pixels"})
     (*j)[key] = nullptr;
 }
 
@@ -20,7 +21,8 @@ inline void null_probe_figures(nlohmann::json* j) {
 // pixel and which has a probe) into *j.
 inline void take_probe_figures(const nlohmann::json& from, nlohmann::json* j) {
   for (const char* key :
-       {"max_texel_error", "rms_texel_error", "p999_texel_error", "compared_pixels", "coverage_diff_pixels"})
+       {"max_texel_error", "rms_texel_error", "p999_texel_error", "compared_pixels", "coverage_diff_pixels",
+        "surface_diff_pixels"})
     (*j)[key] = from.at(key);
 }
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "console_model.hpp"
 #include "console_payload.hpp"
 #include "console_render.hpp"
 #include "htx/console/console_client.hpp"
@@ -100,10 +101,15 @@ void render_on_console(const RenderArgs& a) {
 
   // (The scene's notes come with the upload's, as a step.)
   const Scene scene = load_scene(a.scene);
-  ScreenScene screen = prepare_screen_scene(scene, kScreenWidth, kScreenHeight);
-  screen.clear_color = render_app::kClearColor;  // for ref: the background the console draws on
-  if (a.untextured)
-    for (ScreenTri& t : screen.tris) t.state.textured = false;
+  // For ref: on the background the console draws on.
+  const auto screen_of = [&a](const Scene& sc) {
+    ScreenScene s = prepare_screen_scene(sc, kScreenWidth, kScreenHeight);
+    s.clear_color = render_app::kClearColor;
+    if (a.untextured)
+      for (ScreenTri& t : s.tris) t.state.textured = false;
+    return s;
+  };
+  const ScreenScene screen = screen_of(scene);
   ConsoleDraw draw;
   draw.payload = scene_payload(scene, a.scene, screen_size, true, render::kMaxPackedMeshVertices, a.untextured);
   draw.method = console_method(a, screen);
@@ -175,7 +181,7 @@ void render_on_console(const RenderArgs& a) {
     frame.width = g.width;
     frame.height = g.height;
     frame.color = g.pixels;
-    frame.probe.assign(g.pixels.size(), PixelProbe{});  // the console has no per-pixel probe
+    frame.probe.assign(g.pixels.size(), PixelProbe{});  // the console has no per-pixel probe (below)
     const MetricsLabels labels{a.engine, a.scene, draw.method, draw.filter, kSocConfig};
     nlohmann::json j = metrics_to_json(compute_metrics(frame, ref, labels));
     // The figures the console printed: the raster unit's busy clocks (CNT_BUSY; null on a GPU
@@ -189,7 +195,36 @@ void render_on_console(const RenderArgs& a) {
     j["triangles"] = number_or_null(drawn.figures.at("triangles"));
     j["sent"] = number_or_null(drawn.figures.at("sent"));
     j["crc32"] = drawn.figures.at("crc32");
-    null_probe_figures(&j);
+    // The console has no per-pixel probe; the model drawing the console's own triangles has one,
+    // and where its frame is the one the console sent, pixel for pixel, it is that frame's.
+    const auto no_probe = [&j, &a](const std::string& why) {
+      null_probe_figures(&j);
+      j["probe"] = nullptr;
+      std::cerr << a.engine << ": metrics: no texel errors: " << why << std::endl;
+    };
+    try {
+      const ConsoleModel model = console_model_frame(draw, drawn.methods_built, drawn.filters_built);
+      size_t differ = 0;
+      for (size_t i = 0; i < g.pixels.size(); ++i) differ += model.frame.color.at(i) != g.pixels[i];
+      if (differ == 0) {
+        // Texel errors are in texels of the texture sampled, and the console's are the scene's
+        // brought to its size limit, so they are taken against ref drawing with those.
+        // (The texture's size scales the texel coordinates as the screen scene is prepared.)
+        Scene same_textures = scene;
+        for (size_t i = 0; i < same_textures.textures.size(); ++i) {
+          const size_t slot = i < draw.payload.slot_of_texture.size() ? draw.payload.slot_of_texture[i] : 0;
+          same_textures.textures[i] = model.slots.at(slot);
+        }
+        const Frame ref_same = render_ref(screen_of(same_textures), ref_options);
+        take_probe_figures(metrics_to_json(compute_metrics(model.frame, ref_same, labels)), &j);
+        j["probe"] = "model";
+      } else {
+        no_probe("the model's frame of the console's triangles differs from the console's at " +
+                 std::to_string(differ) + " pixels");
+      }
+    } catch (const std::exception& e) {
+      no_probe(std::string("the model cannot draw the console's triangles: ") + e.what());
+    }
     write_metrics(a.metrics, j);
   }
 }

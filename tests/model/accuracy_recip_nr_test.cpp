@@ -2,6 +2,7 @@
 // scene, including depth ratio 1000 and |u| up to 2^14; and the model draws exactly ref's pixels.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "htx/model/config.hpp"
@@ -26,6 +27,25 @@ TEST_P(AccuracyRecipNr, FullConfigWithinOne256thTexel) {
                                             << " (filter " << static_cast<int>(filter) << ")";
     EXPECT_EQ(m.coverage_diff_pixels, 0u);
   }
+}
+
+// A pixel where the two frames show different meshes is not a texel error: on `bigtri` at
+// 160 x 120, `icebreaker`'s 16-bit depth puts the far plane's triangle in front of the ground's
+// along the horizon's row, where ref shows the ground, and their coordinates there differ by some
+// 4,500 texels. The metrics count such pixels apart (surface_diff_pixels) and the error of the
+// rest stays RECIP_NR's (0.0026 texel; 4,518.8 when the metrics compared every pixel).
+TEST(AccuracyRecipNrSurface, AnotherMeshShownIsCountedApartNotAsAnError) {
+  const ScreenScene s = test::screen_with("bigtri", Method::RecipNr, Filter::Bilinear, 160, 120);
+  const Frame ref = render_ref(s, {.depth_bits = model_config("icebreaker").z_bits});
+  const Frame model = render_model(s, model_config("icebreaker"));
+  const Metrics m = compute_metrics(model, ref, {"model", "bigtri", "recip_nr", "", "icebreaker"});
+  EXPECT_EQ(m.surface_diff_pixels, 160u);  // one row
+  EXPECT_GT(m.compared_pixels, 18000u);
+  EXPECT_LE(m.max_texel_error, 1.0 / 256);
+  size_t meshes_seen = 0;
+  for (int mesh = 0; mesh < 8; ++mesh)
+    meshes_seen += std::any_of(ref.probe.begin(), ref.probe.end(), [&](const PixelProbe& p) { return p.mesh == mesh; });
+  EXPECT_GE(meshes_seen, 2u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, AccuracyRecipNr, ::testing::ValuesIn(test::accuracy_scene_specs()),

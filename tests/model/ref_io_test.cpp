@@ -277,19 +277,22 @@ TEST(RefIo, MetricsAndJsonKeys) {
     eng.probe[static_cast<size_t>(i)].u = i == 7 ? 4.0 : 0.002 * (i % 10);  // level-1 texels: halved
   }
   eng.probe[3].covered = false;  // one coverage difference
+  eng.probe[5].mesh = 1;         // another mesh shown there: not compared, counted apart
+  eng.probe[5].u = 100.0;
   eng.counters.divfree_steps_total = 30;
   eng.counters.divfree_pixels = 10;
   eng.counters.divfree_steps_max = 7;
   eng.counters.divfree_cap_hits = 2;
   const Metrics m = compute_metrics(eng, ref, {"model", "floor", "recip_nr", "bilinear", "full"});
   EXPECT_EQ(m.coverage_diff_pixels, 1u);
-  EXPECT_EQ(m.compared_pixels, 999u);
+  EXPECT_EQ(m.surface_diff_pixels, 1u);
+  EXPECT_EQ(m.compared_pixels, 998u);
   EXPECT_DOUBLE_EQ(m.max_texel_error, 2.0);
-  EXPECT_DOUBLE_EQ(m.p999_texel_error, 2.0);  // rank ceil(0.999 * 999) = 999 of 999: the top one
+  EXPECT_DOUBLE_EQ(m.p999_texel_error, 2.0);  // rank ceil(0.999 * 998) = 998 of 998: the top one
   EXPECT_DOUBLE_EQ(m.divfree_mean_steps, 3.0);
   const nlohmann::json j = metrics_to_json(m);
   for (const char* key : {"max_texel_error", "rms_texel_error", "p999_texel_error", "psnr_db", "max_channel_diff",
-                          "coverage_diff_pixels", "divfree_max_steps", "divfree_mean_steps", "divfree_cap_hits",
+                          "coverage_diff_pixels", "surface_diff_pixels", "divfree_max_steps", "divfree_mean_steps", "divfree_cap_hits",
                           "engine", "scene", "method", "filter", "config", "width", "height"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_TRUE(j["psnr_db"].is_null());  // identical colours

@@ -510,10 +510,19 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
   EXPECT_EQ(m.at("sent"), cube.sent);
   EXPECT_GT(m.at("cycles").get<uint64_t>(), 0u);
   EXPECT_GT(m.at("cpu_frame_cycles").get<uint64_t>(), 0u);
-  EXPECT_TRUE(m.at("max_texel_error").is_null());
   // Against ref on the console's background; the rest is the texture's smaller level and the
   // fixed-point pipeline (27 dB when written).
   EXPECT_GT(m.at("psnr_db").get<double>(), 20.0);
+  // The texel errors, from the model drawing the console's own triangles (its frame is the one
+  // sent, pixel for pixel), against ref with the console's 32 x 32 texture: RECIP_NR's error and
+  // the firmware's fixed-point geometry (0.00052 texel when written), every textured pixel of ref
+  // textured by the same mesh.
+  EXPECT_EQ(m.at("probe"), "model");
+  EXPECT_GT(m.at("compared_pixels").get<uint64_t>(), 5000u) << m.dump();  // 7,082 when written
+  EXPECT_EQ(m.at("coverage_diff_pixels"), 0);
+  EXPECT_EQ(m.at("surface_diff_pixels"), 0);
+  EXPECT_GT(m.at("max_texel_error").get<double>(), 0.0);
+  EXPECT_LT(m.at("max_texel_error").get<double>(), 1.0 / 256);
 
   {
     htx::test::Child sim({HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--uart", "pty",
@@ -526,9 +535,17 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
     const auto board =
         htx::test::run_program({HTX_BIN, "render", "cube", "--engine", "board", "--port", pty, "--method", "auto",
                                 "--tolerance", "0.0625", "--filter", "nearest", "--fast-baud", "1000000", "--out",
-                                board_png},
+                                board_png, "--metrics", (dir / "board.json").string()},
                                180s);
     EXPECT_EQ(board.status, 0) << board.out << board.err;
+    // The methods AUTO chose among are the ones the console's `info` lists, so the model's frame
+    // of its triangles is its frame; AUTO keeps the coordinates within 1/16 texel of the model's
+    // geometry, the firmware's moves them by about a thousandth more.
+    std::ifstream board_json(dir / "board.json");
+    const nlohmann::json bm = nlohmann::json::parse(board_json);
+    EXPECT_EQ(bm.at("probe"), "model") << board.err;
+    EXPECT_TRUE(bm.at("max_texel_error").is_number() && bm.at("max_texel_error").get<double>() < 1.0 / 16 + 1.0 / 256)
+        << bm.dump();
     EXPECT_NE(board.err.find("board: serial line back to 115200 baud"), std::string::npos) << board.err;
     const CosimFrame nearest = cosim_frame("cube", 0, htx::render::kMethodAuto);
     EXPECT_NE(nearest.color, cube.color);

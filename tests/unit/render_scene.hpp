@@ -7,29 +7,22 @@
 #include <vector>
 
 #include "htx/fw/vertex_record.h"
+#include "htx/host/captured_triangles.hpp"
 #include "htx/host/render_scene.hpp"
 #include "htx/model/scene.hpp"
 #include "htx/render/pipeline.h"
 
 namespace htx::test {
 
-// The conversion lives in host_tools/scene_convert; the tests keep their names for it.
+// The conversion and the capture live in host_tools/scene_convert; the tests keep their names for them.
+using host::capture_sink;
+using host::CapturedTriangle;
+using host::from_state_word;
 using host::RenderScene;
 using host::to_mat4_fx;
 using host::to_q16;
 using host::to_render_scene;
 using host::to_render_state;
-
-// The host TriState a STATE word (hw/regs/raster.json) stands for.
-TriState from_state_word(uint32_t word);
-
-struct CapturedTriangle {
-  uint32_t state_word = 0;
-  fw::TriangleRecord record;
-};
-
-// A pipeline sink that appends every triangle to *out.
-render::TriangleSink capture_sink(std::vector<CapturedTriangle>* out);
 
 // Runs the firmware pipeline over every mesh into a capturing sink.
 std::vector<CapturedTriangle> draw_scene(const RenderScene& scene, const fw::RecordFormat& format,

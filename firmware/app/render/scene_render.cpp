@@ -58,59 +58,13 @@ void print_raster_figures(const htx::hal::RasterCounters& c) {
 
 DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
   DrawResult r;
-  const uint32_t methods_built = htx::hal::raster_caps().methods;
-  if (settings.method != htx::render::kMethodAuto && !((methods_built >> settings.method) & 1u)) {
-    r.error = "this GPU does not build that perspective method (CAPS.METHODS)";
+  htx::render::FrameParams frame;
+  if (const char* why = plan_draw(sc, settings, htx::hal::raster_caps().methods, htx::hal::texture_caps().filters,
+                                  g_draw_meshes, &frame)) {
+    r.error = why;
     return r;
-  }
-  const uint32_t filters_built = htx::hal::texture_caps().filters;
-  if (sc.mesh_count > kMaxSceneMeshes) {
-    r.error = "the scene has more meshes than draw_scene draws";
-    return r;
-  }
-  for (uint32_t m = 0; m < sc.mesh_count; ++m) {
-    if (sc.meshes[m].vertex_count > kMaxVertices) {
-      r.error = "a mesh has more vertices than the vertex cache";
-      return r;
-    }
-    htx::render::Mesh& mesh = g_draw_meshes[m];
-    mesh = sc.meshes[m];
-    apply_soc_render_state(&mesh);
-    uint32_t slot = kTextureSlot;
-    if (sc.own_shading) {
-      mesh.state.textured = sc.meshes[m].state.textured;
-      mesh.state.gouraud = sc.meshes[m].state.gouraud;
-      slot = sc.meshes[m].state.texture;
-    }
-    if (slot >= kDrawTextureSlots || !settings.textures[slot].present) slot = kTextureSlot;
-    if (mesh.state.textured && !settings.textures[slot].present) {
-      r.error = "a textured mesh's texture slot and slot 0 hold no texture (upload one)";
-      return r;
-    }
-    mesh.state.texture = static_cast<uint8_t>(slot);
-    mesh.tex = {settings.textures[slot].log2_width, settings.textures[slot].log2_height};
-    mesh.state.method = settings.method;
-    mesh.state.subdiv_n = settings.subdiv_n;
-    if (settings.filter != kSceneFilter) mesh.state.filter = settings.filter;
-    // A filter the texture unit lacks would be sampled bilinear at level 0 (TEXTURE ERR_FILTER)
-    // without a word, so a textured mesh that asks for one is refused before anything is drawn
-    // (an untextured one samples nothing).
-    const uint8_t filter = mesh.state.filter;
-    if (mesh.state.textured && (filter > 2 || !((filters_built >> filter) & 1u))) {
-      r.error = "a mesh's filter is one this GPU does not build (TEXTURE CAPS.FILTERS; `set filter` another)";
-      return r;
-    }
   }
   htx::render::VertexCache cache{g_clip, g_screen, g_codes, kMaxVertices};
-  htx::render::FrameParams frame;
-  frame.viewport = {kWidth, kHeight};
-  frame.format = kRecordFormat;
-  // The simulated SoC builds every method, the board AFFINE and RECIP_LUT: AUTO picks among these.
-  frame.methods_built = methods_built;
-  frame.auto_config = kAutoConfig;
-  frame.auto_tolerance = settings.auto_tolerance > 0 ? settings.auto_tolerance : kAutoTolerance;
-  frame.cull_backfaces = sc.cull_backfaces;
-
   if (settings.time_geometry) time_geometry(sc, frame.viewport, &cache, &r);
 
   htx::render::DrawStatus mesh_status = htx::render::kDrawOk;

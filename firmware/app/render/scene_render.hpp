@@ -57,6 +57,14 @@ struct DrawResult {
 // Applies the SoC render state (render_state.hpp) with `settings` to the scene's meshes and draws it.
 DrawResult draw_scene(const SceneData& scene, const DrawSettings& settings);
 
+// What draw_scene draws, found without the GPU: the scene's meshes with the SoC render state and
+// `settings` applied (into `meshes`, room for kMaxSceneMeshes) and the frame's parameters, for a GPU
+// that builds `methods_built` (RASTER CAPS.METHODS) and `filters_built` (TEXTURE CAPS.FILTERS).
+// Returns nullptr, or why the scene cannot be drawn. The host runs the same plan through the
+// pipeline into the model (the texel errors of a console's frame, docs/metrics.md).
+const char* plan_draw(const SceneData& scene, const DrawSettings& settings, uint32_t methods_built,
+                      uint32_t filters_built, htx::render::Mesh* meshes, htx::render::FrameParams* frame);
+
 // x.xx without floating point.
 void print_ratio(uint64_t num, uint64_t den);
 

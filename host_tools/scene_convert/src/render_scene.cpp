@@ -71,6 +71,7 @@ RenderScene to_render_scene(const Scene& scene, int width, int height) {
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& src = scene.meshes[m];
     RenderScene::MeshData& d = out.meshes[m];
+    d.source = static_cast<uint32_t>(m);
     if (src.vertices.size() > 65536) throw std::out_of_range("mesh '" + src.name + "' has more than 65536 vertices");
     for (const Vertex& v : src.vertices) {
       render::MeshVertex mv{};
@@ -123,6 +124,7 @@ void split_meshes(RenderScene* scene, uint32_t max_vertices) {
       if (render::mesh_position_bits(part.vertices.data(), static_cast<uint32_t>(part.vertices.size())) < bits)
         part.vertices.push_back(whole.vertices[anchor]);
       part.mesh = whole.mesh;
+      part.source = whole.source;
       out.push_back(std::move(part));
       part = {};
       std::fill(part_index.begin(), part_index.end(), -1);

@@ -39,6 +39,11 @@ Metrics compute_metrics(const Frame& engine, const Frame& ref, const MetricsLabe
     const PixelProbe& r = ref.probe[i];
     if (e.covered != r.covered) ++m.coverage_diff_pixels;
     if (!(e.covered && r.covered)) continue;
+    // Another mesh's coordinates are not an error of this one's interpolation.
+    if (e.mesh != r.mesh) {
+      ++m.surface_diff_pixels;
+      continue;
+    }
     const double err = texel_error(e, r);
     errors.push_back(err);
     sum_sq += err * err;
@@ -85,6 +90,7 @@ nlohmann::json metrics_to_json(const Metrics& m) {
     j["psnr_db"] = nullptr;
   j["max_channel_diff"] = m.max_channel_diff;
   j["coverage_diff_pixels"] = m.coverage_diff_pixels;
+  j["surface_diff_pixels"] = m.surface_diff_pixels;
   j["divfree_max_steps"] = m.divfree_max_steps;
   j["divfree_mean_steps"] = m.divfree_mean_steps;
   j["divfree_cap_hits"] = m.divfree_cap_hits;

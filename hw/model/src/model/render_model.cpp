@@ -65,7 +65,7 @@ struct FrameContext {
   Frame& frame;
 };
 
-void draw_record(const fw::TriangleRecord& rec, const TriState& st, Method method, FrameContext& fc) {
+void draw_record(const fw::TriangleRecord& rec, const TriState& st, Method method, int mesh, FrameContext& fc) {
   const ModelConfig& cfg = fc.cfg;
   Frame& frame = fc.frame;
   Counters& cnt = frame.counters;
@@ -124,6 +124,7 @@ void draw_record(const fw::TriangleRecord& rec, const TriState& st, Method metho
         pr.level = static_cast<int>(level);
         pr.lod = lod == INT32_MIN ? -64.0 : static_cast<double>(lod) * lod_scale;
         pr.divfree_steps = method == Method::DivFree ? span.divfree_steps[k] : 0;
+        pr.mesh = mesh;
       } else {
         frame.probe[idx] = PixelProbe{};  // an untextured fragment hides what was sampled here
       }
@@ -168,7 +169,7 @@ Frame render_model(const ScreenScene& scene, const ModelConfig& cfg) {
     const fw::EncodeStatus status = fw::encode_triangle(format, in, &rec);
     if (status == fw::kEncodeBadFormat) throw std::logic_error("model configuration yields a bad record format");
     if (status != fw::kEncodeOk) continue;  // the firmware does not send it: draws nothing
-    draw_record(rec, st, method, fc);
+    draw_record(rec, st, method, tri.mesh, fc);
   }
   return frame;
 }
@@ -184,7 +185,7 @@ Frame render_model_records(const RecordScene& scene, const ModelConfig& cfg) {
     if (tri.state.method == Method::Auto)
       throw std::invalid_argument("render_model_records: a record's method must be resolved (not auto)");
     check_state(scene.textures, tri.state, cfg, tri.state.method);
-    draw_record(tri.record, tri.state, tri.state.method, fc);
+    draw_record(tri.record, tri.state, tri.state.method, tri.mesh, fc);
   }
   return frame;
 }

@@ -110,6 +110,7 @@ Frame render_ref(const ScreenScene& scene, const RefOptions& options) {
           probe.v = v;
           probe.level = smp.level;
           probe.lod = lod;
+          probe.mesh = tri.mesh;
         }
         f.color[idx] = to_rgb565(color);
         f.probe[idx] = probe;

@@ -109,7 +109,8 @@ ScreenScene prepare_screen_scene(const Scene& scene, int width, int height) {
   const Mat4 view_proj =
       scene.camera.projection(scene.camera.aspect > 0 ? scene.camera.aspect
                                                        : static_cast<double>(width) / height) * scene.camera.view();
-  for (const Mesh& mesh : scene.meshes) {
+  for (size_t mesh_index = 0; mesh_index < scene.meshes.size(); ++mesh_index) {
+    const Mesh& mesh = scene.meshes[mesh_index];
     double tex_w = 1, tex_h = 1;
     if (mesh.state.textured) {
       if (mesh.state.texture < 0 || static_cast<size_t>(mesh.state.texture) >= scene.textures.size())
@@ -140,6 +141,7 @@ ScreenScene prepare_screen_scene(const Scene& scene, int width, int height) {
       for (size_t k = 1; k + 1 < poly.size(); ++k) {
         ScreenTri st;
         st.state = mesh.state;
+        st.mesh = static_cast<int>(mesh_index);
         st.v[0] = to_screen(poly[0], width, height, tex_w, tex_h);
         st.v[1] = to_screen(poly[k], width, height, tex_w, tex_h);
         st.v[2] = to_screen(poly[k + 1], width, height, tex_w, tex_h);

@@ -21,6 +21,7 @@ struct RenderScene {
     std::vector<render::MeshVertex> vertices;
     std::vector<uint16_t> indices;
     render::Mesh mesh{};
+    uint32_t source = 0;  // the index of the Scene mesh it comes from (split_meshes keeps it)
   };
   std::vector<MeshData> meshes;
   render::Mat4 view_proj{};

@@ -37,13 +37,14 @@ struct MetricsLabels {
 struct Metrics {
   MetricsLabels labels;
   int width = 0, height = 0;
-  // Texel-coordinate error per pixel textured in both frames: max(|du|, |dv|) between the engine's
-  // and ref's probe coordinates, in texels of ref's sampled mip level.
+  // Texel-coordinate error per pixel textured in both frames by the same scene mesh: max(|du|, |dv|)
+  // between the engine's and ref's probe coordinates, in texels of ref's sampled mip level.
   double max_texel_error = 0, rms_texel_error = 0, p999_texel_error = 0;
   uint64_t compared_pixels = 0;
   double psnr_db = 0;  // +infinity when the frames are identical
   int max_channel_diff = 0;
   uint64_t coverage_diff_pixels = 0;  // textured in exactly one of the two frames
+  uint64_t surface_diff_pixels = 0;   // textured in both, by different meshes (a moved edge or depth order)
   uint64_t divfree_max_steps = 0;
   double divfree_mean_steps = 0;
   uint64_t divfree_cap_hits = 0;

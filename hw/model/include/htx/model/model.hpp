@@ -31,6 +31,7 @@ Frame render_model(const ScreenScene& scene, const ModelConfig& config);
 struct RecordTriangle {
   fw::TriangleRecord record;
   TriState state;
+  int mesh = 0;  // the scene mesh it comes from (PixelProbe::mesh)
 };
 
 // Triangles given as vertex records (e.g. what the firmware streamed), in drawing order.

@@ -69,6 +69,7 @@ struct ScreenVertex {
 struct ScreenTri {
   std::array<ScreenVertex, 3> v;
   TriState state;
+  int mesh = 0;  // the scene mesh it comes from (the metrics compare a pixel where both frames show one mesh)
 };
 
 struct ScreenScene {
@@ -87,6 +88,7 @@ struct PixelProbe {
   int level = 0;           // mip level sampled (the finer one for trilinear)
   double lod = 0;          // level of detail
   uint32_t divfree_steps = 0;
+  int mesh = -1;           // the scene mesh of that fragment's triangle (ScreenTri::mesh)
 };
 
 struct Counters {

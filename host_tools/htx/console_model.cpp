@@ -1,0 +1,136 @@
+#include "console_model.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "htx/host/captured_triangles.hpp"
+#include "htx/model/config.hpp"
+#include "htx/model/model.hpp"
+#include "htx/model/names.hpp"
+#include "htx/model/texture.hpp"
+#include "htx/render/scene_pack.h"
+#include "htx/render/texture_pack.h"
+#include "scene_render.hpp"
+#include "soc_config.hpp"
+
+namespace htx {
+
+namespace {
+
+// The console's settings for `draw` (its `set method`, `set tolerance` and `set filter`).
+render_app::DrawSettings console_settings(const ConsoleDraw& draw) {
+  render_app::DrawSettings s;
+  s.time_geometry = false;
+  s.checksum = false;
+  if (draw.method == "auto") {
+    s.method = render::kMethodAuto;
+  } else {
+    const MethodChoice m = parse_method(draw.method);
+    if (m.method == Method::Auto || m.method == Method::Quadratic)
+      throw std::runtime_error("the console has no method " + draw.method);
+    s.method = static_cast<uint8_t>(m.method);  // Affine .. DivFree: the STATE word's numbers
+    s.subdiv_n = static_cast<uint8_t>(m.subdiv_n);
+  }
+  if (draw.tolerance.rfind("1/", 0) != 0) throw std::runtime_error("tolerance " + draw.tolerance + " is not 1/N");
+  const long n = std::stol(draw.tolerance.substr(2));
+  if (n < 1 || n > 65536) throw std::runtime_error("tolerance " + draw.tolerance + " is out of range");
+  s.auto_tolerance = render::kOne / n;
+  s.filter = draw.filter == "scene" ? render_app::kSceneFilter : static_cast<uint8_t>(parse_filter(draw.filter));
+  return s;
+}
+
+// A texture as the model holds it, from 16-bit texels of `format` (0 RGB565, 1 RGBA4444): decoded
+// to 8 bits a channel and encoded again, which gives the same texels, and the same mip chain the
+// firmware's upload makes from them (both box-filter the decoded level above).
+Texture model_texture(uint8_t format, uint8_t log2_w, uint8_t log2_h, const uint8_t* texels16) {
+  const TexFormat f = format == 0 ? TexFormat::RGB565 : TexFormat::RGBA4444;
+  const size_t n = size_t{1} << (log2_w + log2_h);
+  std::vector<uint8_t> rgba(4 * n);
+  for (size_t i = 0; i < n; ++i) {
+    const Rgba8 c = decode_texel(f, static_cast<uint32_t>(texels16[2 * i] | (texels16[2 * i + 1] << 8)));
+    rgba[4 * i] = c.r;
+    rgba[4 * i + 1] = c.g;
+    rgba[4 * i + 2] = c.b;
+    rgba[4 * i + 3] = c.a;
+  }
+  return make_texture(f, log2_w, log2_h, rgba);
+}
+
+// The console's boot texture in slot 0 (soc_texture.hpp), RGB565 as it uploads it.
+Texture boot_checkerboard() {
+  std::vector<uint32_t> words(render_app::kTextureTexels);
+  render_app::checker_texels(words.data());
+  std::vector<uint8_t> rgba(4 * words.size());
+  for (size_t i = 0; i < words.size(); ++i)
+    for (size_t b = 0; b < 4; ++b) rgba[4 * i + b] = static_cast<uint8_t>(words[i] >> (8 * b));
+  return make_texture(TexFormat::RGB565, render_app::kTextureLog2, render_app::kTextureLog2, rgba);
+}
+
+}  // namespace
+
+ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built, uint32_t filters_built) {
+  render_app::DrawSettings settings = console_settings(draw);
+  RecordScene records;
+  records.width = render_app::kWidth;
+  records.height = render_app::kHeight;
+  records.clear_color = render_app::kClearColor;
+  records.clear_depth = render_app::kClearDepth;
+  const std::vector<std::vector<uint8_t>>& sent = draw.payload.textures;
+  std::vector<Texture> slots(render_app::kDrawTextureSlots);
+  for (size_t slot = 0; slot < slots.size(); ++slot) {
+    if (slot >= sent.size() || sent[slot].empty()) {
+      // Slot 0 keeps the boot texture; the plan sends a mesh whose slot holds none to slot 0.
+      slots[slot] = slot == 0 ? boot_checkerboard() : slots[0];
+      continue;
+    }
+    std::vector<uint8_t> bytes = sent[slot];
+    render::UnpackedTexture t;
+    if (const char* why = render::unpack_texture(bytes.data(), bytes.size(), render::kConsoleTextureTexels, &t))
+      throw std::runtime_error(std::string("texture ") + std::to_string(slot) + ": " + why);
+    slots[slot] = model_texture(t.format, t.log2_width, t.log2_height, t.texels);
+    settings.textures[slot] = {t.log2_width, t.log2_height, true};
+  }
+  records.textures = slots;
+
+  // Each part as the console draws it: unpacked, planned and run through the pipeline in turn,
+  // over the last (its colour and depth kept), so the records follow one another in one frame.
+  std::vector<render::Mesh> meshes(render_app::kMaxSceneMeshes), planned(render_app::kMaxSceneMeshes);
+  std::vector<render::ClipVert> clip(render_app::kMaxMeshVertices);
+  std::vector<render::ScreenVert> screen(render_app::kMaxMeshVertices);
+  std::vector<uint8_t> codes(render_app::kMaxMeshVertices);
+  std::vector<host::CapturedTriangle> tris;
+  std::vector<int> tri_mesh;  // the Scene mesh of each triangle in tris
+  uint32_t packed = 0;        // the payload's meshes before this part's
+  for (const std::vector<uint8_t>& part : draw.payload.parts) {
+    render::UnpackedScene up;
+    if (const char* why = render::unpack_scene(part.data(), part.size(), meshes.data(), render_app::kMaxSceneMeshes,
+                                               render_app::kMaxMeshVertices, &up))
+      throw std::runtime_error(std::string("scene part: ") + why);
+    const render_app::SceneData sc{"upload", meshes.data(), up.mesh_count, up.view_proj, up.cull_backfaces, true};
+    render::FrameParams frame;
+    if (const char* why = render_app::plan_draw(sc, settings, methods_built, filters_built, planned.data(), &frame))
+      throw std::runtime_error(why);
+    render::VertexCache cache{clip.data(), screen.data(), codes.data(), render_app::kMaxMeshVertices};
+    render::DrawStats stats;
+    for (uint32_t m = 0; m < sc.mesh_count; ++m, ++packed) {
+      if (render::draw_mesh(frame, sc.view_proj, planned[m], &cache, host::capture_sink(&tris), &stats) !=
+          render::kDrawOk)
+        throw std::runtime_error("the pipeline refused mesh " + std::to_string(m));
+      const uint32_t source = packed < draw.payload.source_mesh.size() ? draw.payload.source_mesh[packed] : packed;
+      tri_mesh.resize(tris.size(), static_cast<int>(source));
+    }
+  }
+  for (size_t i = 0; i < tris.size(); ++i)
+    records.tris.push_back({tris[i].record, host::from_state_word(tris[i].state_word), tri_mesh[i]});
+
+  // The raster unit's configuration (Gouraud colour linear in screen space, as the RTL builds it).
+  ModelConfig config = model_config("icebreaker");
+  config.perspective_color = false;
+  config.methods = methods_built;
+  config.filters = filters_built;
+  return {render_model_records(records, config), std::move(slots)};
+}
+
+}  // namespace htx

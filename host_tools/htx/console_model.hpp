@@ -1,0 +1,28 @@
+// The model's frame of what the console draws from a payload: the console's own plan
+// (render_app::plan_draw) and the firmware pipeline, run on the host into the model, whose frame
+// carries the per-pixel probe the console has not got. Where it is, pixel for pixel, the frame the
+// console sent, its probe is that frame's, and the soc and board engines report texel errors with
+// it (docs/metrics.md).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "console_render.hpp"
+#include "htx/model/types.hpp"
+
+namespace htx {
+
+struct ConsoleModel {
+  Frame frame;                  // the model's, with its probe
+  std::vector<Texture> slots;   // the texture each slot of the console draws with (a slot the
+                                // payload leaves empty: slot 0's, as the console's plan falls back)
+};
+
+// `draw`'s payload in its parts, with its method, tolerance and filter as the console takes them,
+// for a GPU that builds `methods_built` and `filters_built` (its CAPS, as the console's `info`
+// lists them). Slot 0 holds the console's boot checkerboard unless the payload sends one. Throws
+// std::runtime_error when the console would refuse the draw or the model cannot draw it.
+ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built, uint32_t filters_built);
+
+}  // namespace htx
