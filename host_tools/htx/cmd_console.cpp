@@ -1,7 +1,12 @@
 // htx console and htx grab: talk to the console firmware (docs/console.md) on a board's serial port
 // or on the pseudo-terminal of `htx sim --uart pty`.
+#include <poll.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
+#include <deque>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -84,9 +89,11 @@ struct ConsoleArgs : PortArgs {
 
 // One line typed or given with -c. `grab FILE.png`, `upload SCENE` and `texture FILE.png` are
 // carried out by htx (their exchanges are binary), and `baud N` switches the port with the
-// console; everything else goes to the console as it is.
+// console; everything else goes to the console as it is, its output shown as it comes, and
+// `stop` (typed mode: a line typed meanwhile) may stop it (ConsoleClient::converse).
 // Returns false after quit.
-bool run_line(console::SerialPort& port, console::ConsoleClient& client, const std::string& line) {
+bool run_line(console::SerialPort& port, console::ConsoleClient& client, const std::string& line,
+              const std::function<bool()>& stop = {}) {
   if (line == "quit") {
     port.write("quit\r");
     return false;
@@ -122,7 +129,7 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
              console::ConsoleClient::Payload::kTexture, extra.empty() ? 0u : static_cast<unsigned>(std::stoul(extra)));
     return true;
   }
-  std::cout << client.command(line) << std::flush;
+  client.converse(line, [](const std::string& text) { std::cout << text << std::flush; }, stop);
   return true;
 }
 
@@ -138,14 +145,38 @@ void run_console(const ConsoleArgs& a) {
     return;
   }
   // Interactive: a line from stdin at a time, each answered before the next is sent (the console's
-  // receive FIFO is 16 bytes: typing ahead of it would lose characters). A mistyped grab or upload
-  // is reported and the session goes on.
-  std::string line;
+  // receive FIFO is 16 bytes: typing ahead of it would lose characters). A line typed while the
+  // console works waits its turn, and stops a `spin` (a single key goes to the console: see
+  // ConsoleClient::converse); it then runs, shown after the prompt. A mistyped grab or upload is
+  // reported and the session goes on.
+  std::deque<std::string> typed;
+  bool input_ended = false;
+  const auto line_typed = [&typed, &input_ended]() {
+    if (input_ended) return false;
+    if (std::cin.rdbuf()->in_avail() <= 0) {
+      pollfd input{STDIN_FILENO, POLLIN, 0};
+      if (poll(&input, 1, 0) <= 0) return false;
+    }
+    std::string l;
+    if (!std::getline(std::cin, l)) {
+      input_ended = true;  // the end of the input stops nothing: the command finishes, then htx ends
+      return false;
+    }
+    if (!l.empty()) typed.push_back(l);  // an empty line only stops
+    return true;
+  };
   for (;;) {
-    std::cout << console::kPrompt << std::flush;
-    if (!std::getline(std::cin, line)) break;
+    std::string line;
+    if (!typed.empty()) {
+      line = typed.front();
+      typed.pop_front();
+      std::cout << console::kPrompt << line << "\n" << std::flush;
+    } else {
+      std::cout << console::kPrompt << std::flush;
+      if (input_ended || !std::getline(std::cin, line)) break;
+    }
     try {
-      if (!run_line(port, client, line)) break;
+      if (!run_line(port, client, line, line_typed)) break;
     } catch (const std::invalid_argument& e) {
       std::cout << "error: " << e.what() << "\n";
     }

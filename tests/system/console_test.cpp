@@ -191,6 +191,39 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
 // the UART cannot make within 2 % at 12 MHz, and 3 Mbaud, faster than the console reads an upload,
 // are refused and leave the line as it was; after the switch to 1 Mbaud commands, a render and a
 // grab work at the new rate, and back to 115,200.
+// `htx console` typed at, as a person does: a spin's frames show as they are drawn, a line typed
+// while it runs stops it after its frame and then runs (shown after the prompt), and a line typed
+// while a render works waits for it. Fails when htx waits for a command's whole answer (nothing
+// shows before the spin's end, and a 3,600-frame spin of the floor takes minutes), or when it
+// sends the typed line while the console is busy (the line would run in the middle, or be lost).
+TEST(SystemConsole, TypedLinesStopASpinAndRunAfterIt) {
+  ConsoleSim cs;
+  ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
+  htx::test::Child console({HTX_BIN, "console", "--port", cs.pty, "--timeout", "60"}, true);
+  ASSERT_TRUE(console.read_until("htx> ", 60s)) << console.output();
+  console.write_input("spin floor 3600\n");
+  ASSERT_TRUE(console.read_until("frame 2 frame_cycles", 60s)) << console.output();
+  EXPECT_EQ(console.output().find("spin floor frames"), std::string::npos) << "the spin ended early";
+  console.write_input("info\n");
+  ASSERT_TRUE(console.read_until("serial 115384 baud", 60s)) << console.output();
+  const std::string& out = console.output();
+  const size_t stopped = out.find("(stopped)");
+  ASSERT_NE(stopped, std::string::npos) << out;
+  // The spin's summary names the frames drawn (a few, not 3,600), then the typed line runs.
+  const size_t frames = out.find("spin floor frames ");
+  ASSERT_NE(frames, std::string::npos) << out;
+  EXPECT_LT(std::stoul(out.substr(frames + 18)), 100u) << out;
+  EXPECT_NE(out.find("htx> info\nhypertex console", stopped), std::string::npos) << out;
+  // A line typed while a render works runs after it, whole.
+  console.write_input("render cube\nstats\n");
+  ASSERT_TRUE(console.read_until("triangles 6 fragments 7082 pixels 7082", 60s)) << console.output();
+  EXPECT_NE(console.output().find("render cube method auto"), std::string::npos) << console.output();
+  console.write_input("quit\n");
+  console.close_input();
+  EXPECT_EQ(console.wait(60s), 0) << console.output();
+  EXPECT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
+}
+
 TEST(SystemConsole, BaudSwitchesTheLineBothWays) {
   ConsoleSim cs;
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();

@@ -15,15 +15,15 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-pid_t spawn(const std::vector<std::string>& argv, int out_fd, int err_fd) {
+// in_fd < 0: standard input from /dev/null.
+pid_t spawn(const std::vector<std::string>& argv, int out_fd, int err_fd, int in_fd = -1) {
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {
-    const int devnull = open("/dev/null", O_RDONLY);
-    dup2(devnull, STDIN_FILENO);
+    dup2(in_fd >= 0 ? in_fd : open("/dev/null", O_RDONLY), STDIN_FILENO);
     if (out_fd >= 0) dup2(out_fd, STDOUT_FILENO);
     if (err_fd >= 0) dup2(err_fd, STDERR_FILENO);
     execv(args[0], args.data());
@@ -108,12 +108,30 @@ bool read_fd_until(int fd, std::string& acc, const std::string& needle, std::chr
   return true;
 }
 
-Child::Child(const std::vector<std::string>& argv) {
+Child::Child(const std::vector<std::string>& argv, bool with_input) {
   int p[2];
   if (pipe(p) != 0) throw std::runtime_error("pipe failed");
-  pid_ = spawn(argv, p[1], -1);
+  int in[2] = {-1, -1};
+  if (with_input && pipe(in) != 0) throw std::runtime_error("pipe failed");
+  if (with_input) fcntl(in[1], F_SETFD, FD_CLOEXEC);  // the child keeps only its end
+  pid_ = spawn(argv, p[1], -1, in[0]);
   close(p[1]);
   out_fd_ = p[0];
+  if (with_input) {
+    close(in[0]);
+    in_fd_ = in[1];
+  }
+}
+
+void Child::write_input(const std::string& text) {
+  if (in_fd_ < 0) throw std::logic_error("Child: started without an input pipe");
+  if (write(in_fd_, text.data(), text.size()) != static_cast<ssize_t>(text.size()))
+    throw std::runtime_error("Child: writing its input failed");
+}
+
+void Child::close_input() {
+  if (in_fd_ >= 0) close(in_fd_);
+  in_fd_ = -1;
 }
 
 Child::~Child() {
@@ -123,6 +141,7 @@ Child::~Child() {
     waitpid(pid_, &st, 0);
   }
   if (out_fd_ >= 0) close(out_fd_);
+  close_input();
 }
 
 bool Child::read_until(const std::string& needle, std::chrono::milliseconds limit) {

@@ -22,7 +22,8 @@ RunResult run_program(const std::vector<std::string>& argv, std::chrono::millise
 // A child whose stdout is read incrementally (stderr is inherited, so it shows in the test log).
 class Child {
  public:
-  explicit Child(const std::vector<std::string>& argv);
+  // with_input: its standard input is a pipe written by write_input (otherwise /dev/null).
+  explicit Child(const std::vector<std::string>& argv, bool with_input = false);
   ~Child();  // kills the child if it is still running
   Child(const Child&) = delete;
   Child& operator=(const Child&) = delete;
@@ -30,12 +31,15 @@ class Child {
   // Reads stdout until `needle` has appeared in everything read so far, or the limit passes.
   bool read_until(const std::string& needle, std::chrono::milliseconds limit);
   const std::string& output() const { return out_; }
+  void write_input(const std::string& text);
+  void close_input();  // the child reads the end of its input
   // Waits for the child to exit; -1 if it had to be killed at the limit.
   int wait(std::chrono::milliseconds limit);
 
  private:
   pid_t pid_ = -1;
   int out_fd_ = -1;
+  int in_fd_ = -1;
   std::string out_;
 };
 

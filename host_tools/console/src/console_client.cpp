@@ -46,20 +46,27 @@ const char* status_name(fw::PacketStatus s) {
 
 ConsoleClient::ConsoleClient(SerialPort& port, std::chrono::milliseconds timeout) : port_(port), timeout_(timeout) {}
 
-uint8_t ConsoleClient::next_byte() {
+void ConsoleClient::silence() const {
+  throw std::runtime_error("the console said nothing for " + std::to_string(timeout_.count() / 1000.0) +
+                           " s (is the firmware running the console?)");
+}
+
+bool ConsoleClient::next_byte_within(std::chrono::milliseconds wait, uint8_t* byte) {
   if (pos_ == buf_.size()) {
     buf_.resize(4096);
-    const size_t n = port_.read_some(buf_.data(), buf_.size(), timeout_);
-    if (n == 0) {
-      buf_.clear();
-      pos_ = 0;
-      throw std::runtime_error("the console said nothing for " + std::to_string(timeout_.count() / 1000.0) +
-                               " s (is the firmware running the console?)");
-    }
+    const size_t n = port_.read_some(buf_.data(), buf_.size(), wait);
     buf_.resize(n);
     pos_ = 0;
+    if (n == 0) return false;
   }
-  return buf_[pos_++];
+  *byte = buf_[pos_++];
+  return true;
+}
+
+uint8_t ConsoleClient::next_byte() {
+  uint8_t b = 0;
+  if (!next_byte_within(timeout_, &b)) silence();
+  return b;
 }
 
 std::string ConsoleClient::read_until_prompt() {
@@ -112,6 +119,54 @@ std::string ConsoleClient::command(const std::string& line) {
   if (line.find_first_of("\r\n") != std::string::npos) throw std::invalid_argument("a command is one line");
   port_.write(line + "\r");
   return unix_lines(without_echo(read_until_prompt()));
+}
+
+void ConsoleClient::converse(const std::string& line, const std::function<void(const std::string&)>& show,
+                             const std::function<bool()>& stop) {
+  if (line.find_first_of("\r\n") != std::string::npos) throw std::invalid_argument("a command is one line");
+  port_.write(line + "\r");
+  using Clock = std::chrono::steady_clock;
+  const std::string prompt = kPrompt;
+  bool echo = true;      // the line's echo, up to its line break, is not shown
+  bool stopped = false;  // the stop key went
+  std::string held;      // the line being received, shown once it ends (it may be the prompt)
+  size_t received = 0;
+  Clock::time_point heard = Clock::now(), polled = heard;
+  for (;;) {
+    uint8_t b = 0;
+    const bool got = next_byte_within(kStopPoll, &b);
+    const Clock::time_point now = Clock::now();
+    // Asked on the clock, not only in silences: a spin's lines come faster than kStopPoll apart.
+    if (!stopped && stop && now - polled >= kStopPoll) {
+      polled = now;
+      if (stop()) {
+        port_.write("\r");
+        stopped = true;
+      }
+    }
+    if (!got) {
+      if (now - heard > timeout_) silence();
+      continue;
+    }
+    heard = now;
+    if (++received > kMaxText) throw std::runtime_error("the console sent more than 1 MiB without a prompt");
+    if (b == '\r') continue;
+    if (echo) {
+      echo = b != '\n';
+      continue;
+    }
+    held += static_cast<char>(b);
+    if (ends_with(held, prompt)) {
+      held.resize(held.size() - prompt.size());
+      if (!held.empty()) show(held);
+      if (stopped) read_until_prompt();  // the stop key's empty line
+      return;
+    }
+    if (b == '\n') {
+      show(held);
+      held.clear();
+    }
+  }
 }
 
 void ConsoleClient::set_baud(unsigned baud) {

@@ -33,6 +33,15 @@ class ConsoleClient {
   // Sends one line and returns what the console printed for it, without the echoed line and the
   // prompt, with CR LF as LF. Throws std::runtime_error on a timeout.
   std::string command(const std::string& line);
+  // command() for a person watching: what the console prints goes to `show` as its lines arrive
+  // (a `spin` shows each frame's line as it is drawn), and `stop`, when given, is asked every
+  // kStopPoll while the console works; the first time it says yes, one carriage return goes to
+  // the console, which stops a running `spin` after its frame (any other command just ends first)
+  // and then reads it as an empty command line, whose echo and prompt are taken here unshown. One
+  // byte only: the console's receive FIFO holds 16, and a busy console does not read it.
+  void converse(const std::string& line, const std::function<void(const std::string&)>& show,
+                const std::function<bool()>& stop = {});
+  static constexpr std::chrono::milliseconds kStopPoll{50};
   // Sends `grab` and receives the frame. Throws std::runtime_error with the reason on any protocol
   // error (a bad packet, a gap in the sequence, a checksum or size that does not match).
   GrabbedFrame grab(const std::function<void(size_t coded_bytes)>& progress = {});
@@ -57,6 +66,9 @@ class ConsoleClient {
 
  private:
   uint8_t next_byte();
+  // The next byte if one comes within `wait` (false: none came; nothing is thrown).
+  bool next_byte_within(std::chrono::milliseconds wait, uint8_t* byte);
+  [[noreturn]] void silence() const;
   std::string read_until_prompt();
   // Reads text until it ends with `needle` (true) or with a prompt (false: the text without it).
   bool read_text_until(const std::string& needle, std::string* text);
