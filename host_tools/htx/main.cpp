@@ -16,7 +16,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version: status 0. A command line htx cannot take: its message, and status 2
+    // for every kind (CLI11's own codes, 105 to 109, would read as a firmware's exit code from
+    // htx sim). Every other error is status 1.
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const std::exception& e) {
     std::cerr << "htx: " << e.what() << "\n";
     return 1;

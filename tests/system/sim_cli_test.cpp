@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sim_json.hpp"
@@ -38,6 +39,27 @@ TEST(SystemSimCli, CycleLimitEndsTheRunWithAClearMessage) {
   EXPECT_EQ(json.at("exit_code"), 124);
   // The summary gives no exit code: the firmware never exited.
   EXPECT_NE(r.err.find("htx sim: cycle_limit: 20000 cycles"), std::string::npos) << r.err;
+}
+
+// A command line htx cannot take ends with its message and status 2, whatever its kind (a missing
+// option, a value of the wrong type, an unknown option, a file that does not exist); --help and
+// --version with 0; an error found later (no such scene) with 1.
+TEST(SystemSimCli, CommandLineErrorsEndWithStatusTwo) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> usage = {
+      {{HTX_BIN, "sim"}, "--elf is required"},
+      {{HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/echo.elf", "--max-cycles", "many"}, "--max-cycles"},
+      {{HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/echo.elf", "--no-such-option"}, "--no-such-option"},
+      {{HTX_BIN, "compare", temp_path("none_a.png"), temp_path("none_b.png")}, "File does not exist"},
+      {{HTX_BIN}, "A subcommand is required"}};
+  for (const auto& [argv, message] : usage) {
+    const auto r = htx::test::run_program(argv, 30s);
+    EXPECT_EQ(r.status, 2) << argv.back() << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  }
+  for (const char* flag : {"--help", "--version"}) EXPECT_EQ(htx::test::run_program({HTX_BIN, flag}, 30s).status, 0);
+  EXPECT_EQ(htx::test::run_program({HTX_BIN, "sim", "--help"}, 30s).status, 0);
+  const auto later = htx::test::run_program({HTX_BIN, "render", "nosuch", "--out", temp_path("x.png")}, 30s);
+  EXPECT_EQ(later.status, 1) << later.err;
 }
 
 TEST(SystemSimCli, RefusesAFileThatIsNotAnElf) {
