@@ -1,11 +1,7 @@
 // htx console and htx grab: talk to the console firmware (docs/console.md) on a board's serial port
 // or on the pseudo-terminal of `htx sim --uart pty`.
-#include <poll.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
-#include <deque>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -18,6 +14,7 @@
 #include "htx/console/console_client.hpp"
 #include "htx/console/serial_port.hpp"
 #include "console_payload.hpp"
+#include "line_input.hpp"
 #include "htx/model/image_io.hpp"
 #include "output_path.hpp"
 
@@ -144,39 +141,16 @@ void run_console(const ConsoleArgs& a) {
     }
     return;
   }
-  // Interactive: a line from stdin at a time, each answered before the next is sent (the console's
-  // receive FIFO is 16 bytes: typing ahead of it would lose characters). A line typed while the
-  // console works waits its turn, and stops a `spin` (a single key goes to the console: see
-  // ConsoleClient::converse); it then runs, shown after the prompt. A mistyped grab or upload is
-  // reported and the session goes on.
-  std::deque<std::string> typed;
-  bool input_ended = false;
-  const auto line_typed = [&typed, &input_ended]() {
-    if (input_ended) return false;
-    if (std::cin.rdbuf()->in_avail() <= 0) {
-      pollfd input{STDIN_FILENO, POLLIN, 0};
-      if (poll(&input, 1, 0) <= 0) return false;
-    }
-    std::string l;
-    if (!std::getline(std::cin, l)) {
-      input_ended = true;  // the end of the input stops nothing: the command finishes, then htx ends
-      return false;
-    }
-    if (!l.empty()) typed.push_back(l);  // an empty line only stops
-    return true;
-  };
-  for (;;) {
-    std::string line;
-    if (!typed.empty()) {
-      line = typed.front();
-      typed.pop_front();
-      std::cout << console::kPrompt << line << "\n" << std::flush;
-    } else {
-      std::cout << console::kPrompt << std::flush;
-      if (input_ended || !std::getline(std::cin, line)) break;
-    }
+  // Interactive: a line from stdin at a time (LineInput: edited, with history, on a terminal),
+  // each answered before the next is sent (the console's receive FIFO is 16 bytes: typing ahead of
+  // it would lose characters). A line typed while the console works waits its turn, and stops a
+  // `spin` (a single key goes to the console: see ConsoleClient::converse); it then runs, shown
+  // after the prompt. A mistyped grab or upload is reported and the session goes on.
+  LineInput input;
+  std::string line;
+  while (input.read(console::kPrompt, &line)) {
     try {
-      if (!run_line(port, client, line, line_typed)) break;
+      if (!run_line(port, client, line, [&input] { return input.line_typed(); })) break;
     } catch (const std::invalid_argument& e) {
       std::cout << "error: " << e.what() << "\n";
     }

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "htx/fw/console_packet.h"
@@ -186,16 +187,12 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   EXPECT_NE(cmp.out.find("differing_pixels 0"), std::string::npos) << cmp.out;
 }
 
-// `baud N` switches the serial line after its `ok` (htx console switches the port with it, and the
-// harness's end of the line follows the UART's divisor, as a terminal set to match would): rates
-// the UART cannot make within 2 % at 12 MHz, and 3 Mbaud, faster than the console reads an upload,
-// are refused and leave the line as it was; after the switch to 1 Mbaud commands, a render and a
-// grab work at the new rate, and back to 115,200.
 // `htx console` typed at, as a person does: a spin's frames show as they are drawn, a line typed
 // while it runs stops it after its frame and then runs (shown after the prompt), and a line typed
-// while a render works waits for it. Fails when htx waits for a command's whole answer (nothing
-// shows before the spin's end, and a 3,600-frame spin of the floor takes minutes), or when it
-// sends the typed line while the console is busy (the line would run in the middle, or be lost).
+// while a render works waits for it, whole, though longer than the console's 16-byte receive
+// FIFO. Fails when htx waits for a command's whole answer (nothing shows before the spin's end,
+// and a 3,600-frame spin of the floor takes minutes), or when it sends the typed line while the
+// console is busy (the console would read it only after the render, its FIFO long full).
 TEST(SystemConsole, TypedLinesStopASpinAndRunAfterIt) {
   ConsoleSim cs;
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
@@ -214,16 +211,47 @@ TEST(SystemConsole, TypedLinesStopASpinAndRunAfterIt) {
   ASSERT_NE(frames, std::string::npos) << out;
   EXPECT_LT(std::stoul(out.substr(frames + 18)), 100u) << out;
   EXPECT_NE(out.find("htx> info\nhypertex console", stopped), std::string::npos) << out;
-  // A line typed while a render works runs after it, whole.
-  console.write_input("render cube\nstats\n");
-  ASSERT_TRUE(console.read_until("triangles 6 fragments 7082 pixels 7082", 60s)) << console.output();
-  EXPECT_NE(console.output().find("render cube method auto"), std::string::npos) << console.output();
+  // A line typed while a render works runs after it, whole (18 characters).
+  console.write_input("render floor\n");
+  std::this_thread::sleep_for(300ms);  // the floor's render takes seconds of the simulation
+  console.write_input("set tolerance 1/64\n");
+  ASSERT_TRUE(console.read_until("render floor method auto", 60s)) << console.output();
+  console.write_input("info\n");
+  ASSERT_TRUE(console.read_until("tolerance 1/64 texel", 60s)) << console.output();
+  const std::string after = console.output().substr(console.output().find("render floor method auto"));
+  EXPECT_NE(after.find("htx> set tolerance 1/64\nok\n"), std::string::npos) << after;
+  EXPECT_EQ(after.find("error"), std::string::npos) << after;
   console.write_input("quit\n");
   console.close_input();
   EXPECT_EQ(console.wait(60s), 0) << console.output();
   EXPECT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
 }
 
+// `htx console` at a terminal, as a person types: lines are edited with libedit, and the up arrow
+// brings back an earlier line (the session's history), here `info` after a `set method`. Fails
+// without line editing: the arrow's escape sequence goes to the console as text.
+TEST(SystemConsole, AtATerminalTheUpArrowRecallsAnEarlierLine) {
+  ConsoleSim cs;
+  ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
+  htx::test::TerminalChild console({HTX_BIN, "console", "--port", cs.pty, "--timeout", "60"}, {"TERM=xterm"});
+  ASSERT_TRUE(console.read_until("htx> ", 60s)) << console.output();
+  console.type("info\r");
+  ASSERT_TRUE(console.read_until("method auto; tolerance", 60s)) << console.output();
+  console.type("set method affine\r");
+  ASSERT_TRUE(console.read_until("ok", 60s)) << console.output();
+  console.type("\x1b[A\x1b[A\r");  // up, up: `info` again
+  ASSERT_TRUE(console.read_until("method affine; tolerance", 60s)) << console.output();
+  EXPECT_EQ(console.output().find("unknown command"), std::string::npos) << console.output();
+  console.type("quit\r");
+  EXPECT_EQ(console.wait(60s), 0) << console.output();
+  EXPECT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
+}
+
+// `baud N` switches the serial line after its `ok` (htx console switches the port with it, and the
+// harness's end of the line follows the UART's divisor, as a terminal set to match would): rates
+// the UART cannot make within 2 % at 12 MHz, and 3 Mbaud, faster than the console reads an upload,
+// are refused and leave the line as it was; after the switch to 1 Mbaud commands, a render and a
+// grab work at the new rate, and back to 115,200.
 TEST(SystemConsole, BaudSwitchesTheLineBothWays) {
   ConsoleSim cs;
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <pty.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <termios.h>
@@ -23,7 +24,9 @@ pid_t spawn(const std::vector<std::string>& argv, int out_fd, int err_fd, int in
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {
-    dup2(in_fd >= 0 ? in_fd : open("/dev/null", O_RDONLY), STDIN_FILENO);
+    const int in = in_fd >= 0 ? in_fd : open("/dev/null", O_RDONLY);
+    dup2(in, STDIN_FILENO);
+    if (in != STDIN_FILENO) close(in);
     if (out_fd >= 0) dup2(out_fd, STDOUT_FILENO);
     if (err_fd >= 0) dup2(err_fd, STDERR_FILENO);
     execv(args[0], args.data());
@@ -112,8 +115,15 @@ Child::Child(const std::vector<std::string>& argv, bool with_input) {
   int p[2];
   if (pipe(p) != 0) throw std::runtime_error("pipe failed");
   int in[2] = {-1, -1};
-  if (with_input && pipe(in) != 0) throw std::runtime_error("pipe failed");
-  if (with_input) fcntl(in[1], F_SETFD, FD_CLOEXEC);  // the child keeps only its end
+  if (with_input) {
+    if (pipe2(in, O_CLOEXEC) != 0) {  // the child keeps only its end, as its standard input
+      close(p[0]);
+      close(p[1]);
+      throw std::runtime_error("pipe failed");
+    }
+    // A write to a child that has ended fails with EPIPE (reported) instead of ending the test.
+    signal(SIGPIPE, SIG_IGN);
+  }
   pid_ = spawn(argv, p[1], -1, in[0]);
   close(p[1]);
   out_fd_ = p[0];
@@ -149,6 +159,44 @@ bool Child::read_until(const std::string& needle, std::chrono::milliseconds limi
 }
 
 int Child::wait(std::chrono::milliseconds limit) {
+  bool timed_out = false;
+  const int st = wait_with_limit(pid_, Clock::now() + limit, timed_out);
+  pid_ = -1;
+  return st;
+}
+
+TerminalChild::TerminalChild(const std::vector<std::string>& argv, const std::vector<std::string>& env) {
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_ = forkpty(&master_, nullptr, nullptr, nullptr);
+  if (pid_ < 0) throw std::runtime_error("forkpty failed");
+  if (pid_ == 0) {
+    for (const std::string& e : env) putenv(const_cast<char*>(e.c_str()));
+    execv(args[0], args.data());
+    _exit(127);
+  }
+}
+
+TerminalChild::~TerminalChild() {
+  if (pid_ > 0) {
+    kill(pid_, SIGKILL);
+    int st;
+    waitpid(pid_, &st, 0);
+  }
+  if (master_ >= 0) close(master_);
+}
+
+void TerminalChild::type(const std::string& keys) {
+  if (write(master_, keys.data(), keys.size()) != static_cast<ssize_t>(keys.size()))
+    throw std::runtime_error("TerminalChild: typing failed");
+}
+
+bool TerminalChild::read_until(const std::string& needle, std::chrono::milliseconds limit) {
+  return read_fd_until(master_, out_, needle, limit);
+}
+
+int TerminalChild::wait(std::chrono::milliseconds limit) {
   bool timed_out = false;
   const int st = wait_with_limit(pid_, Clock::now() + limit, timed_out);
   pid_ = -1;

@@ -43,6 +43,27 @@ class Child {
   std::string out_;
 };
 
+// A child on a pseudo-terminal of its own (standard input, output and error), as a person's
+// terminal runs it: `type` sends keys, `read_until` reads what it shows. `env`: NAME=VALUE entries
+// set in the child (TERM for a program that edits lines).
+class TerminalChild {
+ public:
+  TerminalChild(const std::vector<std::string>& argv, const std::vector<std::string>& env);
+  ~TerminalChild();  // kills the child if it is still running
+  TerminalChild(const TerminalChild&) = delete;
+  TerminalChild& operator=(const TerminalChild&) = delete;
+
+  void type(const std::string& keys);
+  bool read_until(const std::string& needle, std::chrono::milliseconds limit);
+  const std::string& output() const { return out_; }
+  int wait(std::chrono::milliseconds limit);
+
+ private:
+  pid_t pid_ = -1;
+  int master_ = -1;
+  std::string out_;
+};
+
 // Reads from `fd` (non-blocking or not) until `needle` appears in `acc`, or the limit passes.
 bool read_fd_until(int fd, std::string& acc, const std::string& needle, std::chrono::milliseconds limit);
 
