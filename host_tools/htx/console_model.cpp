@@ -70,7 +70,8 @@ Texture boot_checkerboard() {
 
 }  // namespace
 
-ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built, uint32_t filters_built) {
+ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built, uint32_t filters_built,
+                                 bool slot0_uploaded) {
   render_app::DrawSettings settings = console_settings(draw);
   RecordScene records;
   records.width = render_app::kWidth;
@@ -79,6 +80,7 @@ ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built
   records.clear_depth = render_app::kClearDepth;
   const std::vector<std::vector<uint8_t>>& sent = draw.payload.textures;
   std::vector<Texture> slots(render_app::kDrawTextureSlots);
+  const bool slot0_unknown = slot0_uploaded && (sent.empty() || sent[0].empty());
   for (size_t slot = 0; slot < slots.size(); ++slot) {
     if (slot >= sent.size() || sent[slot].empty()) {
       // Slot 0 keeps the boot texture; the plan sends a mesh whose slot holds none to slot 0.
@@ -102,6 +104,7 @@ ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built
   std::vector<uint8_t> codes(render_app::kMaxMeshVertices);
   std::vector<host::CapturedTriangle> tris;
   std::vector<int> tri_mesh;  // the Scene mesh of each triangle in tris
+  render::DrawStats stats;    // over the parts
   uint32_t packed = 0;        // the payload's meshes before this part's
   for (const std::vector<uint8_t>& part : draw.payload.parts) {
     render::UnpackedScene up;
@@ -113,7 +116,6 @@ ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built
     if (const char* why = render_app::plan_draw(sc, settings, methods_built, filters_built, planned.data(), &frame))
       throw std::runtime_error(why);
     render::VertexCache cache{clip.data(), screen.data(), codes.data(), render_app::kMaxMeshVertices};
-    render::DrawStats stats;
     for (uint32_t m = 0; m < sc.mesh_count; ++m, ++packed) {
       if (render::draw_mesh(frame, sc.view_proj, planned[m], &cache, host::capture_sink(&tris), &stats) !=
           render::kDrawOk)
@@ -122,15 +124,19 @@ ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built
       tri_mesh.resize(tris.size(), static_cast<int>(source));
     }
   }
-  for (size_t i = 0; i < tris.size(); ++i)
-    records.tris.push_back({tris[i].record, host::from_state_word(tris[i].state_word), tri_mesh[i]});
+  for (size_t i = 0; i < tris.size(); ++i) {
+    const TriState st = host::from_state_word(tris[i].state_word);
+    if (slot0_unknown && st.textured && st.texture == 0)
+      throw std::runtime_error("texture slot 0 holds a texture uploaded before this draw, which htx has not got");
+    records.tris.push_back({tris[i].record, st, tri_mesh[i]});
+  }
 
   // The raster unit's configuration (Gouraud colour linear in screen space, as the RTL builds it).
   ModelConfig config = model_config("icebreaker");
   config.perspective_color = false;
   config.methods = methods_built;
   config.filters = filters_built;
-  return {render_model_records(records, config), std::move(slots)};
+  return {render_model_records(records, config), std::move(slots), stats.triangles, stats.sent};
 }
 
 }  // namespace htx

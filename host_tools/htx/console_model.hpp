@@ -17,12 +17,16 @@ struct ConsoleModel {
   Frame frame;                  // the model's, with its probe
   std::vector<Texture> slots;   // the texture each slot of the console draws with (a slot the
                                 // payload leaves empty: slot 0's, as the console's plan falls back)
+  uint64_t triangles = 0, sent = 0;  // the pipeline's counts over the parts (the console prints them)
 };
 
 // `draw`'s payload in its parts, with its method, tolerance and filter as the console takes them,
 // for a GPU that builds `methods_built` and `filters_built` (its CAPS, as the console's `info`
-// lists them). Slot 0 holds the console's boot checkerboard unless the payload sends one. Throws
-// std::runtime_error when the console would refuse the draw or the model cannot draw it.
-ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built, uint32_t filters_built);
+// lists them). Slot 0 holds the console's boot checkerboard unless the payload sends one or
+// `slot0_uploaded` says an earlier upload is there, whose texels htx has not got. Throws
+// std::runtime_error when the console would refuse the draw or the model cannot draw it (a
+// triangle that samples such a slot 0 among them).
+ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built, uint32_t filters_built,
+                                 bool slot0_uploaded);
 
 }  // namespace htx

@@ -56,6 +56,9 @@ void parse_built(const std::string& info, ConsoleDrawn* d) {
   };
   d->methods_built = bits(info.substr(m + 9, f - m - 9), kMethods, std::size(kMethods));
   d->filters_built = bits(info.substr(f + 9, info.find('\n', f) - f - 9), kFilters, std::size(kFilters));
+  const size_t t0 = info.find("texture 0: ");
+  d->slot0_uploaded = t0 != std::string::npos && info.substr(t0, info.find('\n', t0) - t0).find("(uploaded)") !=
+                                                     std::string::npos;
 }
 
 }  // namespace

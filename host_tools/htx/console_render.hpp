@@ -34,6 +34,9 @@ struct ConsoleDrawn {
   // (affine, subdiv, recip_lut, recip_nr, divfree), of filters filter i (nearest, bilinear,
   // trilinear).
   uint32_t methods_built = 0, filters_built = 0;
+  // Slot 0 holds an uploaded texture (`info`'s `texture 0: ... (uploaded)`, after the payload's
+  // own went): the payload's, or, when it sent none for slot 0, one from an earlier session.
+  bool slot0_uploaded = false;
 };
 
 // Uploads, sets, renders and grabs on a console at its prompt (ConsoleClient::sync done). Throws

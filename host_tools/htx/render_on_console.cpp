@@ -203,10 +203,18 @@ void render_on_console(const RenderArgs& a) {
       std::cerr << a.engine << ": metrics: no texel errors: " << why << std::endl;
     };
     try {
-      const ConsoleModel model = console_model_frame(draw, drawn.methods_built, drawn.filters_built);
+      const ConsoleModel model =
+          console_model_frame(draw, drawn.methods_built, drawn.filters_built, drawn.slot0_uploaded);
       size_t differ = 0;
       for (size_t i = 0; i < g.pixels.size(); ++i) differ += model.frame.color.at(i) != g.pixels[i];
-      if (differ == 0) {
+      // (The counts too: the same pixels from other triangles would be a coincidence to catch.)
+      const std::string counts = std::to_string(model.triangles) + " triangles, " + std::to_string(model.sent) +
+                                 " sent";
+      const std::string console_counts = drawn.figures.at("triangles") + " triangles, " + drawn.figures.at("sent") +
+                                         " sent";
+      if (counts != console_counts) {
+        no_probe("the host's pipeline made " + counts + ", the console's " + console_counts);
+      } else if (differ == 0) {
         // Texel errors are in texels of the texture sampled, and the console's are the scene's
         // brought to its size limit, so they are taken against ref drawing with those.
         // (The texture's size scales the texel coordinates as the screen scene is prepared.)

@@ -26,6 +26,7 @@ TEST_P(AccuracyRecipNr, FullConfigWithinOne256thTexel) {
     EXPECT_LE(m.max_texel_error, 1.0 / 256) << "p99.9 " << m.p999_texel_error << ", rms " << m.rms_texel_error
                                             << " (filter " << static_cast<int>(filter) << ")";
     EXPECT_EQ(m.coverage_diff_pixels, 0u);
+    EXPECT_EQ(m.surface_diff_pixels, 0u);  // every pixel shows ref's mesh (24-bit depth)
   }
 }
 

@@ -71,6 +71,7 @@ TEST(Study, MeasuredErrorsStayWithinThePredictedBounds) {
       const Result r = htx::study::run_point(p, options);
       EXPECT_TRUE(r.finite) << p.scene << " " << p.method;
       EXPECT_EQ(r.coverage_diff_pixels, 0u) << p.scene << " " << p.method;
+      EXPECT_EQ(r.surface_diff_pixels, 0u) << p.scene << " " << p.method;
       EXPECT_GT(r.clocks, 0u) << p.scene << " " << p.method;
       if (r.bound < 0) continue;
       ++bounded;

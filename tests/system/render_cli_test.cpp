@@ -67,7 +67,8 @@ TEST(SystemRenderCli, RtlEngineTakesTheModelsProbeWhereItsFrameIsTheModels) {
   EXPECT_GT(rtl.at("compared_pixels").get<uint64_t>(), 1000u);
   EXPECT_GT(rtl.at("max_texel_error").get<double>(), 0.0);  // RECIP_LUT's table error, not a perfect probe
   for (const char* key :
-       {"max_texel_error", "rms_texel_error", "p999_texel_error", "compared_pixels", "coverage_diff_pixels"})
+       {"max_texel_error", "rms_texel_error", "p999_texel_error", "compared_pixels", "coverage_diff_pixels",
+        "surface_diff_pixels"})
     EXPECT_EQ(rtl.at(key), model.at(key)) << key;
 }
 

@@ -72,14 +72,14 @@ std::vector<Breakdown> find_breakdowns(const std::vector<Result>& results, doubl
 
 void write_csv(std::ostream& out, const std::vector<Result>& results) {
   out << "sweep,scene,param,value,method,tolerance,max_error,p999_error,rms_error,compared_pixels,"
-         "coverage_diff_pixels,bound,clocks,fragments,clocks_per_pixel,mismatch,divfree_cap_hits,methods_used,"
+         "coverage_diff_pixels,surface_diff_pixels,bound,clocks,fragments,clocks_per_pixel,mismatch,divfree_cap_hits,methods_used,"
          "finite\n";
   for (const Result& r : results) {
     const Point& p = r.point;
     out << p.sweep << ',' << csv_field(p.scene) << ',' << p.param << ',' << num(p.value, "%g") << ',' << p.method
         << ',' << num(p.tolerance, "%g") << ',' << num(r.max_error, "%.6g") << ',' << num(r.p999_error, "%.6g")
         << ',' << num(r.rms_error, "%.6g") << ',' << r.compared_pixels << ',' << r.coverage_diff_pixels << ','
-        << num(r.bound, "%.6g") << ',' << r.clocks << ',' << r.fragments << ',' << num(r.clocks_per_pixel, "%.6g")
+        << r.surface_diff_pixels << ',' << num(r.bound, "%.6g") << ',' << r.clocks << ',' << r.fragments << ',' << num(r.clocks_per_pixel, "%.6g")
         << ',' << r.mismatch << ',' << r.divfree_cap_hits << ',' << csv_field(r.methods_used) << ','
         << (r.finite ? 1 : 0) << '\n';
   }

@@ -70,6 +70,7 @@ Result run_point(const Point& point, const Options& options) {
   r.rms_error = m.rms_texel_error;
   r.compared_pixels = m.compared_pixels;
   r.coverage_diff_pixels = m.coverage_diff_pixels;
+  r.surface_diff_pixels = m.surface_diff_pixels;
   r.divfree_cap_hits = m.divfree_cap_hits;
 
   if (options.timer) {

@@ -114,6 +114,7 @@ TEST(GpuEngine, AutoTakesFewerClocksThanRecipNrOnIcebreaker) {
     ro.depth_bits = cfg.z_bits;
     const Metrics m = compute_metrics(render_model(au, cfg), render_ref(au, ro), {"model", spec, "auto", "scene", "icebreaker"});
     EXPECT_GT(m.compared_pixels, 2000u) << spec;
+    EXPECT_EQ(m.surface_diff_pixels, 0u) << spec;
     EXPECT_LE(m.max_texel_error, kTolerance) << spec;
     std::printf("AUTO %s icebreaker 160x120 tol 1/16: RTL clocks %llu vs RECIP_NR %llu (%.1f %%), max texel error %.4f\n",
                 spec, static_cast<unsigned long long>(st_au.cycles), static_cast<unsigned long long>(st_nr.cycles),

@@ -55,6 +55,7 @@ struct Result {
   double max_error = 0, p999_error = 0, rms_error = 0;
   uint64_t compared_pixels = 0;
   uint64_t coverage_diff_pixels = 0;
+  uint64_t surface_diff_pixels = 0;  // textured in both by different meshes (not in the errors)
   // The largest predicted bound (AUTO's, docs/auto.md) of the methods the textured triangles were
   // drawn with; negative when a method has no bound (QUADRATIC) or nothing was textured.
   double bound = -1;
