@@ -233,16 +233,17 @@ TEST(SystemConsole, TypedLinesStopASpinAndRunAfterIt) {
 TEST(SystemConsole, AtATerminalTheUpArrowRecallsAnEarlierLine) {
   ConsoleSim cs;
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
-  htx::test::TerminalChild console({HTX_BIN, "console", "--port", cs.pty, "--timeout", "60"}, {"TERM=xterm"});
+  htx::test::Child console({HTX_BIN, "console", "--port", cs.pty, "--timeout", "60"},
+                          htx::test::Child::Terminal{{"TERM=xterm"}});
   ASSERT_TRUE(console.read_until("htx> ", 60s)) << console.output();
-  console.type("info\r");
+  console.write_input("info\r");
   ASSERT_TRUE(console.read_until("method auto; tolerance", 60s)) << console.output();
-  console.type("set method affine\r");
+  console.write_input("set method affine\r");
   ASSERT_TRUE(console.read_until("ok", 60s)) << console.output();
-  console.type("\x1b[A\x1b[A\r");  // up, up: `info` again
+  console.write_input("\x1b[A\x1b[A\r");  // up, up: `info` again
   ASSERT_TRUE(console.read_until("method affine; tolerance", 60s)) << console.output();
   EXPECT_EQ(console.output().find("unknown command"), std::string::npos) << console.output();
-  console.type("quit\r");
+  console.write_input("quit\r");
   EXPECT_EQ(console.wait(60s), 0) << console.output();
   EXPECT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
 }

@@ -165,42 +165,20 @@ int Child::wait(std::chrono::milliseconds limit) {
   return st;
 }
 
-TerminalChild::TerminalChild(const std::vector<std::string>& argv, const std::vector<std::string>& env) {
+Child::Child(const std::vector<std::string>& argv, const Terminal& terminal) {
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
-  pid_ = forkpty(&master_, nullptr, nullptr, nullptr);
+  int master = -1;
+  pid_ = forkpty(&master, nullptr, nullptr, nullptr);
   if (pid_ < 0) throw std::runtime_error("forkpty failed");
   if (pid_ == 0) {
-    for (const std::string& e : env) putenv(const_cast<char*>(e.c_str()));
+    for (const std::string& e : terminal.env) putenv(const_cast<char*>(e.c_str()));
     execv(args[0], args.data());
     _exit(127);
   }
-}
-
-TerminalChild::~TerminalChild() {
-  if (pid_ > 0) {
-    kill(pid_, SIGKILL);
-    int st;
-    waitpid(pid_, &st, 0);
-  }
-  if (master_ >= 0) close(master_);
-}
-
-void TerminalChild::type(const std::string& keys) {
-  if (write(master_, keys.data(), keys.size()) != static_cast<ssize_t>(keys.size()))
-    throw std::runtime_error("TerminalChild: typing failed");
-}
-
-bool TerminalChild::read_until(const std::string& needle, std::chrono::milliseconds limit) {
-  return read_fd_until(master_, out_, needle, limit);
-}
-
-int TerminalChild::wait(std::chrono::milliseconds limit) {
-  bool timed_out = false;
-  const int st = wait_with_limit(pid_, Clock::now() + limit, timed_out);
-  pid_ = -1;
-  return st;
+  out_fd_ = master;
+  in_fd_ = dup(master);  // (each closed once)
 }
 
 int open_raw_terminal(const std::string& path) {

@@ -24,6 +24,13 @@ class Child {
  public:
   // with_input: its standard input is a pipe written by write_input (otherwise /dev/null).
   explicit Child(const std::vector<std::string>& argv, bool with_input = false);
+  // On a pseudo-terminal of its own (standard input, output and error), as a person's terminal
+  // runs it: write_input types keys, read_until reads what it shows. `env`: NAME=VALUE entries set
+  // in the child (TERM for a program that edits lines).
+  struct Terminal {
+    std::vector<std::string> env;
+  };
+  Child(const std::vector<std::string>& argv, const Terminal& terminal);
   ~Child();  // kills the child if it is still running
   Child(const Child&) = delete;
   Child& operator=(const Child&) = delete;
@@ -40,27 +47,6 @@ class Child {
   pid_t pid_ = -1;
   int out_fd_ = -1;
   int in_fd_ = -1;
-  std::string out_;
-};
-
-// A child on a pseudo-terminal of its own (standard input, output and error), as a person's
-// terminal runs it: `type` sends keys, `read_until` reads what it shows. `env`: NAME=VALUE entries
-// set in the child (TERM for a program that edits lines).
-class TerminalChild {
- public:
-  TerminalChild(const std::vector<std::string>& argv, const std::vector<std::string>& env);
-  ~TerminalChild();  // kills the child if it is still running
-  TerminalChild(const TerminalChild&) = delete;
-  TerminalChild& operator=(const TerminalChild&) = delete;
-
-  void type(const std::string& keys);
-  bool read_until(const std::string& needle, std::chrono::milliseconds limit);
-  const std::string& output() const { return out_; }
-  int wait(std::chrono::milliseconds limit);
-
- private:
-  pid_t pid_ = -1;
-  int master_ = -1;
   std::string out_;
 };
 
