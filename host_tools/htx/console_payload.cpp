@@ -130,6 +130,10 @@ ScenePayload scene_payload(const Scene& scene, const std::string& spec, const st
   parse_size(size, width, height);
   // The firmware's form of the scene (as the render firmware's compiled-in scenes are made), packed.
   host::RenderScene rs = host::to_render_scene(scene, width, height);
+  // A mesh without triangles draws nothing, and the console refuses one (an empty mesh is what a
+  // damaged upload looks like), so it is not sent; a scene with none at all cannot be.
+  std::erase_if(rs.meshes, [](const host::RenderScene::MeshData& d) { return d.indices.empty(); });
+  if (rs.meshes.empty()) throw std::invalid_argument("'" + spec + "' has no triangles to send to the console");
   const size_t whole_meshes = rs.meshes.size();
   host::split_meshes(&rs, mesh_vertices);
   ScenePayload p;

@@ -716,6 +716,34 @@ TEST(SystemRender, SocEngineDrawsASceneLargerThanTheStoreInParts) {
   std::filesystem::remove_all(dir);
 }
 
+// A mesh without triangles (slivers without its needles) is not sent: the console refuses an
+// empty mesh, and `htx render slivers:needles=0 --engine soc` failed with `not a valid scene
+// (empty mesh)` until 2026-12-06. Every packed mesh has triangles and comes from a scene mesh that
+// has them; a scene with no triangles at all is refused before anything is sent.
+TEST(SystemRender, UploadPayloadLeavesOutMeshesWithoutTriangles) {
+  const htx::Scene scene = htx::make_builtin_scene("slivers:needles=0");
+  ASSERT_TRUE(std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const htx::Mesh& m) { return m.triangles.empty(); }));
+  const htx::ScenePayload payload = htx::scene_payload(scene, "slivers:needles=0", "160x120", true);
+  ASSERT_FALSE(payload.source_mesh.empty());
+  for (uint32_t source : payload.source_mesh) EXPECT_FALSE(scene.meshes.at(source).triangles.empty()) << source;
+  std::vector<htx::render::Mesh> meshes(render_app::kMaxSceneMeshes);
+  for (const std::vector<uint8_t>& part : payload.parts) {
+    htx::render::UnpackedScene up;
+    EXPECT_EQ(htx::render::unpack_scene(part.data(), part.size(), meshes.data(), render_app::kMaxSceneMeshes,
+                                        render_app::kMaxMeshVertices, &up),
+              nullptr);
+  }
+  htx::Scene empty = scene;
+  for (htx::Mesh& m : empty.meshes) m.triangles.clear();
+  try {
+    htx::scene_payload(empty, "nothing", "160x120", true);
+    ADD_FAILURE() << "a scene without triangles was packed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'nothing' has no triangles to send to the console"), std::string::npos)
+        << e.what();
+  }
+}
+
 // A scene with more textures than the console's four slots: the first four (in the order the
 // meshes first use them) go into slots 0..3 and each mesh names its own; the fifth is not sent,
 // its meshes name slot 0, and the note says so. An untextured upload sends none.
