@@ -129,7 +129,12 @@ ScenePayload scene_payload(const Scene& scene, const std::string& spec, const st
   int width = 0, height = 0;
   parse_size(size, width, height);
   // The firmware's form of the scene (as the render firmware's compiled-in scenes are made), packed.
-  host::RenderScene rs = host::to_render_scene(scene, width, height);
+  host::RenderScene rs;
+  try {
+    rs = host::to_render_scene(scene, width, height);
+  } catch (const std::out_of_range& e) {
+    throw std::invalid_argument("'" + spec + "' cannot go to the console: " + e.what());
+  }
   // A mesh without triangles draws nothing, and the console refuses one (an empty mesh is what a
   // damaged upload looks like), so it is not sent; a scene with none at all cannot be.
   std::erase_if(rs.meshes, [](const host::RenderScene::MeshData& d) { return d.indices.empty(); });

@@ -744,6 +744,20 @@ TEST(SystemRender, UploadPayloadLeavesOutMeshesWithoutTriangles) {
   }
 }
 
+// A scene whose coordinates the firmware's Q16.16 cannot hold (bigtri 100 times its default size)
+// is refused before anything is sent, naming the scene and the limit.
+TEST(SystemRender, UploadPayloadRefusesCoordinatesBeyondTheFirmwaresNumbers) {
+  try {
+    htx::scene_payload("bigtri:size=100000", "160x120", true);
+    ADD_FAILURE() << "packed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'bigtri:size=100000' cannot go to the console: value -100000.000000 does "
+                                         "not fit Q16.16 (the firmware's numbers: -32768 to 32767)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // A scene with more textures than the console's four slots: the first four (in the order the
 // meshes first use them) go into slots 0..3 and each mesh names its own; the fifth is not sent,
 // its meshes name slot 0, and the note says so. An untextured upload sends none.

@@ -10,7 +10,8 @@ namespace htx::host {
 int32_t to_q16(double x) {
   const double r = std::floor(x * 65536.0 + 0.5);
   if (!(r >= -2147483648.0 && r <= 2147483647.0))
-    throw std::out_of_range("value " + std::to_string(x) + " does not fit Q16.16");
+    throw std::out_of_range("value " + std::to_string(x) +
+                            " does not fit Q16.16 (the firmware's numbers: -32768 to 32767)");
   return static_cast<int32_t>(r);
 }
 
