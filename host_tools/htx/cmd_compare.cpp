@@ -16,8 +16,8 @@ void register_compare(CLI::App& app) {
   };
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("compare", "Compare two images: PSNR, max channel difference, differing pixels");
-  cmd->add_option("a", args->a, "first image (PNG)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("b", args->b, "second image (PNG)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("first", args->a, "first image (PNG)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("second", args->b, "second image (PNG)")->required()->check(CLI::ExistingFile);
   cmd->callback([args] {
     const ImageDiff d = compare_images(load_image(args->a), load_image(args->b));
     std::cout << "psnr_db " << (std::isfinite(d.psnr_db) ? std::to_string(d.psnr_db) : std::string("inf"))
