@@ -80,6 +80,50 @@ std::string console_firmware(const RenderArgs& a) {
   return elf;
 }
 
+// The texel errors of the frame a console sent (docs/engines.md, "`soc` and `board`"): the console
+// has no per-pixel probe; the model drawing the console's own triangles has one, and where its
+// frame is the one the console sent, pixel for pixel, with the same counts, it is that frame's.
+// Otherwise the probe's figures are null and stderr says why.
+template <class ScreenOf>
+void console_probe_figures(const Scene& scene, const ConsoleDraw& draw, const ConsoleDrawn& drawn,
+                           const ScreenOf& screen_of, const RefOptions& ref_options, const MetricsLabels& labels,
+                           const std::string& engine, nlohmann::json* j) {
+  const auto no_probe = [j, &engine](const std::string& why) {
+    null_probe_figures(j);
+    (*j)["probe"] = nullptr;
+    std::cerr << engine << ": metrics: no texel errors: " << why << std::endl;
+  };
+  const std::vector<uint16_t>& sent_pixels = drawn.frame.pixels;
+  try {
+    const ConsoleModel model =
+        console_model_frame(draw, drawn.methods_built, drawn.filters_built, drawn.slot0_uploaded);
+    size_t differ = 0;
+    for (size_t i = 0; i < sent_pixels.size(); ++i) differ += model.frame.color.at(i) != sent_pixels[i];
+    // (The counts too: the same pixels from other triangles would be a coincidence to catch.)
+    const std::string counts = std::to_string(model.triangles) + " triangles, " + std::to_string(model.sent) + " sent";
+    const std::string console_counts =
+        drawn.figures.at("triangles") + " triangles, " + drawn.figures.at("sent") + " sent";
+    if (counts != console_counts)
+      return no_probe("the host's pipeline made " + counts + ", the console's " + console_counts);
+    if (differ != 0)
+      return no_probe("the model's frame of the console's triangles differs from the console's at " +
+                      std::to_string(differ) + " pixels");
+    // Texel errors are in texels of the texture sampled, and the console's are the scene's brought
+    // to its size limit, so they are taken against ref drawing with those (the texture's size
+    // scales the texel coordinates as the screen scene is prepared).
+    Scene same_textures = scene;
+    for (size_t i = 0; i < same_textures.textures.size(); ++i) {
+      const size_t slot = i < draw.payload.slot_of_texture.size() ? draw.payload.slot_of_texture[i] : 0;
+      same_textures.textures[i] = model.slots.at(slot);
+    }
+    const Frame ref_same = render_ref(screen_of(same_textures), ref_options);
+    take_probe_figures(metrics_to_json(compute_metrics(model.frame, ref_same, labels)), j);
+    (*j)["probe"] = "model";
+  } catch (const std::exception& e) {
+    no_probe(std::string("the model cannot draw the console's triangles: ") + e.what());
+  }
+}
+
 }  // namespace
 
 void render_on_console(const RenderArgs& a) {
@@ -195,44 +239,7 @@ void render_on_console(const RenderArgs& a) {
     j["triangles"] = number_or_null(drawn.figures.at("triangles"));
     j["sent"] = number_or_null(drawn.figures.at("sent"));
     j["crc32"] = drawn.figures.at("crc32");
-    // The console has no per-pixel probe; the model drawing the console's own triangles has one,
-    // and where its frame is the one the console sent, pixel for pixel, it is that frame's.
-    const auto no_probe = [&j, &a](const std::string& why) {
-      null_probe_figures(&j);
-      j["probe"] = nullptr;
-      std::cerr << a.engine << ": metrics: no texel errors: " << why << std::endl;
-    };
-    try {
-      const ConsoleModel model =
-          console_model_frame(draw, drawn.methods_built, drawn.filters_built, drawn.slot0_uploaded);
-      size_t differ = 0;
-      for (size_t i = 0; i < g.pixels.size(); ++i) differ += model.frame.color.at(i) != g.pixels[i];
-      // (The counts too: the same pixels from other triangles would be a coincidence to catch.)
-      const std::string counts = std::to_string(model.triangles) + " triangles, " + std::to_string(model.sent) +
-                                 " sent";
-      const std::string console_counts = drawn.figures.at("triangles") + " triangles, " + drawn.figures.at("sent") +
-                                         " sent";
-      if (counts != console_counts) {
-        no_probe("the host's pipeline made " + counts + ", the console's " + console_counts);
-      } else if (differ == 0) {
-        // Texel errors are in texels of the texture sampled, and the console's are the scene's
-        // brought to its size limit, so they are taken against ref drawing with those.
-        // (The texture's size scales the texel coordinates as the screen scene is prepared.)
-        Scene same_textures = scene;
-        for (size_t i = 0; i < same_textures.textures.size(); ++i) {
-          const size_t slot = i < draw.payload.slot_of_texture.size() ? draw.payload.slot_of_texture[i] : 0;
-          same_textures.textures[i] = model.slots.at(slot);
-        }
-        const Frame ref_same = render_ref(screen_of(same_textures), ref_options);
-        take_probe_figures(metrics_to_json(compute_metrics(model.frame, ref_same, labels)), &j);
-        j["probe"] = "model";
-      } else {
-        no_probe("the model's frame of the console's triangles differs from the console's at " +
-                 std::to_string(differ) + " pixels");
-      }
-    } catch (const std::exception& e) {
-      no_probe(std::string("the model cannot draw the console's triangles: ") + e.what());
-    }
+    console_probe_figures(scene, draw, drawn, screen_of, ref_options, labels, a.engine, &j);
     write_metrics(a.metrics, j);
   }
 }
