@@ -80,6 +80,7 @@ class FakeConsole {
     if (line.empty()) return put("\r\nhtx> ");
     put(line + "\r\n");
     if (line == "info") return put("line one\r\nline two\r\nhtx> ");
+    if (line == "spin") return spin();
     if (line == "baud 1000000") return put("ok 1000000 baud\r\nhtx> ");
     if (line.rfind("baud ", 0) == 0) return put("error: " + line.substr(5) + " baud is not one this UART makes\r\nhtx> ");
     if (line != "grab") return put("error: unknown command (type help): " + line + "\r\nhtx> ");
@@ -87,6 +88,18 @@ class FakeConsole {
     if (mode_ == GrabMode::kNoFrame) return put("error: no framebuffer\r\nhtx> ");
     send_frame();
     put("htx> ");
+  }
+  // As the console's spin: a line a frame (20 ms apart), 20 frames, or fewer when a key comes; the
+  // key is left for the line reader, which then reads it as the start of the next line.
+  void spin() {
+    int frames = 0;
+    bool stopped = false;
+    while (frames < 20 && !stopped) {
+      put("frame " + std::to_string(++frames) + "\r\n");
+      pollfd p{master_, POLLIN, 0};
+      stopped = ::poll(&p, 1, 20) > 0;
+    }
+    put("spin frames " + std::to_string(frames) + (stopped ? " (stopped)" : "") + "\r\nhtx> ");
   }
   void reply(uint8_t type, uint8_t seq) { packet(type, 0, {seq}); }
   // A packet of an upload arrived: acknowledge it (or not, as the mode says).
@@ -159,6 +172,32 @@ class FakeConsole {
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };
+
+// converse: each line of the answer reaches the caller as it arrives, without the echo and the
+// prompt; a stop sends one key, which ends a spin after its frame and whose empty line's prompt is
+// taken, so the next command gets its own answer; without a stop the spin runs to its end.
+TEST(ConsoleClient, ConverseShowsEachLineAsItComesAndStopsWithOneKey) {
+  FakeConsole fake(GrabMode::kGood);
+  SerialPort port(fake.path(), 115200);
+  ConsoleClient client(port, 1500ms);
+  client.sync();
+  std::vector<std::string> shown;
+  int asked = 0;
+  client.converse("spin", [&shown](const std::string& text) { shown.push_back(text); },
+                  [&asked] { return ++asked == 3; });
+  ASSERT_GE(shown.size(), 3u);
+  EXPECT_EQ(shown.front(), "frame 1\n");
+  EXPECT_NE(shown.back().find("(stopped)"), std::string::npos) << shown.back();
+  EXPECT_LT(shown.size(), 21u) << "the spin ran to its end";
+  EXPECT_EQ(client.command("info"), "line one\nline two\n");
+
+  shown.clear();
+  client.converse("spin", [&shown](const std::string& text) { shown.push_back(text); });
+  ASSERT_EQ(shown.size(), 21u);
+  EXPECT_EQ(shown.back(), "spin frames 20\n");
+  EXPECT_EQ(client.command("info"), "line one\nline two\n");
+  EXPECT_THROW(client.converse("two\nlines", [](const std::string&) {}), std::invalid_argument);
+}
 
 std::string grab_error(GrabMode mode) {
   FakeConsole fake(mode);
