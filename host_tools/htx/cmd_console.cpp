@@ -127,6 +127,14 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
     return true;
   }
   client.converse(line, [](const std::string& text) { std::cout << text << std::flush; }, stop);
+  if (verb == "help" && arg.empty())  // what htx itself does with a line (the console's `upload` is its protocol)
+    std::cout << "htx console also takes:\n"
+                 "  upload SCENE          send a built-in scene or FILE.obj with its textures (then `render upload`)\n"
+                 "  texture IMAGE [rgb565|rgba4444 [SLOT]]  send an image as a texture into a slot\n"
+                 "  grab FILE.png         download the frame drawn last\n"
+                 "  baud N                switch the console and this port together\n"
+                 "  (a line typed while the console works stops a spin and runs after it)\n"
+              << std::flush;
   return true;
 }
 

@@ -83,10 +83,13 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   const std::string& pty = cs.pty;
   ASSERT_FALSE(pty.empty()) << sim.output();
 
-  const auto r = cs.console({"info", "set method bogus", "set tolerance 1/0", "frobnicate", std::string(120, 'x'),
+  const auto r = cs.console({"help", "info", "set method bogus", "set tolerance 1/0", "frobnicate", std::string(120, 'x'),
                           "render nosuch", "stats", "render cube", "stats"});
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.status, 0) << r.err;
+  // `help`: the console's commands, then what htx itself does with a line.
+  EXPECT_NE(r.out.find("commands:\n  help"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("htx console also takes:\n  upload SCENE"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("screen 160x120 rgb565"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("method auto; tolerance 1/16 texel"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error: unknown method bogus"), std::string::npos) << r.out;
