@@ -124,13 +124,10 @@ void run_render(const RenderArgs& given) {
       // The Verilated GPU has no per-pixel probe (docs/metrics.md). Where its frame is the model's
       // on the same records, colour and depth at every pixel, the model's probe is the frame's (the
       // coordinates themselves are checked bit for bit by the rtl tests); otherwise none is given.
-      if (mismatch == 0) {
+      if (mismatch == 0)
         take_probe_figures(metrics_to_json(compute_metrics(model, ref, labels)), &j);
-        j["probe"] = "model";
-      } else {
+      else
         null_probe_figures(&j);
-        j["probe"] = nullptr;
-      }
     }
 #endif
     write_metrics(a.metrics, j);

@@ -1,5 +1,6 @@
 #include "console_model.hpp"
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -12,6 +13,7 @@
 #include "htx/model/texture.hpp"
 #include "htx/render/scene_pack.h"
 #include "htx/render/texture_pack.h"
+#include "htx/render/tri_state.h"
 #include "scene_render.hpp"
 #include "soc_config.hpp"
 
@@ -33,10 +35,7 @@ render_app::DrawSettings console_settings(const ConsoleDraw& draw) {
     s.method = static_cast<uint8_t>(m.method);  // Affine .. DivFree: the STATE word's numbers
     s.subdiv_n = static_cast<uint8_t>(m.subdiv_n);
   }
-  if (draw.tolerance.rfind("1/", 0) != 0) throw std::runtime_error("tolerance " + draw.tolerance + " is not 1/N");
-  const long n = std::stol(draw.tolerance.substr(2));
-  if (n < 1 || n > 65536) throw std::runtime_error("tolerance " + draw.tolerance + " is out of range");
-  s.auto_tolerance = render::kOne / n;
+  s.auto_tolerance = render::kOne / draw.tolerance_denominator;  // as `set tolerance 1/N` does
   s.filter = draw.filter == "scene" ? render_app::kSceneFilter : static_cast<uint8_t>(parse_filter(draw.filter));
   return s;
 }
@@ -68,10 +67,36 @@ Texture boot_checkerboard() {
   return make_texture(TexFormat::RGB565, render_app::kTextureLog2, render_app::kTextureLog2, rgba);
 }
 
+// The names of `info`'s list `list` as a bit set by their index in names.
+uint32_t named_bits(const std::string& list, const char* const* names, uint32_t count) {
+  std::istringstream words(list);
+  uint32_t set = 0;
+  for (std::string w; words >> w;)
+    for (uint32_t i = 0; i < count; ++i)
+      if (w == names[i]) set |= 1u << i;
+  return set;
+}
+
 }  // namespace
 
-ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built, uint32_t filters_built,
-                                 bool slot0_uploaded) {
+ConsoleCaps console_caps(console::ConsoleClient& client) {
+  // "screen 160x120 rgb565; methods affine subdiv ...; filters nearest bilinear", then the slots.
+  const std::string info = client.command("info");
+  const size_t m = info.find("; methods"), f = info.find("; filters", m == std::string::npos ? 0 : m);
+  if (m == std::string::npos || f == std::string::npos)
+    throw std::runtime_error("console: info lists no methods and filters: " + info.substr(0, info.find('\n')));
+  ConsoleCaps c;
+  c.methods_built = named_bits(info.substr(m + 9, f - m - 9), render::kMethodNames, render::kMethodNameCount);
+  c.filters_built =
+      named_bits(info.substr(f + 9, info.find('\n', f) - f - 9), render::kFilterNames, render::kFilterNameCount);
+  const size_t t0 = info.find("texture 0: ");
+  c.slot0_uploaded =
+      t0 != std::string::npos && info.substr(t0, info.find('\n', t0) - t0).find("(uploaded)") != std::string::npos;
+  return c;
+}
+
+ConsoleModel console_model_frame(const ConsoleDraw& draw, const ConsoleCaps& caps) {
+  const uint32_t methods_built = caps.methods_built, filters_built = caps.filters_built;
   render_app::DrawSettings settings = console_settings(draw);
   RecordScene records;
   records.width = render_app::kWidth;
@@ -80,7 +105,7 @@ ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built
   records.clear_depth = render_app::kClearDepth;
   const std::vector<std::vector<uint8_t>>& sent = draw.payload.textures;
   std::vector<Texture> slots(render_app::kDrawTextureSlots);
-  const bool slot0_unknown = slot0_uploaded && (sent.empty() || sent[0].empty());
+  const bool slot0_unknown = caps.slot0_uploaded && (sent.empty() || sent[0].empty());
   for (size_t slot = 0; slot < slots.size(); ++slot) {
     if (slot >= sent.size() || sent[slot].empty()) {
       // Slot 0 keeps the boot texture; the plan sends a mesh whose slot holds none to slot 0.
@@ -131,7 +156,8 @@ ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built
     records.tris.push_back({tris[i].record, st, tri_mesh[i]});
   }
 
-  // The raster unit's configuration (Gouraud colour linear in screen space, as the RTL builds it).
+  // The raster unit's configuration: rtl_config("icebreaker") (Gouraud colour linear in screen
+  // space, as the RTL builds it), written out here because the board engine needs no RTL library.
   ModelConfig config = model_config("icebreaker");
   config.perspective_color = false;
   config.methods = methods_built;

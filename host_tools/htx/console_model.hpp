@@ -9,9 +9,20 @@
 #include <vector>
 
 #include "console_render.hpp"
+#include "htx/console/console_client.hpp"
 #include "htx/model/types.hpp"
 
 namespace htx {
+
+// What the model needs of the console beyond the payload, from its `info` (asked after a draw):
+// bit i of methods_built is STATE method i, of filters_built filter i (htx/render/tri_state.h's
+// names), and whether slot 0 holds an uploaded texture (`texture 0: ... (uploaded)`): the
+// payload's, or, when it sent none for slot 0, one from an earlier session.
+struct ConsoleCaps {
+  uint32_t methods_built = 0, filters_built = 0;
+  bool slot0_uploaded = false;
+};
+ConsoleCaps console_caps(console::ConsoleClient& client);
 
 struct ConsoleModel {
   Frame frame;                  // the model's, with its probe
@@ -21,12 +32,10 @@ struct ConsoleModel {
 };
 
 // `draw`'s payload in its parts, with its method, tolerance and filter as the console takes them,
-// for a GPU that builds `methods_built` and `filters_built` (its CAPS, as the console's `info`
-// lists them). Slot 0 holds the console's boot checkerboard unless the payload sends one or
-// `slot0_uploaded` says an earlier upload is there, whose texels htx has not got. Throws
+// for the console `caps` describes. Slot 0 holds the console's boot checkerboard unless the
+// payload sends one or caps says an earlier upload is there, whose texels htx has not got. Throws
 // std::runtime_error when the console would refuse the draw or the model cannot draw it (a
 // triangle that samples such a slot 0 among them).
-ConsoleModel console_model_frame(const ConsoleDraw& draw, uint32_t methods_built, uint32_t filters_built,
-                                 bool slot0_uploaded);
+ConsoleModel console_model_frame(const ConsoleDraw& draw, const ConsoleCaps& caps);
 
 }  // namespace htx

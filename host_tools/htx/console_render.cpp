@@ -1,7 +1,6 @@
 #include "console_render.hpp"
 
 #include <cstdio>
-#include <iterator>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -38,29 +37,6 @@ std::string sum_figure(const std::string& a, const std::string& b) {
   return std::to_string(std::stoull(a) + std::stoull(b));
 }
 
-// The methods and filters the console's `info` lists ("screen 160x120 rgb565; methods affine subdiv
-// ...; filters nearest bilinear"), as bit sets by the console's numbering.
-void parse_built(const std::string& info, ConsoleDrawn* d) {
-  static const char* const kMethods[] = {"affine", "subdiv", "recip_lut", "recip_nr", "divfree"};
-  static const char* const kFilters[] = {"nearest", "bilinear", "trilinear"};
-  const size_t m = info.find("; methods"), f = info.find("; filters", m == std::string::npos ? 0 : m);
-  if (m == std::string::npos || f == std::string::npos)
-    throw std::runtime_error("console: info lists no methods and filters: " + info.substr(0, info.find('\n')));
-  const auto bits = [](const std::string& list, const char* const* names, size_t count) {
-    std::istringstream words(list);
-    uint32_t set = 0;
-    for (std::string w; words >> w;)
-      for (size_t i = 0; i < count; ++i)
-        if (w == names[i]) set |= 1u << i;
-    return set;
-  };
-  d->methods_built = bits(info.substr(m + 9, f - m - 9), kMethods, std::size(kMethods));
-  d->filters_built = bits(info.substr(f + 9, info.find('\n', f) - f - 9), kFilters, std::size(kFilters));
-  const size_t t0 = info.find("texture 0: ");
-  d->slot0_uploaded = t0 != std::string::npos && info.substr(t0, info.find('\n', t0) - t0).find("(uploaded)") !=
-                                                     std::string::npos;
-}
-
 }  // namespace
 
 ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& draw) {
@@ -85,11 +61,11 @@ ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& 
         client.upload(payload.textures[slot], {}, console::ConsoleClient::Payload::kTexture,
                       static_cast<unsigned>(slot));
       }
-      step("set method " + draw.method + ", tolerance " + draw.tolerance + ", filter " + draw.filter + "; render");
+      const std::string tolerance = "1/" + std::to_string(draw.tolerance_denominator);
+      step("set method " + draw.method + ", tolerance " + tolerance + ", filter " + draw.filter + "; render");
       set(client, "method", draw.method);
-      set(client, "tolerance", draw.tolerance);
+      set(client, "tolerance", tolerance);
       set(client, "filter", draw.filter);
-      parse_built(client.command("info"), &d);
     } else {
       step("render" + part + " over the frame");
     }

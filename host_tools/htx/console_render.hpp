@@ -17,7 +17,7 @@ namespace htx {
 struct ConsoleDraw {
   ScenePayload payload;   // the scene as htx upload sends it (console_payload.hpp)
   std::string method;     // `set method`'s name: auto, affine, subdivN, recip_lut, recip_nr, divfree
-  std::string tolerance;  // `set tolerance`'s 1/N
+  uint32_t tolerance_denominator = 64;  // `set tolerance 1/N`'s N
   std::string filter;     // `set filter`'s name; `scene` keeps the meshes' own
   // Told each step as it begins ("upload: scene of 816 bytes", ..., "grab: the frame"), and what
   // the payload's packing did to the scene or its texture (its note), for progress.
@@ -30,13 +30,6 @@ struct ConsoleDrawn {
   // over the parts; `-` on a GPU without counters) and crc32 (the whole frame's, after the last).
   std::map<std::string, std::string> figures;
   size_t parts = 0;
-  // What the console's GPU builds, as its `info` lists them: bit i of methods is STATE method i
-  // (affine, subdiv, recip_lut, recip_nr, divfree), of filters filter i (nearest, bilinear,
-  // trilinear).
-  uint32_t methods_built = 0, filters_built = 0;
-  // Slot 0 holds an uploaded texture (`info`'s `texture 0: ... (uploaded)`, after the payload's
-  // own went): the payload's, or, when it sent none for slot 0, one from an earlier session.
-  bool slot0_uploaded = false;
 };
 
 // Uploads, sets, renders and grabs on a console at its prompt (ConsoleClient::sync done). Throws

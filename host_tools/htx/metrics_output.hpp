@@ -9,21 +9,23 @@
 
 namespace htx {
 
+// The figures taken from the per-pixel probe (compared_pixels besides, which an empty probe makes 0).
+inline constexpr const char* kProbeFigures[] = {"max_texel_error", "rms_texel_error", "p999_texel_error",
+                                                "coverage_diff_pixels", "surface_diff_pixels"};
+
 // An engine without a per-pixel probe (soc, board; rtl where its frame is not the model's): the
-// figures taken from the probe would describe an empty one, so they are null.
+// probe's figures would describe an empty one, so they are null, and so is `probe`.
 inline void null_probe_figures(nlohmann::json* j) {
-  for (const char* key :
-       {"max_texel_error", "rms_texel_error", "p999_texel_error", "coverage_diff_pixels", "surface_diff_pixels"})
-    (*j)[key] = nullptr;
+  for (const char* key : kProbeFigures) (*j)[key] = nullptr;
+  (*j)["probe"] = nullptr;
 }
 
-// The figures taken from the probe, from `from` (an engine whose frame is this one's pixel for
-// pixel and which has a probe) into *j.
+// The probe's figures from `from`, the model's metrics for a frame that is this one pixel for
+// pixel, into *j, with `probe` "model".
 inline void take_probe_figures(const nlohmann::json& from, nlohmann::json* j) {
-  for (const char* key :
-       {"max_texel_error", "rms_texel_error", "p999_texel_error", "compared_pixels", "coverage_diff_pixels",
-        "surface_diff_pixels"})
-    (*j)[key] = from.at(key);
+  for (const char* key : kProbeFigures) (*j)[key] = from.at(key);
+  (*j)["compared_pixels"] = from.at("compared_pixels");
+  (*j)["probe"] = "model";
 }
 
 inline void write_metrics(const std::string& path, const nlohmann::json& j) {

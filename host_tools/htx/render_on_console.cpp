@@ -38,13 +38,13 @@ constexpr int kScreenWidth = render_app::kWidth, kScreenHeight = render_app::kHe
 constexpr const char* kSocConfig = "icebreaker";         // the simulated SoC's and the ULX3S's GPU
 constexpr unsigned kSocBaud = 1'000'000;                 // soc: the console's `baud` once it is up
 
-// `set tolerance`'s 1/N for `t` texels, when it is one (N = 1..65536).
-std::string tolerance_fraction(double t) {
+// `set tolerance 1/N`'s N for `t` texels, when it is one (N = 1..65536).
+uint32_t tolerance_denominator(double t) {
   const double n = std::round(1.0 / t);
   if (!(t > 0) || n < 1 || n > 65536 || std::fabs(1.0 / n - t) > 1e-9 * t)
     throw std::invalid_argument("--tolerance " + std::to_string(t) +
                                 ": the console takes 1/N texel (N = 1..65536), e.g. 0.015625 for 1/64");
-  return "1/" + std::to_string(static_cast<long>(n));
+  return static_cast<uint32_t>(n);
 }
 
 // The console draws every triangle with one method (`set method`): --method, else the scene's
@@ -86,17 +86,15 @@ std::string console_firmware(const RenderArgs& a) {
 // Otherwise the probe's figures are null and stderr says why.
 template <class ScreenOf>
 void console_probe_figures(const Scene& scene, const ConsoleDraw& draw, const ConsoleDrawn& drawn,
-                           const ScreenOf& screen_of, const RefOptions& ref_options, const MetricsLabels& labels,
+                           const ConsoleCaps& caps, const ScreenOf& screen_of, const RefOptions& ref_options, const MetricsLabels& labels,
                            const std::string& engine, nlohmann::json* j) {
   const auto no_probe = [j, &engine](const std::string& why) {
     null_probe_figures(j);
-    (*j)["probe"] = nullptr;
     std::cerr << engine << ": metrics: no texel errors: " << why << std::endl;
   };
   const std::vector<uint16_t>& sent_pixels = drawn.frame.pixels;
   try {
-    const ConsoleModel model =
-        console_model_frame(draw, drawn.methods_built, drawn.filters_built, drawn.slot0_uploaded);
+    const ConsoleModel model = console_model_frame(draw, caps);
     size_t differ = 0;
     for (size_t i = 0; i < sent_pixels.size(); ++i) differ += model.frame.color.at(i) != sent_pixels[i];
     // (The counts too: the same pixels from other triangles would be a coincidence to catch.)
@@ -118,7 +116,6 @@ void console_probe_figures(const Scene& scene, const ConsoleDraw& draw, const Co
     }
     const Frame ref_same = render_ref(screen_of(same_textures), ref_options);
     take_probe_figures(metrics_to_json(compute_metrics(model.frame, ref_same, labels)), j);
-    (*j)["probe"] = "model";
   } catch (const std::exception& e) {
     no_probe(std::string("the model cannot draw the console's triangles: ") + e.what());
   }
@@ -157,13 +154,15 @@ void render_on_console(const RenderArgs& a) {
   ConsoleDraw draw;
   draw.payload = scene_payload(scene, a.scene, screen_size, true, render::kMaxPackedMeshVertices, a.untextured);
   draw.method = console_method(a, screen);
-  draw.tolerance = tolerance_fraction(a.tolerance);
+  draw.tolerance_denominator = tolerance_denominator(a.tolerance);
   draw.filter = a.filter.empty() ? "scene" : std::string(filter_name(parse_filter(a.filter)));
   draw.on_step = [&a](const std::string& what) { std::cerr << a.engine << ": " << what << std::endl; };
 
   const auto t0 = std::chrono::steady_clock::now();
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000));
   ConsoleDrawn drawn;
+  ConsoleCaps caps;  // asked only for the metrics' model (console_model.hpp)
+  const bool want_caps = !a.metrics.empty();
   std::string where;
   if (soc) {
 #ifdef HTX_HAVE_SOC_CONSOLE
@@ -176,6 +175,7 @@ void render_on_console(const RenderArgs& a) {
     // most of the run at 115,200 baud, down by a factor of nine.
     switch_line(client, draw, kSocBaud);
     drawn = draw_on_console(client, draw);
+    if (want_caps) caps = console_caps(client);
     port.write("quit\r");
     const sim::SimResult r = sim.finish(timeout);
     where = "the simulated SoC, " + std::to_string(r.cycles) + " clocks";
@@ -204,6 +204,7 @@ void render_on_console(const RenderArgs& a) {
       }
       back();
     }
+    if (want_caps) caps = console_caps(client);
     where = a.port;
   }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -239,7 +240,7 @@ void render_on_console(const RenderArgs& a) {
     j["triangles"] = number_or_null(drawn.figures.at("triangles"));
     j["sent"] = number_or_null(drawn.figures.at("sent"));
     j["crc32"] = drawn.figures.at("crc32");
-    console_probe_figures(scene, draw, drawn, screen_of, ref_options, labels, a.engine, &j);
+    console_probe_figures(scene, draw, drawn, caps, screen_of, ref_options, labels, a.engine, &j);
     write_metrics(a.metrics, j);
   }
 }

@@ -18,6 +18,7 @@
 #include "htx/hal/uart.h"
 #include "htx/hal/video.h"
 #include "htx/render/fixed.h"
+#include "htx/render/tri_state.h"
 #include "htx_regs.h"
 #include "scene_render.hpp"
 #include "scenes.hpp"
@@ -34,15 +35,11 @@ constexpr uint32_t kSpinDefaultFrames = 60, kSpinMaxFrames = 3600;
 // Status reads to wait for the line to drain: the longest answer is a few hundred bytes.
 constexpr uint32_t kFlushPolls = 10'000'000;
 
-// The methods' names by method number (TriState::method; SUBDIV is `subdivN` in `set method`).
-constexpr const char* kMethodNames[] = {"affine", "subdiv", "recip_lut", "recip_nr", "divfree"};
-constexpr uint32_t kMethodCount = sizeof kMethodNames / sizeof kMethodNames[0];
-static_assert(htx::render::kMethodSubdiv == 1 && htx::render::kMethodDivFree == kMethodCount - 1,
-              "kMethodNames follows htx::render::MethodId");
-
-// `set filter`'s names, by filter number (TriState::filter); `scene` keeps each mesh's own.
-constexpr const char* kFilterNames[] = {"nearest", "bilinear", "trilinear"};
-constexpr uint32_t kFilterCount = sizeof kFilterNames / sizeof kFilterNames[0];
+// The methods' and filters' names (htx/render/tri_state.h); `set filter scene` keeps each mesh's own.
+using htx::render::kFilterNames;
+using htx::render::kMethodNames;
+constexpr uint32_t kMethodCount = htx::render::kMethodNameCount;
+constexpr uint32_t kFilterCount = htx::render::kFilterNameCount;
 
 const char* filter_text(uint8_t filter) { return filter < kFilterCount ? kFilterNames[filter] : "scene"; }
 

@@ -116,9 +116,9 @@ void ConsoleClient::send_packet(uint8_t type, uint8_t seq, const uint8_t* data, 
 }
 
 std::string ConsoleClient::command(const std::string& line) {
-  if (line.find_first_of("\r\n") != std::string::npos) throw std::invalid_argument("a command is one line");
-  port_.write(line + "\r");
-  return unix_lines(without_echo(read_until_prompt()));
+  std::string out;
+  converse(line, [&out](const std::string& text) { out += text; });
+  return out;
 }
 
 void ConsoleClient::converse(const std::string& line, const std::function<void(const std::string&)>& show,

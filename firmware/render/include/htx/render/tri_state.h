@@ -17,6 +17,14 @@ enum MethodId : uint8_t {
   kMethodAuto = 7,
 };
 
+// The methods' and filters' names by number, as the console's `set` and `info` spell them (SUBDIV
+// is `subdivN` in `set method`); the host reads `info` with the same table.
+inline constexpr const char* kMethodNames[] = {"affine", "subdiv", "recip_lut", "recip_nr", "divfree"};
+inline constexpr uint32_t kMethodNameCount = sizeof kMethodNames / sizeof kMethodNames[0];
+static_assert(kMethodSubdiv == 1 && kMethodDivFree == kMethodNameCount - 1, "kMethodNames follows MethodId");
+inline constexpr const char* kFilterNames[] = {"nearest", "bilinear", "trilinear"};
+inline constexpr uint32_t kFilterNameCount = sizeof kFilterNames / sizeof kFilterNames[0];
+
 struct TriState {
   uint8_t method = kMethodRecipNr;
   uint8_t subdiv_n = 16;
