@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "htx/fw/auto_select.h"
 #include "htx/render/auto_method.h"
@@ -140,8 +141,10 @@ TEST(AutoBounds, AffineAndSubdivBoundsHoldOnRandomTriangles) {
 
 TEST(AutoChoose, CheapestWithinToleranceAmongEveryCandidate) {
   std::mt19937 rng(77);
-  for (const AutoConfig& cfg : {htx::fw::kAutoConfigIcebreaker, htx::fw::kAutoConfigFull}) {
-    int per_method[5] = {};
+  AutoConfig always_choose = htx::fw::kAutoConfigIcebreaker;
+  always_choose.choice_cycles = 0;
+  for (const AutoConfig& cfg : {htx::fw::kAutoConfigIcebreaker, always_choose, htx::fw::kAutoConfigFull}) {
+    int per_method[5] = {}, skipped = 0;
     for (int k = 0; k < 2000; ++k) {
       const AutoTriangle t = random_triangle(rng);
       const float tol = (k % 3 == 0) ? 1.0f / 64 : (k % 3 == 1 ? 1.0f / 16 : 0.5f);
@@ -154,17 +157,32 @@ TEST(AutoChoose, CheapestWithinToleranceAmongEveryCandidate) {
         continue;
       }
       EXPECT_LE(c.bound, tol);
-      // No candidate within the tolerance is cheaper.
+      // No candidate within the tolerance is cheaper; where the choice was skipped, none is
+      // cheaper by as much as choosing costs.
+      if (c.skipped) {
+        EXPECT_EQ(c.method, htx::fw::kAutoRecipNr);
+        ++skipped;
+      }
+      const auto not_cheaper = [&](float cost) {
+        return c.skipped ? cost + float(cfg.choice_cycles) > c.cycles : cost >= c.cycles;
+      };
       const AutoBounds b = htx::fw::auto_bounds(t, cfg, s);
       const float plain[5] = {b.affine, 0, b.recip_lut, b.recip_nr, b.divfree};
       for (uint8_t m : {0, 2, 3, 4})
         if (plain[m] <= tol) {
-          EXPECT_GE(htx::fw::auto_cycles(t, cfg, m, 0), c.cycles) << "method " << int(m);
+          EXPECT_TRUE(not_cheaper(htx::fw::auto_cycles(t, cfg, m, 0))) << "method " << int(m);
         }
       for (unsigned n = 2; n <= 64; ++n)
         if (htx::fw::auto_bound_subdiv(b, cfg, n) <= tol) {
-          EXPECT_GE(htx::fw::auto_cycles(t, cfg, htx::fw::kAutoSubdiv, n), c.cycles) << "subdiv " << n;
+          EXPECT_TRUE(not_cheaper(htx::fw::auto_cycles(t, cfg, htx::fw::kAutoSubdiv, n))) << "subdiv " << n;
         }
+    }
+    // Only a configuration that prices the choice skips it, and then not always.
+    if (cfg.choice_cycles == 0) {
+      EXPECT_EQ(skipped, 0);
+    } else {
+      EXPECT_GT(skipped, 100);
+      EXPECT_LT(skipped, 1900);
     }
     // Every method of the choice is exercised by these triangles, except DIVFREE (half a cell).
     if (cfg.recip_issue_interval > 1) {
@@ -176,6 +194,122 @@ TEST(AutoChoose, CheapestWithinToleranceAmongEveryCandidate) {
       // A pipelined divider makes RECIP_NR as cheap as AFFINE and more accurate.
       EXPECT_EQ(per_method[htx::fw::kAutoRecipNr], 2000);
     }
+  }
+}
+
+// A triangle whose every method saves the raster unit fewer clocks than choosing costs the CPU gets
+// RECIP_NR without comparing, when RECIP_NR is built and within the tolerance (docs/auto.md, "When
+// choosing does not pay").
+TEST(AutoChoose, RecipNrWithoutComparingWhereChoosingCannotPay) {
+  const AutoConfig cfg = htx::fw::kAutoConfigIcebreaker;
+  AutoConfig free_choice = cfg;
+  free_choice.choice_cycles = 0;
+  // 12 x 10 pixels (60) in perspective: at most 11.25 clocks a pixel to save, 675 < 4,500.
+  const AutoTriangle small{{10, 22, 10}, {10, 10, 20}, {1, 1.5f, 1.2f}, {0, 8, 0}, {0, 0, 8}};
+  htx::fw::AutoChoice c = htx::fw::choose_method(small, cfg, {}, 0x1F, 1.0f / 16);
+  EXPECT_TRUE(c.skipped);
+  EXPECT_TRUE(c.within);
+  EXPECT_EQ(c.method, htx::fw::kAutoRecipNr);
+  EXPECT_EQ(c.bound, htx::fw::auto_bounds(small, cfg, {}).recip_nr);
+  EXPECT_EQ(c.cycles, htx::fw::auto_cycles(small, cfg, htx::fw::kAutoRecipNr, 0));
+  // Priced as free, the choice is a cheaper method (RECIP_LUT's table is within 1/16 here), and the
+  // clocks it saves are below what the choice costs.
+  const htx::fw::AutoChoice chosen = htx::fw::choose_method(small, free_choice, {}, 0x1F, 1.0f / 16);
+  EXPECT_FALSE(chosen.skipped);
+  EXPECT_NE(chosen.method, htx::fw::kAutoRecipNr);
+  EXPECT_LT(chosen.cycles, c.cycles);
+  EXPECT_LT(c.cycles - chosen.cycles, float(cfg.choice_cycles));
+  // Not skipped: a triangle large enough to save more (2,000 pixels), RECIP_NR not built, and a
+  // tolerance RECIP_NR's bound exceeds (the chooser then compares and falls back).
+  const AutoTriangle large{{10, 110, 10}, {10, 10, 50}, {1, 1.5f, 1.2f}, {0, 8, 0}, {0, 0, 8}};
+  EXPECT_FALSE(htx::fw::choose_method(large, cfg, {}, 0x1F, 1.0f / 16).skipped);
+  c = htx::fw::choose_method(small, cfg, {}, 0x17, 1.0f / 16);
+  EXPECT_FALSE(c.skipped);
+  EXPECT_EQ(c.method, chosen.method);
+  c = htx::fw::choose_method(small, cfg, {}, 0x1F, htx::fw::auto_bounds(small, cfg, {}).recip_nr * 0.99f);
+  EXPECT_FALSE(c.skipped);
+}
+
+// The firmware tests the skip in integers before any AutoNum work (render::auto_mesh, auto_method):
+// over random fixed-point triangles its choice is the chooser's, bit for bit. A quarter are random
+// anywhere; a quarter have an area within 2 % of the skip's limit (400 pixels on icebreaker); a
+// quarter one within 120 units (2^-16 pixel) of it; a quarter a texel span within 2^-8 of the
+// integer test's limit at tolerances just above RECIP_NR's rounding. Both sides of each margin
+// are reached: some triangles the integer test leaves to the chooser are skipped there.
+TEST(AutoChoose, FirmwareSkipTestAgreesWithTheChooser) {
+  std::mt19937 rng(4242);
+  enum Kind { kAnywhere, kNearArea, kAtArea, kAtSpan };
+  int integer_skips[4] = {}, chooser_skips[4] = {}, compared[4] = {};
+  htx::render::ClipVert cv[3] = {};
+  htx::render::ScreenVert sv[3] = {};
+  const htx::render::ScreenVert* pv[3] = {&sv[0], &sv[1], &sv[2]};
+  for (int k = 0; k < 60000; ++k) {
+    const Kind kind = static_cast<Kind>(k % 4);
+    const bool full = kind == kAnywhere && k % 8 == 4;
+    const AutoConfig cfg = full ? htx::fw::kAutoConfigFull : htx::fw::kAutoConfigIcebreaker;
+    const htx::render::TexSize tex{static_cast<uint8_t>(rng() % 9), static_cast<uint8_t>(rng() % 9)};
+    const htx::fw::AutoSampling s{static_cast<uint8_t>(rng() % 3),
+                                  static_cast<uint8_t>(std::max(tex.log2_width, tex.log2_height))};
+    const int64_t tol_q16 = kind == kAtSpan                  ? 257 + static_cast<int64_t>(rng() % 64)
+                            : kind == kAnywhere && k % 3 == 0 ? int64_t{1} << (rng() % 17)
+                                                             : 4096;
+    const uint32_t built = kind == kAnywhere && rng() % 4 == 0 ? static_cast<uint32_t>(rng() % 32) : 0x1Fu;
+    const htx::render::AutoMesh mesh = htx::render::auto_mesh(cfg, s, tex, htx::render::auto_tolerance(tol_q16), built);
+
+    const int32_t x0 = static_cast<int32_t>(rng() % (640 * 256)), y0 = static_cast<int32_t>(rng() % (480 * 256));
+    int32_t xs[3] = {x0, x0, x0}, ys[3] = {y0, y0, y0};
+    if (kind == kAnywhere) {
+      const int extent = 1 << (rng() % 12);
+      for (int i = 0; i < 3; ++i) {
+        xs[i] += static_cast<int32_t>(rng() % (extent * 256)) - extent * 128;
+        ys[i] += static_cast<int32_t>(rng() % (extent * 256)) - extent * 128;
+      }
+    } else if (kind == kNearArea) {
+      const double leg = 8 + (rng() % 10000) / 100.0, area = 400 * (0.98 + (rng() % 4001) / 100000.0);
+      xs[1] += int32_t(leg * 256);
+      ys[2] += int32_t(2 * area / leg * 256);
+    } else if (kind == kAtArea) {
+      // Twice the area dx * dy - off * 1: 0 to 119 units below 52,428,800 (400 pixels); the
+      // integer test's slack is about fifty units here.
+      const int32_t dx = int32_t{1} << (10 + rng() % 4);
+      xs[1] += dx, ys[1] += 1, xs[2] += static_cast<int32_t>(rng() % 120), ys[2] += 52428800 / dx;
+    } else {
+      xs[1] += 10 * 256, ys[2] += 10 * 256;  // 50 pixels
+    }
+    const int span_bits = 1 + static_cast<int>(rng() % (kind == kAnywhere ? 26 : 12));
+    for (int i = 0; i < 3; ++i) {
+      cv[i].s = static_cast<int32_t>(rng() % (1u << span_bits)) - (1 << 20);
+      cv[i].t = static_cast<int32_t>(rng() % (1u << span_bits)) - (1 << 20);
+      sv[i].x = xs[i];
+      sv[i].y = ys[i];
+      sv[i].w = 1 + static_cast<int32_t>(rng() % (1u << (8 + rng() % 22)));
+      sv[i].attr = &cv[i];
+    }
+    if (kind == kAtSpan && mesh.skip_s_range > 0) {
+      // s spans the integer limit times 1 +- 2^-8 (t a tenth of its own limit).
+      const double f = 1 + (static_cast<double>(rng() % 2001) - 1000) / 1000 / 256;
+      cv[1].s = cv[0].s + static_cast<int32_t>(std::min<double>(double(mesh.skip_s_range) * f, 1 << 30));
+      cv[2].s = cv[0].s + (cv[1].s - cv[0].s) / 2;
+      cv[1].t = cv[0].t + static_cast<int32_t>(std::min<int64_t>(mesh.skip_t_range / 10, 1 << 30));
+      cv[2].t = cv[0].t;
+    }
+    const htx::fw::AutoChoice got = htx::render::auto_method(pv, mesh);
+    const htx::fw::AutoChoice want =
+        htx::fw::choose_method(htx::render::auto_triangle(pv, tex), mesh.pricing, s, built, mesh.tolerance);
+    ASSERT_EQ(got.method, want.method) << "triangle " << k;
+    ASSERT_EQ(got.subdiv_n, want.subdiv_n) << "triangle " << k;
+    ASSERT_EQ(got.within, want.within) << "triangle " << k;
+    ASSERT_EQ(got.skipped, want.skipped) << "triangle " << k;
+    if (got.skipped && got.bound == 0) ++integer_skips[kind];  // (the chooser reports a bound > 0)
+    else if (got.skipped) ++chooser_skips[kind];
+    else ++compared[kind];
+  }
+  for (const Kind kind : {kAnywhere, kNearArea, kAtArea, kAtSpan}) {
+    SCOPED_TRACE(testing::Message() << "kind " << kind << ": " << integer_skips[kind] << " skipped in integers, "
+                                    << chooser_skips[kind] << " by the chooser, " << compared[kind] << " compared");
+    EXPECT_GT(integer_skips[kind], 1000);
+    EXPECT_GT(compared[kind], kind == kAtArea ? -1 : 100);
+    EXPECT_GT(chooser_skips[kind], kind == kAtArea ? 1000 : kind == kAtSpan ? 20 : -1);
   }
 }
 
@@ -289,8 +423,8 @@ TEST(AutoChoose, FirmwareAdapterSeesPixelsAndTexels) {
     t.u[i] = htx::fw::num_to_float_up(tn.u[i]);
     t.v[i] = htx::fw::num_to_float_up(tn.v[i]);
   }
-  const htx::fw::AutoChoice c = htx::render::auto_method(pv, {6, 5}, htx::fw::auto_pricing(htx::fw::kAutoConfigIcebreaker), {},
-                                                          htx::render::auto_tolerance(4096), 0x1F);
+  const htx::fw::AutoChoice c = htx::render::auto_method(
+      pv, htx::render::auto_mesh(htx::fw::kAutoConfigIcebreaker, {}, {6, 5}, htx::render::auto_tolerance(4096), 0x1F));
   EXPECT_EQ(c.method, htx::fw::choose_method(t, htx::fw::kAutoConfigIcebreaker, {}, 0x1F, 1.0f / 16).method);
 }
 

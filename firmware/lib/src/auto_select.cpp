@@ -215,6 +215,23 @@ Num fallback_bound(const Bounds& b, const AutoPricing& pr, uint8_t method, unsig
                                    : b.affine;
 }
 
+// Where no method could save the raster unit more clocks than choosing costs the CPU (the cheapest
+// pixel against RECIP_NR's, times the pixels), RECIP_NR when it is built and within the tolerance:
+// the choice without comparing (docs/auto.md, "When choosing does not pay").
+bool not_worth_choosing(const Footprint& f, const Bounds& b, const AutoPricing& pr, uint32_t built, Num tol) {
+  return (built & (1u << kAutoRecipNr)) && f.pixels * pr.pixel_gain < pr.choice && b.recip_nr <= tol;
+}
+
+AutoChoice skipped_choice(const Footprint& f, const Bounds& b, const AutoPricing& pr) {
+  AutoChoice c;
+  c.method = kAutoRecipNr;
+  c.within = true;
+  c.skipped = true;
+  c.bound = num_to_float_up(b.recip_nr);
+  c.cycles = num_to_float_up(cycles_of(f, pr, kAutoRecipNr, 0));
+  return c;
+}
+
 }  // namespace
 
 AutoPricing auto_pricing(const AutoConfig& cfg) {
@@ -229,6 +246,10 @@ AutoPricing auto_pricing(const AutoConfig& cfg) {
   p.nr_divide = num_scale(num(cfg.nr_divide_cost16), -4);
   p.affine_setup = num_scale(num(cfg.affine_setup_cost16), -4);
   p.seed_divide = num(cfg.recip_issue_interval);
+  p.choice = num(cfg.choice_cycles);
+  p.pixel_gain = cfg.nr_divide_cost16 > cfg.pixel_cost16
+                     ? num_scale(num(cfg.nr_divide_cost16 - cfg.pixel_cost16), -4)
+                     : Num{};
   return p;
 }
 
@@ -294,6 +315,7 @@ AutoChoice choose_method(const AutoTriangleNum& t, const AutoPricing& pr, const 
   const Footprint f = footprint_of(sh, pr);
   Bounds b;
   cheap_bounds(sh, pr, s, &b);
+  if (not_worth_choosing(f, b, pr, built, tol)) return skipped_choice(f, b, pr);
   // AFFINE's bound and SUBDIV's terms, each found once and only when asked for.
   bool have_affine = false, have_subdiv_terms = false;
   auto affine = [&]() {
@@ -397,6 +419,7 @@ AutoChoice choose_method_exhaustive(const AutoTriangleNum& t, const AutoConfig& 
   const Shape sh = shape_of(t);
   const Bounds b = bounds_of(t, sh, pr, s);
   const Footprint f = footprint_of(sh, pr);
+  if (not_worth_choosing(f, b, pr, built, tol)) return skipped_choice(f, b, pr);
   Num bound, cycles;
   const uint8_t plain[4] = {kAutoAffine, kAutoRecipLut, kAutoRecipNr, kAutoDivFree};
   const Num plain_bound[4] = {b.affine, b.recip_lut, b.recip_nr, b.divfree};

@@ -2,6 +2,30 @@
 
 namespace htx::render {
 
+namespace {
+
+constexpr int64_t kRangeCap = int64_t{1} << 40;
+
+// floor(a), at most `cap`; -1 for a <= 0.
+int64_t num_floor_capped(fw::AutoNum a, int64_t cap) {
+  if (a.m <= 0) return -1;
+  if (a.e >= 0) return a.e > 24 ? cap : (static_cast<int64_t>(a.m) << a.e) < cap ? static_cast<int64_t>(a.m) << a.e : cap;
+  return a.e <= -31 ? 0 : static_cast<int64_t>(a.m >> -a.e);
+}
+
+int64_t magnitude64(int64_t v) { return v < 0 ? -v : v; }
+
+int64_t range_of(int32_t a, int32_t b, int32_t c) {
+  int32_t lo = a, hi = a;
+  if (b < lo) lo = b;
+  if (b > hi) hi = b;
+  if (c < lo) lo = c;
+  if (c > hi) hi = c;
+  return static_cast<int64_t>(hi) - lo;
+}
+
+}  // namespace
+
 fw::AutoTriangleNum auto_triangle(const ScreenVert* const v[3], TexSize tex) {
   // Exact: every coordinate is an integer times a power of two (1/256 pixel, Q16.16 w, s and t).
   fw::AutoTriangleNum t;
@@ -20,9 +44,55 @@ fw::AutoNum auto_tolerance(int64_t tol_q16) {
   return fw::num_scale(fw::num_from_int(tol32), -16);
 }
 
-fw::AutoChoice auto_method(const ScreenVert* const v[3], TexSize tex, const fw::AutoPricing& pricing,
-                           const fw::AutoSampling& sampling, fw::AutoNum tol, uint32_t built) {
-  return fw::choose_method(auto_triangle(v, tex), pricing, sampling, built, tol);
+AutoMesh auto_mesh(const fw::AutoConfig& cfg, fw::AutoSampling sampling, TexSize tex, fw::AutoNum tolerance,
+                   uint32_t built) {
+  AutoMesh m;
+  m.pricing = fw::auto_pricing(cfg);
+  m.sampling = sampling;
+  m.tolerance = tolerance;
+  m.built = built;
+  m.tex = tex;
+  if (cfg.choice_cycles == 0 || !(built & (1u << fw::kAutoRecipNr))) return m;
+  // The chooser's test, pixels * gain < choice_cycles with pixels = |area2| / 2^17 and gain =
+  // gain16 / 16, is |area2| * gain16 < choice_cycles * 2^21 in integers.
+  m.skip_gain16 = cfg.nr_divide_cost16 > cfg.pixel_cost16 ? cfg.nr_divide_cost16 - cfg.pixel_cost16 : 0u;
+  // RECIP_NR within the tolerance: (du/2 + 1) * e + base <= tol (e its relative error) holds for
+  // du <= D = 2 (q - 1), q = (tol - base) / e. The chooser's truncated arithmetic never computes
+  // the bound above its exact value, so D itself is the limit; it is taken 2^-15 q lower for q's own
+  // rounding (within 2^-28 of it).
+  const fw::AutoNum room = tolerance - m.pricing.base;
+  if (room.m <= 0) return m;
+  const fw::AutoNum q = room / m.pricing.newton_error;
+  const fw::AutoNum du = fw::num_scale(q - fw::num_from_int(1), 1) - fw::num_scale(q, -15);
+  m.skip_s_range = num_floor_capped(fw::num_scale(du, 16 - tex.log2_width), kRangeCap);
+  m.skip_t_range = num_floor_capped(fw::num_scale(du, 16 - tex.log2_height), kRangeCap);
+  if (m.skip_s_range < 0 || m.skip_t_range < 0) return m;
+  m.skip_area_limit = static_cast<int64_t>(cfg.choice_cycles) << 21;
+  return m;
+}
+
+fw::AutoChoice auto_method(const ScreenVert* const v[3], const AutoMesh& mesh) {
+  if (mesh.skip_area_limit != 0) {
+    const int64_t dx1 = static_cast<int64_t>(v[1]->x) - v[0]->x, dy2 = static_cast<int64_t>(v[2]->y) - v[0]->y;
+    const int64_t dx2 = static_cast<int64_t>(v[2]->x) - v[0]->x, dy1 = static_cast<int64_t>(v[1]->y) - v[0]->y;
+    // (Differences beyond 2^16 pixels are left to the chooser: their products could overflow.)
+    const bool small = magnitude64(dx1) < kRangeCap >> 16 && magnitude64(dx2) < kRangeCap >> 16 &&
+                       magnitude64(dy1) < kRangeCap >> 16 && magnitude64(dy2) < kRangeCap >> 16;
+    const int64_t p1 = magnitude64(dx1 * dy2), p2 = magnitude64(dx2 * dy1);
+    // The chooser's determinant is within a few 2^-30 of |p1| + |p2| of the exact one: the slack
+    // covers 2^-20 of it and two units.
+    const int64_t area2 = magnitude64(dx1 * dy2 - dx2 * dy1) + ((p1 + p2) >> 20) + 2;
+    if (small && area2 < kRangeCap && area2 * static_cast<int64_t>(mesh.skip_gain16) < mesh.skip_area_limit &&
+        range_of(v[0]->attr->s, v[1]->attr->s, v[2]->attr->s) <= mesh.skip_s_range &&
+        range_of(v[0]->attr->t, v[1]->attr->t, v[2]->attr->t) <= mesh.skip_t_range) {
+      fw::AutoChoice c;
+      c.method = fw::kAutoRecipNr;
+      c.within = true;
+      c.skipped = true;
+      return c;
+    }
+  }
+  return fw::choose_method(auto_triangle(v, mesh.tex), mesh.pricing, mesh.sampling, mesh.built, mesh.tolerance);
 }
 
 }  // namespace htx::render

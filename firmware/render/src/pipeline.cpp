@@ -27,25 +27,16 @@ void emit_to_fifo(void*, uint32_t state_word, const uint32_t* words) { hal::rast
 // The texture's last mip level: log2 of its larger side.
 uint8_t texture_top_level(TexSize tex) { return tex.log2_width > tex.log2_height ? tex.log2_width : tex.log2_height; }
 
-// What AUTO takes from the frame and the mesh, the same for each of the mesh's triangles.
-struct MeshAuto {
-  fw::AutoPricing pricing;   // the raster unit's
-  fw::AutoSampling sampling;
-  fw::AutoNum tolerance;
-};
-
-MeshAuto mesh_auto(const FrameParams& frame, const Mesh& mesh) {
-  MeshAuto a;
-  a.pricing = fw::auto_pricing(frame.auto_config);
-  a.sampling = {mesh.state.filter, texture_top_level(mesh.tex)};
+AutoMesh mesh_auto(const FrameParams& frame, const Mesh& mesh) {
   // An untextured triangle has no texel error: any method will do, so the cheapest.
-  a.tolerance = auto_tolerance(mesh.state.textured ? frame.auto_tolerance : int64_t{1} << 40);
-  return a;
+  const fw::AutoNum tolerance = auto_tolerance(mesh.state.textured ? frame.auto_tolerance : int64_t{1} << 40);
+  return auto_mesh(frame.auto_config, {mesh.state.filter, texture_top_level(mesh.tex)}, mesh.tex, tolerance,
+                   frame.methods_built);
 }
 
 // Culls, chooses the method (with `mesh_auto`, found once a mesh, for AUTO), encodes and emits one
 // screen triangle.
-void finish_triangle(const FrameParams& frame, const MeshAuto& mesh_auto, const Mesh& mesh,
+void finish_triangle(const FrameParams& frame, const AutoMesh& mesh_auto, const Mesh& mesh,
                      const ScreenVert* const v[3], const TriangleSink& sink, DrawStats* st) {
   const int64_t area2 = screen_area2(*v[0], *v[1], *v[2]);
   if (area2 == 0) {
@@ -58,8 +49,8 @@ void finish_triangle(const FrameParams& frame, const MeshAuto& mesh_auto, const 
   }
   TriState state = mesh.state;
   if (state.method == kMethodAuto) {
-    const fw::AutoChoice c =
-        auto_method(v, mesh.tex, mesh_auto.pricing, mesh_auto.sampling, mesh_auto.tolerance, frame.methods_built);
+    const fw::AutoChoice c = auto_method(v, mesh_auto);
+    st->auto_skipped += c.skipped;
     state.method = c.method;
     state.subdiv_n = c.subdiv_n;
   }
@@ -109,7 +100,7 @@ DrawStatus draw_mesh(const FrameParams& frame, const Mat4& view_proj, const Mesh
   const VertexTransform vt = make_vertex_transform(mat4_mul(view_proj, mesh.model), mesh.position_bits);
   process_vertices(vt, mesh.vertices, mesh.vertex_count, vp, cache);
 
-  const MeshAuto auto_of_mesh = mesh.state.method == kMethodAuto ? mesh_auto(frame, mesh) : MeshAuto{};
+  const AutoMesh auto_of_mesh = mesh.state.method == kMethodAuto ? mesh_auto(frame, mesh) : AutoMesh{};
   for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
     ++st->triangles;
     const uint16_t* idx = mesh.indices + 3 * t;

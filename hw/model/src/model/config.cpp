@@ -37,6 +37,9 @@ ModelConfig make_icebreaker() {
   c.auto_lut_divide_cost16 = 245;
   c.auto_nr_divide_cost16 = 373;
   c.auto_affine_setup_cost16 = 2560;
+  // The render firmware's chooser on the SoC's rv32im CPU: about 4,500 clocks a floor triangle
+  // (geombench; docs/auto.md, "When choosing does not pay").
+  c.auto_choice_cycles = 4500;
   c.texcoord_frac_bits = 10;
   c.divfree_frac_bits = 2;
   c.divfree_cap = 64;

@@ -42,10 +42,15 @@ struct AutoConfig {
   uint16_t lut_divide_cost16 = 16;
   uint16_t nr_divide_cost16 = 16;
   uint16_t affine_setup_cost16 = 0;
+  // The CPU clocks one choice costs the system that draws (0: nothing). Where no method could save
+  // the raster unit more clocks than that against RECIP_NR, AUTO takes RECIP_NR without comparing
+  // (docs/auto.md, "When choosing does not pay").
+  uint16_t choice_cycles = 0;
 };
-// `full`: one pixel a clock and a division a clock. `icebreaker`: measured on its RTL (docs/auto.md).
-inline constexpr AutoConfig kAutoConfigFull{10, 2, 32, 2, 1, 16, 4, 16, 16, 16, 0};
-inline constexpr AutoConfig kAutoConfigIcebreaker{8, 2, 24, 1, 3, 10, 2, 193, 245, 373, 2560};
+// `full`: one pixel a clock and a division a clock, no CPU measured. `icebreaker`: measured on its
+// RTL and on the SoC's CPU (docs/auto.md).
+inline constexpr AutoConfig kAutoConfigFull{10, 2, 32, 2, 1, 16, 4, 16, 16, 16, 0, 0};
+inline constexpr AutoConfig kAutoConfigIcebreaker{8, 2, 24, 1, 3, 10, 2, 193, 245, 373, 2560, 4500};
 
 inline bool operator==(const AutoConfig& a, const AutoConfig& b) {
   return a.recip_table_bits == b.recip_table_bits && a.recip_guard_bits == b.recip_guard_bits &&
@@ -53,7 +58,7 @@ inline bool operator==(const AutoConfig& a, const AutoConfig& b) {
          a.recip_issue_interval == b.recip_issue_interval && a.texcoord_frac_bits == b.texcoord_frac_bits &&
          a.divfree_frac_bits == b.divfree_frac_bits && a.pixel_cost16 == b.pixel_cost16 &&
          a.lut_divide_cost16 == b.lut_divide_cost16 && a.nr_divide_cost16 == b.nr_divide_cost16 &&
-         a.affine_setup_cost16 == b.affine_setup_cost16;
+         a.affine_setup_cost16 == b.affine_setup_cost16 && a.choice_cycles == b.choice_cycles;
 }
 
 // Any configuration type with the ModelConfig field names (the host's htx::ModelConfig).
@@ -71,6 +76,7 @@ AutoConfig auto_config_of(const Config& c) {
   a.lut_divide_cost16 = static_cast<uint16_t>(c.auto_lut_divide_cost16);
   a.nr_divide_cost16 = static_cast<uint16_t>(c.auto_nr_divide_cost16);
   a.affine_setup_cost16 = static_cast<uint16_t>(c.auto_affine_setup_cost16);
+  a.choice_cycles = static_cast<uint16_t>(c.auto_choice_cycles);
   return a;
 }
 
@@ -94,6 +100,7 @@ struct AutoChoice {
   uint8_t method = kAutoRecipNr;
   uint8_t subdiv_n = 16;  // for kAutoSubdiv (2..64)
   bool within = false;    // the predicted bound is within the tolerance (else: the fallback)
+  bool skipped = false;   // RECIP_NR without comparing: choosing would not pay (AutoConfig::choice_cycles)
   float bound = 0;        // predicted max texel-coordinate error of the choice (texels)
   float cycles = 0;       // predicted raster cycles of the triangle (docs/model.md §9 estimate)
 };
@@ -121,13 +128,16 @@ struct AutoPricing {
   AutoNum newton_error;  // the same after the pixel Newton steps
   AutoNum setup;         // clocks of setup, without the one a span
   AutoNum pixel_cost, lut_divide, nr_divide, affine_setup, seed_divide;  // clocks (docs/auto.md)
+  AutoNum choice;      // choice_cycles
+  AutoNum pixel_gain;  // the most a pixel can save against RECIP_NR: nr_divide - pixel_cost, or 0
 };
 AutoPricing auto_pricing(const AutoConfig& cfg);
 
 // The cheapest built method (bit i of `built` = method i) whose bound is within `tolerance`
 // texels; among equal costs the smaller bound. When none is within it (or the triangle is
 // degenerate or not finite): RECIP_NR if built, else RECIP_LUT, else SUBDIV with n = 2, else AFFINE,
-// with within = false.
+// with within = false. First, where choosing would not pay (pixels * pixel_gain < choice_cycles)
+// and RECIP_NR is built and within the tolerance: RECIP_NR, with skipped = true.
 AutoChoice choose_method(const AutoTriangle& t, const AutoConfig& cfg, const AutoSampling& s, uint32_t built,
                          float tolerance);
 // The same choice for a triangle and tolerance in AutoNum (equal to the float version's for the

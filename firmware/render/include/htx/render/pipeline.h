@@ -73,6 +73,7 @@ struct DrawStats {
   uint32_t degenerate = 0;    // zero area on the subpixel grid
   uint32_t encode_errors = 0; // the encoder refused them (not sent)
   uint32_t sent = 0;          // triangles streamed (after clipping, a fan counts per triangle)
+  uint32_t auto_skipped = 0;  // AUTO's: RECIP_NR without comparing, where choosing would not pay
 };
 
 enum DrawStatus : int {

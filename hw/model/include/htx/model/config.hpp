@@ -45,6 +45,9 @@ struct ModelConfig {
   unsigned auto_lut_divide_cost16 = 16;
   unsigned auto_nr_divide_cost16 = 16;
   unsigned auto_affine_setup_cost16 = 0;
+  // The CPU clocks one AUTO choice costs the firmware (0: none); where no method could save the
+  // raster unit more, AUTO takes RECIP_NR without comparing (docs/auto.md).
+  unsigned auto_choice_cycles = 0;
 
   // Texel coordinates leave the divider as signed fixed point with this many fractional bits.
   unsigned texcoord_frac_bits = 16;
