@@ -10,4 +10,5 @@ set ylabel 'max texel-coordinate error (texels)'
 plot 'study_tradeoff_tunnel.dat' index 0 using 1:2 with points pt 7 title 'one method for every triangle', \
      'study_tradeoff_tunnel.dat' index 0 using 1:2:3 with labels offset 0.8,0.6 left font ',9' notitle, \
      'study_tradeoff_tunnel.dat' index 1 using 1:2 with linespoints pt 5 title 'AUTO at tolerances', \
-     'study_tradeoff_tunnel.dat' index 1 using 1:2:(sprintf('%g', $3)) with labels offset 0.8,-0.6 left font ',8' notitle
+     'study_tradeoff_tunnel.dat' index 1 using 1:2:(sprintf('%g', $3)) with labels offset 0.8,-0.6 left font ',8' notitle, \
+     'study_tradeoff_tunnel.dat' index 2 using 1:2 with linespoints pt 4 dt 2 title 'AUTO, every choice compared'

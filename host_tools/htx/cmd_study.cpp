@@ -70,7 +70,10 @@ void run_study(const StudyArgs& a) {
   std::vector<study::Point> points;
   for (const std::string& sweep : sweeps)
     for (const study::Point& p : study::sweep_points(sweep, a.quick))
-      if (p.method == "auto" || options.config.has_method(parse_method(p.method).method)) points.push_back(p);
+      // (AUTO with every choice compared differs from AUTO only where the configuration prices choosing.)
+      if (p.method == "auto_compared" ? options.config.auto_choice_cycles > 0
+                                      : p.method == "auto" || options.config.has_method(parse_method(p.method).method))
+        points.push_back(p);
 
   namespace fs = std::filesystem;
   fs::create_directories(a.out_dir);

@@ -253,6 +253,16 @@ AutoPricing auto_pricing(const AutoConfig& cfg) {
   return p;
 }
 
+AutoNum recip_nr_span_limit(const AutoPricing& pr, AutoNum tol) {
+  // RECIP_NR's bound (du/2 + 1) * e + base (cheap_bounds) is within tol for du <= D = 2 (q - 1),
+  // q = (tol - base) / e. The truncated arithmetic never computes that bound above its exact
+  // value, so D itself is the limit; it is taken 2^-15 q lower for q's own rounding (within 2^-28).
+  const Num room = tol - pr.base;
+  if (room.m <= 0) return Num{};
+  const Num q = room / pr.newton_error;
+  return num_scale(q - num(1), 1) - num_scale(q, -15);
+}
+
 // AutoBounds' fields and their Bounds counterparts, in the same order.
 constexpr float AutoBounds::*kReportedBounds[] = {&AutoBounds::affine,       &AutoBounds::recip_lut,
                                                   &AutoBounds::recip_nr,     &AutoBounds::divfree,

@@ -56,14 +56,7 @@ AutoMesh auto_mesh(const fw::AutoConfig& cfg, fw::AutoSampling sampling, TexSize
   // The chooser's test, pixels * gain < choice_cycles with pixels = |area2| / 2^17 and gain =
   // gain16 / 16, is |area2| * gain16 < choice_cycles * 2^21 in integers.
   m.skip_gain16 = cfg.nr_divide_cost16 > cfg.pixel_cost16 ? cfg.nr_divide_cost16 - cfg.pixel_cost16 : 0u;
-  // RECIP_NR within the tolerance: (du/2 + 1) * e + base <= tol (e its relative error) holds for
-  // du <= D = 2 (q - 1), q = (tol - base) / e. The chooser's truncated arithmetic never computes
-  // the bound above its exact value, so D itself is the limit; it is taken 2^-15 q lower for q's own
-  // rounding (within 2^-28 of it).
-  const fw::AutoNum room = tolerance - m.pricing.base;
-  if (room.m <= 0) return m;
-  const fw::AutoNum q = room / m.pricing.newton_error;
-  const fw::AutoNum du = fw::num_scale(q - fw::num_from_int(1), 1) - fw::num_scale(q, -15);
+  const fw::AutoNum du = fw::recip_nr_span_limit(m.pricing, tolerance);
   m.skip_s_range = num_floor_capped(fw::num_scale(du, 16 - tex.log2_width), kRangeCap);
   m.skip_t_range = num_floor_capped(fw::num_scale(du, 16 - tex.log2_height), kRangeCap);
   if (m.skip_s_range < 0 || m.skip_t_range < 0) return m;

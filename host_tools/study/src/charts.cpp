@@ -94,12 +94,18 @@ void tradeoff_chart(const std::string& dir, const std::string& scene, const std:
   std::ofstream dat = open_file(dir + "/" + name + ".dat");
   dat << "# fixed methods: clocks/pixel, max error, name\n";
   for (const Result& r : results)
-    if (r.point.sweep == "tradeoff" && r.point.scene == scene && r.point.method != "auto")
+    if (r.point.sweep == "tradeoff" && r.point.scene == scene && r.point.method.rfind("auto", 0) != 0)
       dat << r.clocks_per_pixel << " " << floored(r.max_error) << " " << r.point.method << "\n";
-  dat << "\n\n# auto: clocks/pixel, max error, tolerance\n";
+  bool any_compared = false;
   for (const Result& r : results)
-    if (r.point.sweep == "tradeoff" && r.point.scene == scene && r.point.method == "auto")
-      dat << r.clocks_per_pixel << " " << floored(r.max_error) << " " << r.point.tolerance << "\n";
+    any_compared = any_compared || (r.point.sweep == "tradeoff" && r.point.method == "auto_compared");
+  for (const char* method : {"auto", "auto_compared"}) {
+    if (method == std::string("auto_compared") && !any_compared) break;
+    dat << "\n\n# " << method << ": clocks/pixel, max error, tolerance\n";
+    for (const Result& r : results)
+      if (r.point.sweep == "tradeoff" && r.point.scene == scene && r.point.method == method)
+        dat << r.clocks_per_pixel << " " << floored(r.max_error) << " " << r.point.tolerance << "\n";
+  }
   std::ofstream gp = open_file(dir + "/" + name + ".gp");
   gp << header(name, "Speed against accuracy on " + scene, o)
      << "set logscale y\nset xlabel 'clocks per pixel'\nset ylabel 'max texel-coordinate error (texels)'\n"
@@ -107,7 +113,11 @@ void tradeoff_chart(const std::string& dir, const std::string& scene, const std:
      << "     '" << name << ".dat' index 0 using 1:2:3 with labels offset 0.8,0.6 left font ',9' notitle, \\\n"
      << "     '" << name << ".dat' index 1 using 1:2 with linespoints pt 5 title 'AUTO at tolerances', \\\n"
      << "     '" << name << ".dat' index 1 using 1:2:(sprintf('%g', $3)) with labels offset 0.8,-0.6 left "
-     << "font ',8' notitle\n";
+     << "font ',8' notitle";
+  if (any_compared)
+    gp << ", \\\n     '" << name << ".dat' index 2 using 1:2 with linespoints pt 4 dt 2 "
+       << "title 'AUTO, every choice compared'";
+  gp << "\n";
 }
 
 }  // namespace

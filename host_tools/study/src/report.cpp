@@ -122,8 +122,10 @@ std::string summary_markdown(const std::vector<Result>& results, const Options& 
       md << "\n### Trade-off on `" << scene << "`\n\n"
          << "| method | clocks / pixel | max error | p99.9 error | bound | drawn with |\n|---|---|---|---|---|---|\n";
     }
-    const std::string name =
-        r.point.method == "auto" ? "auto (" + fraction_name(r.point.tolerance) + ")" : r.point.method;
+    const std::string name = r.point.method == "auto" ? "auto (" + fraction_name(r.point.tolerance) + ")"
+                             : r.point.method == "auto_compared"
+                                 ? "auto, every choice compared (" + fraction_name(r.point.tolerance) + ")"
+                                 : r.point.method;
     md << "| " << name << " | " << num(r.clocks_per_pixel, "%.2f") << " | " << num(r.max_error) << " | "
        << num(r.p999_error) << " | " << (r.bound < 0 ? "-" : num(r.bound)) << " | " << r.methods_used << " |\n";
   }

@@ -36,12 +36,18 @@ Result run_point(const Point& point, const Options& options) {
   Result r;
   r.point = point;
   ScreenScene screen = prepare_screen_scene(load_scene(point.scene), options.width, options.height);
-  const MethodChoice choice = parse_method(point.method);
+  // "auto_compared": AUTO with the choice priced as free, so that every triangle's is compared.
+  const bool compared = point.method == "auto_compared";
+  const MethodChoice choice = parse_method(compared ? "auto" : point.method);
   for (ScreenTri& t : screen.tris) {
     t.state.method = choice.method;
     t.state.subdiv_n = choice.subdiv_n;
   }
-  if (choice.method == Method::Auto) fw::resolve_auto_methods(screen, options.config, float(point.tolerance));
+  if (choice.method == Method::Auto) {
+    ModelConfig auto_config = options.config;
+    if (compared) auto_config.auto_choice_cycles = 0;
+    fw::resolve_auto_methods(screen, auto_config, float(point.tolerance));
+  }
 
   const fw::AutoConfig ac = fw::auto_config_of(options.config);
   std::map<std::string, int> used;

@@ -133,6 +133,11 @@ struct AutoPricing {
 };
 AutoPricing auto_pricing(const AutoConfig& cfg);
 
+// The largest texel span du (texels, the larger of u's and v's) for which choose_method finds
+// RECIP_NR's bound within `tolerance`, a little below the exact limit (0 or less: none). The
+// firmware's integer test of the skip (htx/render/auto_method.h) reads it.
+AutoNum recip_nr_span_limit(const AutoPricing& pricing, AutoNum tolerance);
+
 // The cheapest built method (bit i of `built` = method i) whose bound is within `tolerance`
 // texels; among equal costs the smaller bound. When none is within it (or the triangle is
 // degenerate or not finite): RECIP_NR if built, else RECIP_LUT, else SUBDIV with n = 2, else AFFINE,

@@ -22,8 +22,8 @@ struct Point {
   std::string scene;      // built-in scene spec, e.g. "wsweep:r=10,du=256"
   std::string param;      // the swept parameter: r, du, n, tolerance, or "" (none)
   double value = 0;       // its value at this point
-  std::string method;     // a name parse_method takes ("subdiv16", "auto", ...)
-  double tolerance = 0;   // AUTO's tolerance in texels (method "auto" only)
+  std::string method;     // a name parse_method takes ("subdiv16", "auto", ...), or "auto_compared"
+  double tolerance = 0;   // AUTO's tolerance in texels (methods "auto" and "auto_compared" only)
 };
 
 // The sweeps, in the order they run. `quick` keeps the ends and the middle of each range (for tests
