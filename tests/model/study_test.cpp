@@ -91,6 +91,27 @@ TEST(Study, AutoStaysWithinItsToleranceOnTheCube) {
   }
 }
 
+// "auto_compared" is AUTO with the choice priced as free: on `floor` at 1/16 texel the SoC's AUTO
+// skips most choices (RECIP_NR), the compared one gives cheaper methods to some of those triangles,
+// and both stay within the tolerance.
+TEST(Study, AutoComparedComparesTheChoicesAutoSkips) {
+  const auto options = icebreaker_options();
+  const Result skipping = htx::study::run_point({"tradeoff", "floor", "tolerance", 0.0625, "auto", 0.0625}, options);
+  const Result compared =
+      htx::study::run_point({"tradeoff", "floor", "tolerance", 0.0625, "auto_compared", 0.0625}, options);
+  const auto count_of = [](const std::string& used, const std::string& method) {
+    const size_t at = used.find(method + ":");
+    return at == std::string::npos ? 0 : std::stoi(used.substr(at + method.size() + 1));
+  };
+  EXPECT_GT(count_of(skipping.methods_used, "recip_nr"), count_of(compared.methods_used, "recip_nr"))
+      << skipping.methods_used << " / " << compared.methods_used;
+  EXPECT_LE(compared.clocks, skipping.clocks);
+  for (const Result& r : {skipping, compared}) {
+    EXPECT_LE(r.bound, 0.0625);
+    EXPECT_LE(r.max_error, 0.0625);
+  }
+}
+
 Result synthetic(const std::string& method, double value, double error, double bound) {
   Result r;
   r.point = {"ratio", "wsweep", "r", value, method, 0};
