@@ -82,7 +82,7 @@ void run_study(const StudyArgs& a) {
   for (size_t i = 0; i < points.size(); ++i) {
     const study::Result r = study::run_point(points[i], options);
     std::cout << "[" << i + 1 << "/" << points.size() << "] " << r.point.sweep << " " << r.point.scene << " "
-              << r.point.method << (r.point.method == "auto" ? " " + std::to_string(r.point.tolerance) : "")
+              << r.point.method << (r.point.param == "tolerance" ? " " + std::to_string(r.point.tolerance) : "")
               << ": max error " << r.max_error << ", " << r.clocks_per_pixel << " clocks/pixel"
               << (r.mismatch > 0 ? ", FRAME DIFFERS FROM THE MODEL'S" : "") << std::endl;
     mismatched += r.mismatch > 0 ? 1 : 0;

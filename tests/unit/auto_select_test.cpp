@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -230,29 +231,43 @@ TEST(AutoChoose, RecipNrWithoutComparingWhereChoosingCannotPay) {
   EXPECT_FALSE(c.skipped);
 }
 
+// x with a x = 1 modulo m, for a and m coprime (extended Euclid).
+int64_t inverse_mod(int64_t a, int64_t m) {
+  int64_t r0 = m, r1 = a, t0 = 0, t1 = 1;
+  while (r1 != 0) {
+    const int64_t q = r0 / r1;
+    r0 -= q * r1, std::swap(r0, r1);
+    t0 -= q * t1, std::swap(t0, t1);
+  }
+  return (t0 % m + m) % m;
+}
+
 // The firmware tests the skip in integers before any AutoNum work (render::auto_mesh, auto_method):
-// over random fixed-point triangles its choice is the chooser's, bit for bit. A quarter are random
-// anywhere; a quarter have an area within 2 % of the skip's limit (400 pixels on icebreaker); a
-// quarter one within 120 units (2^-16 pixel) of it; a quarter a texel span within 2^-8 of the
-// integer test's limit at tolerances just above RECIP_NR's rounding. Both sides of each margin
-// are reached: some triangles the integer test leaves to the chooser are skipped there.
+// over random fixed-point triangles its choice is the chooser's, bit for bit. A fifth are random
+// anywhere; a fifth have an area within 2 % of the skip's limit (400 pixels on icebreaker); a
+// fifth one within 120 units (2^-16 pixel) of it; a fifth a texel span within 2^-8 of the
+// integer test's limit at tolerances just above RECIP_NR's rounding; a fifth are slivers whose
+// determinant AutoNum truncates, within 2,000 units of the limit. Both sides of each margin are
+// reached: some triangles the integer test leaves to the chooser are skipped there.
 TEST(AutoChoose, FirmwareSkipTestAgreesWithTheChooser) {
   std::mt19937 rng(4242);
-  enum Kind { kAnywhere, kNearArea, kAtArea, kAtSpan };
-  int integer_skips[4] = {}, chooser_skips[4] = {}, compared[4] = {};
+  enum Kind { kAnywhere, kNearArea, kAtArea, kAtSpan, kThinAtArea };
+  int integer_skips[5] = {}, chooser_skips[5] = {}, compared[5] = {};
   htx::render::ClipVert cv[3] = {};
   htx::render::ScreenVert sv[3] = {};
   const htx::render::ScreenVert* pv[3] = {&sv[0], &sv[1], &sv[2]};
-  for (int k = 0; k < 60000; ++k) {
-    const Kind kind = static_cast<Kind>(k % 4);
+  for (int k = 0; k < 75000; ++k) {
+    const Kind kind = static_cast<Kind>(k % 5);
     const bool full = kind == kAnywhere && k % 8 == 4;
     const AutoConfig cfg = full ? htx::fw::kAutoConfigFull : htx::fw::kAutoConfigIcebreaker;
     const htx::render::TexSize tex{static_cast<uint8_t>(rng() % 9), static_cast<uint8_t>(rng() % 9)};
     const htx::fw::AutoSampling s{static_cast<uint8_t>(rng() % 3),
                                   static_cast<uint8_t>(std::max(tex.log2_width, tex.log2_height))};
-    const int64_t tol_q16 = kind == kAtSpan                  ? 257 + static_cast<int64_t>(rng() % 64)
+    // (an untextured mesh's tolerance, 2^40 in Q16.16, now and then among the random ones)
+    const int64_t tol_q16 = kind == kAtSpan                   ? 257 + static_cast<int64_t>(rng() % 64)
+                            : kind == kAnywhere && k % 7 == 0 ? int64_t{1} << 40
                             : kind == kAnywhere && k % 3 == 0 ? int64_t{1} << (rng() % 17)
-                                                             : 4096;
+                                                              : 4096;
     const uint32_t built = kind == kAnywhere && rng() % 4 == 0 ? static_cast<uint32_t>(rng() % 32) : 0x1Fu;
     const htx::render::AutoMesh mesh = htx::render::auto_mesh(cfg, s, tex, htx::render::auto_tolerance(tol_q16), built);
 
@@ -273,6 +288,25 @@ TEST(AutoChoose, FirmwareSkipTestAgreesWithTheChooser) {
       // integer test's slack is about fifty units here.
       const int32_t dx = int32_t{1} << (10 + rng() % 4);
       xs[1] += dx, ys[1] += 1, xs[2] += static_cast<int32_t>(rng() % 120), ys[2] += 52428800 / dx;
+    } else if (kind == kThinAtArea) {
+      // A sliver 2,048 to 4,096 pixels long whose determinant A D - C B is exactly 52,428,800 - r,
+      // r < 2,000 (A, C odd and coprime; D from A's inverse modulo C, then B), in either
+      // orientation. Its two products lie near 2^39, which AutoNum truncates by up to some 2^9
+      // units either way, so the slack (about 2^20 here) is what keeps the integer test from
+      // skipping where the chooser does not.
+      int64_t a = 0, c = 0;
+      do {
+        a = (int64_t{1} << 19) + 2 * static_cast<int64_t>(rng() % (1u << 17)) + 1;
+        c = (int64_t{1} << 19) + 2 * static_cast<int64_t>(rng() % (1u << 17)) + 1;
+      } while (std::gcd(a, c) != 1);
+      const int64_t target = 52428800 - static_cast<int64_t>(rng() % 2000);
+      const int64_t d = (int64_t{1} << 19) + ((target % c) * inverse_mod(a % c, c) % c - (int64_t{1} << 19) % c + 2 * c) % c;
+      const int64_t b = (a * d - target) / c;
+      const int first = k % 2 == 0 ? 1 : 2, second = 3 - first;
+      xs[first] += static_cast<int32_t>(a), ys[first] += static_cast<int32_t>(b);
+      xs[second] += static_cast<int32_t>(c), ys[second] += static_cast<int32_t>(d);
+      const int64_t det = (int64_t{xs[1]} - xs[0]) * (ys[2] - ys[0]) - (int64_t{xs[2]} - xs[0]) * (ys[1] - ys[0]);
+      ASSERT_EQ(det < 0 ? -det : det, target) << "triangle " << k;
     } else {
       xs[1] += 10 * 256, ys[2] += 10 * 256;  // 50 pixels
     }
@@ -304,12 +338,12 @@ TEST(AutoChoose, FirmwareSkipTestAgreesWithTheChooser) {
     else if (got.skipped) ++chooser_skips[kind];
     else ++compared[kind];
   }
-  for (const Kind kind : {kAnywhere, kNearArea, kAtArea, kAtSpan}) {
+  for (const Kind kind : {kAnywhere, kNearArea, kAtArea, kAtSpan, kThinAtArea}) {
     SCOPED_TRACE(testing::Message() << "kind " << kind << ": " << integer_skips[kind] << " skipped in integers, "
                                     << chooser_skips[kind] << " by the chooser, " << compared[kind] << " compared");
-    EXPECT_GT(integer_skips[kind], 1000);
-    EXPECT_GT(compared[kind], kind == kAtArea ? -1 : 100);
-    EXPECT_GT(chooser_skips[kind], kind == kAtArea ? 1000 : kind == kAtSpan ? 20 : -1);
+    EXPECT_GT(integer_skips[kind], kind == kThinAtArea ? -1 : 1000);
+    EXPECT_GT(compared[kind], kind == kAtArea || kind == kThinAtArea ? -1 : 100);
+    EXPECT_GT(chooser_skips[kind], kind == kAtArea || kind == kThinAtArea ? 1000 : kind == kAtSpan ? 20 : -1);
   }
 }
 
@@ -354,6 +388,7 @@ TEST(AutoChoose, EqualsTheRuleAppliedLiterally) {
       ASSERT_EQ(got.subdiv_n, want.subdiv_n) << "triangle " << k;
     }
     ASSERT_EQ(got.within, want.within) << "triangle " << k;
+    ASSERT_EQ(got.skipped, want.skipped) << "triangle " << k;
     ASSERT_EQ(got.bound, want.bound) << "triangle " << k;    // both rounded up from the same AutoNum
     ASSERT_EQ(got.cycles, want.cycles) << "triangle " << k;
     ++per_method[want.method];

@@ -6,11 +6,12 @@
 //   geombench <scene> triangles <n> sent <s> cycles/triangle <c>
 //   geombench <scene> triangles <n> sent <s> cycles/triangle <c> method recip_nr
 //   geombench <scene> triangles <n> sent <s> cycles/triangle <c> auto soc skipped <k>
+//   geombench <scene> triangles <n> sent <s> cycles/triangle <c> method recip_nr soc
 // (the second the same pipeline with every triangle's method fixed, so the difference is AUTO's
 // choice: its bounds and costs, htx/fw/auto_select.h; the first with the default `full`
 // configuration, which never skips a choice, at 1/64 texel and 320 x 240; the third AUTO as the
 // SoC's render firmware draws: `icebreaker`'s configuration, 1/16 texel, 160 x 120, k choices
-// skipped where they would not pay, docs/auto.md)
+// skipped where they would not pay, docs/auto.md; the fourth the same with the method fixed)
 //   geombench all vertices <n> cycles/vertex <c.cc>
 // and, for each triangle sent, what its setup costs the firmware for the `icebreaker` raster unit,
 // which takes plane records (CAPS.FW_SETUP; htx/fw/plane_record.h, docs/raster.md "Plane record"):
@@ -147,6 +148,11 @@ int main() {
     printf("geombench %s triangles %lu sent %lu cycles/triangle %lu auto soc skipped %lu\n", sc.name,
            static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(soc_sent),
            static_cast<unsigned long>(sc_cycles / sc.triangle_count), static_cast<unsigned long>(soc_st.auto_skipped));
+    soc_sent = 0;
+    if (!timed_draw(soc_frame, sc, fixed, &cache, &soc_sent, &soc_st, &sc_cycles)) return 1;
+    printf("geombench %s triangles %lu sent %lu cycles/triangle %lu method recip_nr soc\n", sc.name,
+           static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(soc_sent),
+           static_cast<unsigned long>(sc_cycles / sc.triangle_count));
 
     SetupTally tally;
     if (htx::render::draw_mesh(frame, sc.view_proj, mesh, &cache, {time_setup, &tally}, &st) == htx::render::kDrawOk &&

@@ -219,7 +219,8 @@ Num fallback_bound(const Bounds& b, const AutoPricing& pr, uint8_t method, unsig
 // pixel against RECIP_NR's, times the pixels), RECIP_NR when it is built and within the tolerance:
 // the choice without comparing (docs/auto.md, "When choosing does not pay").
 bool not_worth_choosing(const Footprint& f, const Bounds& b, const AutoPricing& pr, uint32_t built, Num tol) {
-  return (built & (1u << kAutoRecipNr)) && f.pixels * pr.pixel_gain < pr.choice && b.recip_nr <= tol;
+  return pr.choice.m != 0 && (built & (1u << kAutoRecipNr)) && f.pixels * pr.pixel_gain < pr.choice &&
+         b.recip_nr <= tol;
 }
 
 AutoChoice skipped_choice(const Footprint& f, const Bounds& b, const AutoPricing& pr) {

@@ -28,7 +28,8 @@ void emit_to_fifo(void*, uint32_t state_word, const uint32_t* words) { hal::rast
 uint8_t texture_top_level(TexSize tex) { return tex.log2_width > tex.log2_height ? tex.log2_width : tex.log2_height; }
 
 AutoMesh mesh_auto(const FrameParams& frame, const Mesh& mesh) {
-  // An untextured triangle has no texel error: any method will do, so the cheapest.
+  // An untextured triangle has no texel error: any method will do, so the cheapest (or RECIP_NR
+  // where choosing would not pay, as for any triangle).
   const fw::AutoNum tolerance = auto_tolerance(mesh.state.textured ? frame.auto_tolerance : int64_t{1} << 40);
   return auto_mesh(frame.auto_config, {mesh.state.filter, texture_top_level(mesh.tex)}, mesh.tex, tolerance,
                    frame.methods_built);

@@ -98,7 +98,8 @@ void tradeoff_chart(const std::string& dir, const std::string& scene, const std:
       dat << r.clocks_per_pixel << " " << floored(r.max_error) << " " << r.point.method << "\n";
   bool any_compared = false;
   for (const Result& r : results)
-    any_compared = any_compared || (r.point.sweep == "tradeoff" && r.point.method == "auto_compared");
+    any_compared =
+        any_compared || (r.point.sweep == "tradeoff" && r.point.scene == scene && r.point.method == "auto_compared");
   for (const char* method : {"auto", "auto_compared"}) {
     if (method == std::string("auto_compared") && !any_compared) break;
     dat << "\n\n# " << method << ": clocks/pixel, max error, tolerance\n";

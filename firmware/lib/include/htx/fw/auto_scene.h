@@ -44,7 +44,8 @@ AutoSampling auto_sampling_of(const ScreenScene& scene, const ScreenTri& tri) {
   return s;
 }
 
-// Untextured triangles have no texel error: they get the cheapest method.
+// Untextured triangles have no texel error: they get the cheapest method (or RECIP_NR where
+// choosing would not pay, as any triangle).
 template <class ScreenScene, class Config>
 AutoSceneSummary resolve_auto_methods(ScreenScene& scene, const Config& cfg, float tolerance) {
   AutoSceneSummary sum;
