@@ -18,6 +18,7 @@
 #include "htx/model/names.hpp"
 #include "htx/model/ref.hpp"
 #include "htx/model/scenes.hpp"
+#include "htx/render/tri_state.h"
 #if __has_include("htx/rtl/raster_engine.hpp")
 #include "htx/rtl/raster_engine.hpp"
 #define HTX_HAVE_RTL_ENGINE 1
@@ -29,6 +30,29 @@
 namespace htx {
 
 namespace {
+
+// What AUTO gave the triangles that asked for it (docs/auto.md): a line for the user and the
+// metrics' "auto" object, by the raster unit's method names.
+std::string auto_summary_line(const fw::AutoSceneSummary& s, double tolerance) {
+  char tol[32];
+  std::snprintf(tol, sizeof tol, "%g", tolerance);
+  std::string line = "auto: " + std::to_string(s.resolved) + " triangles at " + tol + " texel:";
+  const char* sep = " ";
+  for (uint32_t m = 0; m < render::kMethodNameCount; ++m) {
+    if (s.per_method[m] == 0) continue;
+    line += sep + std::string(render::kMethodNames[m]) + " " + std::to_string(s.per_method[m]);
+    sep = ", ";
+  }
+  return line + "; " + std::to_string(s.skipped) + " without comparing (choosing would not pay), " +
+         std::to_string(s.not_within) + " with no method predicted within the tolerance";
+}
+
+nlohmann::json auto_summary_json(const fw::AutoSceneSummary& s) {
+  nlohmann::json methods = nlohmann::json::object();
+  for (uint32_t m = 0; m < render::kMethodNameCount; ++m)
+    if (s.per_method[m] > 0) methods[render::kMethodNames[m]] = s.per_method[m];
+  return {{"triangles", s.resolved}, {"methods", methods}, {"skipped", s.skipped}, {"not_within", s.not_within}};
+}
 
 #ifdef HTX_HAVE_RTL_ENGINE
 constexpr const char* kEngines = "ref, model, rtl, soc or board";
@@ -85,7 +109,8 @@ void run_render(const RenderArgs& given) {
   if (board) config.methods &= icebreaker_board_methods();
   // AUTO: the firmware's per-triangle choice (docs/auto.md) within --tolerance texels.
   if (!(a.tolerance > 0)) throw std::invalid_argument("--tolerance must be > 0 texels");
-  fw::resolve_auto_methods(screen, config, static_cast<float>(a.tolerance));
+  const fw::AutoSceneSummary auto_summary = fw::resolve_auto_methods(screen, config, static_cast<float>(a.tolerance));
+  if (auto_summary.resolved > 0) std::cout << auto_summary_line(auto_summary, a.tolerance) << "\n";
   RefOptions ref_options;
   ref_options.depth_bits = config.z_bits;
 
@@ -108,6 +133,7 @@ void run_render(const RenderArgs& given) {
                          a.filter.empty() ? "scene" : a.filter, a.engine == "ref" ? "-" : a.config};
     nlohmann::json j = metrics_to_json(compute_metrics(frame, ref, labels));
     if (a.engine == "model") j["cycles"] = frame.counters.cycles;  // the model's estimate (docs/model.md §9)
+    if (auto_summary.resolved > 0) j["auto"] = auto_summary_json(auto_summary);
 #ifdef HTX_HAVE_RTL_ENGINE
     if (a.engine == "rtl") {
       j["cycles"] = rtl_stats.cycles;

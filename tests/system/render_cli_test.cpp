@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
@@ -103,6 +104,48 @@ TEST(SystemRenderCli, OutputsInAMissingDirectoryAreRefusedBeforeRendering) {
     EXPECT_EQ(r.out.find("rendered"), std::string::npos) << option << ": rendered first: " << r.out;
   }
   EXPECT_FALSE(std::filesystem::exists(png)) << "the PNG was written before the metrics were refused";
+}
+
+}  // namespace
+
+namespace {
+
+// `--method auto` says what AUTO gave the triangles (a line, and the metrics' "auto" object): on
+// `icebreaker` most of `floor`'s are small enough that choosing would not pay and get RECIP_NR
+// without comparing (docs/auto.md); `full` prices the choice at nothing and compares every one; a
+// draw without AUTO has no such object.
+TEST(SystemRenderCli, AutoReportsWhatItGaveTheTriangles) {
+  std::map<std::string, nlohmann::json> by_config;
+  for (const char* config : {"icebreaker", "full"}) {
+    const std::string metrics = temp_path(std::string("auto_") + config + ".json");
+    const auto r = htx::test::run_program({HTX_BIN, "render", "floor", "--engine", "model", "--config", config,
+                                           "--method", "auto", "--tolerance", "0.0625", "--size", "160x120",
+                                           "--out", temp_path(std::string("auto_") + config + ".png"), "--metrics",
+                                           metrics},
+                                          60s);
+    ASSERT_FALSE(r.timed_out);
+    ASSERT_EQ(r.status, 0) << config << ": " << r.err;
+    EXPECT_NE(r.out.find("auto: 116 triangles at 0.0625 texel: "), std::string::npos) << r.out;
+    const nlohmann::json a = read_json(metrics).at("auto");
+    EXPECT_EQ(a.at("triangles"), 116) << config;
+    uint64_t sum = 0;
+    for (const auto& [name, count] : a.at("methods").items()) sum += count.get<uint64_t>();
+    EXPECT_EQ(sum, 116u) << a.dump();
+    EXPECT_EQ(a.at("not_within"), 0) << a.dump();
+    by_config[config] = a;
+  }
+  const nlohmann::json& ice = by_config["icebreaker"];
+  EXPECT_GT(ice.at("skipped").get<uint64_t>(), 100u) << ice.dump();
+  EXPECT_LE(ice.at("skipped").get<uint64_t>(), ice.at("methods").at("recip_nr").get<uint64_t>()) << ice.dump();
+  EXPECT_EQ(by_config["full"].at("skipped"), 0) << by_config["full"].dump();
+
+  const std::string metrics = temp_path("no_auto.json");
+  const auto r = htx::test::run_program({HTX_BIN, "render", "floor", "--engine", "model", "--size", "80x60", "--out",
+                                         temp_path("no_auto.png"), "--metrics", metrics},
+                                        60s);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.find("auto:"), std::string::npos) << r.out;
+  EXPECT_FALSE(read_json(metrics).contains("auto"));
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ struct AutoSceneSummary {
   uint32_t resolved = 0;          // triangles that asked for AUTO
   uint32_t per_method[5] = {};    // how many got each method
   uint32_t not_within = 0;        // fell back: no method predicted within the tolerance
+  uint32_t skipped = 0;           // RECIP_NR without comparing: choosing would not pay
   double predicted_cycles = 0;    // sum of the chosen methods' predicted cycles
 };
 
@@ -60,6 +61,7 @@ AutoSceneSummary resolve_auto_methods(ScreenScene& scene, const Config& cfg, flo
     ++sum.resolved;
     if (c.method < 5) ++sum.per_method[c.method];
     sum.not_within += c.within ? 0 : 1;
+    sum.skipped += c.skipped ? 1 : 0;
     sum.predicted_cycles += c.cycles;
   }
   return sum;
