@@ -240,6 +240,9 @@ void render_on_console(const RenderArgs& a) {
     j["triangles"] = number_or_null(drawn.figures.at("triangles"));
     j["sent"] = number_or_null(drawn.figures.at("sent"));
     j["crc32"] = drawn.figures.at("crc32");
+    // AUTO's skipped choices, which a console from before 2026-12-06 does not print.
+    if (draw.method == "auto" && drawn.figures.count("auto_skipped"))
+      j["auto"] = {{"skipped", number_or_null(drawn.figures.at("auto_skipped"))}};
     console_probe_figures(scene, draw, drawn, caps, screen_of, ref_options, labels, a.engine, &j);
     write_metrics(a.metrics, j);
   }

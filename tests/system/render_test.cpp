@@ -384,6 +384,9 @@ TEST(SystemRender, ConsoleRenderOverDrawsOnTheLastFrame) {
   const std::regex render_line(R"(render (floor|cube) method [^\r\n]* crc32 ([0-9a-f]{8}))");
   for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), render_line); it != std::sregex_iterator(); ++it)
     crcs.push_back((*it)[2]);
+  std::smatch skipped;  // AUTO's choices the floor's draw took without comparing
+  ASSERT_TRUE(std::regex_search(r.out, skipped, std::regex(R"(render floor method auto [^\r\n]* auto_skipped (\d+) )")))
+      << r.out;
   ASSERT_EQ(crcs.size(), 3u) << r.out;
   size_t usage = 0;
   for (size_t at = r.out.find("error: usage: render SCENE [over] [hold]"); at != std::string::npos;
@@ -403,6 +406,8 @@ TEST(SystemRender, ConsoleRenderOverDrawsOnTheLastFrame) {
   const render_app::DrawResult floor = render_app::draw_scene(*floor_scene, settings);
   ASSERT_TRUE(floor.ok) << floor.error;
   EXPECT_EQ(crcs[0], hex8(floor.crc));
+  EXPECT_EQ(skipped[1], std::to_string(floor.stats.auto_skipped));
+  EXPECT_GT(floor.stats.auto_skipped, 100u) << "most of floor's small triangles (docs/auto.md)";
   settings.clear = false;
   const render_app::DrawResult over = render_app::draw_scene(*cube_scene, settings);
   ASSERT_TRUE(over.ok) << over.error;
@@ -506,6 +511,7 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
   EXPECT_EQ(m.at("engine"), "soc");
   EXPECT_EQ(m.at("config"), "icebreaker");
   EXPECT_EQ(m.at("method"), "recip_nr");
+  EXPECT_FALSE(m.contains("auto")) << m.dump();  // (no AUTO, so no choices to report)
   EXPECT_EQ(m.at("crc32"), want);
   EXPECT_EQ(m.at("sent"), cube.sent);
   EXPECT_GT(m.at("cycles").get<uint64_t>(), 0u);
@@ -544,6 +550,8 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
     std::ifstream board_json(dir / "board.json");
     const nlohmann::json bm = nlohmann::json::parse(board_json);
     EXPECT_EQ(bm.at("probe"), "model") << board.err;
+    // The console's render line says how many choices it skipped: none of the cube's six large ones.
+    EXPECT_EQ(bm.at("auto").at("skipped"), 0) << bm.dump();
     EXPECT_TRUE(bm.at("max_texel_error").is_number() && bm.at("max_texel_error").get<double>() < 1.0 / 16 + 1.0 / 256)
         << bm.dump();
     EXPECT_NE(board.err.find("board: serial line back to 115200 baud"), std::string::npos) << board.err;

@@ -289,7 +289,7 @@ TEST(AutoChoose, FirmwareSkipTestAgreesWithTheChooser) {
       const int32_t dx = int32_t{1} << (10 + rng() % 4);
       xs[1] += dx, ys[1] += 1, xs[2] += static_cast<int32_t>(rng() % 120), ys[2] += 52428800 / dx;
     } else if (kind == kThinAtArea) {
-      // A sliver 2,048 to 4,096 pixels long whose determinant A D - C B is exactly 52,428,800 - r,
+      // A sliver 2,048 to 3,072 pixels long whose determinant A D - C B is exactly 52,428,800 - r,
       // r < 2,000 (A, C odd and coprime; D from A's inverse modulo C, then B), in either
       // orientation. Its two products lie near 2^39, which AutoNum truncates by up to some 2^9
       // units either way, so the slack (about 2^20 here) is what keeps the integer test from

@@ -3,9 +3,10 @@
 // scene_selection.hpp) textured on the SoC's GPU with the firmware render pipeline (firmware/render
 // over hal/target) and reports, one line per scene on the UART:
 //   render <scene> vertices <n> geometry_cycles_per_vertex <c.cc> triangles <t> sent <s> clipped <k>
-//     culled <u> frame_cycles <f> raster_cycles <r> fragments <g> crc32 <8 hex digits>
+//     culled <u> auto_skipped <a> frame_cycles <f> raster_cycles <r> fragments <g> crc32 <8 hex digits>
 // geometry_cycles_per_vertex: CPU cycles of process_vertices (transform, clip test, projection) per
-// vertex, the mean of kGeometryRuns runs after a warm-up. frame_cycles: CPU cycles of the whole frame
+// vertex, the mean of kGeometryRuns runs after a warm-up. auto_skipped: AUTO's choices taken as
+// RECIP_NR without comparing, where choosing would not pay (docs/auto.md). frame_cycles: CPU cycles of the whole frame
 // (clear, geometry, streaming, waiting for the raster unit). raster_cycles and fragments: the raster
 // unit's CNT_BUSY and CNT_FRAGMENTS, `-` on a build without counters (CAPS.COUNTERS). crc32:
 // frame_crc.hpp over the colour window. Exits 0, or 1 on any failure.
@@ -31,10 +32,10 @@ bool render_scene(const render_app::SceneData& sc) {
   printf("render %s vertices %lu geometry_cycles_per_vertex ", sc.name,
          static_cast<unsigned long>(r.geometry_vertices / render_app::kGeometryRuns));
   render_app::print_ratio(r.geometry_cycles, r.geometry_vertices);
-  printf(" triangles %lu sent %lu clipped %lu culled %lu frame_cycles %lu ",
+  printf(" triangles %lu sent %lu clipped %lu culled %lu auto_skipped %lu frame_cycles %lu ",
          static_cast<unsigned long>(r.stats.triangles), static_cast<unsigned long>(r.stats.sent),
          static_cast<unsigned long>(r.stats.clipped), static_cast<unsigned long>(r.stats.culled),
-         static_cast<unsigned long>(r.frame_cycles));
+         static_cast<unsigned long>(r.stats.auto_skipped), static_cast<unsigned long>(r.frame_cycles));
   render_app::print_raster_figures(r.counters);
   printf(" crc32 %08lx\n", static_cast<unsigned long>(r.crc));
   return true;
