@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "htx/fw/auto_select.h"
 #include "htx/model/model.hpp"
 #include "htx/model/perspective.hpp"
 #include "htx/model/texture.hpp"
@@ -263,6 +266,24 @@ TEST(Fragment, GouraudScreenLinearOrPerspectiveCorrect) {
   a.perspective_color = false;
   b.perspective_color = true;
   EXPECT_NE(render_model(sc, a).color, render_model(sc, b).color);
+}
+
+// AUTO's costs and price are 16-bit fields of fw::AutoConfig: a larger one is refused by name
+// rather than cut short.
+TEST(Auto, ConfigurationRefusesACostOrPriceBeyondSixteenBits) {
+  ModelConfig c = model_config("icebreaker");
+  EXPECT_NO_THROW(c.validate());
+  EXPECT_EQ(fw::auto_config_of(c).choice_cycles, 4500);
+  c.auto_choice_cycles = 70000;
+  try {
+    c.validate();
+    ADD_FAILURE() << "a price of 70000 CPU clocks was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("auto_"), std::string::npos) << e.what();
+  }
+  c = model_config("icebreaker");
+  c.auto_nr_divide_cost16 = 65536;
+  EXPECT_THROW(c.validate(), std::invalid_argument);
 }
 
 }  // namespace

@@ -90,6 +90,10 @@ void ModelConfig::validate() const {
   check(setup_nr_steps <= 3 && pixel_nr_steps <= 3, "nr_steps", "0..3");
   check(recip_issue_interval >= 1, "recip_issue_interval", ">= 1");
   check(texcoord_frac_bits >= 10 && texcoord_frac_bits <= 20, "texcoord_frac_bits", "10..20");
+  // AUTO's cost table and price travel as 16-bit fields (fw::AutoConfig).
+  for (const unsigned v : {auto_pixel_cost16, auto_lut_divide_cost16, auto_nr_divide_cost16, auto_affine_setup_cost16,
+                           auto_choice_cycles})
+    check(v <= 0xFFFF, "auto_* (AUTO's costs and price)", "0..65535");
   check(divfree_frac_bits <= 8, "divfree_frac_bits", "0..8");
   check(divfree_cap >= 1 && divfree_cap <= 4096, "divfree_cap", "1..4096");
   check(lod_frac_bits >= 4 && lod_frac_bits <= 8, "lod_frac_bits", "4..8");
