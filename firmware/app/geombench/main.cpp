@@ -87,6 +87,18 @@ bool timed_draw(const htx::render::FrameParams& frame, const geombench::BenchSce
   return true;
 }
 
+// timed_draw, then the line's common part, "geombench <scene> triangles <n> sent <s> cycles/triangle
+// <c>"; the caller ends the line.
+bool print_timed_draw(const htx::render::FrameParams& frame, const geombench::BenchScene& sc,
+                      const htx::render::Mesh& mesh, htx::render::VertexCache* cache, htx::render::DrawStats* st) {
+  uint32_t sent = 0;
+  uint64_t cycles = 0;
+  if (!timed_draw(frame, sc, mesh, cache, &sent, st, &cycles)) return false;
+  printf("geombench %s triangles %lu sent %lu cycles/triangle %lu", sc.name, static_cast<unsigned long>(sc.triangle_count),
+         static_cast<unsigned long>(sent), static_cast<unsigned long>(cycles / sc.triangle_count));
+  return true;
+}
+
 }  // namespace
 
 int main() {
@@ -130,29 +142,18 @@ int main() {
 
     htx::render::Mesh fixed = mesh;
     fixed.state.method = htx::render::kMethodRecipNr;
-    uint32_t fixed_sent = 0;
-    uint64_t fc = 0;
-    if (!timed_draw(frame, sc, fixed, &cache, &fixed_sent, &st, &fc)) return 1;
-    printf("geombench %s triangles %lu sent %lu cycles/triangle %lu method recip_nr\n", sc.name,
-           static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(fixed_sent),
-           static_cast<unsigned long>(fc / sc.triangle_count));
+    if (!print_timed_draw(frame, sc, fixed, &cache, &st)) return 1;
+    printf(" method recip_nr\n");
 
     htx::render::FrameParams soc_frame;
     soc_frame.viewport = {160, 120};
     soc_frame.auto_config = htx::fw::kAutoConfigIcebreaker;
     soc_frame.auto_tolerance = htx::render::kOne / 16;
     htx::render::DrawStats soc_st;
-    uint32_t soc_sent = 0;
-    uint64_t sc_cycles = 0;
-    if (!timed_draw(soc_frame, sc, mesh, &cache, &soc_sent, &soc_st, &sc_cycles)) return 1;
-    printf("geombench %s triangles %lu sent %lu cycles/triangle %lu auto soc skipped %lu\n", sc.name,
-           static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(soc_sent),
-           static_cast<unsigned long>(sc_cycles / sc.triangle_count), static_cast<unsigned long>(soc_st.auto_skipped));
-    soc_sent = 0;
-    if (!timed_draw(soc_frame, sc, fixed, &cache, &soc_sent, &soc_st, &sc_cycles)) return 1;
-    printf("geombench %s triangles %lu sent %lu cycles/triangle %lu method recip_nr soc\n", sc.name,
-           static_cast<unsigned long>(sc.triangle_count), static_cast<unsigned long>(soc_sent),
-           static_cast<unsigned long>(sc_cycles / sc.triangle_count));
+    if (!print_timed_draw(soc_frame, sc, mesh, &cache, &soc_st)) return 1;
+    printf(" auto soc skipped %lu\n", static_cast<unsigned long>(soc_st.auto_skipped));
+    if (!print_timed_draw(soc_frame, sc, fixed, &cache, &soc_st)) return 1;
+    printf(" method recip_nr soc\n");
 
     SetupTally tally;
     if (htx::render::draw_mesh(frame, sc.view_proj, mesh, &cache, {time_setup, &tally}, &st) == htx::render::kDrawOk &&
