@@ -24,6 +24,24 @@ int64_t range_of(int32_t a, int32_t b, int32_t c) {
   return static_cast<int64_t>(hi) - lo;
 }
 
+// The chooser's first rule tested on the fixed-point vertices (AutoMesh's skip_* limits).
+bool skip_in_integers(const ScreenVert* const v[3], const AutoMesh& mesh) {
+  const int64_t dx1 = static_cast<int64_t>(v[1]->x) - v[0]->x, dy2 = static_cast<int64_t>(v[2]->y) - v[0]->y;
+  const int64_t dx2 = static_cast<int64_t>(v[2]->x) - v[0]->x, dy1 = static_cast<int64_t>(v[1]->y) - v[0]->y;
+  // Differences beyond 2^16 pixels are left to the chooser (their products could overflow).
+  constexpr int64_t kDifferenceCap = kRangeCap >> 16;
+  if (magnitude64(dx1) >= kDifferenceCap || magnitude64(dx2) >= kDifferenceCap || magnitude64(dy1) >= kDifferenceCap ||
+      magnitude64(dy2) >= kDifferenceCap)
+    return false;
+  const int64_t p1 = dx1 * dy2, p2 = dx2 * dy1;
+  // The chooser's determinant is within a few 2^-30 of |p1| + |p2| of the exact one: the slack
+  // covers 2^-20 of it and two units.
+  const int64_t area2 = magnitude64(p1 - p2) + ((magnitude64(p1) + magnitude64(p2)) >> 20) + 2;
+  return area2 < kRangeCap && area2 * static_cast<int64_t>(mesh.skip_gain16) < mesh.skip_area_limit &&
+         range_of(v[0]->attr->s, v[1]->attr->s, v[2]->attr->s) <= mesh.skip_s_range &&
+         range_of(v[0]->attr->t, v[1]->attr->t, v[2]->attr->t) <= mesh.skip_t_range;
+}
+
 }  // namespace
 
 fw::AutoTriangleNum auto_triangle(const ScreenVert* const v[3], TexSize tex) {
@@ -65,25 +83,12 @@ AutoMesh auto_mesh(const fw::AutoConfig& cfg, fw::AutoSampling sampling, TexSize
 }
 
 fw::AutoChoice auto_method(const ScreenVert* const v[3], const AutoMesh& mesh) {
-  if (mesh.skip_area_limit != 0) {
-    const int64_t dx1 = static_cast<int64_t>(v[1]->x) - v[0]->x, dy2 = static_cast<int64_t>(v[2]->y) - v[0]->y;
-    const int64_t dx2 = static_cast<int64_t>(v[2]->x) - v[0]->x, dy1 = static_cast<int64_t>(v[1]->y) - v[0]->y;
-    // (Differences beyond 2^16 pixels are left to the chooser: their products could overflow.)
-    const bool small = magnitude64(dx1) < kRangeCap >> 16 && magnitude64(dx2) < kRangeCap >> 16 &&
-                       magnitude64(dy1) < kRangeCap >> 16 && magnitude64(dy2) < kRangeCap >> 16;
-    const int64_t p1 = magnitude64(dx1 * dy2), p2 = magnitude64(dx2 * dy1);
-    // The chooser's determinant is within a few 2^-30 of |p1| + |p2| of the exact one: the slack
-    // covers 2^-20 of it and two units.
-    const int64_t area2 = magnitude64(dx1 * dy2 - dx2 * dy1) + ((p1 + p2) >> 20) + 2;
-    if (small && area2 < kRangeCap && area2 * static_cast<int64_t>(mesh.skip_gain16) < mesh.skip_area_limit &&
-        range_of(v[0]->attr->s, v[1]->attr->s, v[2]->attr->s) <= mesh.skip_s_range &&
-        range_of(v[0]->attr->t, v[1]->attr->t, v[2]->attr->t) <= mesh.skip_t_range) {
-      fw::AutoChoice c;
-      c.method = fw::kAutoRecipNr;
-      c.within = true;
-      c.skipped = true;
-      return c;
-    }
+  if (mesh.skip_area_limit != 0 && skip_in_integers(v, mesh)) {
+    fw::AutoChoice c;
+    c.method = fw::kAutoRecipNr;
+    c.within = true;
+    c.skipped = true;
+    return c;
   }
   return fw::choose_method(auto_triangle(v, mesh.tex), mesh.pricing, mesh.sampling, mesh.built, mesh.tolerance);
 }
