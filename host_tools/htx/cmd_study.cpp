@@ -71,7 +71,7 @@ void run_study(const StudyArgs& a) {
   for (const std::string& sweep : sweeps)
     for (const study::Point& p : study::sweep_points(sweep, a.quick))
       // (AUTO with every choice compared differs from AUTO only where the configuration prices choosing.)
-      if (p.method == "auto_compared" ? options.config.auto_choice_cycles > 0
+      if (p.method == study::kAutoCompared ? options.config.auto_choice_cycles > 0
                                       : p.method == "auto" || options.config.has_method(parse_method(p.method).method))
         points.push_back(p);
 

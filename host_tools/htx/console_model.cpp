@@ -96,7 +96,6 @@ ConsoleCaps console_caps(console::ConsoleClient& client) {
 }
 
 ConsoleModel console_model_frame(const ConsoleDraw& draw, const ConsoleCaps& caps) {
-  const uint32_t methods_built = caps.methods_built, filters_built = caps.filters_built;
   render_app::DrawSettings settings = console_settings(draw);
   RecordScene records;
   records.width = render_app::kWidth;
@@ -138,7 +137,7 @@ ConsoleModel console_model_frame(const ConsoleDraw& draw, const ConsoleCaps& cap
       throw std::runtime_error(std::string("scene part: ") + why);
     const render_app::SceneData sc{"upload", meshes.data(), up.mesh_count, up.view_proj, up.cull_backfaces, true};
     render::FrameParams frame;
-    if (const char* why = render_app::plan_draw(sc, settings, methods_built, filters_built, planned.data(), &frame))
+    if (const char* why = render_app::plan_draw(sc, settings, caps.methods_built, caps.filters_built, planned.data(), &frame))
       throw std::runtime_error(why);
     render::VertexCache cache{clip.data(), screen.data(), codes.data(), render_app::kMaxMeshVertices};
     for (uint32_t m = 0; m < sc.mesh_count; ++m, ++packed) {
@@ -160,8 +159,8 @@ ConsoleModel console_model_frame(const ConsoleDraw& draw, const ConsoleCaps& cap
   // space, as the RTL builds it), written out here because the board engine needs no RTL library.
   ModelConfig config = model_config("icebreaker");
   config.perspective_color = false;
-  config.methods = methods_built;
-  config.filters = filters_built;
+  config.methods = caps.methods_built;
+  config.filters = caps.filters_built;
   return {render_model_records(records, config), std::move(slots), stats.triangles, stats.sent};
 }
 

@@ -22,7 +22,6 @@ class LineInput {
   // A whole line typed since, if there is one (true; it is then read's next, not given here).
   // Never waits. The end of the input is not a line.
   bool line_typed();
-  bool editing() const { return editing_; }
 
  private:
   bool take_line(std::string* line);  // the first whole line of pending_, if there is one

@@ -16,11 +16,17 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// in_fd < 0: standard input from /dev/null.
-pid_t spawn(const std::vector<std::string>& argv, int out_fd, int err_fd, int in_fd = -1) {
+// execv's argument vector (pointers into argv, which outlives the call).
+std::vector<char*> exec_args(const std::vector<std::string>& argv) {
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  return args;
+}
+
+// in_fd < 0: standard input from /dev/null.
+pid_t spawn(const std::vector<std::string>& argv, int out_fd, int err_fd, int in_fd = -1) {
+  std::vector<char*> args = exec_args(argv);
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {
@@ -166,9 +172,7 @@ int Child::wait(std::chrono::milliseconds limit) {
 }
 
 Child::Child(const std::vector<std::string>& argv, const Terminal& terminal) {
-  std::vector<char*> args;
-  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
+  std::vector<char*> args = exec_args(argv);
   int master = -1;
   pid_ = forkpty(&master, nullptr, nullptr, nullptr);
   if (pid_ < 0) throw std::runtime_error("forkpty failed");

@@ -248,9 +248,7 @@ AutoPricing auto_pricing(const AutoConfig& cfg) {
   p.affine_setup = num_scale(num(cfg.affine_setup_cost16), -4);
   p.seed_divide = num(cfg.recip_issue_interval);
   p.choice = num(cfg.choice_cycles);
-  p.pixel_gain = cfg.nr_divide_cost16 > cfg.pixel_cost16
-                     ? num_scale(num(cfg.nr_divide_cost16 - cfg.pixel_cost16), -4)
-                     : Num{};
+  p.pixel_gain = num_scale(num(static_cast<int32_t>(pixel_gain16(cfg))), -4);
   return p;
 }
 

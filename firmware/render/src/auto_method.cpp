@@ -73,7 +73,7 @@ AutoMesh auto_mesh(const fw::AutoConfig& cfg, fw::AutoSampling sampling, TexSize
   if (cfg.choice_cycles == 0 || !(built & (1u << fw::kAutoRecipNr))) return m;
   // The chooser's test, pixels * gain < choice_cycles with pixels = |area2| / 2^17 and gain =
   // gain16 / 16, is |area2| * gain16 < choice_cycles * 2^21 in integers.
-  m.skip_gain16 = cfg.nr_divide_cost16 > cfg.pixel_cost16 ? cfg.nr_divide_cost16 - cfg.pixel_cost16 : 0u;
+  m.skip_gain16 = fw::pixel_gain16(cfg);
   const fw::AutoNum du = fw::recip_nr_span_limit(m.pricing, tolerance);
   m.skip_s_range = num_floor_capped(fw::num_scale(du, 16 - tex.log2_width), kRangeCap);
   m.skip_t_range = num_floor_capped(fw::num_scale(du, 16 - tex.log2_height), kRangeCap);

@@ -94,14 +94,14 @@ void tradeoff_chart(const std::string& dir, const std::string& scene, const std:
   std::ofstream dat = open_file(dir + "/" + name + ".dat");
   dat << "# fixed methods: clocks/pixel, max error, name\n";
   for (const Result& r : results)
-    if (r.point.sweep == "tradeoff" && r.point.scene == scene && r.point.method.rfind("auto", 0) != 0)
+    if (r.point.sweep == "tradeoff" && r.point.scene == scene && !is_auto_method(r.point.method))
       dat << r.clocks_per_pixel << " " << floored(r.max_error) << " " << r.point.method << "\n";
   bool any_compared = false;
   for (const Result& r : results)
     any_compared =
-        any_compared || (r.point.sweep == "tradeoff" && r.point.scene == scene && r.point.method == "auto_compared");
-  for (const char* method : {"auto", "auto_compared"}) {
-    if (method == std::string("auto_compared") && !any_compared) break;
+        any_compared || (r.point.sweep == "tradeoff" && r.point.scene == scene && r.point.method == kAutoCompared);
+  for (const char* method : {"auto", kAutoCompared}) {
+    if (std::string(method) == kAutoCompared && !any_compared) break;
     dat << "\n\n# " << method << ": clocks/pixel, max error, tolerance\n";
     for (const Result& r : results)
       if (r.point.sweep == "tradeoff" && r.point.scene == scene && r.point.method == method)

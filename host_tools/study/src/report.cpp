@@ -123,7 +123,7 @@ std::string summary_markdown(const std::vector<Result>& results, const Options& 
          << "| method | clocks / pixel | max error | p99.9 error | bound | drawn with |\n|---|---|---|---|---|---|\n";
     }
     const std::string name = r.point.method == "auto" ? "auto (" + fraction_name(r.point.tolerance) + ")"
-                             : r.point.method == "auto_compared"
+                             : r.point.method == kAutoCompared
                                  ? "auto, every choice compared (" + fraction_name(r.point.tolerance) + ")"
                                  : r.point.method;
     md << "| " << name << " | " << num(r.clocks_per_pixel, "%.2f") << " | " << num(r.max_error) << " | "

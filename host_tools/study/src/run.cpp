@@ -36,8 +36,8 @@ Result run_point(const Point& point, const Options& options) {
   Result r;
   r.point = point;
   ScreenScene screen = prepare_screen_scene(load_scene(point.scene), options.width, options.height);
-  // "auto_compared": AUTO with the choice priced as free, so that every triangle's is compared.
-  const bool compared = point.method == "auto_compared";
+  // kAutoCompared: AUTO with the choice priced as free, so that every triangle's is compared.
+  const bool compared = point.method == kAutoCompared;
   const MethodChoice choice = parse_method(compared ? "auto" : point.method);
   for (ScreenTri& t : screen.tris) {
     t.state.method = choice.method;

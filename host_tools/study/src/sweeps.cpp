@@ -78,10 +78,9 @@ std::vector<Point> tradeoff_points(bool quick) {
   for (const std::string& scene : scenes) {
     add_methods(points, {"tradeoff", scene, "", 0, "", 0}, quick);
     for (double t : tolerances) points.push_back({"tradeoff", scene, "tolerance", t, "auto", t});
-    // AUTO with every choice compared, as if choosing cost the CPU nothing (docs/auto.md, "When
-    // choosing does not pay"): what the skip costs the raster unit.
+    // AUTO with every choice compared: what the skip costs the raster unit.
     if (!quick)
-      for (double t : tolerances) points.push_back({"tradeoff", scene, "tolerance", t, "auto_compared", t});
+      for (double t : tolerances) points.push_back({"tradeoff", scene, "tolerance", t, kAutoCompared, t});
   }
   return points;
 }

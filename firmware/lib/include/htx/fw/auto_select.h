@@ -47,6 +47,12 @@ struct AutoConfig {
   // (docs/auto.md, "When choosing does not pay").
   uint16_t choice_cycles = 0;
 };
+// The most a pixel can save the raster unit against RECIP_NR, in sixteenths of a clock: RECIP_NR's
+// division less the traversal's step, or 0 where the traversal sets the pace anyway.
+inline uint32_t pixel_gain16(const AutoConfig& c) {
+  return c.nr_divide_cost16 > c.pixel_cost16 ? uint32_t{c.nr_divide_cost16} - c.pixel_cost16 : 0u;
+}
+
 // `full`: one pixel a clock and a division a clock, no CPU measured. `icebreaker`: measured on its
 // RTL and on the SoC's CPU (docs/auto.md).
 inline constexpr AutoConfig kAutoConfigFull{10, 2, 32, 2, 1, 16, 4, 16, 16, 16, 0, 0};
@@ -129,7 +135,7 @@ struct AutoPricing {
   AutoNum setup;         // clocks of setup, without the one a span
   AutoNum pixel_cost, lut_divide, nr_divide, affine_setup, seed_divide;  // clocks (docs/auto.md)
   AutoNum choice;      // choice_cycles
-  AutoNum pixel_gain;  // the most a pixel can save against RECIP_NR: nr_divide - pixel_cost, or 0
+  AutoNum pixel_gain;  // pixel_gain16 in clocks
 };
 AutoPricing auto_pricing(const AutoConfig& cfg);
 

@@ -27,7 +27,7 @@ struct AutoMesh {
   // The chooser's first rule (RECIP_NR where choosing does not pay), tested in integers on the
   // fixed-point vertices before any AutoNum work, with a margin: a triangle that passes is one the
   // chooser would skip; near the limits the chooser itself decides (docs/auto.md).
-  uint32_t skip_gain16 = 0;                       // AutoConfig's nr_divide_cost16 - pixel_cost16, or 0
+  uint32_t skip_gain16 = 0;                       // fw::pixel_gain16 of the configuration
   int64_t skip_area_limit = 0;                    // (|area2| + slack) * skip_gain16 below it; 0: never
   int64_t skip_s_range = -1, skip_t_range = -1;   // ranges of s and t (Q16.16) at most these
 };

@@ -15,6 +15,12 @@
 
 namespace htx::study {
 
+// AUTO with every choice compared, as if choosing cost the CPU nothing (docs/auto.md, "When
+// choosing does not pay"): a point's method that parse_method does not take.
+inline constexpr const char* kAutoCompared = "auto_compared";
+// AUTO as the configuration prices it, or with every choice compared.
+inline bool is_auto_method(const std::string& method) { return method == "auto" || method == kAutoCompared; }
+
 // One rendering of the study: a scene with every triangle's method overridden (or AUTO within a
 // tolerance), labelled with the sweep it belongs to and the value of the swept parameter.
 struct Point {
@@ -22,8 +28,8 @@ struct Point {
   std::string scene;      // built-in scene spec, e.g. "wsweep:r=10,du=256"
   std::string param;      // the swept parameter: r, du, n, tolerance, or "" (none)
   double value = 0;       // its value at this point
-  std::string method;     // a name parse_method takes ("subdiv16", "auto", ...), or "auto_compared"
-  double tolerance = 0;   // AUTO's tolerance in texels (methods "auto" and "auto_compared" only)
+  std::string method;     // a name parse_method takes ("subdiv16", "auto", ...), or kAutoCompared
+  double tolerance = 0;   // AUTO's tolerance in texels (is_auto_method only)
 };
 
 // The sweeps, in the order they run. `quick` keeps the ends and the middle of each range (for tests
