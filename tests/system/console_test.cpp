@@ -83,7 +83,8 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   const std::string& pty = cs.pty;
   ASSERT_FALSE(pty.empty()) << sim.output();
 
-  const auto r = cs.console({"help", "info", "set method bogus", "set tolerance 1/0", "frobnicate", std::string(120, 'x'),
+  const auto r = cs.console({"help", "info", "set method bogus", "set tolerance 1/0", "frobnicate", "frobnicate now",
+                              "info please", std::string(120, 'x'),
                           "render nosuch", "stats", "render cube", "stats"});
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -94,7 +95,12 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   EXPECT_NE(r.out.find("method auto; tolerance 1/16 texel"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error: unknown method bogus"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error: tolerance wants 1/N with N = 1..65536, not 1/0"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("error: unknown command (type help): frobnicate"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("error: unknown command (type help): frobnicate\n"), std::string::npos) << r.out;
+  // An unknown word followed by others is still unknown; a known one is told it takes none.
+  EXPECT_EQ(r.out.find("takes no arguments: frobnicate"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("htx> frobnicate now\nerror: unknown command (type help): frobnicate\n"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("error: this command takes no arguments: info\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error: line longer than 96 characters"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error: unknown scene nosuch"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error: nothing rendered yet"), std::string::npos) << r.out;

@@ -399,6 +399,8 @@ void cmd_spin(char* rest) {
   printf(" crc32 %08lx\r\n", static_cast<unsigned long>(g_last.crc));
 }
 
+void cmd_grab() { console_app::send_frame(render_app::kWidth, render_app::kHeight); }
+
 void cmd_stats() {
   if (!g_last_scene || !g_last.ok) return error("nothing rendered yet");
   const htx::hal::RasterCounters& c = g_last.counters;
@@ -410,6 +412,26 @@ void cmd_stats() {
   printf("triangles %lu fragments %lu pixels %lu divfree_steps %lu\r\n", static_cast<unsigned long>(c.triangles),
          static_cast<unsigned long>(c.fragments), static_cast<unsigned long>(c.pixels),
          static_cast<unsigned long>(c.divfree_steps));
+}
+
+// The commands that take no arguments. An unknown word is reported as unknown, with or without
+// words after it; only a known command is told it takes none.
+void run_command_without_arguments(const char* cmd, char* rest) {
+  void (*run)() = nullptr;
+  if (strcmp(cmd, "help") == 0) {
+    run = cmd_help;
+  } else if (strcmp(cmd, "info") == 0) {
+    run = cmd_info;
+  } else if (strcmp(cmd, "scenes") == 0) {
+    run = cmd_scenes;
+  } else if (strcmp(cmd, "stats") == 0) {
+    run = cmd_stats;
+  } else if (strcmp(cmd, "grab") == 0) {
+    run = cmd_grab;
+  }
+  if (!run) return error("unknown command (type help): ", cmd);
+  if (next_word(&rest)) return error("this command takes no arguments: ", cmd);
+  run();
 }
 
 }  // namespace
@@ -442,20 +464,8 @@ CommandResult run_command(char* line) {
     else
       error("usage: texture SIZE CRC32 [SLOT] (decimal bytes, hex checksum, slot 0 by default; `htx upload` sends "
             "them)");
-  } else if (next_word(&rest)) {
-    error("this command takes no arguments: ", cmd);
-  } else if (strcmp(cmd, "help") == 0) {
-    cmd_help();
-  } else if (strcmp(cmd, "info") == 0) {
-    cmd_info();
-  } else if (strcmp(cmd, "scenes") == 0) {
-    cmd_scenes();
-  } else if (strcmp(cmd, "stats") == 0) {
-    cmd_stats();
-  } else if (strcmp(cmd, "grab") == 0) {
-    console_app::send_frame(render_app::kWidth, render_app::kHeight);
   } else {
-    error("unknown command (type help): ", cmd);
+    run_command_without_arguments(cmd, rest);
   }
   return CommandResult::kDone;
 }
