@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "htx/console/console_client.hpp"
 #include "htx/console/serial_port.hpp"
@@ -31,12 +32,23 @@ struct PortArgs {
 void add_port_options(CLI::App* cmd, PortArgs* a) {
   cmd->add_option("--port", a->port, "serial device, or the pty that `htx sim --uart pty` printed")->required();
   cmd->add_option("--baud", a->baud, "baud rate (a pty ignores it)")->capture_default_str();
-  cmd->add_option("--timeout", a->timeout_s, "longest silence to wait through, seconds")->capture_default_str();
+  cmd->add_option("--timeout", a->timeout_s, "longest silence to wait through, seconds")
+      ->check(timeout_seconds())
+      ->capture_default_str();
 }
 
-std::chrono::milliseconds timeout_of(const PortArgs& a) {
-  if (!(a.timeout_s > 0)) throw std::invalid_argument("--timeout must be > 0 seconds");
-  return std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000));
+std::chrono::milliseconds timeout_of(const PortArgs& a) { return timeout_ms(a.timeout_s); }
+
+// Runs a step on local files (loading a scene or an image, writing a PNG), its failure reported as
+// std::invalid_argument: in typed mode that is the line's error and the session goes on, while an
+// error of the line to the console (std::runtime_error) ends it.
+template <class Step>
+auto local_file_step(Step step) -> decltype(step()) {
+  try {
+    return step();
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(e.what());
+  }
 }
 
 // Downloads the frame into a PNG, showing progress on stderr (the callers check `out`'s directory
@@ -50,7 +62,7 @@ void grab_to_png(console::ConsoleClient& client, const std::string& out) {
     }
   });
   if (shown) std::cerr << "\n";
-  write_png(out, image_from_rgb565(f.width, f.height, f.pixels));
+  local_file_step([&] { write_png(out, image_from_rgb565(f.width, f.height, f.pixels)); });
   char crc[16];
   std::snprintf(crc, sizeof crc, "%08x", f.crc32);
   std::cout << "grab: " << f.width << "x" << f.height << " frame, " << f.coded_bytes << " bytes in "
@@ -91,13 +103,13 @@ struct ConsoleArgs : PortArgs {
 // Returns false after quit.
 bool run_line(console::SerialPort& port, console::ConsoleClient& client, const std::string& line,
               const std::function<bool()>& stop = {}) {
-  if (line == "quit") {
-    port.write("quit\r");
-    return false;
-  }
   std::istringstream words(line);
   std::string verb, arg, format, extra, more;
   words >> verb >> arg >> format >> extra >> more;
+  if (verb == "quit" && arg.empty()) {  // (`quit` with more words is the console's error)
+    port.write("quit\r");
+    return false;
+  }
   if (verb == "baud") {
     // The console switches after its `ok`; the port must follow it there.
     if (arg.empty() || !format.empty() || arg.find_first_not_of("0123456789") != std::string::npos || arg.size() > 9)
@@ -106,7 +118,9 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
       client.set_baud(static_cast<unsigned>(std::stoul(arg)));
       std::cout << "baud " << arg << "\n" << std::flush;
     } catch (const std::invalid_argument& e) {
-      std::cout << e.what() << "\n" << std::flush;  // the console's refusal: the line is as it was
+      // A rate this port cannot take (refused before the console was asked) or the console's
+      // refusal: either way the line is as it was.
+      std::cout << e.what() << "\n" << std::flush;
     }
     return true;
   }
@@ -118,12 +132,14 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
                                   : verb == "upload" ? "usage: upload SCENE (built-in or FILE.obj)"
                                                      : "usage: texture IMAGE.png [rgb565|rgba4444 [SLOT]]");
     if (verb == "grab") {
-      require_output_dir(arg);
+      local_file_step([&] { require_output_dir(arg); });
       grab_to_png(client, arg);
-    } else if (verb == "upload") upload_scene(client, scene_payload(arg, "160x120", true));
-    else
-      upload(client, packed_texture(arg, format.empty() ? "rgb565" : format),
+    } else if (verb == "upload") {
+      upload_scene(client, local_file_step([&] { return scene_payload(arg, "160x120", true); }));
+    } else {
+      upload(client, local_file_step([&] { return packed_texture(arg, format.empty() ? "rgb565" : format); }),
              console::ConsoleClient::Payload::kTexture, extra.empty() ? 0u : static_cast<unsigned>(std::stoul(extra)));
+    }
     return true;
   }
   client.converse(line, [](const std::string& text) { std::cout << text << std::flush; }, stop);
@@ -237,7 +253,10 @@ void register_console(CLI::App& app) {
       ->check(CLI::Range(0u, render::kConsoleTextureSlots - 1))
       ->needs(up->get_option("--texture"))
       ->capture_default_str();
-  up->add_option("--format", uargs->format, "the texture's texel format: rgb565 or rgba4444")->capture_default_str();
+  up->add_option("--format", uargs->format, "the texture's texel format: rgb565 or rgba4444")
+      ->check(CLI::IsMember({"rgb565", "rgba4444"}))
+      ->needs(up->get_option("--texture"))
+      ->capture_default_str();
   up->add_option("--mesh-vertices", uargs->mesh_vertices,
                  "split meshes into parts of at most this many vertices (the console's vertex cache)")
       ->check(CLI::Range(4u, render::kMaxPackedMeshVertices))
@@ -245,7 +264,13 @@ void register_console(CLI::App& app) {
   up->add_flag("--no-texture", uargs->no_texture,
                "send the scene without its textures (the console keeps the ones it has)")
       ->excludes(up->get_option("--texture"));
-  up->callback([uargs] { run_upload(*uargs); });
+  up->callback([uargs, up] {
+    // The scene's own options mean nothing for a texture alone.
+    if (uargs->scene.empty())
+      for (const char* option : {"--size", "--mesh-vertices", "--no-texture"})
+        if (up->count(option) > 0) throw std::invalid_argument(std::string(option) + " is for a SCENE upload");
+    run_upload(*uargs);
+  });
 }
 
 }  // namespace htx

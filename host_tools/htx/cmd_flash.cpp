@@ -1,9 +1,5 @@
 // htx flash: load a board's bitstream into the FPGA, or into the board's flash: openFPGALoader for
 // the ULX3S, iceprog for the iCEBreaker.
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -13,9 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "child_process.hpp"
 #include "commands.hpp"
-
-extern char** environ;
 
 namespace htx {
 namespace {
@@ -59,26 +54,17 @@ int run_flash(const FlashArgs& a) {
   std::cout << "htx flash: " << shown << "\n" << std::flush;
   if (a.dry_run) return 0;
 
-  std::vector<char*> cargv;
-  for (const std::string& s : argv) cargv.push_back(const_cast<char*>(s.c_str()));
-  cargv.push_back(nullptr);
-  pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, argv[0].c_str(), nullptr, nullptr, cargv.data(), environ);
-  if (rc != 0) {
-    throw std::runtime_error("cannot run " + argv[0] + " (" + std::strerror(rc) +
+  const ChildStatus status = run_child(argv);
+  if (status.spawn_error != 0) {
+    throw std::runtime_error("cannot run " + argv[0] + " (" + std::strerror(status.spawn_error) +
                              "); install it with: apt-get install " + command.package);
   }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) throw std::runtime_error(std::string("waiting for the loader: ") + std::strerror(errno));
-  }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+  if (status.succeeded()) {
     std::cout << "htx flash: loaded " << a.bitstream << (a.to_flash ? " into the board's flash" : " into the FPGA")
               << "\n";
     return 0;
   }
-  std::cerr << "htx flash: " << argv[0] << " failed ("
-            << (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status)) : std::string("killed"))
+  std::cerr << "htx flash: " << argv[0] << " failed (" << status.describe()
             << "); is the board connected, and may this user open its USB device?\n";
   return 1;
 }

@@ -2,12 +2,12 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
 
 #include "commands.hpp"
+#include "htx/model/file_out.hpp"
 
 #if __has_include("htx/sim/elf_image.hpp")
 #define HTX_HAVE_ELF_IMAGE 1
@@ -38,11 +38,7 @@ int run_image(const ImageArgs& a) {
     throw std::runtime_error(a.elf + ": " + msg);
   }
   const std::vector<uint32_t> words = sim::ram_words(elf, a.ram_bytes);
-  std::ofstream out(a.out, std::ios::binary | std::ios::trunc);
-  if (!out) throw std::runtime_error(a.out + ": cannot write");
-  out << sim::readmemh_text(words);
-  out.close();
-  if (!out) throw std::runtime_error(a.out + ": write failed");
+  write_file(a.out, sim::readmemh_text(words));
   std::cout << a.out << ": " << words.size() << " words (" << a.ram_bytes << "-byte RAM), entry 0x" << std::hex
             << elf.entry << std::dec << "\n";
   return 0;

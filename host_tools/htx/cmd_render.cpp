@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "frame_size.hpp"
 #include "htx/fw/auto_scene.h"
@@ -61,8 +62,7 @@ constexpr const char* kEngines = "ref, model, soc or board";
 #endif
 
 void run_render(const RenderArgs& given) {
-  require_output_dir(given.out);
-  require_output_dir(given.metrics);
+  require_output_files({&given.out, &given.metrics});
   if (given.engine == "soc" || given.engine == "board") return render_on_console(given);
 #ifdef HTX_HAVE_RTL_ENGINE
   const bool known = given.engine == "ref" || given.engine == "model" || given.engine == "rtl";
@@ -70,9 +70,12 @@ void run_render(const RenderArgs& given) {
   const bool known = given.engine == "ref" || given.engine == "model";
 #endif
   if (!known) throw std::invalid_argument("--engine '" + given.engine + "': this build renders on " + kEngines);
-  for (const std::string* o : {&given.firmware, &given.port})
-    if (!o->empty()) throw std::invalid_argument("--firmware and --port are for --engine soc and board");
+  // The console engines' options, refused here rather than ignored.
+  if (!given.firmware.empty()) throw std::invalid_argument("--firmware is for --engine soc");
+  if (!given.port.empty()) throw std::invalid_argument("--port is for --engine board");
+  if (given.baud_given) throw std::invalid_argument("--baud is for --engine board");
   if (given.fast_baud != 0) throw std::invalid_argument("--fast-baud is for --engine board");
+  if (given.timeout_given) throw std::invalid_argument("--timeout is for --engine soc and board");
   RenderArgs a = given;
   if (a.size.empty()) a.size = "320x240";
   if (a.config.empty()) a.config = "full";
@@ -96,7 +99,8 @@ void run_render(const RenderArgs& given) {
   }
   // icebreaker-board: `icebreaker` with the board GPU's methods only (AFFINE, RECIP_LUT); the rtl
   // engine draws it on that GPU, the design gpu_icebreaker_up5k synthesises. A triangle that asks
-  // for another method is refused with the engines' error (pick --method affine, recip_lut or auto).
+  // for another method is refused below, naming this configuration (the engines know it as
+  // `icebreaker` with fewer methods).
   const bool board = a.config == "icebreaker-board";
   const std::string base_config = board ? "icebreaker" : a.config;
 #ifdef HTX_HAVE_RTL_ENGINE
@@ -108,8 +112,13 @@ void run_render(const RenderArgs& given) {
 #endif
   if (board) config.methods &= icebreaker_board_methods();
   // AUTO: the firmware's per-triangle choice (docs/auto.md) within --tolerance texels.
-  if (!(a.tolerance > 0)) throw std::invalid_argument("--tolerance must be > 0 texels");
   const fw::AutoSceneSummary auto_summary = fw::resolve_auto_methods(screen, config, static_cast<float>(a.tolerance));
+  if (board && a.engine != "ref")
+    for (const ScreenTri& t : screen.tris)
+      if (!config.has_method(t.state.method))
+        throw std::invalid_argument("method " + method_name(t.state.method, t.state.subdiv_n) +
+                                    " is not built in configuration icebreaker-board (affine and recip_lut are; "
+                                    "--method affine, recip_lut or auto)");
   if (auto_summary.resolved > 0) std::cout << auto_summary_line(auto_summary, a.tolerance) << "\n";
   RefOptions ref_options;
   ref_options.depth_bits = config.z_bits;
@@ -176,11 +185,13 @@ void register_render(CLI::App& app) {
                   "override every triangle's perspective method: affine, subdivN (2..64), recip_lut, recip_nr, "
                   "divfree, quadratic, auto");
   cmd->add_option("--tolerance", args->tolerance, "AUTO: largest predicted texel-coordinate error (texels)")
+      ->check(positive_finite())
       ->capture_default_str();
   cmd->add_option("--filter", args->filter, "override every triangle's filter: nearest, bilinear, trilinear");
   cmd->add_option("--config", args->config,
                   "model configuration: full | icebreaker | icebreaker-board (icebreaker with the board GPU's "
-                  "methods only: affine, recip_lut); default full, on soc and board icebreaker (the SoC's GPU)");
+                  "methods only: affine, recip_lut); default full, on soc and board icebreaker (the SoC's GPU)")
+      ->check(CLI::IsMember({"full", "icebreaker", "icebreaker-board"}));
   cmd->add_option("--size", args->size, "frame size WxH; default 320x240, on soc and board 160x120 (the console's screen)");
   cmd->add_option("--out", args->out, "output PNG")->required();
   cmd->add_option("--metrics", args->metrics, "also render ref and write the metrics JSON here");
@@ -191,8 +202,13 @@ void register_render(CLI::App& app) {
                   "board: switch the console and the port to this rate for the transfers (the console's `baud`) "
                   "and back to --baud at the end, also after an error");
   cmd->add_option("--timeout", args->timeout_s, "soc and board: longest silence to wait through, seconds")
+      ->check(timeout_seconds())
       ->capture_default_str();
-  cmd->callback([args] { run_render(*args); });
+  cmd->callback([args, cmd] {
+    args->baud_given = cmd->count("--baud") > 0;
+    args->timeout_given = cmd->count("--timeout") > 0;
+    run_render(*args);
+  });
 }
 
 }  // namespace htx

@@ -2,7 +2,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -15,6 +14,7 @@
 
 #if __has_include("htx/sim/soc_sim.hpp")
 #define HTX_HAVE_SOC_SIM 1
+#include "htx/model/file_out.hpp"
 #include "htx/model/image_io.hpp"
 #include "htx/sim/elf_image.hpp"
 #include "htx/sim/frame_crc.hpp"
@@ -120,13 +120,13 @@ SignatureRange signature_range(const sim::ElfImage& elf, const std::string& path
 
 void write_signature(const sim::SocSim& soc, SignatureRange range, const std::string& path) {
   const auto words = soc.read_words(range.begin, range.end);
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot write the signature");
+  std::string text;
   for (uint32_t w : words) {
     char line[16];
     std::snprintf(line, sizeof line, "%08x\n", w);
-    out << line;
+    text += line;
   }
+  write_file(path, text);
 }
 #endif
 
@@ -172,7 +172,7 @@ int run_sim(const SimArgs& a) {
   const sim::ElfImage elf = sim::load_elf(a.elf);
   // What can only fail after the run is checked before it, so a long run is not lost to a typo.
   const SignatureRange signature = a.signature.empty() ? SignatureRange{} : signature_range(elf, a.signature);
-  for (const std::string* out : {&a.signature, &a.screen, &a.frame, &a.trace}) require_output_dir(*out);
+  require_output_files({&a.signature, &a.screen, &a.frame, &a.trace});
   sim::SimOptions opt;
   opt.max_cycles = a.max_cycles;
   opt.stall_seed = a.stall_seed;

@@ -1,17 +1,20 @@
 // htx study: the speed/accuracy study (docs/study.md). Each sweep point is rendered by the model
 // against ref for accuracy and timed on the Verilated GPU (or the model's estimate) for speed; the
 // results go to a CSV, a Markdown summary and gnuplot charts.
-#include <cstdlib>
+#include <algorithm>
+#include <cerrno>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "child_process.hpp"
 #include "commands.hpp"
 #include "frame_size.hpp"
+#include "htx/model/file_out.hpp"
 #include "htx/model/names.hpp"
 #include "htx/study/study.hpp"
 #if __has_include("htx/rtl/raster_engine.hpp")
@@ -33,8 +36,6 @@ struct StudyArgs {
   bool no_charts = false;
 };
 
-bool gnuplot_available() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
-
 study::Options make_options(const StudyArgs& a) {
   study::Options o;
   parse_size(a.size, o.width, o.height);
@@ -48,7 +49,6 @@ study::Options make_options(const StudyArgs& a) {
     o.config = model_config(a.config);
     return o;
   }
-  if (clocks != "rtl") throw std::invalid_argument("--clocks '" + clocks + "': want rtl or estimate");
 #ifdef HTX_HAVE_RTL_ENGINE
   // The model runs with the configuration the RTL builds, so its frame is the RTL's (checked).
   o.config = rtl_config(a.config);
@@ -66,13 +66,17 @@ study::Options make_options(const StudyArgs& a) {
 
 void run_study(const StudyArgs& a) {
   const study::Options options = make_options(a);
-  const std::vector<std::string> sweeps = a.sweeps.empty() ? study::sweep_names() : a.sweeps;
+  // Each sweep once, in the order first named (`htx study ratio ratio` would repeat its rows).
+  std::vector<std::string> sweeps;
+  for (const std::string& sweep : a.sweeps.empty() ? study::sweep_names() : a.sweeps)
+    if (std::find(sweeps.begin(), sweeps.end(), sweep) == sweeps.end()) sweeps.push_back(sweep);
   std::vector<study::Point> points;
   for (const std::string& sweep : sweeps)
     for (const study::Point& p : study::sweep_points(sweep, a.quick))
       // (AUTO with every choice compared differs from AUTO only where the configuration prices choosing.)
-      if (p.method == study::kAutoCompared ? options.config.auto_choice_cycles > 0
-                                      : p.method == "auto" || options.config.has_method(parse_method(p.method).method))
+      if (p.method == study::kAutoCompared
+              ? options.config.auto_choice_cycles > 0
+              : p.method == "auto" || options.config.has_method(parse_method(p.method).method))
         points.push_back(p);
 
   namespace fs = std::filesystem;
@@ -91,23 +95,26 @@ void run_study(const StudyArgs& a) {
   }
 
   const std::string csv_path = a.out_dir + "/study.csv", md_path = a.out_dir + "/study.md";
-  std::ofstream csv(csv_path);
+  std::ostringstream csv;
   study::write_csv(csv, results);
+  write_file(csv_path, csv.str());
   const std::string summary = study::summary_markdown(results, options);
-  std::ofstream md(md_path);
-  md << summary;
-  if (!csv || !md) throw std::runtime_error("cannot write the results into '" + a.out_dir + "'");
+  write_file(md_path, summary);
   std::cout << "\n" << summary << "\nresults -> " << csv_path << ", " << md_path << "\n";
 
   const std::vector<std::string> scripts = study::write_chart_scripts(a.out_dir, results, options);
   if (a.no_charts) {
     std::cout << "chart scripts (not run) -> " << a.out_dir << "\n";
-  } else if (!gnuplot_available()) {
-    std::cout << "gnuplot not found: chart scripts written to " << a.out_dir << " but not drawn\n";
   } else {
     for (const std::string& script : scripts) {
-      const std::string command = "cd '" + a.out_dir + "' && gnuplot '" + script + "'";
-      if (std::system(command.c_str()) != 0) throw std::runtime_error("gnuplot failed on " + a.out_dir + "/" + script);
+      // In the output directory: the scripts name their data and their SVG relative to it.
+      const ChildStatus gnuplot = run_child({"gnuplot", script}, a.out_dir);
+      if (gnuplot.spawn_error == ENOENT) {
+        std::cout << "gnuplot not found: chart scripts written to " << a.out_dir << " but not drawn\n";
+        break;
+      }
+      if (!gnuplot.succeeded())
+        throw std::runtime_error("gnuplot failed on " + a.out_dir + "/" + script + " (" + gnuplot.describe() + ")");
       std::cout << "chart -> " << a.out_dir << "/" << fs::path(script).replace_extension(".svg").string() << "\n";
     }
   }
@@ -123,10 +130,13 @@ void register_study(CLI::App& app) {
   auto* cmd = app.add_subcommand("study", "The speed/accuracy study: sweeps of methods and scenes, tables and charts");
   cmd->add_option("sweep", args->sweeps, "sweeps to run: ratio, range, offset, subdiv, tradeoff (default: all)")
       ->check(CLI::IsMember(study::sweep_names()));
-  cmd->add_option("--config", args->config, "configuration: full | icebreaker")->capture_default_str();
+  cmd->add_option("--config", args->config, "configuration: full | icebreaker")
+      ->check(CLI::IsMember({"full", "icebreaker"}))
+      ->capture_default_str();
   cmd->add_option("--size", args->size, "frame size WxH")->capture_default_str();
   cmd->add_option("--clocks", args->clocks,
-                  "where clocks come from: rtl (the Verilated GPU, the default when built) or estimate (the model's)");
+                  "where clocks come from: rtl (the Verilated GPU, the default when built) or estimate (the model's)")
+      ->check(CLI::IsMember({"rtl", "estimate"}));
   cmd->add_option("--out-dir", args->out_dir, "directory for study.csv, study.md and the charts")
       ->capture_default_str();
   cmd->add_flag("--quick", args->quick, "a few points per sweep (the ends and the middle)");

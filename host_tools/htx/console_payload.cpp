@@ -184,6 +184,11 @@ std::vector<uint8_t> packed_texture(const std::string& path, const std::string& 
   else if (format_name != "rgb565")
     throw std::invalid_argument("--format must be rgb565 or rgba4444, not '" + format_name + "'");
   const Image img = load_image(path);
+  // Refused here, before the port is opened, rather than by the console after the transfer.
+  if (static_cast<uint64_t>(img.width) * static_cast<uint64_t>(img.height) > render::kConsoleTextureTexels)
+    throw std::invalid_argument("'" + path + "' is " + std::to_string(img.width) + "x" + std::to_string(img.height) +
+                                ": a console texture slot holds at most " +
+                                std::to_string(render::kConsoleTextureTexels) + " texels (e.g. 32x32)");
   try {
     return pack_level(texture_from_image(img, path, format), 0);
   } catch (const std::runtime_error& e) {

@@ -1,11 +1,12 @@
 // htx render's metrics JSON (docs/metrics.md), as every engine writes it.
 #pragma once
 
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
+
+#include "htx/model/file_out.hpp"
 
 namespace htx {
 
@@ -29,9 +30,7 @@ inline void take_probe_figures(const nlohmann::json& from, nlohmann::json* j) {
 }
 
 inline void write_metrics(const std::string& path, const nlohmann::json& j) {
-  std::ofstream out(path);
-  out << j.dump(2) << "\n";
-  if (!out) throw std::runtime_error("cannot write metrics to '" + path + "'");
+  write_file(path, j.dump(2) + "\n");
   std::cout << "metrics -> " << path << "\n";
 }
 

@@ -1,8 +1,10 @@
 // Output files are checked before the work that fills them (a long simulation, a frame over a serial
-// line), so a mistyped path costs nothing: the directory must exist.
+// line), so a mistyped path costs nothing: the directory must exist, the path must not be a
+// directory, and two outputs of one command must not be the same file.
 #pragma once
 
 #include <filesystem>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +15,18 @@ inline void require_output_dir(const std::string& path) {
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   if (!dir.empty() && !std::filesystem::is_directory(dir))
     throw std::runtime_error(path + ": no directory " + dir.string() + " to write it in");
+  if (std::filesystem::is_directory(path)) throw std::runtime_error(path + ": is a directory, not a file to write");
+}
+
+// Each of `paths` (empty: not asked for) as above, and no two of them one file.
+inline void require_output_files(std::initializer_list<const std::string*> paths) {
+  for (const std::string* path : paths) require_output_dir(*path);
+  for (auto a = paths.begin(); a != paths.end(); ++a)
+    for (auto b = a + 1; b != paths.end(); ++b)
+      if (!(*a)->empty() && !(*b)->empty() &&
+          std::filesystem::weakly_canonical(std::filesystem::absolute(**a)) ==
+              std::filesystem::weakly_canonical(std::filesystem::absolute(**b)))
+        throw std::runtime_error(**a + " and " + **b + ": two outputs to one file");
 }
 
 }  // namespace htx

@@ -23,6 +23,8 @@ struct RenderArgs {
   unsigned baud = 115200;
   unsigned fast_baud = 0;  // board: the rate for the transfers (0: stay at baud)
   double timeout_s = 120;
+  bool baud_given = false;     // --baud given (board only; soc and the host engines refuse it)
+  bool timeout_given = false;  // --timeout given (the host engines refuse it)
 };
 
 // `--engine soc` and `--engine board` (docs/engines.md): the scene uploaded to the console

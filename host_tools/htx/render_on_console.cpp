@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cli_checks.hpp"
 #include "console_model.hpp"
 #include "console_payload.hpp"
 #include "console_render.hpp"
@@ -38,11 +39,18 @@ constexpr int kScreenWidth = render_app::kWidth, kScreenHeight = render_app::kHe
 constexpr const char* kSocConfig = "icebreaker";         // the simulated SoC's and the ULX3S's GPU
 constexpr unsigned kSocBaud = 1'000'000;                 // soc: the console's `baud` once it is up
 
+// A number as printf's %g writes it (std::to_string's fixed six decimals write 1e-7 as 0.000000).
+std::string shortest(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
 // `set tolerance 1/N`'s N for `t` texels, when it is one (N = 1..65536).
 uint32_t tolerance_denominator(double t) {
   const double n = std::round(1.0 / t);
   if (!(t > 0) || n < 1 || n > 65536 || std::fabs(1.0 / n - t) > 1e-9 * t)
-    throw std::invalid_argument("--tolerance " + std::to_string(t) +
+    throw std::invalid_argument("--tolerance " + shortest(t) +
                                 ": the console takes 1/N texel (N = 1..65536), e.g. 0.015625 for 1/64");
   return static_cast<uint32_t>(n);
 }
@@ -138,7 +146,16 @@ void render_on_console(const RenderArgs& a) {
   if (soc && a.fast_baud != 0)
     throw std::invalid_argument("--fast-baud is for --engine board (soc switches its own line to " +
                                 std::to_string(kSocBaud) + " baud)");
-  if (!(a.timeout_s > 0)) throw std::invalid_argument("--timeout must be > 0 seconds");
+  if (a.fast_baud != 0) {
+    try {
+      console::SerialPort::check_baud(a.fast_baud);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--fast-") + e.what());  // "--fast-baud N: want ..."
+    }
+  }
+  if (soc && a.baud_given)
+    throw std::invalid_argument("--baud is for --engine board (soc's line has no rate: it runs at " +
+                                std::to_string(kSocBaud) + " baud once the console is up)");
 
   // (The scene's notes come with the upload's, as a step.)
   const Scene scene = load_scene(a.scene);
@@ -159,7 +176,7 @@ void render_on_console(const RenderArgs& a) {
   draw.on_step = [&a](const std::string& what) { std::cerr << a.engine << ": " << what << std::endl; };
 
   const auto t0 = std::chrono::steady_clock::now();
-  const auto timeout = std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000));
+  const auto timeout = timeout_ms(a.timeout_s);
   ConsoleDrawn drawn;
   ConsoleCaps caps;  // asked only for the metrics' model (console_model.hpp)
   const bool want_caps = !a.metrics.empty();
@@ -189,10 +206,11 @@ void render_on_console(const RenderArgs& a) {
     if (a.fast_baud == 0) {
       drawn = draw_on_console(client, draw);
     } else {
-      // The board is left at --baud, where the next `htx console` expects it, whatever happened.
-      switch_line(client, draw, a.fast_baud);
+      // The board is left at --baud, where the next `htx console` expects it, whatever happened
+      // (a switch the console refused leaves it there already, and switching back is harmless).
       const auto back = [&] { switch_line(client, draw, a.baud, "back to"); };
       try {
+        switch_line(client, draw, a.fast_baud);
         drawn = draw_on_console(client, draw);
       } catch (...) {
         try {

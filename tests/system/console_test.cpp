@@ -207,6 +207,9 @@ TEST(SystemConsole, TypedLinesStopASpinAndRunAfterIt) {
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
   htx::test::Child console({HTX_BIN, "console", "--port", cs.pty, "--timeout", "60"}, true);
   ASSERT_TRUE(console.read_until("htx> ", 60s)) << console.output();
+  // A local file that does not load is the line's error; the session goes on.
+  console.write_input("texture /no/such/image.png\n");
+  ASSERT_TRUE(console.read_until("error: cannot load image '/no/such/image.png'", 60s)) << console.output();
   console.write_input("spin floor 3600\n");
   ASSERT_TRUE(console.read_until("frame 2 frame_cycles", 60s)) << console.output();
   EXPECT_EQ(console.output().find("spin floor frames"), std::string::npos) << "the spin ended early";
@@ -265,11 +268,21 @@ TEST(SystemConsole, AtATerminalTheUpArrowRecallsAnEarlierLine) {
 TEST(SystemConsole, BaudSwitchesTheLineBothWays) {
   ConsoleSim cs;
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
-  const auto r = cs.console({"baud 5000000", "baud 7", "baud 3000000", "baud 1000000", "info", "render cube"});
+  const auto r = cs.console({"baud 250000", "info", "quit now", "baud 5000000", "baud 7", "baud 3000000",
+                             "baud 1000000", "info", "render cube"});
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.status, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("error: 5000000 baud is not one this UART makes at 12000000 Hz"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("error: 7 baud is not one this UART makes"), std::string::npos) << r.out;
+  // A rate the UART makes but this end's port cannot take is refused before the console is asked,
+  // so both ends stay at 115,200 (the console would otherwise have switched alone).
+  EXPECT_NE(r.out.find("htx> baud 250000\nbaud 250000: want 9600, 19200"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("htx> info\nhypertex console"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("serial 115384 baud"), std::string::npos) << r.out;
+  // `quit` takes no words after it: an error, and the console goes on.
+  EXPECT_NE(r.out.find("htx> quit now\nerror: this command takes no arguments: quit\n"), std::string::npos) << r.out;
+  // Rates no port takes are refused by htx; 3 Mbaud, which ports take, by the console (below, the
+  // console's own refusals of the others, sent to it directly).
+  EXPECT_NE(r.out.find("htx> baud 5000000\nbaud 5000000: want 9600"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("htx> baud 7\nbaud 7: want 9600"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error: 3000000 baud is faster than the console reads an upload (6 clocks a bit or more: up "
                        "to 2000000 baud at 12000000 Hz)"),
             std::string::npos)
@@ -421,6 +434,17 @@ TEST(SystemConsole, AScriptOnStandardInputLosesNothing) {
   EXPECT_NE(r.out.find("spin cube frames 1 (stopped)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("htx> info\r\nhypertex"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("tolerance 1/8"), std::string::npos) << r.out;
+}
+
+// The console's own refusals of rates its UART cannot make within 2 % at 12 MHz (htx console
+// refuses these before asking it, so they are sent here as a script): the line stays as it was.
+TEST(SystemConsole, BaudRefusesRatesTheUartCannotMake) {
+  const auto r = console_script("baud 5000000\nbaud 7\nbaud 0\ninfo\nquit\n");
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("error: 5000000 baud is not one this UART makes at 12000000 Hz"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("error: 7 baud is not one this UART makes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("htx> baud 0\r\nerror: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("serial 115384 baud"), std::string::npos) << r.out;
 }
 
 // A script without `quit`: the run ends once the script has ended and the console waits for its

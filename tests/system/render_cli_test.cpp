@@ -81,7 +81,8 @@ TEST(SystemRenderCli, BoardConfigurationRefusesAMethodItDoesNotBuild) {
                                           120s);
     ASSERT_FALSE(r.timed_out);
     EXPECT_EQ(r.status, 1) << engine;
-    EXPECT_NE(r.err.find("recip_nr is not built"), std::string::npos) << engine << ": " << r.err;
+    EXPECT_NE(r.err.find("recip_nr is not built in configuration icebreaker-board"), std::string::npos)
+        << engine << ": " << r.err;
   }
 }
 
@@ -104,6 +105,78 @@ TEST(SystemRenderCli, OutputsInAMissingDirectoryAreRefusedBeforeRendering) {
     EXPECT_EQ(r.out.find("rendered"), std::string::npos) << option << ": rendered first: " << r.out;
   }
   EXPECT_FALSE(std::filesystem::exists(png)) << "the PNG was written before the metrics were refused";
+}
+
+// A write that fails (/dev/full: no space left) is an error, for the PNG and for the metrics.
+TEST(SystemRenderCli, WriteErrorsAreErrors) {
+  for (const std::vector<std::string>& outputs :
+       {std::vector<std::string>{"--out", "/dev/full"},
+        std::vector<std::string>{"--out", temp_path("full_metrics.png"), "--metrics", "/dev/full"}}) {
+    std::vector<std::string> args = {HTX_BIN, "render", "cube", "--engine", "model", "--size", "32x24"};
+    args.insert(args.end(), outputs.begin(), outputs.end());
+    const auto r = htx::test::run_program(args, 60s);
+    ASSERT_FALSE(r.timed_out);
+    EXPECT_EQ(r.status, 1) << outputs.back();
+    EXPECT_NE(r.err.find("cannot write '/dev/full': No space left on device"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("-> /dev/full"), std::string::npos) << "reported as written: " << r.out;
+  }
+}
+
+// An output that is a directory, or two outputs that are one file, are refused before rendering.
+TEST(SystemRenderCli, AnOutputThatIsADirectoryOrTwoOutputsToOneFileAreRefused) {
+  const std::string dir = temp_path("a_dir");
+  std::filesystem::create_directories(dir);
+  const std::string png = temp_path("one_file.png");
+  std::filesystem::remove(png);
+  const struct {
+    std::vector<std::string> outputs;
+    std::string message;
+  } cases[] = {
+      {{"--out", dir}, dir + ": is a directory, not a file to write"},
+      {{"--out", png, "--metrics", dir}, dir + ": is a directory, not a file to write"},
+      {{"--out", png, "--metrics", ::testing::TempDir() + "./htx_render_cli_one_file.png"}, "two outputs to one file"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args = {HTX_BIN, "render", "cube", "--engine", "model", "--size", "32x24"};
+    args.insert(args.end(), c.outputs.begin(), c.outputs.end());
+    const auto r = htx::test::run_program(args, 60s);
+    ASSERT_FALSE(r.timed_out);
+    EXPECT_EQ(r.status, 1) << c.message;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("rendered"), std::string::npos) << "rendered first: " << r.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(png));
+}
+
+// Options that belong to other engines are refused rather than ignored; values outside what an
+// option takes are the option parser's refusals (status 2).
+TEST(SystemRenderCli, OptionsOfOtherEnginesAndValuesOutOfRangeAreRefused) {
+  const struct {
+    std::vector<std::string> options;
+    int status;
+    std::string message;
+  } cases[] = {
+      {{"--engine", "model", "--baud", "9600"}, 1, "--baud is for --engine board"},
+      {{"--engine", "ref", "--timeout", "5"}, 1, "--timeout is for --engine soc and board"},
+      {{"--engine", "model", "--port", "/dev/null"}, 1, "--port is for --engine board"},
+      {{"--engine", "model", "--firmware", "x.elf"}, 1, "--firmware is for --engine soc"},
+      {{"--engine", "soc", "--baud", "9600"}, 1, "--baud is for --engine board"},
+      {{"--engine", "board", "--port", "/dev/null", "--fast-baud", "500000"}, 1,
+       "--fast-baud 500000: want 9600, 19200"},
+      {{"--tolerance", "nan"}, 2, "--tolerance: want a finite number > 0, not nan"},
+      {{"--tolerance", "inf"}, 2, "--tolerance: want a finite number > 0, not inf"},
+      {{"--engine", "soc", "--timeout", "nan"}, 2, "--timeout: want seconds from 0.001 to 86400, not nan"},
+      {{"--engine", "soc", "--timeout", "1e300"}, 2, "--timeout: want seconds from 0.001 to 86400, not 1e300"},
+      {{"--config", "icebreaker-boards"}, 2, "--config: icebreaker-boards not in {full,icebreaker,icebreaker-board}"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args = {HTX_BIN, "render", "cube", "--out", temp_path("refused_option.png")};
+    args.insert(args.end(), c.options.begin(), c.options.end());
+    const auto r = htx::test::run_program(args, 60s);
+    ASSERT_FALSE(r.timed_out);
+    EXPECT_EQ(r.status, c.status) << c.message;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+  }
 }
 
 }  // namespace

@@ -104,6 +104,15 @@ TEST(SystemSimCli, OutputsThatCannotBeWrittenAreRefusedBeforeTheRun) {
   }
 }
 
+// A write that fails (here /dev/full: no space left) is an error, not a file reported as written.
+TEST(SystemSimCli, ASignatureThatCannotBeWrittenIsAnError) {
+  const auto r = htx::test::run_program(
+      {HTX_BIN, "sim", "--elf", HTX_SIM_TEST_ELF, "--signature", "/dev/full", "--max-cycles", "100000"}, 60s);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("cannot write '/dev/full': No space left on device"), std::string::npos) << r.err;
+}
+
 TEST(SystemSimCli, ToHostStatusAndSignature) {
   const std::string sig = temp_path("signature.txt");
   std::remove(sig.c_str());

@@ -66,8 +66,38 @@ TEST(SystemStudyCli, RefusesUnknownSweepsAndClockSources) {
   EXPECT_NE(sweep.err.find("nosuch"), std::string::npos) << sweep.err;
   const auto clocks =
       htx::test::run_program({HTX_BIN, "study", "ratio", "--clocks", "sundial", "--out-dir", ::testing::TempDir()}, 60s);
-  EXPECT_NE(clocks.status, 0);
-  EXPECT_NE(clocks.err.find("--clocks 'sundial'"), std::string::npos) << clocks.err;
+  EXPECT_EQ(clocks.status, 2);  // the option parser's refusal, before any work
+  EXPECT_NE(clocks.err.find("--clocks: sundial not in {rtl,estimate}"), std::string::npos) << clocks.err;
+  const auto config =
+      htx::test::run_program({HTX_BIN, "study", "ratio", "--config", "huge", "--out-dir", ::testing::TempDir()}, 60s);
+  EXPECT_EQ(config.status, 2);
+  EXPECT_NE(config.err.find("--config: huge not in {full,icebreaker}"), std::string::npos) << config.err;
+}
+
+// A sweep named twice runs once; an output directory with a quote and a space in its name is only
+// a name (gnuplot runs there without a shell).
+TEST(SystemStudyCli, RepeatedSweepRunsOnceAndAnyDirectoryNameDraws) {
+  const std::string dir = ::testing::TempDir() + "htx study it's here";
+  std::filesystem::remove_all(dir);
+  const auto r = htx::test::run_program({HTX_BIN, "study", "ratio", "ratio", "--quick", "--clocks", "estimate", "--size",
+                                         "32x24", "--out-dir", dir},
+                                        120s);
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream csv(dir + "/study.csv");
+  std::string line;
+  size_t rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  const auto once = htx::test::run_program({HTX_BIN, "study", "ratio", "--quick", "--clocks", "estimate", "--size",
+                                            "32x24", "--out-dir", dir + "/once", "--no-charts"},
+                                           120s);
+  ASSERT_EQ(once.status, 0) << once.err;
+  std::ifstream csv_once(dir + "/once/study.csv");
+  size_t rows_once = 0;
+  while (std::getline(csv_once, line)) ++rows_once;
+  EXPECT_GT(rows_once, 1u);
+  EXPECT_EQ(rows, rows_once);
+  EXPECT_GT(std::filesystem::file_size(dir + "/study_ratio.svg"), 1000u) << r.out;
 }
 
 }  // namespace

@@ -440,7 +440,11 @@ CommandResult run_command(char* line) {
   char* rest = line;
   const char* cmd = next_word(&rest);
   if (!cmd) return CommandResult::kDone;
-  if (strcmp(cmd, "quit") == 0) return CommandResult::kQuit;
+  if (strcmp(cmd, "quit") == 0) {
+    if (!next_word(&rest)) return CommandResult::kQuit;
+    error("this command takes no arguments: ", cmd);
+    return CommandResult::kDone;
+  }
   if (strcmp(cmd, "set") == 0) {
     cmd_set(rest);
   } else if (strcmp(cmd, "render") == 0) {

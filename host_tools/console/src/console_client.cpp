@@ -47,7 +47,9 @@ const char* status_name(fw::PacketStatus s) {
 ConsoleClient::ConsoleClient(SerialPort& port, std::chrono::milliseconds timeout) : port_(port), timeout_(timeout) {}
 
 void ConsoleClient::silence() const {
-  throw std::runtime_error("the console said nothing for " + std::to_string(timeout_.count() / 1000.0) +
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%g", static_cast<double>(timeout_.count()) / 1000.0);
+  throw std::runtime_error(std::string("the console said nothing for ") + seconds +
                            " s (is the firmware running the console?)");
 }
 
@@ -170,6 +172,9 @@ void ConsoleClient::converse(const std::string& line, const std::function<void(c
 }
 
 void ConsoleClient::set_baud(unsigned baud) {
+  // A rate this end cannot take is refused before the console is asked: it would switch, and the
+  // two ends would be left at different rates.
+  SerialPort::check_baud(baud);
   port_.write("baud " + std::to_string(baud) + "\r");
   std::string text;
   // The answer ends with `ok ... baud` and its line end, or (a refusal) with the prompt.

@@ -5,7 +5,9 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <stdexcept>
 
@@ -35,6 +37,8 @@ speed_t speed_of(unsigned baud) {
 }
 
 }  // namespace
+
+void SerialPort::check_baud(unsigned baud) { speed_of(baud); }
 
 SerialPort::SerialPort(const std::string& path, unsigned baud) : path_(path) {
   const speed_t speed = speed_of(baud);
@@ -85,7 +89,8 @@ void SerialPort::write(const std::string& bytes) {
 
 size_t SerialPort::read_some(uint8_t* buf, size_t size, std::chrono::milliseconds timeout) {
   pollfd p{fd_, POLLIN, 0};
-  const int r = ::poll(&p, 1, static_cast<int>(timeout.count()));
+  // (poll takes an int of milliseconds: a longer wait is cut to about 24 days, never wrapped.)
+  const int r = ::poll(&p, 1, static_cast<int>(std::clamp<std::chrono::milliseconds::rep>(timeout.count(), 0, INT_MAX)));
   if (r < 0 && errno == EINTR) return 0;
   if (r < 0) throw std::runtime_error("waiting on '" + path_ + "': " + std::strerror(errno));
   if (r == 0) return 0;

@@ -2,10 +2,11 @@
 // below kErrorFloor (an exact method on an easy point) is drawn at the floor.
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 
+#include "htx/model/file_out.hpp"
 #include "htx/study/study.hpp"
 
 namespace htx::study {
@@ -37,13 +38,9 @@ std::vector<Series> series_of(const std::vector<Result>& results, const std::str
   return out;
 }
 
-std::ofstream open_file(const std::string& path) {
-  std::ofstream f(path);
-  if (!f) throw std::runtime_error("cannot write '" + path + "'");
-  return f;
+double floored(double e) {
+  return std::max(e, kErrorFloor);
 }
-
-double floored(double e) { return std::max(e, kErrorFloor); }
 
 std::string header(const std::string& name, const std::string& title, const Options& o) {
   char text[512];
@@ -60,38 +57,43 @@ std::string header(const std::string& name, const std::string& title, const Opti
 // A sweep's max error against its parameter, one line per method (log-log).
 void sweep_chart(const std::string& dir, const std::string& name, const std::vector<Series>& series,
                  const std::string& title, const std::string& xlabel, const std::string& extra, const Options& o) {
-  std::ofstream dat = open_file(dir + "/" + name + ".dat");
+  std::ostringstream dat;
   for (const Series& s : series) {
     dat << "# " << s.title << "\n";
     for (const Result* r : s.points) dat << r->point.value << " " << floored(r->max_error) << "\n";
     dat << "\n\n";
   }
-  std::ofstream gp = open_file(dir + "/" + name + ".gp");
+  write_file(dir + "/" + name + ".dat", dat.str());
+  std::ostringstream gp;
   gp << header(name, title, o) << "set logscale xy\nset xlabel '" << xlabel
      << "'\nset ylabel 'max texel-coordinate error (texels)'\nplot ";
   for (size_t i = 0; i < series.size(); ++i)
     gp << (i ? ", \\\n     " : "") << "'" << name << ".dat' index " << i << " using 1:2 with linespoints title '"
        << series[i].title << "'";
   gp << extra << "\n";
+  write_file(dir + "/" + name + ".gp", gp.str());
 }
 
 void subdiv_chart(const std::string& dir, const std::vector<Series>& series, const Options& o) {
-  std::ofstream dat = open_file(dir + "/study_subdiv.dat");
+  std::ostringstream dat;
   for (const Result* r : series.front().points)
     dat << r->point.value << " " << floored(r->max_error) << " " << r->clocks_per_pixel << "\n";
-  std::ofstream gp = open_file(dir + "/study_subdiv.gp");
+  write_file(dir + "/study_subdiv.dat", dat.str());
+  std::ostringstream gp;
   gp << header("study_subdiv", "SUBDIV: span length against error and clocks (floor)", o)
      << "set logscale x 2\nset logscale y\nset xlabel 'span length n (pixels)'\n"
-        "set ylabel 'max texel-coordinate error (texels)'\nset y2label 'clocks per pixel'\nset y2tics\nset y2range [0:*]\n"
+        "set ylabel 'max texel-coordinate error (texels)'\nset y2label 'clocks per pixel'\nset y2tics\nset y2range "
+        "[0:*]\n"
         "plot 'study_subdiv.dat' using 1:2 with linespoints title 'max error', \\\n"
         "     'study_subdiv.dat' using 1:3 axes x1y2 with linespoints title 'clocks per pixel'\n";
+  write_file(dir + "/study_subdiv.gp", gp.str());
 }
 
 // Clocks per pixel against error on one scene: a labelled point per method, AUTO's tolerances a line.
 void tradeoff_chart(const std::string& dir, const std::string& scene, const std::vector<Result>& results,
                     const Options& o) {
   const std::string name = "study_tradeoff_" + scene;
-  std::ofstream dat = open_file(dir + "/" + name + ".dat");
+  std::ostringstream dat;
   dat << "# fixed methods: clocks/pixel, max error, name\n";
   for (const Result& r : results)
     if (r.point.sweep == "tradeoff" && r.point.scene == scene && !is_auto_method(r.point.method))
@@ -107,7 +109,8 @@ void tradeoff_chart(const std::string& dir, const std::string& scene, const std:
       if (r.point.sweep == "tradeoff" && r.point.scene == scene && r.point.method == method)
         dat << r.clocks_per_pixel << " " << floored(r.max_error) << " " << r.point.tolerance << "\n";
   }
-  std::ofstream gp = open_file(dir + "/" + name + ".gp");
+  write_file(dir + "/" + name + ".dat", dat.str());
+  std::ostringstream gp;
   gp << header(name, "Speed against accuracy on " + scene, o)
      << "set logscale y\nset xlabel 'clocks per pixel'\nset ylabel 'max texel-coordinate error (texels)'\n"
      << "plot '" << name << ".dat' index 0 using 1:2 with points pt 7 title 'one method for every triangle', \\\n"
@@ -119,6 +122,7 @@ void tradeoff_chart(const std::string& dir, const std::string& scene, const std:
     gp << ", \\\n     '" << name << ".dat' index 2 using 1:2 with linespoints pt 4 dt 2 "
        << "title 'AUTO, every choice compared'";
   gp << "\n";
+  write_file(dir + "/" + name + ".gp", gp.str());
 }
 
 }  // namespace
@@ -136,8 +140,8 @@ std::vector<std::string> write_chart_scripts(const std::string& dir, const std::
   }
   const auto range = series_of(results, "range", "", false);
   if (!range.empty()) {
-    sweep_chart(dir, "study_range", range, "Error against the coordinate span du (wsweep, r = 2)",
-                "texels spanned du", "", o);
+    sweep_chart(dir, "study_range", range, "Error against the coordinate span du (wsweep, r = 2)", "texels spanned du",
+                "", o);
     scripts.push_back("study_range.gp");
   }
   const auto offset = series_of(results, "offset", "", false);

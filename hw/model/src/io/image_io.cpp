@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <vector>
+
+#include "htx/model/file_out.hpp"
 
 namespace htx {
 
@@ -25,11 +28,16 @@ Image load_image(const std::string& path) {
 }
 
 void write_png(const std::string& path, const Image& image) {
-  if (image.width <= 0 || image.height <= 0 ||
-      image.rgba.size() != static_cast<size_t>(image.width) * image.height * 4)
+  if (image.width <= 0 || image.height <= 0 || image.rgba.size() != static_cast<size_t>(image.width) * image.height * 4)
     throw std::runtime_error("cannot write '" + path + "': malformed image");
-  if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4))
-    throw std::runtime_error("cannot write PNG '" + path + "'");
+  // Encoded in memory, then written checked: stbi_write_png does not report a failed write.
+  std::string png;
+  const auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &png, image.width, image.height, 4, image.rgba.data(), image.width * 4))
+    throw std::runtime_error("cannot write PNG '" + path + "': the encoder failed");
+  write_file(path, png);
 }
 
 uint32_t rgb888_from_rgb565(uint16_t pixel) {
@@ -102,8 +110,10 @@ Image shrink_image(const Image& image, int width, int height) {
         const Coverage& vx = cx[static_cast<size_t>(x)];
         for (size_t j = 0; j < vy.weights.size(); ++j)
           for (size_t i = 0; i < vx.weights.size(); ++i) {
-            const size_t px = (static_cast<size_t>(vy.first + static_cast<int>(j)) * image.width + vx.first +
-                               static_cast<int>(i)) * 4 + static_cast<size_t>(c);
+            const size_t px =
+                (static_cast<size_t>(vy.first + static_cast<int>(j)) * image.width + vx.first + static_cast<int>(i)) *
+                    4 +
+                static_cast<size_t>(c);
             sum += static_cast<uint64_t>(vy.weights[j]) * static_cast<uint64_t>(vx.weights[i]) * image.rgba[px];
           }
         out.rgba[(static_cast<size_t>(y) * width + x) * 4 + static_cast<size_t>(c)] =

@@ -20,6 +20,8 @@ class SerialPort {
 
   // Another rate from now on (after what was written has gone). Throws on a rate it does not know.
   void set_baud(unsigned baud);
+  // Throws std::invalid_argument, listing the rates it knows, if a port cannot be set to `baud`.
+  static void check_baud(unsigned baud);
   void write(const std::string& bytes);
   // Waits up to `timeout` for at least one byte; returns how many were read (0: the time passed).
   // Throws when the other end has gone (the simulation ended) or on a read error.

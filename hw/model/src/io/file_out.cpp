@@ -1,0 +1,21 @@
+#include "htx/model/file_out.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+namespace htx {
+
+void write_file(const std::string& path, std::string_view bytes) {
+  // stdio rather than a stream: fclose's status says whether the buffered tail reached the file.
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  const int write_errno = errno;
+  const bool closed = std::fclose(f) == 0;
+  if (!written || !closed)
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(written ? errno : write_errno));
+}
+
+}  // namespace htx
