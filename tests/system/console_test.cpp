@@ -447,6 +447,29 @@ TEST(SystemConsole, BaudRefusesRatesTheUartCannotMake) {
   EXPECT_NE(r.out.find("serial 115384 baud"), std::string::npos) << r.out;
 }
 
+// Small things of the command line: a subdiv method given with leading zeros is shown by its own
+// name; a texture slot beyond 255 is refused by name like any slot the console lacks (it was a
+// usage error); backspacing a line past the limit back within it takes back the characters beyond
+// it first (the line then runs); `spin SCENE crc` leaves FRAMES out (here stopped after its first
+// frame by the next line).
+TEST(SystemConsole, LineEditsSlotsMethodNamesAndSpinWithoutFrames) {
+  const std::string long_line = std::string(90, 'z') + std::string(10, 'y') + std::string(8, '\b');
+  const auto r = console_script("set method subdiv007\ninfo\ntexture 100 0 256\n" + long_line +
+                                "\nspin cube crc\ninfo\nquit\n");
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("method subdiv7; tolerance"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("error: texture slot 256 is not one of the console's 0..3; nothing was received"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("error: unknown command (type help): " + std::string(90, 'z') + "yy\r\n"), std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("line longer than"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("frame 1 frame_cycles "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("spin cube frames 1 (stopped)"), std::string::npos) << r.out;
+  const size_t frame = r.out.find("frame 1 frame_cycles ");
+  EXPECT_NE(r.out.substr(frame, r.out.find('\r', frame) - frame).find(" crc32 "), std::string::npos) << r.out;
+}
+
 // A script without `quit`: the run ends once the script has ended and the console waits for its
 // next line (status 0, stop reason input_ended), not at --max-cycles; a spin on the last line,
 // which looks for a key once a frame, still draws every frame first. An empty stdin is no script.

@@ -34,6 +34,8 @@
 #include "htx/render/texture_pack.h"
 #include "htx/render/texture_upload.h"
 #include "htx/hal/texture.h"
+#include "htx/fw/console_packet.h"
+#include "htx/fw/crc32.h"
 #include "htx/fw/texel.h"
 #include "console_payload.hpp"
 #include "frame_records.hpp"
@@ -416,6 +418,57 @@ TEST(SystemRender, ConsoleRenderOverDrawsOnTheLastFrame) {
   const render_app::DrawResult alone = render_app::draw_scene(*cube_scene, settings);
   EXPECT_EQ(crcs[2], hex8(alone.crc));
   EXPECT_NE(crcs[1], crcs[2]);
+}
+
+// A console render that fails (an uploaded scene whose mesh asks for trilinear, which the SoC's
+// texture unit does not build) leaves the last good render's frame and figures: `stats` reports
+// that render, and `render cube over` draws onto its page (the cube over itself changes nothing),
+// not onto a page the failed render chose. The upload's line ends with CR LF: the LF is not taken
+// for a damaged packet (the console answers every packet with one Ack and sends no Nak).
+TEST(SystemRender, AFailedConsoleRenderLeavesTheLastGoodFrame) {
+  const render_app::SceneData* cube = compiled_in_scene("cube");
+  ASSERT_NE(cube, nullptr);
+  htx::render::Mesh trilinear = cube->meshes[0];
+  trilinear.state.filter = 2;
+  std::vector<uint8_t> scene(htx::render::packed_scene_size(&trilinear, 1));
+  ASSERT_NE(htx::render::pack_scene(cube->view_proj, cube->cull_backfaces, &trilinear, 1, scene.data(), scene.size()),
+            0u);
+  char upload[64];
+  std::snprintf(upload, sizeof upload, "upload %zu %08x\r\n", scene.size(), htx::fw::crc32(scene.data(), scene.size()));
+  std::string script = std::string("render cube\n") + upload;
+  size_t packets = 0;
+  for (size_t at = 0; at < scene.size(); at += htx::fw::kPacketMaxPayload, ++packets) {
+    std::string line(htx::fw::kPacketMaxLine, '\0');
+    line.resize(htx::fw::packet_encode(htx::fw::kPacketSceneData, static_cast<uint8_t>(packets), scene.data() + at,
+                                       std::min(htx::fw::kPacketMaxPayload, scene.size() - at),
+                                       reinterpret_cast<uint8_t*>(line.data())));
+    script += line;
+  }
+  script += "render upload\nstats\nrender cube over\nquit\n";
+  const auto r = run_console_script("failed_render", script);
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+
+  size_t acks = 0, naks = 0;
+  htx::fw::PacketDecoder decoder;
+  for (char c : r.out) {
+    htx::fw::Packet p;
+    if (htx::fw::packet_feed(&decoder, static_cast<uint8_t>(c), &p) != htx::fw::kPacketReady) continue;
+    acks += p.type == htx::fw::kPacketAck;
+    naks += p.type == htx::fw::kPacketNak;
+  }
+  EXPECT_EQ(acks, packets);
+  EXPECT_EQ(naks, 0u);
+  EXPECT_NE(r.out.find("upload ok: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("error: render failed: a mesh's filter is one this GPU does not build"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("htx> stats\r\nscene cube busy "), std::string::npos) << r.out;
+  std::vector<std::string> crcs;
+  const std::regex render_line(R"(render cube method [^\r\n]* crc32 ([0-9a-f]{8}))");
+  for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), render_line); it != std::sregex_iterator(); ++it)
+    crcs.push_back((*it)[1]);
+  ASSERT_EQ(crcs.size(), 2u) << r.out;
+  EXPECT_EQ(crcs[1], crcs[0]) << "`render cube over` did not draw onto the cube's frame";
 }
 
 // draw_scene (the console's and the render firmware's draw) on the host over the Verilated

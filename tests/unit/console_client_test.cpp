@@ -26,7 +26,25 @@ using namespace std::chrono_literals;
 using htx::console::ConsoleClient;
 using htx::console::SerialPort;
 
-enum class GrabMode { kGood, kGap, kDamaged, kBadCrc, kNoFrame, kSilent, kNakOnce, kRefuse, kNeverAck };
+// The console's behaviour; the upload modes: kNakOnce asks for the first packet again, kRefuse
+// refuses the upload, kNeverAck takes nothing, kSpuriousNak answers the first packet with a Nak it
+// was not asked for and then its Ack (as a CR LF line end's stray LF did: every answer after it is
+// one packet late), kLastAckDamaged damages the last packet's Ack (its verdict follows as text),
+// kGivesUp stops after the first packet with its own timeout's error.
+enum class GrabMode {
+  kGood,
+  kGap,
+  kDamaged,
+  kBadCrc,
+  kNoFrame,
+  kSilent,
+  kNakOnce,
+  kRefuse,
+  kNeverAck,
+  kSpuriousNak,
+  kLastAckDamaged,
+  kGivesUp
+};
 
 // The console's side: answers each line it reads from the master end of a pty.
 class FakeConsole {
@@ -101,20 +119,31 @@ class FakeConsole {
     }
     put("spin frames " + std::to_string(frames) + (stopped ? " (stopped)" : "") + "\r\nhtx> ");
   }
-  void reply(uint8_t type, uint8_t seq) { packet(type, 0, {seq}); }
+  void reply(uint8_t type, uint8_t seq, bool damage = false) { packet(type, 0, {seq}, damage); }
   // A packet of an upload arrived: acknowledge it (or not, as the mode says).
   void upload_packet(const htx::fw::Packet& p) {
     if (p.type == htx::fw::kPacketAbort) {
       uploading_ = false;
       return put("error: the host abandoned the upload; the scene is unchanged\r\nhtx> ");
     }
+    ++packets_in_;
     if (mode_ == GrabMode::kNeverAck || (mode_ == GrabMode::kNakOnce && naks_ == 0)) {
       ++naks_;
       return reply(htx::fw::kPacketNak, p.seq);
     }
+    if (p.seq != static_cast<uint8_t>(upload_packets_)) return reply(htx::fw::kPacketAck, p.seq);  // a repeat
+    if (mode_ == GrabMode::kGivesUp && upload_packets_ == 1) {
+      uploading_ = false;
+      return put("error: upload timed out after " + std::to_string(received_) + " of " +
+                 std::to_string(upload_size_) + " bytes; the scene is unchanged\r\nhtx> ");
+    }
+    if (mode_ == GrabMode::kSpuriousNak && upload_packets_ == 0 && naks_ == 0) {
+      ++naks_;
+      reply(htx::fw::kPacketNak, 0);
+    }
     received_ += p.len;
     ++upload_packets_;
-    reply(htx::fw::kPacketAck, p.seq);
+    reply(htx::fw::kPacketAck, p.seq, mode_ == GrabMode::kLastAckDamaged && received_ == upload_size_);
     if (received_ == upload_size_) {
       uploading_ = false;
       put("upload ok: " + std::to_string(received_) + " bytes\r\nhtx> ");
@@ -139,6 +168,7 @@ class FakeConsole {
           upload_line_ = line;
           upload_size_ = std::stoul(line.substr(line.find(' ') + 1));
           received_ = 0;
+          upload_packets_ = 0;
           if (mode_ == GrabMode::kRefuse) {
             put("error: a scene of " + std::to_string(upload_size_) + " bytes does not fit the store (1..3072)\r\nhtx> ");
           } else {
@@ -158,11 +188,12 @@ class FakeConsole {
  public:
   int naks() const { return naks_; }
   size_t upload_packets() const { return upload_packets_; }
+  size_t packets_in() const { return packets_in_; }  // every data packet that arrived, repeats too
   std::string upload_line() const { return upload_line_; }
 
  private:
   bool uploading_ = false;
-  size_t upload_size_ = 0, received_ = 0, upload_packets_ = 0;
+  size_t upload_size_ = 0, received_ = 0, upload_packets_ = 0, packets_in_ = 0;
   std::string upload_line_;
   int naks_ = 0;
 
@@ -267,7 +298,8 @@ TEST(ConsoleClient, UploadResendsWhatWasNotTakenAndReportsTheVerdict) {
     client.sync();
     try {
       client.upload(scene);
-    } catch (const std::runtime_error& e) {
+    } catch (const std::invalid_argument& e) {  // the console's refusal: the line is at a prompt
+      EXPECT_EQ(client.command("info"), "line one\nline two\n");
       return e.what();
     }
     return "no error";
@@ -276,6 +308,40 @@ TEST(ConsoleClient, UploadResendsWhatWasNotTakenAndReportsTheVerdict) {
             "upload: the console refused: error: a scene of 600 bytes does not fit the store (1..3072)\n");
   EXPECT_EQ(upload_error(GrabMode::kNeverAck),
             "upload: packet 0 was not taken after 8 tries; the console's scene is unchanged");
+  // The console's own error ends the transfer at once, in its words, not at the timeout.
+  const auto t0 = std::chrono::steady_clock::now();
+  EXPECT_EQ(upload_error(GrabMode::kGivesUp),
+            "upload: error: upload timed out after 240 of 600 bytes; the scene is unchanged\n");
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 1500ms);
+}
+
+// Answers out of step or lost: a Nak the host did not cause is answered by sending the packet
+// again, and the Ack of that repeat, which comes late, is not taken for a refusal of the next
+// packet (each later packet would otherwise go twice); a damaged Ack of the last packet is not
+// answered by sending it again (the console has finished and would read the copy as a typed line):
+// its verdict, which follows as text, ends the upload.
+TEST(ConsoleClient, UploadAnswersOutOfStepOrLostSendNothingTwice) {
+  std::vector<uint8_t> scene(600);
+  for (size_t i = 0; i < scene.size(); ++i) scene[i] = static_cast<uint8_t>(i * 3);
+  {
+    FakeConsole fake(GrabMode::kSpuriousNak);
+    SerialPort port(fake.path(), 115200);
+    ConsoleClient client(port, 2s);
+    client.sync();
+    EXPECT_EQ(client.upload(scene), "upload ok: 600 bytes\n");
+    EXPECT_EQ(fake.upload_packets(), 3u);
+    EXPECT_EQ(fake.packets_in(), 4u);  // the first twice, as its Nak asked
+    EXPECT_EQ(client.resent_packets(), 1u);
+    EXPECT_EQ(client.command("info"), "line one\nline two\n");
+  }
+  FakeConsole fake(GrabMode::kLastAckDamaged);
+  SerialPort port(fake.path(), 115200);
+  ConsoleClient client(port, 2s);
+  client.sync();
+  EXPECT_EQ(client.upload(scene), "upload ok: 600 bytes\n");
+  EXPECT_EQ(fake.packets_in(), 3u);
+  EXPECT_EQ(client.resent_packets(), 0u);
+  EXPECT_EQ(client.command("info"), "line one\nline two\n");
 }
 
 // A texture goes the same way, announced as `texture SIZE CRC32 [SLOT]` (zlib's CRC-32 of its bytes).
@@ -301,7 +367,7 @@ TEST(ConsoleClient, TextureUploadIsAnnouncedAsTexture) {
   try {
     client.upload(texture, {}, ConsoleClient::Payload::kTexture);
     ADD_FAILURE() << "no error";
-  } catch (const std::runtime_error& e) {
+  } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()), "upload: packet 0 was not taken after 8 tries; the console's texture is unchanged");
   }
   EXPECT_EQ(client.resent_packets(), 7u);
@@ -342,11 +408,21 @@ TEST(ConsoleClient, BaudSwitchesThePortAfterTheConsolesOk) {
     return ::cfgetospeed(&t);
   };
   try {
-    client.set_baud(5000000);
+    client.set_baud(3000000);
     ADD_FAILURE() << "a refused rate was taken";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), "error: 5000000 baud is not one this UART makes");
+    EXPECT_EQ(std::string(e.what()), "error: 3000000 baud is not one this UART makes");
   }
+  EXPECT_EQ(speed(), static_cast<speed_t>(B115200));
+  // A rate the port cannot take is refused before the console is asked (it would switch alone):
+  // nothing goes to it, so the next command's answer is its own.
+  try {
+    client.set_baud(5000000);
+    ADD_FAILURE() << "a rate the port cannot take was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("baud 5000000: want 9600, ", 0), 0u) << e.what();
+  }
+  EXPECT_EQ(client.command("info"), "line one\nline two\n");
   EXPECT_EQ(speed(), static_cast<speed_t>(B115200));
   client.set_baud(1000000);
   EXPECT_EQ(speed(), static_cast<speed_t>(B1000000));

@@ -12,6 +12,7 @@
 #include "scene_turn.hpp"
 #include "scene_upload.hpp"
 #include "texture_store.hpp"
+#include "htx/hal/framebuffer.h"
 #include "htx/hal/raster.h"
 #include "htx/hal/texture.h"
 #include "htx/hal/timer.h"
@@ -214,8 +215,9 @@ bool parse_receive(char* rest, uint32_t* size, uint32_t* crc, uint32_t* slot = n
   const char* crc_text = next_word(&rest);
   const char* slot_text = slot ? next_word(&rest) : nullptr;
   if (slot) *slot = 0;
+  // (Any slot number parses: one the console does not have is refused by name, receive_texture.)
   return size_text && crc_text && !next_word(&rest) && parse_uint(size_text, 0, 0x7FFFFFFF, size) &&
-         parse_hex(crc_text, crc) && (!slot_text || parse_uint(slot_text, 0, 255, slot));
+         parse_hex(crc_text, crc) && (!slot_text || parse_uint(slot_text, 0, 0xFFFFFFFF, slot));
 }
 
 // `set method NAME`: refused here when the raster unit does not build it (RASTER CAPS.METHODS),
@@ -248,7 +250,11 @@ bool set_method(const char* name) {
   }
   g_settings.draw.method = method;
   g_settings.draw.subdiv_n = n;
-  strncpy(g_settings.method_text, name, sizeof g_settings.method_text - 1);
+  // The method's own name (`subdiv007` is shown as subdiv7).
+  if (method == kMethodSubdiv)
+    snprintf(g_settings.method_text, sizeof g_settings.method_text, "subdiv%u", static_cast<unsigned>(n));
+  else
+    snprintf(g_settings.method_text, sizeof g_settings.method_text, "%s", name);
   return true;
 }
 
@@ -309,23 +315,28 @@ const render_app::SceneData* find_scene(const char* name) {
 }
 
 // Draws `scene` with the console's settings into the page not shown and shows it from the next
-// frame on (frame_pages.hpp); a failed render stays off the screen (`grab` still sends it: it
-// reads the page drawn last). `over`: drawn over the page drawn last, its colour and depth kept
+// frame on (frame_pages.hpp). `over`: drawn over the page drawn last, its colour and depth kept
 // (a scene sent in parts, or several scenes in one frame); `hold`: not shown yet (a later render
-// that shows, shows it). Prints the error and returns false on failure.
+// that shows, shows it). Prints the error and returns false on failure. A failed render stays off
+// the screen, and the frame and figures stay the last good render's: `grab`, `stats` and a
+// `render ... over` see that one, not a page the failed one chose (a plan refused, say for a
+// filter the GPU does not build, draws nothing; a failure while drawing leaves its page unshown).
 bool draw_and_show(const render_app::SceneData& scene, bool checksum = true, bool over = false, bool hold = false) {
   render_app::DrawSettings draw = g_settings.draw;
   draw.time_geometry = false;
   draw.checksum = checksum;
   draw.clear = !over;
   fill_draw_textures(&draw);
+  const uint32_t last_page = htx::hal::fb_draw_page();
   if (!over) begin_frame_page(kFlipPolls);
-  g_last = render_app::draw_scene(scene, draw);
-  g_last_scene = scene.name;
-  if (!g_last.ok) {
-    error("render failed: ", g_last.error);
+  const render_app::DrawResult result = render_app::draw_scene(scene, draw);
+  if (!result.ok) {
+    htx::hal::fb_set_draw_page(last_page);
+    error("render failed: ", result.error);
     return false;
   }
+  g_last = result;
+  g_last_scene = scene.name;
   if (!hold) present_frame_page(kFlipPolls);
   return true;
 }
@@ -362,6 +373,10 @@ void cmd_spin(char* rest) {
   const char* name = next_word(&rest);
   const char* count = next_word(&rest);
   const char* crc_word = next_word(&rest);
+  if (count && !crc_word && strcmp(count, "crc") == 0) {  // `spin SCENE crc`: FRAMES left out
+    crc_word = count;
+    count = nullptr;
+  }
   uint32_t frames = kSpinDefaultFrames;
   if (!name || next_word(&rest) || (count && !parse_uint(count, 1, kSpinMaxFrames, &frames)) ||
       (crc_word && strcmp(crc_word, "crc") != 0))

@@ -18,7 +18,9 @@ void unread_byte(int c) { g_unread = c; }
 
 LineStatus read_line(char* buf) {
   size_t n = 0;
-  bool too_long = false;
+  // Characters typed past kMaxLine: not kept or echoed, but counted, so that backspacing over
+  // them brings the line back within the limit (they are the first a backspace takes away).
+  size_t beyond = 0;
   for (;;) {
     int c = g_unread;
     g_unread = EOF;
@@ -31,17 +33,19 @@ LineStatus read_line(char* buf) {
       fputs("\r\n", stdout);
       buf[n] = '\0';
       if (htx::hal::uart_take_overrun()) return LineStatus::kOverrun;
-      return too_long ? LineStatus::kTooLong : LineStatus::kLine;
+      return beyond > 0 ? LineStatus::kTooLong : LineStatus::kLine;
     }
     if (c == kCtrlC) {
       fputs("^C\r\n", stdout);
       n = 0;
-      too_long = false;
+      beyond = 0;
       buf[0] = '\0';
       return LineStatus::kLine;
     }
     if (c == kBackspace || c == kDelete) {
-      if (n > 0) {
+      if (beyond > 0) {
+        --beyond;
+      } else if (n > 0) {
         --n;
         fputs("\b \b", stdout);
       }
@@ -49,7 +53,7 @@ LineStatus read_line(char* buf) {
     }
     if (c < 0x20 || c > 0x7E) continue;  // other control bytes and non-ASCII are ignored
     if (n == kMaxLine) {
-      too_long = true;
+      ++beyond;
       continue;
     }
     buf[n++] = static_cast<char>(c);

@@ -17,20 +17,18 @@ constexpr uint32_t kSilencePolls = 10'000'000;
 
 void answer(uint8_t type, uint8_t seq) { send_packet(type, 0, &seq, 1); }
 
-}  // namespace
-
-bool receive_packets(uint32_t size, uint32_t crc32, uint32_t capacity, const char* what) {
-  if (size == 0 || size > capacity) {
-    printf("error: a %s of %lu bytes does not fit the store (1..%lu)\r\n", what, static_cast<unsigned long>(size),
-           static_cast<unsigned long>(capacity));
-    return false;
-  }
-  htx::hal::uart_take_overrun();  // from before the upload: packets have their own checks
-  printf("ready\r\n");
+// Packets into the staging bytes until `size` have come, each answered (Ack, or Nak to have it
+// again); false with the error printed when the host abandons it, the line falls silent or the
+// checksum does not match.
+bool receive_into_staging(uint32_t size, uint32_t crc32, const char* what) {
   uint8_t* staging = staging_bytes();
   htx::fw::PacketDecoder decoder;
   uint32_t received = 0;
   uint8_t expect = 0;
+  // Bytes before the first zero are the command line's tail (the LF of a CR LF line end), not a
+  // packet: each packet starts with a zero, and a frame of them would be answered with a Nak the
+  // host did not ask for, putting its answers a packet out of step.
+  bool framed = false;
   while (received < size) {
     const int c = htx::hal::uart_get(kSilencePolls);
     if (c < 0) {
@@ -38,6 +36,8 @@ bool receive_packets(uint32_t size, uint32_t crc32, uint32_t capacity, const cha
              static_cast<unsigned long>(received), static_cast<unsigned long>(size), what);
       return false;
     }
+    if (!framed && c != 0) continue;
+    framed = true;
     htx::fw::Packet p;
     const htx::fw::PacketStatus st = htx::fw::packet_feed(&decoder, static_cast<uint8_t>(c), &p);
     if (st == htx::fw::kPacketNone) continue;
@@ -70,6 +70,23 @@ bool receive_packets(uint32_t size, uint32_t crc32, uint32_t capacity, const cha
     return false;
   }
   return true;
+}
+
+}  // namespace
+
+bool receive_packets(uint32_t size, uint32_t crc32, uint32_t capacity, const char* what) {
+  if (size == 0 || size > capacity) {
+    printf("error: a %s of %lu bytes does not fit the store (1..%lu)\r\n", what, static_cast<unsigned long>(size),
+           static_cast<unsigned long>(capacity));
+    return false;
+  }
+  htx::hal::uart_take_overrun();  // from before the upload: packets have their own checks
+  printf("ready\r\n");
+  const bool ok = receive_into_staging(size, crc32, what);
+  // Bytes the receive FIFO lost during the transfer were packets', sent again and taken: the flag
+  // must not make the line reader drop the next command.
+  htx::hal::uart_take_overrun();
+  return ok;
 }
 
 }  // namespace console_app

@@ -111,6 +111,29 @@ fw::PacketStatus ConsoleClient::next_packet(fw::Packet* p) {
   }
 }
 
+ConsoleClient::Answer ConsoleClient::next_answer(fw::Packet* p, std::string* text) {
+  // The console's text has no zero byte; a packet is framed by zeros. Text since the last zero
+  // that ends with a line end and the prompt is the console's own (a packet's bytes match it with
+  // a chance of about 2^-56).
+  const std::string line_and_prompt = std::string("\r\n") + kPrompt;
+  text->clear();
+  for (;;) {
+    const uint8_t b = next_byte();
+    if (b == 0)
+      text->clear();
+    else if (text->size() < kMaxText)
+      *text += static_cast<char>(b);
+    const fw::PacketStatus st = fw::packet_feed(&decoder_, b, p);
+    if (st == fw::kPacketReady) return Answer::kPacket;
+    if (st != fw::kPacketNone) return Answer::kDamaged;
+    if (ends_with(*text, line_and_prompt)) {
+      decoder_ = {};
+      text->resize(text->size() - std::string(kPrompt).size());
+      return Answer::kConsolePrompt;
+    }
+  }
+}
+
 void ConsoleClient::send_packet(uint8_t type, uint8_t seq, const uint8_t* data, size_t len) {
   std::string line(fw::kPacketMaxLine, '\0');
   line.resize(fw::packet_encode(type, seq, data, len, reinterpret_cast<uint8_t*>(line.data())));
@@ -264,33 +287,63 @@ std::string ConsoleClient::upload(const std::vector<uint8_t>& bytes, const std::
   // The console answers `ready`, or refuses with a message and a prompt.
   std::string text;
   if (!read_text_until("ready\r\n", &text))
-    throw std::runtime_error("upload: the console refused: " + unix_lines(without_echo(text)));
+    throw std::invalid_argument("upload: the console refused: " + unix_lines(without_echo(text)));
   decoder_ = {};
+  // The console's verdict (its text before the prompt), taken as the transfer's end.
+  const auto verdict_of = [](const std::string& said) {
+    std::string v = unix_lines(said);
+    while (!v.empty() && v.front() == '\n') v.erase(v.begin());
+    if (v.find("error:") != std::string::npos) throw std::invalid_argument("upload: " + v);
+    return v;
+  };
   size_t sent = 0;
   for (uint32_t seq = 0; sent < bytes.size(); ++seq) {
     const size_t len = std::min(fw::kPacketMaxPayload, bytes.size() - sent);
+    const bool last = sent + len == bytes.size();
     bool taken = false;
     for (int attempt = 0; attempt < kUploadTries && !taken; ++attempt) {
       if (attempt > 0) ++resent_;
       send_packet(fw::kPacketSceneData, static_cast<uint8_t>(seq), bytes.data() + sent, len);
-      fw::Packet answer;
-      if (next_packet(&answer) != fw::kPacketReady || answer.len < 1) continue;  // a damaged answer: send again
-      taken = answer.type == fw::kPacketAck && answer.payload[0] == static_cast<uint8_t>(seq);
+      for (bool resend = false; !taken && !resend;) {
+        fw::Packet answer;
+        const Answer a = next_answer(&answer, &text);
+        if (a == Answer::kConsolePrompt) {
+          // The console ended the transfer: its verdict on the whole (the last packet's Ack was
+          // lost on the way), or its own error (it waited too long for a packet).
+          const std::string v = verdict_of(text);  // throws on the console's error
+          if (!last)
+            throw std::runtime_error("upload: the console ended the transfer at packet " + std::to_string(seq) +
+                                     " of " + std::to_string((bytes.size() + fw::kPacketMaxPayload - 1) /
+                                                             fw::kPacketMaxPayload) + ": " + v);
+          if (progress) progress(bytes.size());
+          return v;
+        }
+        if (a == Answer::kDamaged || answer.len < 1) {
+          // A damaged answer: send again, but not the last packet, which the console may have
+          // taken (it would then read the copy as a typed line): its verdict or its timeout's
+          // error comes as text.
+          resend = !last;
+          continue;
+        }
+        // An answer to the packet before (a repeat's Ack, sent before this packet arrived) is
+        // stale: read on.
+        if (answer.type == fw::kPacketAck && seq > 0 && answer.payload[0] == static_cast<uint8_t>(seq - 1)) continue;
+        taken = answer.type == fw::kPacketAck && answer.payload[0] == static_cast<uint8_t>(seq);
+        resend = !taken;
+      }
     }
     if (!taken) {
       const uint8_t nothing = 0;
       send_packet(fw::kPacketAbort, 0, &nothing, 1);
       read_until_prompt();
-      throw std::runtime_error("upload: packet " + std::to_string(seq) + " was not taken after " +
-                               std::to_string(kUploadTries) + " tries; the console's " + (texture ? "texture" : "scene") +
-                               " is unchanged");
+      throw std::invalid_argument("upload: packet " + std::to_string(seq) + " was not taken after " +
+                                  std::to_string(kUploadTries) + " tries; the console's " +
+                                  (texture ? "texture" : "scene") + " is unchanged");
     }
     sent += len;
     if (progress) progress(sent);
   }
-  const std::string verdict = unix_lines(read_until_prompt());
-  if (verdict.find("error:") != std::string::npos) throw std::runtime_error("upload: " + verdict);
-  return verdict;
+  return verdict_of(read_until_prompt());
 }
 
 }  // namespace htx::console

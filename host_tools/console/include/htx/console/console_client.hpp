@@ -51,8 +51,11 @@ class ConsoleClient {
   // Sends a packed scene or texture (the command, then packets, each resent until acknowledged, at
   // most kUploadTries times) and returns the console's verdict line. A texture goes into texture
   // slot `slot` (the slot is named only when not 0, as consoles before texture slots took it).
-  // Throws std::runtime_error when the console refuses it or the transfer fails; the console's
-  // scene or textures are then unchanged.
+  // Throws std::invalid_argument with the console's words when it refuses the upload, rejects what
+  // arrived, or ends the transfer itself (its own timeout), and when a packet is not taken after
+  // kUploadTries tries (the upload is then abandoned): the console's scene or textures are
+  // unchanged and the line is at a prompt. Throws std::runtime_error when the line itself fails
+  // (silence past the timeout, the port closed).
   std::string upload(const std::vector<uint8_t>& bytes, const std::function<void(size_t sent)>& progress = {},
                      Payload payload = Payload::kScene, unsigned slot = 0);
   static constexpr int kUploadTries = 8;
@@ -74,6 +77,10 @@ class ConsoleClient {
   bool read_text_until(const std::string& needle, std::string* text);
   // Feeds bytes to the packet decoder until a frame ends: a packet, or the reason it is not one.
   fw::PacketStatus next_packet(fw::Packet* p);
+  // What came while an upload waited for an answer: a packet, a damaged one, or the console's
+  // prompt after a line of text (`text`, without the prompt): it ended the transfer itself.
+  enum class Answer { kPacket, kDamaged, kConsolePrompt };
+  Answer next_answer(fw::Packet* p, std::string* text);
   void send_packet(uint8_t type, uint8_t seq, const uint8_t* data, size_t len);
 
   SerialPort& port_;
