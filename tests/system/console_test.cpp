@@ -448,19 +448,21 @@ TEST(SystemConsole, BaudRefusesRatesTheUartCannotMake) {
 }
 
 // Small things of the command line: a subdiv method given with leading zeros is shown by its own
-// name; a texture slot beyond 255 is refused by name like any slot the console lacks (it was a
+// name; a texture larger than the store is refused before `ready`; a texture slot beyond 255 is
+// refused by name like any slot the console lacks (it was a
 // usage error); backspacing a line past the limit back within it takes back the characters beyond
 // it first (the line then runs); `spin SCENE crc` leaves FRAMES out (here stopped after its first
 // frame by the next line).
 TEST(SystemConsole, LineEditsSlotsMethodNamesAndSpinWithoutFrames) {
   const std::string long_line = std::string(90, 'z') + std::string(10, 'y') + std::string(8, '\b');
-  const auto r = console_script("set method subdiv007\ninfo\ntexture 100 0 256\n" + long_line +
+  const auto r = console_script("set method subdiv007\ninfo\ntexture 100 0 256\ntexture 8204 0\n" + long_line +
                                 "\nspin cube crc\ninfo\nquit\n");
   EXPECT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("method subdiv7; tolerance"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error: texture slot 256 is not one of the console's 0..3; nothing was received"),
             std::string::npos)
       << r.out;
+  EXPECT_NE(r.out.find("error: a texture of 8204 bytes does not fit the store (1..2060)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error: unknown command (type help): " + std::string(90, 'z') + "yy\r\n"), std::string::npos)
       << r.out;
   EXPECT_EQ(r.out.find("line longer than"), std::string::npos) << r.out;
@@ -596,14 +598,16 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
   ASSERT_EQ(ramp_crc.size(), 8u) << drawn.out;
   EXPECT_NE(ramp_crc, checker_crc);
 
-  // Refused: too large for the store, sides not powers of two (before the port opens), and a
-  // packed texture damaged inside (its CRC-32 right) sent by hand.
+  // Refused: too large for a slot and sides not powers of two (both before the port opens; the
+  // console's own refusal of a size beyond its store: LineEditsSlotsMethodNamesAndSpinWithoutFrames),
+  // and a packed texture damaged inside (its CRC-32 right) sent by hand.
   const std::string big = ::testing::TempDir() + "htx_console_big.png";
   write_texture_png(big, 64, 64, [](int, int) { return std::array<uint8_t, 4>{1, 2, 3, 255}; });
   const auto too_big = htx::test::run_program({HTX_BIN, "upload", "--texture", big, "--port", pty, "--timeout", "60"}, 180s);
   EXPECT_NE(too_big.status, 0);
-  EXPECT_NE(too_big.err.find("a texture of 8204 bytes does not fit the store (1..2060)"), std::string::npos)
+  EXPECT_NE(too_big.err.find("is 64x64: a console texture slot holds at most 1024 texels"), std::string::npos)
       << too_big.err;
+  EXPECT_EQ(too_big.out.find("upload:"), std::string::npos) << "sent: " << too_big.out;
   const std::string odd = ::testing::TempDir() + "htx_console_odd.png";
   write_texture_png(odd, 24, 16, [](int, int) { return std::array<uint8_t, 4>{1, 2, 3, 255}; });
   const auto not_pow2 = htx::test::run_program({HTX_BIN, "upload", "--texture", odd, "--port", pty}, 60s);

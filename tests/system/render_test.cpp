@@ -633,7 +633,7 @@ TEST(SystemRender, SocAndBoardEnginesDrawTheCosimFrame) {
   refused({"--engine", "soc", "--method", "quadratic"}, "only the model builds it");
   refused({"--engine", "soc", "--firmware", (dir / "none.elf").string()}, "no console firmware at");
   refused({"--engine", "board"}, "needs --port");
-  refused({"--engine", "model", "--port", "/dev/null"}, "are for --engine soc and board");
+  refused({"--engine", "model", "--port", "/dev/null"}, "--port is for --engine board");
   refused({"--engine", "model", "--fast-baud", "1000000"}, "--fast-baud is for --engine board");
   refused({"--engine", "soc", "--fast-baud", "1000000"}, "--fast-baud is for --engine board");
   // Refused by the console itself, after the SoC started: htx reports its error and stops the
