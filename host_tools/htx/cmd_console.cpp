@@ -87,9 +87,16 @@ void upload(console::ConsoleClient& client, const std::vector<uint8_t>& packed,
 void upload_scene(console::ConsoleClient& client, const ScenePayload& p) {
   if (!p.note.empty()) std::cerr << "upload: " << p.note << "\n";
   upload(client, p.scene);
-  for (size_t slot = 0; slot < p.textures.size(); ++slot)
-    if (!p.textures[slot].empty())
+  for (size_t slot = 0; slot < p.textures.size(); ++slot) {
+    if (p.textures[slot].empty()) continue;
+    try {
       upload(client, p.textures[slot], console::ConsoleClient::Payload::kTexture, static_cast<unsigned>(slot));
+    } catch (const std::invalid_argument& e) {
+      // The scene stays taken: say so, rather than let "unchanged" read as the whole upload's.
+      throw std::invalid_argument("the scene was taken, but not its texture for slot " + std::to_string(slot) + ": " +
+                                  e.what());
+    }
+  }
 }
 
 struct ConsoleArgs : PortArgs {

@@ -76,6 +76,10 @@ void run_render(const RenderArgs& given) {
   if (given.baud_given) throw std::invalid_argument("--baud is for --engine board");
   if (given.fast_baud != 0) throw std::invalid_argument("--fast-baud is for --engine board");
   if (given.timeout_given) throw std::invalid_argument("--timeout is for --engine soc and board");
+  // ref draws every triangle exactly (float64 perspective): a method would be ignored without a word.
+  if (given.engine == "ref" && !given.method.empty())
+    throw std::invalid_argument("--method: ref draws every triangle exactly; the methods are the model's, rtl's, "
+                                "soc's and board's (ref is what --metrics compares them with)");
   RenderArgs a = given;
   if (a.size.empty()) a.size = "320x240";
   if (a.config.empty()) a.config = "full";

@@ -158,6 +158,7 @@ TEST(SystemRenderCli, OptionsOfOtherEnginesAndValuesOutOfRangeAreRefused) {
   } cases[] = {
       {{"--engine", "model", "--baud", "9600"}, 1, "--baud is for --engine board"},
       {{"--engine", "ref", "--timeout", "5"}, 1, "--timeout is for --engine soc and board"},
+      {{"--engine", "ref", "--method", "affine"}, 1, "--method: ref draws every triangle exactly"},
       {{"--engine", "model", "--port", "/dev/null"}, 1, "--port is for --engine board"},
       {{"--engine", "model", "--firmware", "x.elf"}, 1, "--firmware is for --engine soc"},
       {{"--engine", "soc", "--baud", "9600"}, 1, "--baud is for --engine board"},
