@@ -3,6 +3,7 @@
 #include "htx/fw/console_packet.h"
 #include "htx/fw/mip_chain.h"
 #include "htx/fw/texel.h"
+#include "htx/hal/raster.h"
 
 namespace htx::render {
 
@@ -33,6 +34,9 @@ UploadStatus upload_texture(uint32_t slot, uint32_t base_block, const TextureIma
   if (hal_status) *hal_status = st;
   if (st != hal::kTextureOk || !img.rgba8) return kUploadBadTexture;
   if (scratch_words < texture_upload_scratch_words(lw, lh) || !scratch) return kUploadScratchTooSmall;
+  // No texel or descriptor changes under a textured triangle in flight: the texture unit's own
+  // BUSY can fall between two fragments of one triangle, the raster unit's covers them all.
+  if (!hal::raster_wait_idle(max_polls)) return kUploadTimeout;
 
   // Level 0: each pixel encoded straight into the window.
   const uint32_t w = 1u << lw, h = 1u << lh;

@@ -36,7 +36,7 @@ module htx_reg_port (
       act_q       <= req_valid_i;
       act_write_o <= req_valid_i && req_we_i && (req_be_i == 4'b1111);
       if (req_valid_i) begin
-        act_offset_o <= req_addr_i[11:0];
+        act_offset_o <= {req_addr_i[11:2], 2'b00};  // by word: a narrower read gets its word's lanes
         act_wdata_o  <= req_wdata_i;
       end
       rsp_valid_q <= act_q;
@@ -49,5 +49,5 @@ module htx_reg_port (
   assign rsp_err_o   = 1'b0;
 
   logic unused_addr;
-  assign unused_addr = ^req_addr_i[31:12];
+  assign unused_addr = ^{req_addr_i[31:12], req_addr_i[1:0]};
 endmodule

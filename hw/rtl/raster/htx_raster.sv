@@ -140,12 +140,18 @@ module htx_raster #(
   logic        clr_pend_q, clr_color_q, clr_depth_q;
   logic [LvlW-1:0] fifo_level;
 
-  assign offset  = req_addr_i[11:0];
+  // Registers are decoded by word (a byte or half-word read gets its word's lanes); only whole
+  // words are written, and a narrower write is refused with a bus error.
+  assign offset  = {req_addr_i[11:2], 2'b00};
   assign wr      = req_we_i && (&req_be_i);
   assign is_fifo = (offset == htx_raster_reg_pkg::RASTER_FIFO_OFFSET);
-  // A full FIFO holds the write on the bus until a word leaves: back-pressure, never a drop.
+  // A full FIFO holds the write on the bus until a word leaves: back-pressure, never a drop. With
+  // the unit disabled nothing leaves, so that write is refused with a bus error instead of holding
+  // the bus (and the CPU, the only master that could enable the unit) for ever.
   // A counter read waits for its counter's turn in the counter RAM (htx_raster_counters).
-  assign req_ready_o = !(is_fifo && req_we_i && fifo_full) && !(cnt_read && !cnt_ack);
+  logic fifo_refused;
+  assign fifo_refused = is_fifo && req_we_i && fifo_full && !enable_q;
+  assign req_ready_o = !(is_fifo && req_we_i && fifo_full && enable_q) && !(cnt_read && !cnt_ack);
   assign accept = req_valid_i && req_ready_o;
 
   logic ctrl_wr;
@@ -171,7 +177,7 @@ module htx_raster #(
   htx_raster_fifo #(.Depth(FifoDepth), .Hold(RecInFifo)) u_fifo (
     .clk_i, .rst_ni,
     .flush_i   (abort),
-    .push_i    (accept && is_fifo && req_we_i),
+    .push_i    (accept && is_fifo && wr && !fifo_full),
     .wdata_i   (req_wdata_i),
     .pop_i     (fifo_pop),
     .rdata_o   (fifo_rdata),
@@ -1009,7 +1015,7 @@ module htx_raster #(
 
   // ---- Register writes and reads ---------------------------------------------------------------
   logic [31:0] rdata_d, rsp_rdata_q;
-  logic        rsp_valid_q;
+  logic        rsp_valid_q, rsp_err_q;
   logic [31:0] last_state_q;
   always_comb begin
     rdata_d = '0;
@@ -1074,13 +1080,14 @@ module htx_raster #(
       clr_depth_q   <= 1'b0;
       last_state_q  <= '0;
       rsp_valid_q   <= 1'b0;
+      rsp_err_q     <= 1'b0;
       rsp_rdata_q   <= '0;
       cnt_df_q      <= '0;
     end else begin
       rsp_valid_q <= accept;
+      rsp_err_q   <= accept && ((req_we_i && !wr) || fifo_refused);
       if (accept && !req_we_i) rsp_rdata_q <= rdata_d;
       if (setup_taken) last_state_q <= rec_state;
-      if (setup_err) err_state_q <= 1'b1;
       if (accept && wr) begin
         unique case (offset)
           htx_raster_reg_pkg::RASTER_CTRL_OFFSET:
@@ -1102,6 +1109,8 @@ module htx_raster #(
           default: ;
         endcase
       end
+      // After the write-one-to-clear above, so an error in the clearing clock is not lost.
+      if (setup_err) err_state_q <= 1'b1;
       // Clear: requested, then started by the fragment stage once the pipeline is empty.
       if (abort) begin
         clr_pend_q <= 1'b0;
@@ -1122,9 +1131,9 @@ module htx_raster #(
 
   assign rsp_valid_o = rsp_valid_q;
   assign rsp_rdata_o = rsp_rdata_q;
-  assign rsp_err_o   = 1'b0;
+  assign rsp_err_o   = rsp_err_q;
 
   logic unused;
-  assign unused = ^{req_addr_i[31:12], tv_y, clearing, tri_state, tri_flat,
+  assign unused = ^{req_addr_i[31:12], req_addr_i[1:0], tv_y, clearing, tri_state, tri_flat,
                     sd_side[63:32], rq_st_q[23:16], rq_st_q[9:0]};
 endmodule

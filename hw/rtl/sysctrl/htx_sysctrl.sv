@@ -28,8 +28,9 @@ module htx_sysctrl #(
   logic        rsp_valid_q;
 
   logic unused_addr;
-  assign unused_addr = ^req_addr_i[31:12];
-  assign offset      = req_addr_i[11:0];
+  assign unused_addr = ^{req_addr_i[31:12], req_addr_i[1:0]};
+  // Registers are decoded by word: a byte or half-word access reaches its word's lanes.
+  assign offset      = {req_addr_i[11:2], 2'b00};
   assign req_ready_o = 1'b1;
   assign write       = req_valid_i && req_we_i;
 

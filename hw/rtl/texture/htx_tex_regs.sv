@@ -41,7 +41,7 @@ module htx_tex_regs #(
 
   logic [11:0] offset;
   logic        accept, wr;
-  assign offset = req_addr_i[11:0];
+  assign offset = {req_addr_i[11:2], 2'b00};  // by word: a narrower read gets its word's lanes
   assign accept = req_valid_i && req_ready_o;
   assign wr     = accept && req_we_i && (&req_be_i);
 
@@ -54,7 +54,7 @@ module htx_tex_regs #(
   logic [31:0] cnt_samples_q, cnt_busy_q;
   logic        is_desc;
   logic [2:0]  desc_idx;
-  assign is_desc  = (offset[11:5] == 7'b0001000) && (offset[1:0] == 2'b00);  // 0x100..0x11C
+  assign is_desc  = (offset[11:5] == 7'b0001000);  // 0x100..0x11C
   assign desc_idx = offset[4:2];
   assign req_ready_o = !(SharedDescMux && is_desc && !req_we_i && slot_take_i);
 
@@ -134,5 +134,5 @@ module htx_tex_regs #(
   assign rsp_err_o   = 1'b0;
 
   logic unused;
-  assign unused = ^{req_addr_i[31:12], req_wdata_i[31:26], slot_i};
+  assign unused = ^{req_addr_i[31:12], req_addr_i[1:0], req_wdata_i[31:26], slot_i};
 endmodule

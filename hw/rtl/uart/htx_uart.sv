@@ -47,8 +47,9 @@ module htx_uart #(
   logic [31:0] rsp_rdata_q, rdata_d;
 
   logic unused_req;
-  assign unused_req = ^{req_addr_i[31:12], req_be_i[3]};
-  assign offset     = req_addr_i[11:0];
+  assign unused_req = ^{req_addr_i[31:12], req_addr_i[1:0], req_be_i[3]};
+  // Registers are decoded by word: a byte or half-word access reaches its word's lanes.
+  assign offset     = {req_addr_i[11:2], 2'b00};
   assign is_data    = (offset == htx_uart_reg_pkg::UART_DATA_OFFSET);
   assign data_write = is_data && req_we_i && req_be_i[0];
   assign data_read  = is_data && !req_we_i;

@@ -242,6 +242,52 @@ TEST_P(FabricTest, SysctrlRegisters) {
   EXPECT_TRUE(seen);
 }
 
+// Register blocks are decoded by word, as the CPU addresses them: a byte or half-word access at an
+// address inside a register reaches that register's lanes (SYSCTRL SCRATCH's bytes, UART CTRL's
+// LOOPBACK byte at +2; a read anywhere in a word returns the word, whose lane the CPU's load unit
+// picks). Until 2026-12-06 every block compared the whole address, so such accesses hit nothing
+// and answered OK. The raster FIFO takes whole words only (a narrower write is refused with a bus
+// error and nothing is pushed), and a word it could never take (the unit disabled, the FIFO full:
+// nothing drains it) is refused with a bus error at once instead of holding the bus for ever.
+TEST_P(FabricTest, SubWordRegisterAccessesAndTheRasterFifosRefusals) {
+  soc.write(kSys + SYSCTRL_SCRATCH_Offset, 0x1122'3344);
+  EXPECT_FALSE(soc.write(kSys + SYSCTRL_SCRATCH_Offset + 2, 0x00AB'0000, 0x4).err);  // sb, lane 2
+  EXPECT_EQ(soc.read(kSys + SYSCTRL_SCRATCH_Offset + 3).rdata, 0x11AB'3344u);
+  EXPECT_FALSE(soc.write(kSys + SYSCTRL_SCRATCH_Offset + 2, 0xCDEF'0000, 0xC).err);  // sh, upper half
+  EXPECT_EQ(soc.read(kSys + SYSCTRL_SCRATCH_Offset + 2).rdata, 0xCDEF'3344u);
+  const uint32_t uart_ctrl = soc.read(kUart + UART_CTRL_Offset).rdata;
+  ASSERT_EQ(uart_ctrl & UART_CTRL_LOOPBACK_Msk, 0u);
+  EXPECT_FALSE(soc.write(kUart + UART_CTRL_Offset + 2, UART_CTRL_LOOPBACK_Msk, 0x4).err);
+  EXPECT_EQ(soc.read(kUart + UART_CTRL_Offset + 1).rdata, uart_ctrl | UART_CTRL_LOOPBACK_Msk);
+  soc.write(kUart + UART_CTRL_Offset, uart_ctrl);
+  for (uint32_t lane = 1; lane < 4; ++lane) {
+    EXPECT_EQ(soc.read(kRaster + RASTER_CAPS_Offset + lane).rdata, soc.read(kRaster + RASTER_CAPS_Offset).rdata);
+    EXPECT_EQ(soc.read(kTimer + TIMER_CTRL_Offset + lane).rdata, soc.read(kTimer + TIMER_CTRL_Offset).rdata);
+    EXPECT_EQ(soc.read(kSys + SYSCTRL_ID_Offset + lane).rdata, SYSCTRL_ID_RESET);
+  }
+
+  const auto fifo_empty = [this] {
+    return (soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_FIFO_EMPTY_Msk) != 0;
+  };
+  ASSERT_TRUE(fifo_empty());
+  EXPECT_TRUE(soc.write(kRaster + RASTER_FIFO_Offset, 0x0000'1234, 0x3).err);  // sh
+  EXPECT_TRUE(soc.write(kRaster + RASTER_FIFO_Offset + 1, 0x0000'5600, 0x2).err);  // sb
+  EXPECT_TRUE(fifo_empty()) << "a partial write was pushed";
+  soc.write(kRaster + RASTER_CTRL_Offset, 0);  // disabled: nothing leaves the FIFO
+  int pushed = 0;
+  while (!(soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_FIFO_FULL_Msk) && pushed < 4096) {
+    ASSERT_FALSE(soc.write(kRaster + RASTER_FIFO_Offset, 0).err);
+    ++pushed;
+  }
+  ASSERT_LT(pushed, 4096);
+  const uint64_t before = soc.cycle();
+  EXPECT_TRUE(soc.write(kRaster + RASTER_FIFO_Offset, 0).err);
+  EXPECT_LT(soc.cycle() - before, 100u);
+  EXPECT_TRUE(soc.read(kRaster + RASTER_STATUS_Offset).rdata & RASTER_STATUS_FIFO_FULL_Msk);
+  soc.write(kRaster + RASTER_CTRL_Offset, RASTER_CTRL_ABORT_Msk | RASTER_CTRL_ENABLE_Msk);
+  EXPECT_TRUE(fifo_empty());
+}
+
 // Reads STATUS until `mask` is set, at most `limit` reads.
 bool wait_status(FabricHarness& soc, uint32_t mask, int limit = 20000) {
   for (int i = 0; i < limit; ++i) {

@@ -49,7 +49,10 @@ inline void raster_configure(uint32_t width, uint32_t height, uint32_t stride) {
   HTX_RASTER->FB_STRIDE = (stride << RASTER_FB_STRIDE_PIXELS_Pos) & RASTER_FB_STRIDE_PIXELS_Msk;
 }
 
-// Queues a fast clear of the colour and/or depth buffer behind the triangles already queued.
+// Starts a fast clear of the colour and/or depth buffer. Call it while the unit is idle
+// (raster_busy() false): the clear overtakes triangles still in the FIFO (it starts once setup and
+// traversal are empty), a second request while one waits replaces it, and the clear reads
+// CLEAR_COLOR, CLEAR_DEPTH, FB_STRIDE and FB_PAGE while it runs (CTRL.CLEAR_COLOR).
 inline void raster_clear(bool color, uint16_t rgb565, bool depth, uint32_t z) {
   HTX_RASTER->CLEAR_COLOR = (static_cast<uint32_t>(rgb565) << RASTER_CLEAR_COLOR_RGB565_Pos) & RASTER_CLEAR_COLOR_RGB565_Msk;
   HTX_RASTER->CLEAR_DEPTH = (z << RASTER_CLEAR_DEPTH_Z_Pos) & RASTER_CLEAR_DEPTH_Z_Msk;

@@ -24,11 +24,12 @@ enum UploadStatus : int {
   kUploadOk = 0,
   kUploadBadTexture = 1,     // hal::texture_check refused slot, size, format or placement (*hal_status says why)
   kUploadScratchTooSmall = 2,
-  kUploadTimeout = 3,        // the texture unit stayed busy (the descriptor was not written)
+  kUploadTimeout = 3,        // the raster or texture unit stayed busy (nothing, or not the descriptor, written)
 };
 
-// Uploads img's chain at base_block and points `slot` at it. Waits (max_polls STATUS reads) for the
-// unit to be idle before writing the descriptor. Blocks used: hal::texture_chain_blocks.
+// Uploads img's chain at base_block and points `slot` at it. Waits (max_polls STATUS reads each)
+// for the raster unit to be idle before writing texels (no textured triangle in flight samples a
+// half-written chain) and for the texture unit before writing the descriptor. Blocks used: hal::texture_chain_blocks.
 UploadStatus upload_texture(uint32_t slot, uint32_t base_block, const TextureImage& img, uint32_t* scratch,
                             uint32_t scratch_words, uint32_t max_polls, hal::TextureStatus* hal_status = nullptr);
 
