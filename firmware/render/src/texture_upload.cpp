@@ -9,6 +9,10 @@ namespace htx::render {
 
 namespace {
 
+// No texel or descriptor changes under a textured triangle in flight: the texture unit's own BUSY
+// can fall between two fragments of one triangle, the raster unit's covers them all.
+bool raster_idle_for_texels(uint32_t max_polls) { return hal::raster_wait_idle(max_polls); }
+
 // Levels 2 and below generated in place from level 1 in `level` and written, each level with
 // level 1 first; then the descriptor.
 UploadStatus finish_chain(uint32_t slot, uint32_t base_block, uint32_t lw, uint32_t lh, uint8_t format,
@@ -34,9 +38,7 @@ UploadStatus upload_texture(uint32_t slot, uint32_t base_block, const TextureIma
   if (hal_status) *hal_status = st;
   if (st != hal::kTextureOk || !img.rgba8) return kUploadBadTexture;
   if (scratch_words < texture_upload_scratch_words(lw, lh) || !scratch) return kUploadScratchTooSmall;
-  // No texel or descriptor changes under a textured triangle in flight: the texture unit's own
-  // BUSY can fall between two fragments of one triangle, the raster unit's covers them all.
-  if (!hal::raster_wait_idle(max_polls)) return kUploadTimeout;
+  if (!raster_idle_for_texels(max_polls)) return kUploadTimeout;
 
   // Level 0: each pixel encoded straight into the window.
   const uint32_t w = 1u << lw, h = 1u << lh;
@@ -55,6 +57,7 @@ UploadStatus upload_texture_texels16(uint32_t slot, uint32_t base_block, uint8_t
   if (hal_status) *hal_status = st;
   const bool sixteen_bits = format == fw::kTexelRgb565 || format == fw::kTexelRgba4444;
   if (st != hal::kTextureOk || !sixteen_bits || !texels) return kUploadBadTexture;
+  if (!raster_idle_for_texels(max_polls)) return kUploadTimeout;
 
   const uint32_t w = 1u << log2_w, h = 1u << log2_h;
   const auto texel = [texels, w](uint32_t i, uint32_t j) { return fw::get_le16(texels + 2u * (j * w + i)); };

@@ -56,7 +56,7 @@ package htx_raster_reg_pkg;
   localparam logic [31:0] RASTER_STATUS_ERR_STATE_MASK = 32'h00010000;
   localparam logic [31:0] RASTER_STATUS_ERR_STATE_RESET = 32'h00000000;
 
-  // FIFO (wo): Vertex FIFO: per triangle the state word (layout of register STATE) and then the 30 words of vertex_record.h pack_triangle (kTriangleWords). A write while the FIFO is full stalls the bus until there is room; no word is ever dropped
+  // FIFO (wo): Vertex FIFO: per triangle the state word (layout of register STATE) and then the 30 words of vertex_record.h pack_triangle (kTriangleWords). A write while the FIFO is full stalls the bus until there is room; no word is ever dropped. Whole words only: a byte or half-word write is refused with a bus error and pushes nothing; so is a write to the full FIFO while CTRL.ENABLE is 0
   localparam logic [11:0] RASTER_FIFO_OFFSET = 12'h008;
   localparam logic [31:0] RASTER_FIFO_RESET = 32'h00000000;
   localparam int unsigned RASTER_FIFO_WORD_LSB = 0;

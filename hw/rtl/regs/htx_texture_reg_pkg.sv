@@ -76,7 +76,7 @@ package htx_texture_reg_pkg;
   localparam logic [31:0] TEXTURE_CNT_RESET_RESET_MASK = 32'h00000001;
   localparam logic [31:0] TEXTURE_CNT_RESET_RESET_RESET = 32'h00000000;
 
-  // TEX0 (rw): Descriptor of texture slot 0: where its mip chain starts in texture memory, its size and format. Write it only while STATUS.BUSY is 0. Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
+  // TEX0 (rw): Descriptor of texture slot 0: where its mip chain starts in texture memory, its size and format. Write it only while no textured triangle is in flight: RASTER STATUS.BUSY 0 (this unit's STATUS.BUSY covers only the requests it holds, and can fall between two fragments of a triangle). Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
   localparam logic [11:0] TEXTURE_TEX0_OFFSET = 12'h100;
   localparam logic [31:0] TEXTURE_TEX0_RESET = 32'h00330000;
   localparam int unsigned TEXTURE_TEX0_BASE_LSB = 0;
@@ -96,7 +96,7 @@ package htx_texture_reg_pkg;
   localparam logic [31:0] TEXTURE_TEX0_FORMAT_MASK = 32'h03000000;
   localparam logic [31:0] TEXTURE_TEX0_FORMAT_RESET = 32'h00000000;
 
-  // TEX1 (rw): Descriptor of texture slot 1: where its mip chain starts in texture memory, its size and format. Write it only while STATUS.BUSY is 0. Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
+  // TEX1 (rw): Descriptor of texture slot 1: where its mip chain starts in texture memory, its size and format. Write it only while no textured triangle is in flight: RASTER STATUS.BUSY 0 (this unit's STATUS.BUSY covers only the requests it holds, and can fall between two fragments of a triangle). Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
   localparam logic [11:0] TEXTURE_TEX1_OFFSET = 12'h104;
   localparam logic [31:0] TEXTURE_TEX1_RESET = 32'h00330000;
   localparam int unsigned TEXTURE_TEX1_BASE_LSB = 0;
@@ -116,7 +116,7 @@ package htx_texture_reg_pkg;
   localparam logic [31:0] TEXTURE_TEX1_FORMAT_MASK = 32'h03000000;
   localparam logic [31:0] TEXTURE_TEX1_FORMAT_RESET = 32'h00000000;
 
-  // TEX2 (rw): Descriptor of texture slot 2: where its mip chain starts in texture memory, its size and format. Write it only while STATUS.BUSY is 0. Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
+  // TEX2 (rw): Descriptor of texture slot 2: where its mip chain starts in texture memory, its size and format. Write it only while no textured triangle is in flight: RASTER STATUS.BUSY 0 (this unit's STATUS.BUSY covers only the requests it holds, and can fall between two fragments of a triangle). Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
   localparam logic [11:0] TEXTURE_TEX2_OFFSET = 12'h108;
   localparam logic [31:0] TEXTURE_TEX2_RESET = 32'h00330000;
   localparam int unsigned TEXTURE_TEX2_BASE_LSB = 0;
@@ -136,7 +136,7 @@ package htx_texture_reg_pkg;
   localparam logic [31:0] TEXTURE_TEX2_FORMAT_MASK = 32'h03000000;
   localparam logic [31:0] TEXTURE_TEX2_FORMAT_RESET = 32'h00000000;
 
-  // TEX3 (rw): Descriptor of texture slot 3: where its mip chain starts in texture memory, its size and format. Write it only while STATUS.BUSY is 0. Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
+  // TEX3 (rw): Descriptor of texture slot 3: where its mip chain starts in texture memory, its size and format. Write it only while no textured triangle is in flight: RASTER STATUS.BUSY 0 (this unit's STATUS.BUSY covers only the requests it holds, and can fall between two fragments of a triangle). Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
   localparam logic [11:0] TEXTURE_TEX3_OFFSET = 12'h10C;
   localparam logic [31:0] TEXTURE_TEX3_RESET = 32'h00330000;
   localparam int unsigned TEXTURE_TEX3_BASE_LSB = 0;
@@ -156,7 +156,7 @@ package htx_texture_reg_pkg;
   localparam logic [31:0] TEXTURE_TEX3_FORMAT_MASK = 32'h03000000;
   localparam logic [31:0] TEXTURE_TEX3_FORMAT_RESET = 32'h00000000;
 
-  // TEX4 (rw): Descriptor of texture slot 4: where its mip chain starts in texture memory, its size and format. Write it only while STATUS.BUSY is 0. Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
+  // TEX4 (rw): Descriptor of texture slot 4: where its mip chain starts in texture memory, its size and format. Write it only while no textured triangle is in flight: RASTER STATUS.BUSY 0 (this unit's STATUS.BUSY covers only the requests it holds, and can fall between two fragments of a triangle). Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
   localparam logic [11:0] TEXTURE_TEX4_OFFSET = 12'h110;
   localparam logic [31:0] TEXTURE_TEX4_RESET = 32'h00330000;
   localparam int unsigned TEXTURE_TEX4_BASE_LSB = 0;
@@ -176,7 +176,7 @@ package htx_texture_reg_pkg;
   localparam logic [31:0] TEXTURE_TEX4_FORMAT_MASK = 32'h03000000;
   localparam logic [31:0] TEXTURE_TEX4_FORMAT_RESET = 32'h00000000;
 
-  // TEX5 (rw): Descriptor of texture slot 5: where its mip chain starts in texture memory, its size and format. Write it only while STATUS.BUSY is 0. Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
+  // TEX5 (rw): Descriptor of texture slot 5: where its mip chain starts in texture memory, its size and format. Write it only while no textured triangle is in flight: RASTER STATUS.BUSY 0 (this unit's STATUS.BUSY covers only the requests it holds, and can fall between two fragments of a triangle). Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
   localparam logic [11:0] TEXTURE_TEX5_OFFSET = 12'h114;
   localparam logic [31:0] TEXTURE_TEX5_RESET = 32'h00330000;
   localparam int unsigned TEXTURE_TEX5_BASE_LSB = 0;
@@ -196,7 +196,7 @@ package htx_texture_reg_pkg;
   localparam logic [31:0] TEXTURE_TEX5_FORMAT_MASK = 32'h03000000;
   localparam logic [31:0] TEXTURE_TEX5_FORMAT_RESET = 32'h00000000;
 
-  // TEX6 (rw): Descriptor of texture slot 6: where its mip chain starts in texture memory, its size and format. Write it only while STATUS.BUSY is 0. Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
+  // TEX6 (rw): Descriptor of texture slot 6: where its mip chain starts in texture memory, its size and format. Write it only while no textured triangle is in flight: RASTER STATUS.BUSY 0 (this unit's STATUS.BUSY covers only the requests it holds, and can fall between two fragments of a triangle). Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
   localparam logic [11:0] TEXTURE_TEX6_OFFSET = 12'h118;
   localparam logic [31:0] TEXTURE_TEX6_RESET = 32'h00330000;
   localparam int unsigned TEXTURE_TEX6_BASE_LSB = 0;
@@ -216,7 +216,7 @@ package htx_texture_reg_pkg;
   localparam logic [31:0] TEXTURE_TEX6_FORMAT_MASK = 32'h03000000;
   localparam logic [31:0] TEXTURE_TEX6_FORMAT_RESET = 32'h00000000;
 
-  // TEX7 (rw): Descriptor of texture slot 7: where its mip chain starts in texture memory, its size and format. Write it only while STATUS.BUSY is 0. Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
+  // TEX7 (rw): Descriptor of texture slot 7: where its mip chain starts in texture memory, its size and format. Write it only while no textured triangle is in flight: RASTER STATUS.BUSY 0 (this unit's STATUS.BUSY covers only the requests it holds, and can fall between two fragments of a triangle). Slots at or beyond CAPS.SLOTS do not exist (reads 0, writes ignored)
   localparam logic [11:0] TEXTURE_TEX7_OFFSET = 12'h11C;
   localparam logic [31:0] TEXTURE_TEX7_RESET = 32'h00330000;
   localparam int unsigned TEXTURE_TEX7_BASE_LSB = 0;

@@ -48,7 +48,7 @@ package htx_uart_reg_pkg;
   localparam logic [31:0] UART_STATUS_RX_FRAME_ERR_MASK = 32'h00000040;
   localparam logic [31:0] UART_STATUS_RX_FRAME_ERR_RESET = 32'h00000000;
 
-  // CTRL (rw): Line configuration
+  // CTRL (rw): Line configuration. A change takes effect at the next bit, so a byte being sent or received then is garbled: change it with both FIFOs empty and the line idle. Byte and half-word writes set their lanes (LOOPBACK alone: a byte store at CTRL + 2)
   localparam logic [11:0] UART_CTRL_OFFSET = 12'h008;
   localparam logic [31:0] UART_CTRL_RESET = 32'h00000068;
   localparam int unsigned UART_CTRL_DIVISOR_LSB = 0;
