@@ -24,7 +24,10 @@ ChildStatus run_child(const std::vector<std::string>& argv, const std::string& c
 
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
+  if (!cwd.empty() && posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str()) != 0) {
+    posix_spawn_file_actions_destroy(&actions);
+    throw std::runtime_error("cannot run " + argv[0] + " in '" + cwd + "'");
+  }
   pid_t pid = 0;
   ChildStatus status;
   status.spawn_error = posix_spawnp(&pid, cargv[0], &actions, nullptr, cargv.data(), environ);

@@ -18,14 +18,23 @@ inline void require_output_dir(const std::string& path) {
   if (std::filesystem::is_directory(path)) throw std::runtime_error(path + ": is a directory, not a file to write");
 }
 
+// Whether two output paths name one regular file, existing (also through a link) or to be created.
+// Devices are not files written whole: /dev/null twice is two outputs thrown away.
+inline bool same_output_file(const std::string& a, const std::string& b) {
+  namespace fs = std::filesystem;
+  std::error_code ea, eb;
+  const bool a_exists = fs::exists(a, ea), b_exists = fs::exists(b, eb);
+  if (a_exists && b_exists) return fs::is_regular_file(a) && fs::equivalent(a, b);
+  if (a_exists != b_exists) return false;
+  return fs::weakly_canonical(fs::absolute(a)) == fs::weakly_canonical(fs::absolute(b));
+}
+
 // Each of `paths` (empty: not asked for) as above, and no two of them one file.
 inline void require_output_files(std::initializer_list<const std::string*> paths) {
   for (const std::string* path : paths) require_output_dir(*path);
   for (auto a = paths.begin(); a != paths.end(); ++a)
     for (auto b = a + 1; b != paths.end(); ++b)
-      if (!(*a)->empty() && !(*b)->empty() &&
-          std::filesystem::weakly_canonical(std::filesystem::absolute(**a)) ==
-              std::filesystem::weakly_canonical(std::filesystem::absolute(**b)))
+      if (!(*a)->empty() && !(*b)->empty() && same_output_file(**a, **b))
         throw std::runtime_error(**a + " and " + **b + ": two outputs to one file");
 }
 

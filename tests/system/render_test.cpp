@@ -424,7 +424,8 @@ TEST(SystemRender, ConsoleRenderOverDrawsOnTheLastFrame) {
 // texture unit does not build) leaves the last good render's frame and figures: `stats` reports
 // that render, and `render cube over` draws onto its page (the cube over itself changes nothing),
 // not onto a page the failed render chose. The upload's line ends with CR LF: the LF is not taken
-// for a damaged packet (the console answers every packet with one Ack and sends no Nak).
+// for a damaged packet (the console answers every packet with one Ack and sends no Nak), and a
+// packet sent after the upload ended is skipped by the line reader.
 TEST(SystemRender, AFailedConsoleRenderLeavesTheLastGoodFrame) {
   const render_app::SceneData* cube = compiled_in_scene("cube");
   ASSERT_NE(cube, nullptr);
@@ -444,6 +445,15 @@ TEST(SystemRender, AFailedConsoleRenderLeavesTheLastGoodFrame) {
                                        reinterpret_cast<uint8_t*>(line.data())));
     script += line;
   }
+  // A packet after the upload has ended (a host that sent one again: its answer came late) is not
+  // text: the line reader skips the frame, and the next command runs whole. This one's payload is
+  // printable, so that read as text it would prefix the next command.
+  const std::string printable = "quit now please";
+  std::string late(htx::fw::kPacketMaxLine, '\0');
+  late.resize(htx::fw::packet_encode(htx::fw::kPacketSceneData, static_cast<uint8_t>(packets - 1),
+                                     reinterpret_cast<const uint8_t*>(printable.data()), printable.size(),
+                                     reinterpret_cast<uint8_t*>(late.data())));
+  script += late;
   script += "render upload\nstats\nrender cube over\nquit\n";
   const auto r = run_console_script("failed_render", script);
   ASSERT_FALSE(r.timed_out);
@@ -457,7 +467,11 @@ TEST(SystemRender, AFailedConsoleRenderLeavesTheLastGoodFrame) {
     acks += p.type == htx::fw::kPacketAck;
     naks += p.type == htx::fw::kPacketNak;
   }
-  EXPECT_EQ(acks, packets);
+  EXPECT_EQ(acks, packets);  // (the copy came after the upload: no answer)
+  // Nothing but the render's own failure is an error: the copy's bytes made no line of their own.
+  size_t errors = 0;
+  for (size_t at = r.out.find("error: "); at != std::string::npos; at = r.out.find("error: ", at + 1)) ++errors;
+  EXPECT_EQ(errors, 1u) << r.out;
   EXPECT_EQ(naks, 0u);
   EXPECT_NE(r.out.find("upload ok: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error: render failed: a mesh's filter is one this GPU does not build"), std::string::npos)

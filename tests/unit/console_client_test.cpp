@@ -308,11 +308,10 @@ TEST(ConsoleClient, UploadResendsWhatWasNotTakenAndReportsTheVerdict) {
             "upload: the console refused: error: a scene of 600 bytes does not fit the store (1..3072)\n");
   EXPECT_EQ(upload_error(GrabMode::kNeverAck),
             "upload: packet 0 was not taken after 8 tries; the console's scene is unchanged");
-  // The console's own error ends the transfer at once, in its words, not at the timeout.
-  const auto t0 = std::chrono::steady_clock::now();
+  // The console's own error ends the transfer in its words (waiting for an answer, the client used
+  // to wait out its timeout and report silence, a std::runtime_error).
   EXPECT_EQ(upload_error(GrabMode::kGivesUp),
             "upload: error: upload timed out after 240 of 600 bytes; the scene is unchanged\n");
-  EXPECT_LT(std::chrono::steady_clock::now() - t0, 1500ms);
 }
 
 // Answers out of step or lost: a Nak the host did not cause is answered by sending the packet

@@ -331,7 +331,13 @@ bool draw_and_show(const render_app::SceneData& scene, bool checksum = true, boo
   if (!over) begin_frame_page(kFlipPolls);
   const render_app::DrawResult result = render_app::draw_scene(scene, draw);
   if (!result.ok) {
+    // (Stopped first: a draw that timed out may still be drawing, or clearing, into its page.)
+    htx::hal::raster_abort();
+    htx::hal::raster_wait_idle(kFlipPolls);
     htx::hal::fb_set_draw_page(last_page);
+    // An `over` that failed may have drawn part of itself into that page: its figures are no
+    // longer the page's.
+    if (over) g_last.ok = false;
     error("render failed: ", result.error);
     return false;
   }

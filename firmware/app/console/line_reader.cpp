@@ -2,6 +2,7 @@
 
 #include <stdio.h>
 
+#include "htx/fw/console_packet.h"
 #include "htx/hal/uart.h"
 
 namespace console_app {
@@ -11,6 +12,10 @@ constexpr int kCtrlC = 0x03;
 constexpr int kBackspace = 0x08;
 constexpr int kDelete = 0x7F;
 bool g_after_cr = false;  // swallow the LF of a CR LF pair
+// Inside a packet frame (after a zero byte, before the next): a packet the host sent again after
+// an upload had ended (its copy of a packet the console had taken), never text, since text holds
+// no zero byte. Bounded by a frame's length, so a lone zero (a NUL typed) costs a few bytes at most.
+size_t g_frame_bytes_left = 0;
 int g_unread = EOF;       // a byte given back by unread_byte
 }  // namespace
 
@@ -26,6 +31,14 @@ LineStatus read_line(char* buf) {
     g_unread = EOF;
     if (c == EOF) c = getchar();
     if (c == EOF) return LineStatus::kEndOfInput;
+    if (c == 0) {
+      g_frame_bytes_left = g_frame_bytes_left > 0 ? 0 : htx::fw::kPacketMaxLine;
+      continue;
+    }
+    if (g_frame_bytes_left > 0) {
+      --g_frame_bytes_left;
+      continue;
+    }
     const bool lf_after_cr = g_after_cr && c == '\n';
     g_after_cr = c == '\r';
     if (lf_after_cr) continue;

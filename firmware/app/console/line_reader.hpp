@@ -1,5 +1,7 @@
 // A command line typed at the console: printable characters are echoed, backspace (BS or DEL)
-// erases, Ctrl-C abandons the line, CR or LF ends it (an LF right after a CR is ignored).
+// erases, Ctrl-C abandons the line, CR or LF ends it (an LF right after a CR is ignored). Bytes
+// from a zero byte to the next (a packet frame, at most htx::fw::kPacketMaxLine bytes) are not
+// text and are skipped: a packet the host sent again after an upload ended.
 #pragma once
 
 #include <stddef.h>

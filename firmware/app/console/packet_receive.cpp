@@ -25,9 +25,10 @@ bool receive_into_staging(uint32_t size, uint32_t crc32, const char* what) {
   htx::fw::PacketDecoder decoder;
   uint32_t received = 0;
   uint8_t expect = 0;
-  // Bytes before the first zero are the command line's tail (the LF of a CR LF line end), not a
-  // packet: each packet starts with a zero, and a frame of them would be answered with a Nak the
-  // host did not ask for, putting its answers a packet out of step.
+  // A CR or LF before the first packet is the command line's tail (the LF of a CR LF line end), not
+  // a packet: a frame of it would be answered with a Nak the host did not ask for, putting its
+  // answers a packet out of step. (Any other byte there is a packet whose leading zero was lost:
+  // its frame is damaged, and the Nak asks for it again.)
   bool framed = false;
   while (received < size) {
     const int c = htx::hal::uart_get(kSilencePolls);
@@ -36,7 +37,7 @@ bool receive_into_staging(uint32_t size, uint32_t crc32, const char* what) {
              static_cast<unsigned long>(received), static_cast<unsigned long>(size), what);
       return false;
     }
-    if (!framed && c != 0) continue;
+    if (!framed && (c == '\r' || c == '\n')) continue;
     framed = true;
     htx::fw::Packet p;
     const htx::fw::PacketStatus st = htx::fw::packet_feed(&decoder, static_cast<uint8_t>(c), &p);

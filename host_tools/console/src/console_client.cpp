@@ -119,10 +119,12 @@ ConsoleClient::Answer ConsoleClient::next_answer(fw::Packet* p, std::string* tex
   text->clear();
   for (;;) {
     const uint8_t b = next_byte();
-    if (b == 0)
+    if (b == 0) {
       text->clear();
-    else if (text->size() < kMaxText)
+    } else {
+      if (text->size() > kMaxText) throw std::runtime_error("the console sent more than 1 MiB without a prompt");
       *text += static_cast<char>(b);
+    }
     const fw::PacketStatus st = fw::packet_feed(&decoder_, b, p);
     if (st == fw::kPacketReady) return Answer::kPacket;
     if (st != fw::kPacketNone) return Answer::kDamaged;
@@ -311,8 +313,8 @@ std::string ConsoleClient::upload(const std::vector<uint8_t>& bytes, const std::
           // The console ended the transfer: its verdict on the whole (the last packet's Ack was
           // lost on the way), or its own error (it waited too long for a packet).
           const std::string v = verdict_of(text);  // throws on the console's error
-          if (!last)
-            throw std::runtime_error("upload: the console ended the transfer at packet " + std::to_string(seq) +
+          if (!last)  // (the line is at a prompt: the line's error, as the refusals)
+            throw std::invalid_argument("upload: the console ended the transfer at packet " + std::to_string(seq) +
                                      " of " + std::to_string((bytes.size() + fw::kPacketMaxPayload - 1) /
                                                              fw::kPacketMaxPayload) + ": " + v);
           if (progress) progress(bytes.size());

@@ -151,7 +151,8 @@ module htx_raster #(
   // A counter read waits for its counter's turn in the counter RAM (htx_raster_counters).
   logic fifo_refused;
   assign fifo_refused = is_fifo && req_we_i && fifo_full && !enable_q;
-  assign req_ready_o = !(is_fifo && req_we_i && fifo_full && enable_q) && !(cnt_read && !cnt_ack);
+  // (Only a whole word waits for room: a narrower write is refused at once, full or not.)
+  assign req_ready_o = !(is_fifo && wr && fifo_full && enable_q) && !(cnt_read && !cnt_ack);
   assign accept = req_valid_i && req_ready_o;
 
   logic ctrl_wr;

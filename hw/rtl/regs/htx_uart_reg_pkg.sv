@@ -4,7 +4,7 @@ package htx_uart_reg_pkg;
   // verilator lint_off UNUSEDPARAM
   localparam logic [31:0] UART_BASE_ADDR = 32'h20001000;
 
-  // DATA (rw): Write: push a byte into the TX FIFO (a full FIFO stalls the bus write until there is room, so no byte is lost). Read: pop a byte from the RX FIFO
+  // DATA (rw): Write: push a byte into the TX FIFO (a full FIFO stalls the bus write until there is room, so no byte is lost). Read: pop a byte from the RX FIFO (a read that takes BYTE's lane; a byte read at DATA + 1 tests RX_EMPTY and pops nothing)
   localparam logic [11:0] UART_DATA_OFFSET = 12'h000;
   localparam logic [31:0] UART_DATA_RESET = 32'h00000000;
   localparam int unsigned UART_DATA_BYTE_LSB = 0;

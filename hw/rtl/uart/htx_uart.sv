@@ -56,7 +56,9 @@ module htx_uart #(
   assign tx_stall   = data_write && tx_full;
   assign req_ready_o = !tx_stall;
   assign accept     = req_valid_i && req_ready_o;
-  assign rx_pop     = accept && data_read && !rx_empty;
+  // Only a read that takes the byte's lane pops it: a byte read of RX_EMPTY's lane (DATA + 1)
+  // tests for a byte without losing it.
+  assign rx_pop     = accept && data_read && req_be_i[0] && !rx_empty;
   assign rx_empty_read = accept && data_read && rx_empty;
 
   // Divisors below 4 leave no room for mid-bit sampling.
