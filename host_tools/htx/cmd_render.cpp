@@ -103,8 +103,7 @@ void run_render(const RenderArgs& given) {
   }
   // icebreaker-board: `icebreaker` with the board GPU's methods only (AFFINE, RECIP_LUT); the rtl
   // engine draws it on that GPU, the design gpu_icebreaker_up5k synthesises. A triangle that asks
-  // for another method is refused below, naming this configuration (the engines know it as
-  // `icebreaker` with fewer methods).
+  // for another method is refused with the engines' error, which names it.
   const bool board = a.config == "icebreaker-board";
   const std::string base_config = board ? "icebreaker" : a.config;
 #ifdef HTX_HAVE_RTL_ENGINE
@@ -114,15 +113,9 @@ void run_render(const RenderArgs& given) {
 #else
   ModelConfig config = model_config(base_config);
 #endif
-  if (board) config.methods &= icebreaker_board_methods();
+  if (board) config = icebreaker_board_config(config);
   // AUTO: the firmware's per-triangle choice (docs/auto.md) within --tolerance texels.
   const fw::AutoSceneSummary auto_summary = fw::resolve_auto_methods(screen, config, static_cast<float>(a.tolerance));
-  if (board && a.engine != "ref")
-    for (const ScreenTri& t : screen.tris)
-      if (!config.has_method(t.state.method))
-        throw std::invalid_argument("method " + method_name(t.state.method, t.state.subdiv_n) +
-                                    " is not built in configuration icebreaker-board (affine and recip_lut are; "
-                                    "--method affine, recip_lut or auto)");
   if (auto_summary.resolved > 0) std::cout << auto_summary_line(auto_summary, a.tolerance) << "\n";
   RefOptions ref_options;
   ref_options.depth_bits = config.z_bits;

@@ -437,22 +437,20 @@ void cmd_stats() {
 
 // The commands that take no arguments. An unknown word is reported as unknown, with or without
 // words after it; only a known command is told it takes none.
+struct CommandWithoutArguments {
+  const char* name;
+  void (*run)();
+};
+constexpr CommandWithoutArguments kCommandsWithoutArguments[] = {
+    {"help", cmd_help}, {"info", cmd_info}, {"scenes", cmd_scenes}, {"stats", cmd_stats}, {"grab", cmd_grab}};
+
 void run_command_without_arguments(const char* cmd, char* rest) {
-  void (*run)() = nullptr;
-  if (strcmp(cmd, "help") == 0) {
-    run = cmd_help;
-  } else if (strcmp(cmd, "info") == 0) {
-    run = cmd_info;
-  } else if (strcmp(cmd, "scenes") == 0) {
-    run = cmd_scenes;
-  } else if (strcmp(cmd, "stats") == 0) {
-    run = cmd_stats;
-  } else if (strcmp(cmd, "grab") == 0) {
-    run = cmd_grab;
+  for (const CommandWithoutArguments& c : kCommandsWithoutArguments) {
+    if (strcmp(cmd, c.name) != 0) continue;
+    if (next_word(&rest)) return error("this command takes no arguments: ", cmd);
+    return c.run();
   }
-  if (!run) return error("unknown command (type help): ", cmd);
-  if (next_word(&rest)) return error("this command takes no arguments: ", cmd);
-  run();
+  error("unknown command (type help): ", cmd);
 }
 
 }  // namespace

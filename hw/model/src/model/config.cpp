@@ -117,4 +117,14 @@ uint32_t icebreaker_board_methods() {
   return (1u << static_cast<unsigned>(Method::Affine)) | (1u << static_cast<unsigned>(Method::RecipLut));
 }
 
+ModelConfig icebreaker_board_config(ModelConfig icebreaker) {
+  icebreaker.methods &= icebreaker_board_methods();
+  icebreaker.name = kIcebreakerBoard;
+  return icebreaker;
+}
+
+std::string_view config_base_name(const ModelConfig& c) {
+  return c.name == kIcebreakerBoard ? std::string_view("icebreaker") : std::string_view(c.name);
+}
+
 }  // namespace htx

@@ -34,7 +34,7 @@ constexpr uint32_t kRtlMethods = 0x1F;
 // methods beyond the board's (icebreaker_board_methods) is rendered on the GPU built with only
 // those, the design the synthesis report measures.
 std::string gpu_variant(const ModelConfig& c) {
-  if (c.name == "icebreaker" && (c.methods & ~icebreaker_board_methods()) == 0) return "icebreaker_board";
+  if (config_base_name(c) == "icebreaker" && (c.methods & ~icebreaker_board_methods()) == 0) return "icebreaker_board";
   return c.name;
 }
 
@@ -43,7 +43,7 @@ std::string gpu_variant(const ModelConfig& c) {
 void check_config(const ModelConfig& c) {
   const ModelConfig* named = nullptr;
   for (const std::string& n : model_config_names())
-    if (c.name == n) named = &model_config(n);
+    if (config_base_name(c) == n) named = &model_config(n);
   if (!named) throw std::invalid_argument("rtl engine: configuration '" + c.name + "' is not built (full, icebreaker)");
   const ModelConfig& n = *named;
   const bool same = c.xy_int_bits == n.xy_int_bits && c.z_bits == n.z_bits && c.q_bits == n.q_bits &&
@@ -127,11 +127,7 @@ ModelConfig rtl_config(const std::string& name) {
   return c;
 }
 
-ModelConfig rtl_board_config() {
-  ModelConfig c = rtl_config("icebreaker");
-  c.methods = icebreaker_board_methods();
-  return c;
-}
+ModelConfig rtl_board_config() { return icebreaker_board_config(rtl_config("icebreaker")); }
 
 uint32_t pack_state_word(const TriState& s, Method m, unsigned divfree_top) {
   // DIVFREE has no subdivision length: its SUBDIV_N field carries the texture's last mip level.
@@ -178,7 +174,8 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
     const TriState& st = tri.state;
     const Method method = st.method == Method::Auto ? model::auto_method(tri, cfg) : st.method;
     if (!cfg.has_method(method) || method == Method::Auto)
-      throw std::invalid_argument("rtl engine: method " + method_name(method, st.subdiv_n) + " is not built");
+      throw std::invalid_argument("rtl engine: method " + method_name(method, st.subdiv_n) +
+                                  " is not built in configuration " + cfg.name);
     if ((method == Method::Subdiv || method == Method::Quadratic) && (st.subdiv_n < 2 || st.subdiv_n > 64))
       throw std::invalid_argument("rtl engine: subdiv_n " + std::to_string(st.subdiv_n) + " outside 2..64");
     if (st.textured) check_texture_state(scene.textures, st, cfg);

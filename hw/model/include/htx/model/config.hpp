@@ -96,4 +96,12 @@ std::vector<std::string> model_config_names();
 // gpu_icebreaker_up5k measures). "icebreaker" restricted to them is the board's configuration.
 uint32_t icebreaker_board_methods();
 
+// The board's configuration, named so (refusals say `icebreaker-board`): `icebreaker` (or a
+// configuration built from it, such as the rtl engine's) with the board's methods only.
+inline constexpr const char* kIcebreakerBoard = "icebreaker-board";
+ModelConfig icebreaker_board_config(ModelConfig icebreaker);
+// The named configuration a configuration's widths and tables are those of: the board's is
+// `icebreaker`'s.
+std::string_view config_base_name(const ModelConfig& c);
+
 }  // namespace htx
