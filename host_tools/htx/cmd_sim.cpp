@@ -1,4 +1,6 @@
 // htx sim: run a firmware ELF on the whole SoC in Verilator.
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -106,15 +108,21 @@ void print_hotspots(const std::vector<sim::FunctionCost>& costs, uint64_t total)
   }
 }
 
-// The words from begin_signature to end_signature: found before the run, so that an ELF without
-// them is refused then.
+// The words from begin_signature to end_signature: found and checked before the run, so that an
+// ELF without them, or with a range the harness cannot read, is refused then.
 struct SignatureRange {
   uint32_t begin = 0, end = 0;
 };
-SignatureRange signature_range(const sim::ElfImage& elf, const std::string& path) {
+SignatureRange signature_range(const sim::ElfImage& elf, const std::string& elf_path) {
   const auto begin = elf.symbol("begin_signature");
   const auto end = elf.symbol("end_signature");
-  if (!begin || !end) throw std::runtime_error(path + ": the ELF has no begin_signature/end_signature symbols");
+  if (!begin || !end) throw std::runtime_error(elf_path + ": the ELF has no begin_signature/end_signature symbols");
+  if (*begin % 4 != 0 || *end % 4 != 0 || *begin > *end || *end > sim::SocSim::kRamBytes) {
+    char range[64];
+    std::snprintf(range, sizeof range, "[0x%08x, 0x%08x)", *begin, *end);
+    throw std::runtime_error(elf_path + ": begin_signature/end_signature " + range +
+                             " is not a word-aligned range inside RAM");
+  }
   return {*begin, *end};
 }
 
@@ -164,15 +172,136 @@ class ScreenRecorder {
   unsigned written_ = 0;
 };
 
+// Whether the last byte written to stdout (by SIM_PUTCHAR or a stdio UART) left a line open, so
+// that the summary's JSON can start a line of its own.
+struct StdoutTail {
+  bool line_open = false;
+  void wrote(const char* data, size_t n) {
+    if (n > 0) line_open = data[n - 1] != '\n';
+  }
+  void end_line() {
+    if (line_open) std::cout << '\n';
+    line_open = false;
+  }
+};
+
+// SIM_PUTCHAR's stream: std::cout, watched by a StdoutTail.
+class TrackedStdout final : public std::streambuf {
+ public:
+  explicit TrackedStdout(StdoutTail& tail) : tail_(tail) {}
+
+ protected:
+  int overflow(int c) override {
+    if (c == traits_type::eof()) return traits_type::not_eof(c);
+    const char ch = static_cast<char>(c);
+    tail_.wrote(&ch, 1);
+    return std::cout.rdbuf()->sputc(ch);
+  }
+  std::streamsize xsputn(const char* data, std::streamsize n) override {
+    tail_.wrote(data, static_cast<size_t>(n));
+    return std::cout.rdbuf()->sputn(data, n);
+  }
+  int sync() override { return std::cout.rdbuf()->pubsync(); }
+
+ private:
+  StdoutTail& tail_;
+};
+
+// The stdio UART, watched by a StdoutTail.
+class TrackedSerial final : public sim::SerialEndpoint {
+ public:
+  TrackedSerial(std::unique_ptr<sim::SerialEndpoint> inner, StdoutTail& tail) : inner_(std::move(inner)), tail_(tail) {}
+  size_t read(uint8_t* buf, size_t max) override { return inner_->read(buf, max); }
+  void write(const uint8_t* data, size_t len) override {
+    tail_.wrote(reinterpret_cast<const char*>(data), len);
+    inner_->write(data, len);
+  }
+  void flush() override { inner_->flush(); }
+  bool paced() const override { return inner_->paced(); }
+  bool ended() const override { return inner_->ended(); }
+
+ private:
+  std::unique_ptr<sim::SerialEndpoint> inner_;
+  StdoutTail& tail_;
+};
+
+// SIGINT and SIGTERM end the run as the cycle limit would (the summary printed, the trace closed,
+// the outputs written), with the status a shell gives a process the signal killed (128 + signal).
+std::atomic<bool> g_stop_requested{false};
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+void request_stop(int sig) {
+  g_stop_signal = sig;
+  g_stop_requested.store(true, std::memory_order_relaxed);
+}
+
+class StopOnSignals {
+ public:
+  StopOnSignals() {
+    old_int_ = std::signal(SIGINT, request_stop);
+    old_term_ = std::signal(SIGTERM, request_stop);
+  }
+  ~StopOnSignals() {
+    std::signal(SIGINT, old_int_);
+    std::signal(SIGTERM, old_term_);
+  }
+  StopOnSignals(const StopOnSignals&) = delete;
+  StopOnSignals& operator=(const StopOnSignals&) = delete;
+
+ private:
+  void (*old_int_)(int);
+  void (*old_term_)(int);
+};
+
+// The command's status: the firmware's exit code when it exited with one a process can have.
+// Codes outside 0..255 (a tohost word can carry 31 bits) would be cut to their low byte, and 256
+// would read as success, so they give 1; the code itself is in the summary and the JSON.
+int status_of(const sim::SimResult& r) {
+  switch (r.reason) {
+    case sim::StopReason::CycleLimit: return kCycleLimitStatus;
+    case sim::StopReason::InputEnded: return 0;
+    case sim::StopReason::Stopped: return 128 + (g_stop_signal ? static_cast<int>(g_stop_signal) : SIGINT);
+    case sim::StopReason::Exit:
+    case sim::StopReason::ToHost: break;
+  }
+  return r.exit_code >= 0 && r.exit_code <= 255 ? r.exit_code : 1;
+}
+
+// --trace: FST's writer deletes whatever is at its path and creates a new file there, so only a
+// regular file (or nothing) may be there: not a device, and not a link, which would be replaced
+// rather than written through.
+void require_trace_path(const std::string& path) {
+  if (path.empty()) return;
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(path, ec);
+  if (ec || !fs::exists(st)) return;
+  if (fs::is_symlink(st))
+    throw std::runtime_error(path + ": is a symbolic link; the trace writer would replace it (name its target)");
+  if (!fs::is_regular_file(st))
+    throw std::runtime_error(path + ": is not a regular file; the trace writer deletes what is there first");
+}
+
 int run_sim(const SimArgs& a) {
   const auto [frame_w, frame_h] = parse_frame_size(a.frame_size);
   if (uint64_t{frame_w} * frame_h > sim::SocSim::kFbPixels)
     throw std::runtime_error("--frame-size " + a.frame_size + " exceeds the framebuffer of " +
                              std::to_string(sim::SocSim::kFbPixels) + " pixels");
   const sim::ElfImage elf = sim::load_elf(a.elf);
-  // What can only fail after the run is checked before it, so a long run is not lost to a typo.
-  const SignatureRange signature = a.signature.empty() ? SignatureRange{} : signature_range(elf, a.signature);
+  // What can only fail after the run is checked before it, so a long run is not lost to a typo;
+  // and what the harness refuses is refused before anything is opened or created.
+  try {
+    sim::check_runnable(elf);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(a.elf + ": " + e.what());
+  }
+  const SignatureRange signature = a.signature.empty() ? SignatureRange{} : signature_range(elf, a.elf);
   require_output_files({&a.signature, &a.screen, &a.frame, &a.trace});
+  for (const std::string* out : {&a.signature, &a.screen, &a.frame, &a.trace})
+    if (!out->empty() && same_output_file(*out, a.elf))
+      throw std::runtime_error(*out + ": is the ELF being run; an output would overwrite it");
+  require_trace_path(a.trace);
+
   sim::SimOptions opt;
   opt.max_cycles = a.max_cycles;
   opt.stall_seed = a.stall_seed;
@@ -180,8 +309,12 @@ int run_sim(const SimArgs& a) {
   opt.gpu_clock_gate = !a.no_gpu_gate;
   opt.capture_screen = !a.screen.empty() || !a.screen_frames.empty();
   opt.profile_pcs = a.hotspots;
+  opt.stop = &g_stop_requested;
   if (!a.screen_frames.empty()) opt.on_screen_frame = ScreenRecorder(a.screen_frames);
 
+  StdoutTail tail;
+  TrackedStdout putchar_buf(tail);
+  std::ostream putchar_out(&putchar_buf);
   std::unique_ptr<sim::SerialEndpoint> uart;
   if (a.uart == "pty") {
     std::string path;
@@ -189,40 +322,64 @@ int run_sim(const SimArgs& a) {
     // On stdout, on a line of its own, before the run starts: where scripts and people look for it.
     std::cout << "htx sim: UART on " << path << std::endl;
   } else {
-    uart = sim::open_stdio_serial();
+    uart = std::make_unique<TrackedSerial>(sim::open_stdio_serial(), tail);
   }
 
-  sim::SocSim soc(elf, opt, uart.get(), std::cout);
-  const sim::SimResult r = soc.run();
+  sim::SocSim soc(elf, opt, uart.get(), putchar_out);
+  sim::SimResult r;
+  {
+    StopOnSignals stop_on_signals;
+    r = soc.run();
+  }
   uart.reset();  // flushes the UART's last bytes before the summary
-  if (!a.signature.empty()) write_signature(soc, signature, a.signature);
-  if (!a.screen.empty()) write_screen(*soc.screen(), a.screen);
+
+  // Every output is written even if another fails; the run's result is reported either way.
+  std::vector<std::string> output_errors;
+  auto write_output = [&output_errors](const std::string& path, const auto& write) {
+    if (path.empty()) return;
+    try {
+      write();
+    } catch (const std::exception& e) {
+      output_errors.push_back(e.what());
+    }
+  };
+  write_output(a.signature, [&] { write_signature(soc, signature, a.signature); });
+  write_output(a.screen, [&] { write_screen(*soc.screen(), a.screen); });
   const std::vector<uint16_t> frame = soc.read_frame(frame_w, frame_h);
-  if (!a.frame.empty())
+  write_output(a.frame, [&] {
     write_png(a.frame, image_from_rgb565(static_cast<int>(frame_w), static_cast<int>(frame_h), frame));
+  });
   char crc_hex[16];
   std::snprintf(crc_hex, sizeof crc_hex, "%08x", sim::frame_crc32(frame));
 
   const double cpi = r.instret ? static_cast<double>(r.cycles) / static_cast<double>(r.instret) : 0.0;
   const double rate = r.seconds > 0 ? static_cast<double>(r.cycles) / r.seconds : 0.0;
-  const int status = r.reason == sim::StopReason::CycleLimit ? kCycleLimitStatus : r.exit_code;
+  int status = status_of(r);
   if (r.reason == sim::StopReason::CycleLimit) {
     std::cerr << "htx sim: cycle limit of " << a.max_cycles
               << " cycles reached before the firmware exited (raise --max-cycles?); status "
               << kCycleLimitStatus << "\n";
   } else if (r.reason == sim::StopReason::InputEnded) {
-    std::cout << std::endl;  // ends the line of the prompt the firmware was waiting at
+    tail.end_line();  // ends the line of the prompt the firmware was waiting at
     std::cerr << "htx sim: standard input ended and the firmware waits for more input: stopped, status 0\n";
+  } else if (r.reason == sim::StopReason::Stopped) {
+    std::cerr << "htx sim: stopped by signal " << (status - 128) << "; status " << status << "\n";
   }
+  if (!r.note.empty()) std::cerr << "htx sim: " << r.note << "\n";
   // The firmware's exit code only when it exited (a cycle limit or ended input has none).
   const bool exited = r.reason == sim::StopReason::Exit || r.reason == sim::StopReason::ToHost;
-  char exit_code[32] = "";
-  if (exited) std::snprintf(exit_code, sizeof exit_code, ", exit code %d", r.exit_code);
+  char exit_code[64] = "";
+  if (exited && r.exit_code == status) std::snprintf(exit_code, sizeof exit_code, ", exit code %d", r.exit_code);
+  if (exited && r.exit_code != status)
+    std::snprintf(exit_code, sizeof exit_code, ", exit code %d (not a process status: status %d)", r.exit_code, status);
   char summary[256];
   std::snprintf(summary, sizeof summary, "htx sim: %s%s: %llu cycles, %llu instructions, CPI %.3f (%.2f Mcycles/s)\n",
                 sim::to_string(r.reason), exit_code, static_cast<unsigned long long>(r.cycles),
                 static_cast<unsigned long long>(r.instret), cpi, rate / 1e6);
   std::cerr << summary;
+  for (const std::string& e : output_errors) std::cerr << "htx sim: " << e << "\n";
+  // A failed output is the command's failure (the firmware's own status is in the summary).
+  if (!output_errors.empty()) status = 1;
   if (a.profile) print_profile(r.profile);
   std::vector<sim::FunctionCost> hotspots;
   if (r.pcs) {
@@ -234,6 +391,8 @@ int run_sim(const SimArgs& a) {
                         {"cycles", r.cycles},        {"instret", r.instret},
                         {"cpi", cpi},                {"seconds", r.seconds},
                         {"cycles_per_second", rate}, {"frame_crc32", crc_hex}};
+    if (exited) j["firmware_code"] = r.exit_code;
+    if (!output_errors.empty()) j["errors"] = output_errors;
     if (a.profile) {
       nlohmann::json p = nlohmann::json::object();
       for (size_t i = 0; i < sim::CpuProfile::kCauses; ++i) p[sim::CpuProfile::kNames[i]] = r.profile.counts[i];
@@ -254,6 +413,7 @@ int run_sim(const SimArgs& a) {
       }
       j["hotspots"] = list;
     }
+    tail.end_line();  // the object is a line of its own, after whatever the firmware printed
     std::cout << j.dump() << std::endl;
   }
   return status;
@@ -308,6 +468,10 @@ void register_sim(CLI::App& app) {
       status = 1;
     }
     std::cout.flush();
+    if (!std::cout || std::ferror(stdout)) {
+      std::cerr << "htx sim: standard output could not be written\n";
+      if (status == 0) status = 1;
+    }
     std::exit(status);  // the command's status is the firmware's exit code
   });
 }

@@ -11,6 +11,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "htx/sim/elf_image.hpp"
@@ -97,6 +98,12 @@ bool try_parse(const std::vector<uint8_t>& file, const std::string& what) {
     const htx::sim::ElfImage img = htx::sim::parse_elf(file, "input");
     EXPECT_FALSE(img.segments.empty()) << what;
     for (const auto& s : img.segments) EXPECT_LE(s.bytes.size(), s.mem_size) << what;
+    for (size_t i = 0; i < img.segments.size(); ++i)
+      for (size_t j = 0; j < i; ++j) {
+        const auto &a = img.segments[i], &b = img.segments[j];
+        EXPECT_TRUE(uint64_t{a.addr} + a.mem_size <= b.addr || uint64_t{b.addr} + b.mem_size <= a.addr)
+            << what << ": segments overlap";
+      }
     // Loaded into a RAM as the simulator and `htx image` load it: it fits, or is refused in words.
     try {
       const std::vector<uint32_t> ram = htx::sim::ram_words(img, 64 * 1024);
@@ -124,6 +131,31 @@ TEST(ElfFuzz, SeedParses) {
   EXPECT_EQ(img.segments[1].mem_size, 64u);
   EXPECT_EQ(img.symbol("tohost"), 0x1000u);
   EXPECT_EQ(img.symbol("end_signature"), 0x1010u);
+}
+
+// A segment whose file bytes have no memory, or two segments sharing an address, would leave out
+// bytes or leave it to their order which win.
+TEST(ElfFuzz, SegmentsThatWouldLoseOrMixBytesAreRefused) {
+  const size_t ph1 = 84;
+  std::vector<uint8_t> no_memory = seed_elf();
+  put32(no_memory, ph1 + 20, 0);  // data: 16 bytes in the file, memsz 0
+  std::vector<uint8_t> overlapping = seed_elf();
+  put32(overlapping, ph1 + 12, 0x10);  // data at 0x10, inside the text's 32 bytes
+  const std::pair<const std::vector<uint8_t>*, const char*> cases[] = {
+      {&no_memory, "a segment's file size exceeds its memory size"},
+      {&overlapping, "two loadable segments overlap"},
+  };
+  for (const auto& [file, message] : cases) {
+    try {
+      htx::sim::parse_elf(*file, "input");
+      ADD_FAILURE() << "accepted; expected: " << message;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+  std::vector<uint8_t> adjacent = seed_elf();
+  put32(adjacent, ph1 + 12, 0x20);  // right after the text: accepted
+  EXPECT_EQ(htx::sim::parse_elf(adjacent, "adjacent").segments.size(), 2u);
 }
 
 TEST(ElfFuzz, EveryTruncationIsRefusedOrComplete) {

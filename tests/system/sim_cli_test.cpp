@@ -5,8 +5,14 @@
 // --hotspots every clock to a function.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <csignal>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <thread>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -111,6 +117,140 @@ TEST(SystemSimCli, ASignatureThatCannotBeWrittenIsAnError) {
   ASSERT_FALSE(r.timed_out);
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("cannot write '/dev/full': No space left on device"), std::string::npos) << r.err;
+}
+
+std::string elf_variant(const std::string& name) { return HTX_SYSTEM_TEST_ELF_DIR "/" + name + ".elf"; }
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// What the harness cannot run, or cannot read after the run, is refused before the run (no summary,
+// nothing opened), naming the ELF.
+TEST(SystemSimCli, ImagesTheHarnessCannotRunAreRefusedBeforeTheRun) {
+  const std::string trace = temp_path("refused.fst");
+  const struct {
+    std::string elf;
+    std::vector<std::string> options;
+    std::string message;
+  } cases[] = {
+      {elf_variant("sim_skewed_signature"), {"--signature", temp_path("skewed.sig")},
+       "begin_signature/end_signature [0x"},
+      {elf_variant("sim_tohost_set"), {}, "holds 0x00000055 in the image: the run would end in its first clock"},
+      {HTX_OFFSET_ENTRY_ELF, {"--trace", trace}, "entry point 0x00000100 is not the SoC's reset vector"},
+  };
+  for (const auto& c : cases) {
+    std::remove(trace.c_str());
+    std::vector<std::string> args = {HTX_BIN, "sim", "--elf", c.elf, "--max-cycles", "3000000"};
+    args.insert(args.end(), c.options.begin(), c.options.end());
+    const auto r = htx::test::run_program(args, 60s);
+    ASSERT_FALSE(r.timed_out);
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find(c.elf + ": "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("cycles"), std::string::npos) << "refused only after the run: " << r.err;
+    EXPECT_FALSE(std::ifstream(trace).good()) << "the trace was opened before the refusal";
+  }
+}
+
+// FST's writer deletes what is at its path, and an output must not overwrite the ELF it runs.
+TEST(SystemSimCli, OutputsThatWouldReplaceTheElfALinkOrADeviceAreRefused) {
+  const std::string elf = temp_path("own.elf");
+  const std::string original = read_file(HTX_SIM_TEST_ELF);
+  ASSERT_FALSE(original.empty());
+  std::ofstream(elf, std::ios::binary) << original;
+  const std::string link = temp_path("link.fst"), target = temp_path("link_target.fst");
+  std::ofstream(target) << "kept\n";
+  std::remove(link.c_str());
+  ASSERT_EQ(::symlink(target.c_str(), link.c_str()), 0);
+  const struct {
+    std::vector<std::string> options;
+    std::string message;
+  } cases[] = {
+      {{"--signature", elf}, "is the ELF being run"},
+      {{"--trace", elf}, "is the ELF being run"},
+      {{"--trace", link}, "is a symbolic link"},
+      {{"--trace", "/dev/null"}, "is not a regular file"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args = {HTX_BIN, "sim", "--elf", elf, "--max-cycles", "100000"};
+    args.insert(args.end(), c.options.begin(), c.options.end());
+    const auto r = htx::test::run_program(args, 60s);
+    ASSERT_FALSE(r.timed_out);
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_EQ(read_file(elf), original) << "the ELF was overwritten";
+  }
+  struct stat st {};
+  ASSERT_EQ(::lstat(link.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISLNK(st.st_mode)) << "the link was replaced";
+  EXPECT_EQ(read_file(target), "kept\n");
+  ASSERT_EQ(::stat("/dev/null", &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode)) << "/dev/null was replaced";
+}
+
+// A status is one byte: an exit code that does not fit gives 1, never its low byte (256 would read
+// as success); the code itself is in the JSON, which is a line of its own after the firmware's
+// output, even when that ended without a newline.
+TEST(SystemSimCli, AnExitCodeNoProcessCanHaveIsStatusOne) {
+  const auto r = htx::test::run_program({HTX_BIN, "sim", "--elf", elf_variant("sim_code256"), "--json"}, 60s);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("exit code 256 (not a process status: status 1)"), std::string::npos) << r.err;
+  ASSERT_EQ(r.out.rfind("A\n{", 0), 0u) << r.out;
+  const auto json = nlohmann::json::parse(r.out.substr(2));
+  EXPECT_EQ(json.at("exit_code"), 1);
+  EXPECT_EQ(json.at("firmware_code"), 256);
+  EXPECT_EQ(json.at("reason"), "tohost");
+}
+
+// An instruction test that traps before its first test case fails (tohost's pass code is
+// (0 << 1) | 1, which such a failure used to write).
+TEST(SystemSimCli, AnInstructionTestThatTrapsBeforeItsFirstCaseFails) {
+  const auto r = htx::test::run_program(
+      {HTX_BIN, "sim", "--elf", elf_variant("isa_early_trap"), "--json", "--max-cycles", "100000"}, 60s);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 127) << r.err;  // HTX_TEST_BEFORE_FIRST
+  EXPECT_EQ(last_json_line(r.out).at("reason"), "tohost");
+}
+
+// An output that fails after the run does not lose the run: the summary and the JSON still come,
+// the other outputs are written, and the status is 1.
+TEST(SystemSimCli, AFailedOutputStillReportsTheRunAndWritesTheOthers) {
+  const std::string sig = temp_path("beside_full.sig");
+  std::remove(sig.c_str());
+  const auto r = htx::test::run_program({HTX_BIN, "sim", "--elf", HTX_SIM_TEST_ELF, "--frame", "/dev/full",
+                                         "--signature", sig, "--json", "--max-cycles", "100000"},
+                                        60s);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("tohost, exit code 3"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << r.err;
+  const auto json = last_json_line(r.out);
+  EXPECT_EQ(json.at("exit_code"), 1);
+  EXPECT_EQ(json.at("firmware_code"), 3);
+  ASSERT_EQ(json.at("errors").size(), 1u);
+  EXPECT_EQ(read_file(sig), "deadbeef\n00000000\n12345678\nfffffff9\n");
+}
+
+// SIGINT ends the run as the cycle limit does: the summary, a whole trace, status 130.
+TEST(SystemSimCli, AnInterruptEndsTheRunAndClosesTheTrace) {
+  const std::string trace = temp_path("interrupted.fst");
+  std::remove(trace.c_str());
+  htx::test::Child sim(
+      {HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/echo.elf", "--uart", "pty", "--trace", trace, "--json"});
+  ASSERT_TRUE(sim.read_until("UART on", 30s)) << sim.output();
+  std::this_thread::sleep_for(500ms);
+  sim.send_signal(SIGINT);
+  ASSERT_TRUE(sim.read_until("\"reason\":\"stopped\"", 60s)) << sim.output();
+  EXPECT_EQ(sim.wait(30s), 130);
+  const auto json = last_json_line(sim.output());
+  EXPECT_EQ(json.at("exit_code"), 130);
+  EXPECT_GT(json.at("cycles").get<uint64_t>(), 0u);
+  // A closed FST file ends with its hierarchy; an interrupted writer leaves a .hier file beside it.
+  EXPECT_FALSE(std::ifstream(trace + ".hier").good());
+  EXPECT_GT(read_file(trace).size(), 1000u);
 }
 
 TEST(SystemSimCli, ToHostStatusAndSignature) {

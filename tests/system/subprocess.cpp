@@ -164,6 +164,10 @@ bool Child::read_until(const std::string& needle, std::chrono::milliseconds limi
   return read_fd_until(out_fd_, out_, needle, limit);
 }
 
+void Child::send_signal(int sig) {
+  if (pid_ > 0) ::kill(pid_, sig);
+}
+
 int Child::wait(std::chrono::milliseconds limit) {
   bool timed_out = false;
   const int st = wait_with_limit(pid_, Clock::now() + limit, timed_out);

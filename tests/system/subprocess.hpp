@@ -40,6 +40,7 @@ class Child {
   const std::string& output() const { return out_; }
   void write_input(const std::string& text);
   void close_input();  // the child reads the end of its input
+  void send_signal(int sig);  // as kill(2), while it runs
   // Waits for the child to exit; -1 if it had to be killed at the limit.
   int wait(std::chrono::milliseconds limit);
 

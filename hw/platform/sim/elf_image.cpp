@@ -1,6 +1,7 @@
 // ELF32 reader written from the System V ABI / ELF specification field layouts.
 #include "htx/sim/elf_image.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -88,8 +89,8 @@ ElfImage parse_elf(std::span<const uint8_t> data, const std::string& what) {
     const uint32_t paddr = r.u32(ph + 12);
     const uint32_t filesz = r.u32(ph + 16);
     const uint32_t memsz = r.u32(ph + 20);
-    if (memsz == 0) continue;
     if (filesz > memsz) r.fail("a segment's file size exceeds its memory size");
+    if (memsz == 0) continue;
     ElfSegment seg;
     seg.addr = paddr;
     seg.mem_size = memsz;
@@ -98,6 +99,13 @@ ElfImage parse_elf(std::span<const uint8_t> data, const std::string& what) {
     img.segments.push_back(std::move(seg));
   }
   if (img.segments.empty()) r.fail("no loadable segments");
+  // Overlapping segments would leave it to their order which bytes (or which .bss zeros) win.
+  std::vector<const ElfSegment*> by_addr;
+  for (const ElfSegment& seg : img.segments) by_addr.push_back(&seg);
+  std::sort(by_addr.begin(), by_addr.end(), [](auto* a, auto* b) { return a->addr < b->addr; });
+  for (size_t i = 1; i < by_addr.size(); ++i)
+    if (uint64_t{by_addr[i - 1]->addr} + by_addr[i - 1]->mem_size > by_addr[i]->addr)
+      r.fail("two loadable segments overlap");
 
   if (shnum != 0 && shentsize < 40) r.fail("section header entries too small");
   r.need(shoff, static_cast<uint64_t>(shnum) * shentsize, "the section header table");

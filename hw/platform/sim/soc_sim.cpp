@@ -89,9 +89,24 @@ struct SocSim::Impl {
   }
 };
 
+void check_runnable(const ElfImage& elf) {
+  const std::vector<uint32_t> words = ram_words(elf, SocSim::kRamBytes);
+  if (elf.entry != SocSim::kResetVector)
+    throw std::runtime_error("entry point " + hex(elf.entry) + " is not the SoC's reset vector " +
+                             hex(SocSim::kResetVector) + " (link the firmware for RAM at 0)");
+  if (auto t = elf.symbol("tohost")) {
+    if (*t % 4 != 0 || *t >= SocSim::kRamBytes)
+      throw std::runtime_error("symbol tohost (" + hex(*t) + ") is not a RAM word");
+    if (words[*t / 4] != 0)
+      throw std::runtime_error("symbol tohost (" + hex(*t) + ") holds " + hex(words[*t / 4]) +
+                               " in the image: the run would end in its first clock");
+  }
+}
+
 SocSim::SocSim(const ElfImage& elf, const SimOptions& options, SerialEndpoint* uart,
                std::ostream& console)
     : impl_(std::make_unique<Impl>(options, uart, console)) {
+  check_runnable(elf);  // before the trace file is opened
   Impl& s = *impl_;
   if (!options.trace_path.empty()) s.ctx->traceEverOn(true);
   s.top = std::make_unique<Vhtx_soc_sim_top>(s.ctx.get(), "soc");
@@ -106,10 +121,7 @@ SocSim::SocSim(const ElfImage& elf, const SimOptions& options, SerialEndpoint* u
   auto& ram = s.ram();
   const std::vector<uint32_t> words = ram_words(elf, kRamBytes);
   for (uint32_t i = 0; i < kRamBytes / 4; ++i) ram[i] = words[i];
-  if (auto t = elf.symbol("tohost")) {
-    if (*t % 4 != 0 || *t >= kRamBytes) throw std::runtime_error("symbol tohost is not a RAM word");
-    s.tohost_word = *t / 4;
-  }
+  if (auto t = elf.symbol("tohost")) s.tohost_word = *t / 4;
 
   s.top->rst_ni = 0;
   s.top->uart_rx_i = 1;
@@ -199,7 +211,7 @@ SimResult SocSim::run() {
         // riscv-tests: (code << 1) | 1 ends the test; even values are syscall requests, which
         // this harness does not serve, so they end the run as a failure.
         res.exit_code = (v & 1u) ? static_cast<int>(v >> 1) : 1;
-        if (!(v & 1u)) s.console << "htx sim: tohost = " << hex(v) << " is a syscall request, which is not supported\n";
+        if (!(v & 1u)) res.note = "tohost = " + hex(v) + " is a syscall request, which is not supported";
         done = true;
       }
     }

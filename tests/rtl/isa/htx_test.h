@@ -2,12 +2,17 @@
 //
 // Register conventions: gp (x3) holds the number of the running test case, t6 (x31) the expected
 // value; a test case must not use either as a result register. A failing check jumps to `fail`.
-// The run ends with a store of the RISC-V test `tohost` code (1 = pass, testnum << 1 | 1 = fail)
+// The run ends with a store of the RISC-V test `tohost` code (1 = pass, testnum << 1 | 1 = fail;
+// a failure before the first test case fails as test HTX_TEST_BEFORE_FIRST)
 // followed by a write of the exit status to SYSCTRL SIM_EXIT (0 = pass, the tohost code = fail),
 // so both the standalone CPU testbench and `htx sim` see the result. An unexpected trap fails.
 #pragma once
 
 #define TESTNUM gp
+
+// The test number a failure before the first test case reports (an unexpected trap in the set-up):
+// TESTNUM is 0 there, and (0 << 1) | 1 is tohost's pass code. 127 keeps the exit status one byte.
+#define HTX_TEST_BEFORE_FIRST 127
 
 // SYSCTRL simulation exit port (hw/regs/sysctrl.json: base 0x20000000, SIM_EXIT at 0x014).
 #define HTX_SIM_EXIT_ADDR 0x20000014
@@ -35,7 +40,9 @@
   sw zero, 0(t0);                                                        \
   1: j 1b;                                                               \
   fail:                                                                  \
-  slli a0, TESTNUM, 1;                                                   \
+  bnez TESTNUM, 3f;                                                      \
+  li TESTNUM, HTX_TEST_BEFORE_FIRST;                                     \
+  3: slli a0, TESTNUM, 1;                                                \
   ori a0, a0, 1;                                                         \
   la t0, tohost;                                                         \
   sw a0, 0(t0);                                                          \

@@ -57,6 +57,7 @@ struct CpuProfile {
 struct SimResult {
   StopReason reason = StopReason::CycleLimit;
   int exit_code = 0;      // firmware's status (SIM_EXIT code, or tohost >> 1)
+  std::string note;       // how the run ended, when a status alone does not say (a tohost syscall)
   uint64_t cycles = 0;    // clocks after reset was released
   uint64_t instret = 0;   // instructions retired (the CPU's minstret)
   double seconds = 0.0;   // host wall time of the run
@@ -66,13 +67,20 @@ struct SimResult {
 
 const char* to_string(StopReason r);
 
+// Checks that `elf` can run on the SoC, so that a tool can refuse it before it opens anything:
+// every segment in RAM, the entry point at the reset vector (the core starts there, whatever the
+// ELF says), and a `tohost` symbol, if there is one, on a RAM word that is zero in the image (a
+// non-zero one would end the run in its first clock). Throws std::runtime_error saying which.
+void check_runnable(const ElfImage& elf);
+
 class SocSim {
  public:
   static constexpr uint32_t kClockHz = 12'000'000;  // htx_soc_sim_top's ClockHz (SYSCTRL.CLOCK_HZ)
   static constexpr uint32_t kRamBytes = 131072;  // htx_soc_sim_top's RamBytes
+  static constexpr uint32_t kResetVector = 0;    // htx_soc's ResetVector (docs/soc.md)
   static constexpr uint32_t kFbPixels = 19200;  // the GPU's framebuffer (htx_soc_fabric's FbPixels)
 
-  // Throws std::runtime_error if a segment does not fit in RAM or the trace cannot be opened.
+  // Throws std::runtime_error if check_runnable(elf) does, or the trace cannot be opened.
   // `uart` may be null (the RX line stays idle, TX bytes are dropped); SIM_PUTCHAR goes to `console`.
   SocSim(const ElfImage& elf, const SimOptions& options, SerialEndpoint* uart, std::ostream& console);
   ~SocSim();
