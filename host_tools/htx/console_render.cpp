@@ -77,7 +77,7 @@ ConsoleDrawn draw_on_console(console::ConsoleClient& client, const ConsoleDraw& 
       d.figures = f;
       continue;
     }
-    for (const char* key : {"triangles", "sent", "auto_skipped", "frame_cycles", "raster_cycles", "fragments"})
+    for (const char* key : {"triangles", "sent", "dropped", "auto_skipped", "frame_cycles", "raster_cycles", "fragments"})
       if (d.figures.count(key)) d.figures[key] = sum_figure(d.figures[key], f[key]);
     d.figures["crc32"] = f["crc32"];
   }

@@ -235,6 +235,10 @@ void render_on_console(const RenderArgs& a) {
             << drawn.figures.at("sent") << " sent, "
             << screen_size << ", method " << draw.method << ") on " << where << " in " << s << " s, crc32 "
             << drawn.figures.at("crc32") << " -> " << a.out << "\n";
+  if (drawn.figures.count("dropped") && drawn.figures.at("dropped") != "0")
+    std::cerr << "htx render: the console dropped " << drawn.figures.at("dropped")
+              << " triangles: the vertex-record format cannot hold them (texture coordinates out of its "
+                 "range), or clipping left a triangle a few ulps across with more corners than it holds\n";
 
   if (!a.metrics.empty()) {
     RefOptions ref_options;
@@ -257,6 +261,7 @@ void render_on_console(const RenderArgs& a) {
     j["cpu_frame_cycles"] = number_or_null(drawn.figures.at("frame_cycles"));
     j["triangles"] = number_or_null(drawn.figures.at("triangles"));
     j["sent"] = number_or_null(drawn.figures.at("sent"));
+    if (drawn.figures.count("dropped")) j["dropped"] = number_or_null(drawn.figures.at("dropped"));
     j["crc32"] = drawn.figures.at("crc32");
     // AUTO's skipped choices, which a console from before 2026-12-06 does not print.
     if (draw.method == "auto" && drawn.figures.count("auto_skipped"))

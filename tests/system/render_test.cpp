@@ -831,6 +831,16 @@ TEST(SystemRender, UploadPayloadRefusesCoordinatesBeyondTheFirmwaresNumbers) {
               std::string::npos)
         << e.what();
   }
+  // Q16.16 holds 20,000, but the firmware takes positions below 2^14: refused before the upload too.
+  try {
+    htx::scene_payload("bigtri:size=20000", "160x120", true);
+    ADD_FAILURE() << "packed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("has a vertex coordinate of 16384 or more (2^14, the firmware's limit)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_NO_THROW(htx::scene_payload("bigtri:size=16000", "160x120", true));
 }
 
 // A scene with more textures than the console's four slots: the first four (in the order the

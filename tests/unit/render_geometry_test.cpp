@@ -192,6 +192,91 @@ TEST(RenderTransform, PerVertexHighProductsWithinThreeUlps) {
   }
 }
 
+// What make_mesh_transform makes of view_proj * model for a vertex, against the double product:
+// the same clip coordinates times 2^-down (mesh_mvp's), within `ulps` at that scale, so that
+// the projected point is the same; and w keeps its sign.
+void expect_mesh_transform_scales(const htx::Mat4& view_proj, const htx::Mat4& model, htx::Vec3 p, int expect_down,
+                                  double ulps) {
+  const int32_t xyz[3] = {to_q16(p.x), to_q16(p.y), to_q16(p.z)};
+  const int bits = htx::render::position_int_bits(xyz, 1, 3);
+  const htx::render::Mat4 vp_fx = htx::test::to_mat4_fx(view_proj), model_fx = htx::test::to_mat4_fx(model);
+  int down = -1;
+  htx::render::mesh_mvp(vp_fx, model_fx, bits, &down);
+  EXPECT_EQ(down, expect_down);
+  const htx::render::VertexTransform vt = htx::render::make_mesh_transform(vp_fx, model_fx, bits);
+  const htx::render::Vec4 got = htx::render::apply(vt, xyz[0], xyz[1], xyz[2]);
+  const htx::Vec4 want = (view_proj * model) * htx::Vec4{p.x, p.y, p.z, 1.0};
+  ASSERT_GT(want.w, 0);
+  ASSERT_GT(got.w, 0) << "w wrapped: " << q16(got.w) << " for " << want.w;
+  const double scale = std::ldexp(1.0, -down);
+  EXPECT_NEAR(q16(got.x), want.x * scale, ulps * kQ);
+  EXPECT_NEAR(q16(got.y), want.y * scale, ulps * kQ);
+  EXPECT_NEAR(q16(got.z), want.z * scale, ulps * kQ);
+  EXPECT_NEAR(q16(got.w), want.w * scale, ulps * kQ);
+}
+
+// Positions below 2^14 and matrices the host accepts can still take clip coordinates past Q16.16:
+// the mesh's transform is then scaled down (a positive scale moves no projected point), where the
+// sums used to wrap.
+TEST(RenderGeometry, ClipCoordinatesBeyondQ16AreScaledNotWrapped) {
+  // A cube 16,000 across seen from 30,000 away: its far corner's w is 38,000.
+  htx::Mat4 far_view = htx::Mat4::identity();
+  far_view.m[3][2] = -1.0;  // w = -z + 30,000
+  far_view.m[3][3] = 30000.0;
+  expect_mesh_transform_scales(far_view, htx::Mat4::identity(), {8000, -8000, -8000}, 1, 4);
+  expect_mesh_transform_scales(far_view, htx::Mat4::identity(), {-8000, 8000, 8000}, 1, 4);
+  // A model scale of 16,385 (an entry the matrix can hold only at its least precision, which the
+  // per-vertex form used to double past 2^31): clip x = 8,192.5 at w = 1.
+  expect_mesh_transform_scales(htx::Mat4::identity(), htx::scale({16385, 16385, 1}), {0.5, -0.5, 0.25}, 0, 4);
+  // Two translations the host accepts whose sum leaves Q16.16 (30,000 + 10,000).
+  expect_mesh_transform_scales(htx::translate({30000, 0, 0}), htx::translate({10000, 0, 0}), {1, 2, 3}, 1, 4);
+  // A scene well inside the range keeps its transform (its frames do not change).
+  const htx::Mat4 vp = htx::perspective(1.0, 4.0 / 3.0, 0.5, 100.0) * htx::translate({0, 0, -5});
+  expect_mesh_transform_scales(vp, htx::scale({2, 2, 2}), {1.5, -2, -3}, 0, 8);
+}
+
+// Rounded cut points can make a triangle a few ulps across non-convex, so that a later plane cuts
+// it more than twice: a polygon that would not fit is dropped whole (the clipper wrote past its
+// buffer there), and any smaller one keeps every vertex and cut point.
+TEST(RenderGeometry, AClippedPolygonThatWouldNotFitIsDropped) {
+  auto raw = [](int32_t x, int32_t y, int32_t z, int32_t w) {
+    htx::render::ClipVert v{};
+    v.x = x;
+    v.y = y;
+    v.z = z;
+    v.w = w;
+    return v;
+  };
+  auto clip = [](const htx::render::ClipVert (&tri)[3], htx::render::ClipPolygon* poly) {
+    poly->count = 3;
+    uint32_t planes = 0;
+    for (int k = 0; k < 3; ++k) {
+      poly->v[k] = tri[k];
+      planes |= htx::render::outcode(tri[k]);
+    }
+    return htx::render::clip_polygon(poly, planes & htx::render::kOutcodePlanes);
+  };
+  htx::render::ClipPolygon poly;
+  const htx::render::ClipVert too_many[3] = {raw(4, 4, -3, 2), raw(-3, -4, -2, 1), raw(-2, 1, -3, 3)};
+  EXPECT_EQ(clip(too_many, &poly), htx::render::kClipTooManyVertices);
+  EXPECT_EQ(poly.count, 0);
+  // Tiny random triangles in raw units: a result fits, or the polygon is dropped and said to be.
+  std::mt19937 rng(21);
+  std::uniform_int_distribution<int32_t> c(-5, 5), w(1, 4);
+  int kept = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const htx::render::ClipVert tri[3] = {raw(c(rng), c(rng), c(rng), w(rng)), raw(c(rng), c(rng), c(rng), w(rng)),
+                                          raw(c(rng), c(rng), c(rng), w(rng))};
+    const htx::render::ClipResult r = clip(tri, &poly);
+    ASSERT_TRUE(poly.count == 0 || (poly.count >= 3 && poly.count <= htx::render::kMaxClipVerts)) << poly.count;
+    if (r == htx::render::kClipTooManyVertices) {
+      ASSERT_EQ(poly.count, 0);
+    }
+    kept += poly.count > 0;
+  }
+  EXPECT_GT(kept, 1000);
+}
+
 htx::render::ClipVert clip_vert(double x, double y, double z, double w, double s, double t, double r) {
   htx::render::ClipVert v{};
   v.x = to_q16(x);

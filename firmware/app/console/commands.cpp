@@ -362,9 +362,11 @@ void cmd_render(char* rest) {
   if (bad) return error("usage: render SCENE [over] [hold]");
   const render_app::SceneData* scene = find_scene(name);
   if (!scene || !draw_and_show(*scene, true, over, hold)) return;
-  printf("render %s method %s filter %s triangles %lu sent %lu auto_skipped %lu frame_cycles %lu ", name,
+  printf("render %s method %s filter %s triangles %lu sent %lu dropped %lu auto_skipped %lu frame_cycles %lu ", name,
          g_settings.method_text, filter_text(g_settings.draw.filter), static_cast<unsigned long>(g_last.stats.triangles),
-         static_cast<unsigned long>(g_last.stats.sent), static_cast<unsigned long>(g_last.stats.auto_skipped),
+         static_cast<unsigned long>(g_last.stats.sent),
+         static_cast<unsigned long>(g_last.stats.encode_errors + g_last.stats.clip_dropped),
+         static_cast<unsigned long>(g_last.stats.auto_skipped),
          static_cast<unsigned long>(g_last.frame_cycles));
   render_app::print_raster_figures(g_last.counters);
   printf(" crc32 %08lx\r\n", static_cast<unsigned long>(g_last.crc));

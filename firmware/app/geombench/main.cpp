@@ -112,7 +112,7 @@ int main() {
     const geombench::BenchScene& sc = scenes[s];
     const int bits = htx::render::mesh_position_bits(sc.vertices, sc.vertex_count);
     const htx::render::VertexTransform vt =
-        htx::render::make_vertex_transform(htx::render::mat4_mul(sc.view_proj, sc.model), bits);
+        htx::render::make_mesh_transform(sc.view_proj, sc.model, bits);
     htx::render::process_vertices(vt, sc.vertices, sc.vertex_count, vp, &cache);  // warm up
     const uint64_t t0 = htx::hal::cpu_cycles();
     for (uint32_t r = 0; r < kRuns; ++r) htx::render::process_vertices(vt, sc.vertices, sc.vertex_count, vp, &cache);

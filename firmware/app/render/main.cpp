@@ -2,8 +2,11 @@
 // the compiled-in built-in scenes (`floor`, then `cube`; an image may select fewer,
 // scene_selection.hpp) textured on the SoC's GPU with the firmware render pipeline (firmware/render
 // over hal/target) and reports, one line per scene on the UART:
-//   render <scene> vertices <n> geometry_cycles_per_vertex <c.cc> triangles <t> sent <s> clipped <k>
-//     culled <u> auto_skipped <a> frame_cycles <f> raster_cycles <r> fragments <g> crc32 <8 hex digits>
+//   render <scene> vertices <n> geometry_cycles_per_vertex <c.cc> triangles <t> sent <s> dropped <d>
+//     clipped <k> culled <u> auto_skipped <a> frame_cycles <f> raster_cycles <r> fragments <g>
+//     crc32 <8 hex digits>
+// dropped: triangles the vertex-record encoder refused (outside the record format's ranges) or the
+// clipper could not hold (a triangle a few ulps across; htx::render::kClipTooManyVertices).
 // geometry_cycles_per_vertex: CPU cycles of process_vertices (transform, clip test, projection) per
 // vertex, the mean of kGeometryRuns runs after a warm-up. auto_skipped: AUTO's choices taken as
 // RECIP_NR without comparing, where choosing would not pay (docs/auto.md). frame_cycles: CPU cycles of the whole frame
@@ -32,8 +35,9 @@ bool render_scene(const render_app::SceneData& sc) {
   printf("render %s vertices %lu geometry_cycles_per_vertex ", sc.name,
          static_cast<unsigned long>(r.geometry_vertices / render_app::kGeometryRuns));
   render_app::print_ratio(r.geometry_cycles, r.geometry_vertices);
-  printf(" triangles %lu sent %lu clipped %lu culled %lu auto_skipped %lu frame_cycles %lu ",
+  printf(" triangles %lu sent %lu dropped %lu clipped %lu culled %lu auto_skipped %lu frame_cycles %lu ",
          static_cast<unsigned long>(r.stats.triangles), static_cast<unsigned long>(r.stats.sent),
+         static_cast<unsigned long>(r.stats.encode_errors + r.stats.clip_dropped),
          static_cast<unsigned long>(r.stats.clipped), static_cast<unsigned long>(r.stats.culled),
          static_cast<unsigned long>(r.stats.auto_skipped), static_cast<unsigned long>(r.frame_cycles));
   render_app::print_raster_figures(r.counters);

@@ -26,7 +26,7 @@ void time_geometry(const SceneData& sc, const htx::render::Viewport& vp, htx::re
   for (uint32_t m = 0; m < sc.mesh_count; ++m) {
     const htx::render::Mesh& mesh = sc.meshes[m];
     const htx::render::VertexTransform vt =
-        htx::render::make_vertex_transform(htx::render::mat4_mul(sc.view_proj, mesh.model), mesh.position_bits);
+        htx::render::make_mesh_transform(sc.view_proj, mesh.model, mesh.position_bits);
     htx::render::process_vertices(vt, mesh.vertices, mesh.vertex_count, vp, cache);  // warm up
     const uint64_t t0 = htx::hal::cpu_cycles();
     for (uint32_t run = 0; run < kGeometryRuns; ++run)

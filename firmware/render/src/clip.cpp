@@ -48,8 +48,12 @@ ClipVert intersect(const ClipVert& in, const ClipVert& out, int p) {
   return r;
 }
 
-void clip_plane(ClipPolygon* poly, int p) {
-  ClipVert out[kMaxClipVerts];
+// Clips against plane p; false (the polygon emptied) when the result would not fit ClipPolygon.
+bool clip_plane(ClipPolygon* poly, int p) {
+  // A convex polygon crossed by a plane gains at most one vertex. Cut points are rounded, though,
+  // so a polygon a few ulps across can turn non-convex and cross a later plane several times:
+  // each vertex then gives at most two (itself and a cut point).
+  ClipVert out[2 * kMaxClipVerts];
   int n = 0;
   const int count = poly->count;
   for (int i = 0; i < count; ++i) {
@@ -57,28 +61,33 @@ void clip_plane(ClipPolygon* poly, int p) {
     const ClipVert& next = poly->v[i + 1 == count ? 0 : i + 1];
     const bool cur_in = distance(cur, p) >= 0;
     const bool next_in = distance(next, p) >= 0;
-    // A convex polygon crossed by a plane gains at most one vertex, so n stays <= kMaxClipVerts.
     if (cur_in) out[n++] = cur;
-    if (cur_in != next_in && n < kMaxClipVerts) out[n++] = cur_in ? intersect(cur, next, p) : intersect(next, cur, p);
+    if (cur_in != next_in) out[n++] = cur_in ? intersect(cur, next, p) : intersect(next, cur, p);
+  }
+  if (n > kMaxClipVerts) {
+    poly->count = 0;
+    return false;
   }
   for (int i = 0; i < n; ++i) poly->v[i] = out[i];
   poly->count = n;
+  return true;
 }
 
 }  // namespace
 
-void clip_polygon(ClipPolygon* poly, uint32_t planes) {
+ClipResult clip_polygon(ClipPolygon* poly, uint32_t planes) {
   for (int p = 0; p < 6 && poly->count >= 3; ++p)
-    if (planes & (1u << p)) clip_plane(poly, p);
+    if ((planes & (1u << p)) && !clip_plane(poly, p)) return kClipTooManyVertices;
   if (poly->count < 3) {
     poly->count = 0;
-    return;
+    return kClipOk;
   }
   for (int i = 0; i < poly->count; ++i)
     if (poly->v[i].w <= 0) {
       poly->count = 0;
-      return;
+      return kClipOk;
     }
+  return kClipOk;
 }
 
 }  // namespace htx::render

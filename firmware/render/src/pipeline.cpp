@@ -98,7 +98,7 @@ DrawStatus draw_mesh(const FrameParams& frame, const Mat4& view_proj, const Mesh
   for (uint32_t i = 0; i < 3 * mesh.triangle_count; ++i)
     if (mesh.indices[i] >= mesh.vertex_count) return kDrawBadIndex;
   if (mesh.position_bits < 0 || mesh.position_bits > 14) return kDrawBadPositions;
-  const VertexTransform vt = make_vertex_transform(mat4_mul(view_proj, mesh.model), mesh.position_bits);
+  const VertexTransform vt = make_mesh_transform(view_proj, mesh.model, mesh.position_bits);
   process_vertices(vt, mesh.vertices, mesh.vertex_count, vp, cache);
 
   const AutoMesh auto_of_mesh = mesh.state.method == kMethodAuto ? mesh_auto(frame, mesh) : AutoMesh{};
@@ -119,7 +119,7 @@ DrawStatus draw_mesh(const FrameParams& frame, const Mat4& view_proj, const Mesh
     ClipPolygon poly;
     poly.count = 3;
     for (int k = 0; k < 3; ++k) poly.v[k] = cache->clip[idx[k]];
-    clip_polygon(&poly, (c0 | c1 | c2) & kOutcodePlanes);
+    if (clip_polygon(&poly, (c0 | c1 | c2) & kOutcodePlanes) == kClipTooManyVertices) ++st->clip_dropped;
     if (poly.count == 0) continue;
     ScreenVert screen[kMaxClipVerts];
     for (int k = 0; k < poly.count; ++k) project(poly.v[k], vp, &screen[k]);

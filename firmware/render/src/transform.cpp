@@ -56,6 +56,21 @@ Mat4 mat4_mul(const Mat4& a, const Mat4& b) {
   return r;
 }
 
+Mat4 mat4_scaled_down(const Mat4& m, int down) {
+  Mat4 r = m;
+  if (down <= 0) return r;
+  // The linear part keeps its integers and takes `down` more fraction bits, as far as the format
+  // goes; the rest, and the Q16.16 translation, are rounded off.
+  const int more = m.frac + down > kMatMaxFrac ? kMatMaxFrac - m.frac : down;
+  r.frac = m.frac + more;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 3; ++j)
+      if (down > more) r.m[i][j] = static_cast<int32_t>(round_shift(m.m[i][j], down - more));
+    r.m[i][3] = static_cast<int32_t>(round_shift(m.m[i][3], down));
+  }
+  return r;
+}
+
 Vec4 transform_point(const Mat4& m, int32_t x, int32_t y, int32_t z) {
   int32_t out[4];
   const int f = m.frac;

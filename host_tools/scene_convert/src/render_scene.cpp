@@ -91,7 +91,12 @@ RenderScene to_render_scene(const Scene& scene, int width, int height) {
     d.mesh.indices = d.indices.data();
     d.mesh.triangle_count = static_cast<uint32_t>(src.triangles.size());
     d.mesh.model = to_mat4_fx(src.model);
-    d.mesh.position_bits = static_cast<int8_t>(render::mesh_position_bits(d.vertices.data(), d.mesh.vertex_count));
+    const int position_bits = render::mesh_position_bits(d.vertices.data(), d.mesh.vertex_count);
+    // The firmware's limit (docs/firmware.md, "Number formats"), checked here so that a scene is
+    // refused before it is sent, not by the console after the upload.
+    if (position_bits > 14)
+      throw std::out_of_range("mesh '" + src.name + "' has a vertex coordinate of 16384 or more (2^14, the firmware's limit)");
+    d.mesh.position_bits = static_cast<int8_t>(position_bits);
     d.mesh.state = to_render_state(src.state);
     if (src.state.textured && src.state.texture >= 0 && static_cast<size_t>(src.state.texture) < scene.textures.size()) {
       const Texture& t = scene.textures[static_cast<size_t>(src.state.texture)];

@@ -36,11 +36,18 @@ inline uint32_t outcode(const ClipVert& v) {
          (static_cast<uint32_t>(w <= 0) << 6);
 }
 
+enum ClipResult : int {
+  kClipOk = 0,
+  // The polygon would have had more than kMaxClipVerts vertices, which only a triangle a few ulps
+  // of clip space across can reach (rounded cut points make it non-convex): dropped whole.
+  kClipTooManyVertices = 1,
+};
+
 // Clips `poly` in place against the planes in `planes` (bit p = plane p; bit 6 ignored), in plane order. A new
 // vertex is interpolated from the inside end of its edge towards the outside end, so an edge shared
 // by two triangles is cut at the same point in both. Afterwards count is 0 (nothing left) or >= 3,
 // and every vertex has w > 0: a polygon that would keep a vertex with w <= 0 (only possible for a
-// degenerate input at the eye) is dropped whole.
-void clip_polygon(ClipPolygon* poly, uint32_t planes);
+// degenerate input at the eye) is dropped whole, as is one that would not fit (kClipTooManyVertices).
+ClipResult clip_polygon(ClipPolygon* poly, uint32_t planes);
 
 }  // namespace htx::render

@@ -72,6 +72,7 @@ struct DrawStats {
   uint32_t culled = 0;        // back-facing
   uint32_t degenerate = 0;    // zero area on the subpixel grid
   uint32_t encode_errors = 0; // the encoder refused them (not sent)
+  uint32_t clip_dropped = 0;  // clipped to more vertices than a polygon holds (a few ulps across)
   uint32_t sent = 0;          // triangles streamed (after clipping, a fan counts per triangle)
   uint32_t auto_skipped = 0;  // AUTO's: RECIP_NR without comparing, where choosing would not pay
 };

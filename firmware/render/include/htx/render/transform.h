@@ -26,6 +26,10 @@ Mat4 mat4_identity();
 // a * b with the most fraction bits its largest linear entry allows (every entry rounded once,
 // saturating when an entry leaves the format: linear part beyond 2^14, translation beyond 2^15).
 Mat4 mat4_mul(const Mat4& a, const Mat4& b);
+// m * 2^-down (down >= 0): a homogeneous transform scaled by a positive factor projects every
+// point to the same place, so the geometry scales a mesh's down when its clip coordinates would
+// leave Q16.16 (make_mesh_transform).
+Mat4 mat4_scaled_down(const Mat4& m, int down);
 // M * (x, y, z, 1) for a point in Q16.16.
 Vec4 transform_point(const Mat4& m, int32_t x, int32_t y, int32_t z);
 

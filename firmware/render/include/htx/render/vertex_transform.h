@@ -22,7 +22,19 @@ struct VertexTransform {
 // Integer bits (0..15, sign excluded) the largest |coordinate| of the positions needs.
 int position_int_bits(const int32_t* xyz, uint32_t count, uint32_t stride_words);
 
+// For mvp's entries below 2^30 and its clip coordinates inside Q16.16 (make_mesh_transform sees
+// to both): otherwise the sums wrap.
 VertexTransform make_vertex_transform(const Mat4& mvp, int position_bits);
+
+// view_proj * model for a mesh whose positions are below 2^position_bits, scaled down by 2^down
+// (0 for any sane scene; at most kMaxMeshScaleDown) when its clip coordinates could otherwise
+// reach 2^15 or an entry saturated (a large scene seen from far away): the projected points are
+// the same, the clip coordinates lose low bits. `down` may be null.
+inline constexpr int kMaxMeshScaleDown = 31;
+Mat4 mesh_mvp(const Mat4& view_proj, const Mat4& model, int position_bits, int* down);
+
+// The per-vertex form of mesh_mvp's matrix.
+VertexTransform make_mesh_transform(const Mat4& view_proj, const Mat4& model, int position_bits);
 
 // Row i of clip = M * (x, y, z, 1) for positions already shifted by in_shift. Each of the three
 // products truncates (< 1 ulp); the bias in t centres the sum's error in [-2, 1] ulps.
