@@ -7,7 +7,8 @@
 #   file list in the global properties HTX_RTL_<top>_SOURCES for synthesis reports and Verilation.
 #   REGS names the generated register packages (e.g. UART) that the top needs, which come first.
 #   YOSYS_ELABORATE: the lint test has Yosys read and elaborate the top (hierarchy -check, proc,
-#   flatten, check) instead of running synth_ice40 on it. For tops that are synthesised whole inside
+#   flatten, check -assert: any problem `check` reports fails the test) instead of running
+#   synth_ice40 on it. For tops that are synthesised whole inside
 #   a larger linted top, and for `full` configurations whose synthesis takes minutes; those are
 #   synthesised by the `synth-report` target instead (docs/architecture.md, "Lint").
 # htx_ice40_equiv(NAME <module> [TEST <test name>] [PARAMS NAME=VALUE...] SOURCES <sv files...>)
@@ -44,6 +45,15 @@ function(htx_reg_pkg_files out)
   set(${out} ${files} PARENT_SCOPE)
 endfunction()
 
+# The YOSYS_ELABORATE lint flow for `top`, after its sources are read: `check -assert` makes any
+# problem `check` finds (a net with several drivers, a driverless used net, a logic loop) fail the
+# test. tests/lint runs it on a known-bad module too, so that this flow is seen to fail.
+function(htx_yosys_elaborate_flow out top)
+  # (iCE40 cells of HTX_ICE40 code as black boxes)
+  set(${out} "read_verilog -lib +/ice40/cells_sim.v; hierarchy -check -top ${top}; proc; flatten; opt_clean; check -assert"
+    PARENT_SCOPE)
+endfunction()
+
 function(htx_rtl_top)
   cmake_parse_arguments(A "YOSYS_ELABORATE" "NAME" "SOURCES;REGS;YOSYS_ARGS" ${ARGN})
   htx_reg_pkg_files(pkgs ${A_REGS})
@@ -64,8 +74,7 @@ function(htx_rtl_top)
   if(HTX_YOSYS_BIN)
     list(JOIN all " " files)
     if(A_YOSYS_ELABORATE)
-      # (iCE40 cells of HTX_ICE40 code as black boxes)
-      set(flow "read_verilog -lib +/ice40/cells_sim.v; hierarchy -check -top ${A_NAME}; proc; flatten; opt_clean; check")
+      htx_yosys_elaborate_flow(flow ${A_NAME})
     else()
       set(flow "synth_ice40 -dsp -top ${A_NAME} ${A_YOSYS_ARGS}")
     endif()

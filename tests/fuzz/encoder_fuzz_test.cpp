@@ -85,9 +85,15 @@ double hostile(std::mt19937& rng, double limit) {
     case 3: return std::numeric_limits<double>::denorm_min() * ((rng() & 1u) ? 1 : -1);
     case 4: return 0.0;
     case 5: return -0.0;
-    // Exact subpixel values at and around the limit (the open window (limit - 1/512, limit) is
-    // left out: see docs/robustness.md, "Known defects").
-    case 6: return (limit - static_cast<double>(rng() % 4) / 256.0) * ((rng() & 1u) ? 1 : -1);
+    // Exact subpixel values at and below the limit, and values in the open window
+    // (limit - 1/512, limit) that round up onto it (docs/robustness.md, "Defects these tests
+    // found", 1: the encoder once let those wrap).
+    case 6: {
+      const double below[] = {0.0,        1.0 / 256,   2.0 / 256, 3.0 / 256,
+                              1.0 / 1024, 1.0 / 65536, limit - std::nextafter(limit, 0.0)};
+      const double v = limit - below[rng() % 7];
+      return (rng() & 1u) ? v : -v;
+    }
     case 7: return (limit + static_cast<double>(rng() % 4) / 256.0) * ((rng() & 1u) ? 1 : -1);
     case 8: return std::ldexp(1.0, static_cast<int>(rng() % 120) - 60) * ((rng() & 1u) ? 1 : -1);
     default: return std::round(ordinary(rng) * 256.0) / 256.0;
@@ -144,9 +150,12 @@ TEST(EncoderFuzz, DoubleEncoderHostileInputs) {
     }
     if (s == htx::fw::kEncodeOk) {
       ++ok;
-      for (const auto& v : in) {
-        EXPECT_LT(std::fabs(v.x), xy_limit) << iter;
-        EXPECT_LT(std::fabs(v.y), xy_limit) << iter;
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_LT(std::fabs(in[k].x), xy_limit) << iter;
+        EXPECT_LT(std::fabs(in[k].y), xy_limit) << iter;
+        // The record holds x and y rounded to 1/256 pixel, not wrapped.
+        EXPECT_LE(std::fabs(static_cast<double>(r.v[k].x) - in[k].x * 256.0), 0.5) << iter << " x " << in[k].x;
+        EXPECT_LE(std::fabs(static_cast<double>(r.v[k].y) - in[k].y * 256.0), 0.5) << iter << " y " << in[k].y;
       }
       expect_in_range(f, r, "double encoder");
       if (::testing::Test::HasFailure()) FAIL() << "iteration " << iter;

@@ -3,10 +3,15 @@
 // and not; and random vertex records anywhere in their documented field ranges through
 // render_model_records. Each render returns a frame of exactly width x height pixels whose depths
 // fit z_bits (no write outside the frame, no overflow of the model's datapath), or refuses the
-// scene with std::invalid_argument. Triangles the encoder refuses draw nothing.
+// scene with std::invalid_argument. Triangles the encoder refuses draw nothing: the scene without
+// them draws the same frame, bit for bit, with the same fragment and pixel counts. The model's
+// sources are compiled into this test with the address and undefined-behaviour sanitizers
+// (tests/fuzz/CMakeLists.txt).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -33,6 +38,27 @@ double hostile(std::mt19937& rng, double lo, double hi) {
   }
 }
 
+// Whether the vertex-record encoder takes the triangle (the inputs built here from the screen
+// vertices, not by the model's own conversion).
+bool encoder_takes(const ScreenTri& t, const ModelConfig& cfg) {
+  fw::VertexIn in[3];
+  for (int i = 0; i < 3; ++i) {
+    const ScreenVertex& v = t.v[static_cast<size_t>(i)];
+    in[i].x = v.x;
+    in[i].y = v.y;
+    in[i].z = v.z;
+    in[i].w = v.w;
+    in[i].u = v.u;
+    in[i].v = v.v;
+    in[i].r = v.r;
+    in[i].g = v.g;
+    in[i].b = v.b;
+    in[i].a = v.a;
+  }
+  fw::TriangleRecord r;
+  return fw::encode_triangle(cfg.record_format(), in, &r) == fw::kEncodeOk;
+}
+
 void expect_frame_shape(const Frame& f, int w, int h, const ModelConfig& cfg, const std::string& what) {
   ASSERT_EQ(f.width, w) << what;
   ASSERT_EQ(f.height, h) << what;
@@ -47,6 +73,10 @@ TEST(ModelFuzz, HostileScreenScenes) {
   std::mt19937 rng(41);
   for (const char* name : {"full", "icebreaker"}) {
     const ModelConfig cfg = model_config(name);
+    // Scenes with refused triangles, and those where the refused triangles would have changed the
+    // frame had they been drawn anyway (the same triangles with every coordinate clamped on screen
+    // and w made positive: see below), so that the comparison is known to see a drawn one.
+    int scenes_with_refused = 0, refused_that_would_show = 0;
     for (int iter = 0; iter < 400; ++iter) {
       const std::string what = std::string(name) + " scene " + std::to_string(iter);
       ScreenScene s;
@@ -87,6 +117,37 @@ TEST(ModelFuzz, HostileScreenScenes) {
       try {
         const Frame f = render_model(s, cfg);
         expect_frame_shape(f, s.width, s.height, cfg, what);
+        // The refused triangles draw nothing: the frame without them is the same.
+        ScreenScene kept = s, tamed = s;
+        kept.tris.clear();
+        for (ScreenTri& t : tamed.tris) {
+          if (encoder_takes(t, cfg)) {
+            kept.tris.push_back(t);
+            continue;
+          }
+          for (ScreenVertex& v : t.v) {
+            v.x = std::isfinite(v.x) ? std::clamp(v.x, -8.0, s.width + 8.0) : 0.0;
+            v.y = std::isfinite(v.y) ? std::clamp(v.y, -8.0, s.height + 8.0) : 0.0;
+            v.z = std::isfinite(v.z) ? std::clamp(v.z, 0.0, 1.0) : 0.5;
+            v.w = std::isfinite(v.w) && v.w > 0.01 ? std::min(v.w, 1e3) : 1.0;
+            v.u = std::isfinite(v.u) ? std::clamp(v.u, -64.0, 64.0) : 0.0;
+            v.v = std::isfinite(v.v) ? std::clamp(v.v, -64.0, 64.0) : 0.0;
+          }
+        }
+        if (kept.tris.size() < s.tris.size()) {
+          ++scenes_with_refused;
+          const Frame g = render_model(kept, cfg);
+          ASSERT_EQ(g.color.size(), f.color.size()) << what;
+          size_t differing = 0;
+          for (size_t i = 0; i < f.color.size(); ++i) differing += g.color[i] != f.color[i] || g.depth[i] != f.depth[i];
+          EXPECT_EQ(differing, 0u) << what << ": the refused triangles changed the frame";
+          EXPECT_EQ(g.counters.fragments, f.counters.fragments) << what;
+          EXPECT_EQ(g.counters.pixels_written, f.counters.pixels_written) << what;
+          const Frame h = render_model(tamed, cfg);
+          size_t shown = 0;
+          for (size_t i = 0; i < f.color.size(); ++i) shown += h.color[i] != f.color[i] || h.depth[i] != f.depth[i];
+          refused_that_would_show += shown > 0;
+        }
       } catch (const std::invalid_argument& e) {
         ADD_FAILURE() << what << ": a scene inside the documented limits was refused: " << e.what();
       } catch (const std::exception& e) {
@@ -94,6 +155,10 @@ TEST(ModelFuzz, HostileScreenScenes) {
       }
       if (::testing::Test::HasFailure()) return;
     }
+    std::printf("%s: %d scenes with refused triangles, %d where they would have shown\n", name, scenes_with_refused,
+                refused_that_would_show);
+    EXPECT_GT(scenes_with_refused, 300) << name;
+    EXPECT_GT(refused_that_would_show, 250) << name;
   }
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -24,13 +25,13 @@ TEST(ScenePackFuzz, DamagedScenesAreRefusedOrSafe) {
     const int damage = static_cast<int>(rng() % 4);
     for (int k = 0; k <= damage; ++k) bytes[rng() % bytes.size()] = static_cast<uint8_t>(rng());
     if (rng() % 4 == 0) bytes.resize(rng() % (bytes.size() + 16));
-    // Exactly the bytes given, in a heap block of their own size (ASan sees any read past them).
-    std::vector<uint32_t> words((bytes.size() + 3) / 4);
-    if (!bytes.empty()) std::memcpy(words.data(), bytes.data(), bytes.size());
+    // Exactly the bytes given, in a heap block of their own size (ASan sees a read even one byte
+    // past them; operator new's 16-byte alignment keeps the unpacker's word reads aligned).
+    const std::unique_ptr<uint8_t[]> exact(new uint8_t[bytes.size()]);
+    if (!bytes.empty()) std::memcpy(exact.get(), bytes.data(), bytes.size());
     htx::render::Mesh meshes[2];
     htx::render::UnpackedScene u;
-    const char* why = htx::render::unpack_scene(reinterpret_cast<const uint8_t*>(words.data()), bytes.size(), meshes, 2,
-                                                96, &u);
+    const char* why = htx::render::unpack_scene(exact.get(), bytes.size(), meshes, 2, 96, &u);
     if (why) continue;
     ++accepted;
     ASSERT_GE(u.mesh_count, 1u);

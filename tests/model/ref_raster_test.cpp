@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "htx/model/proc_textures.hpp"
 #include "htx/model/ref.hpp"
@@ -147,24 +148,36 @@ TEST(RefRaster, NearestTiesGoToTheLowerTexel) {
 }
 
 TEST(RefRaster, DepthFunctionsAndWriteEnable) {
+  // A first triangle at depth 0.5 (drawn with Always), then a second at the same depth, nearer
+  // (0.3) and farther (0.7), with each depth function: whether the second one's fragment passes,
+  // which then leaves its colour and its depth.
   struct Case {
     DepthFunc f;
-    bool second_wins;
+    bool wins_equal, wins_nearer, wins_farther;
   };
-  const Case cases[] = {{DepthFunc::Never, false}, {DepthFunc::Less, false},  {DepthFunc::LEqual, true},
-                        {DepthFunc::Equal, true},  {DepthFunc::Greater, false}, {DepthFunc::Always, true}};
+  const Case cases[] = {{DepthFunc::Never, false, false, false},  {DepthFunc::Less, false, true, false},
+                        {DepthFunc::LEqual, true, true, false},   {DepthFunc::Equal, true, false, false},
+                        {DepthFunc::Greater, false, false, true}, {DepthFunc::Always, true, true, true}};
+  const auto depth_word = [](double z) { return static_cast<uint32_t>(std::nearbyint(z * 16777215)); };
   for (const Case& c : cases) {
-    ScreenScene s = blank(4, 4);
-    ScreenTri a = tri(sv(0, 0, 0, 0, 1, 0.5), sv(8, 0, 0, 0, 1, 0.5), sv(0, 8, 0, 0, 1, 0.5));
-    a.state.textured = false;
-    a.state.depth_func = DepthFunc::Always;
-    a.v[0].r = a.v[1].r = a.v[2].r = 0;
-    ScreenTri b = a;
-    b.state.depth_func = c.f;
-    for (auto& v : b.v) v.r = 1;
-    s.tris = {a, b};
-    const Frame fr = render_ref(s, {});
-    EXPECT_EQ(fr.color[0] == 0xFFFF, c.second_wins) << static_cast<int>(c.f);
+    for (const auto& [z, wins] :
+         {std::pair{0.5, c.wins_equal}, std::pair{0.3, c.wins_nearer}, std::pair{0.7, c.wins_farther}}) {
+      ScreenScene s = blank(4, 4);
+      ScreenTri a = tri(sv(0, 0, 0, 0, 1, 0.5), sv(8, 0, 0, 0, 1, 0.5), sv(0, 8, 0, 0, 1, 0.5));
+      a.state.textured = false;
+      a.state.depth_func = DepthFunc::Always;
+      a.v[0].r = a.v[1].r = a.v[2].r = 0;  // cyan: 0x07FF
+      ScreenTri b = a;
+      b.state.depth_func = c.f;
+      for (auto& v : b.v) {
+        v.r = 1;  // white: 0xFFFF
+        v.z = z;
+      }
+      s.tris = {a, b};
+      const Frame fr = render_ref(s, {});
+      EXPECT_EQ(fr.color[0], wins ? 0xFFFFu : 0x07FFu) << "function " << static_cast<int>(c.f) << ", z " << z;
+      EXPECT_EQ(fr.depth[0], depth_word(wins ? z : 0.5)) << "function " << static_cast<int>(c.f) << ", z " << z;
+    }
   }
   // Write disabled: a nearer fragment that does not write leaves the farther one's depth in place.
   ScreenScene s = blank(4, 4);

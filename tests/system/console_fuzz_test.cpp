@@ -1,7 +1,8 @@
 // The console firmware against random command lines (label `fuzz`): a fixed-seed script of
 // commands, arguments and junk (unknown words, numbers out of range, stray `over` and `hold`, lines
 // too long, control characters, backspaces), typed into `htx sim --uart stdio`. Every line gets a
-// prompt back, the run never hangs or traps, and afterwards, with the settings put back, the cube
+// prompt back (exactly one per line the console reads, counted from the script by the console's
+// line-end rules), the run never hangs or traps, and afterwards, with the settings put back, the cube
 // draws the frame it draws at boot. Commands that wait for binary data or change the line (upload,
 // texture, grab, baud) and quit are left out of the junk; their own tests cover their bad input.
 // With HTX_KEEP_FUZZ set, the script and the console's output stay in the test's temporary folder.
@@ -66,17 +67,20 @@ std::string random_line(std::mt19937& rng) {
 TEST(ConsoleFuzz, RandomLinesGetAnAnswerAndLeaveTheConsoleWorking) {
   std::mt19937 rng(20261206);
   const std::string script = ::testing::TempDir() + "htx_console_fuzz_" + std::to_string(getpid()) + ".txt";
+  // At 1 Mbaud the run's characters cost a ninth of the clocks they do at 115,200.
+  std::string text = "baud 1000000\nrender cube\n";
+  for (int i = 0; i < 400; ++i) text += random_line(rng) + "\r";
+  text += "\nset method auto\nset tolerance 1/16\nset filter scene\nvideo on\nrender cube\nquit\n";
+  std::ofstream(script, std::ios::binary) << text;
+  // The lines the console reads from it (firmware/app/console/line_reader.cpp): each CR ends one,
+  // each LF not right after a CR, and each Ctrl-C (which abandons its line). A zero byte would
+  // start a packet frame, whose bytes are not text: the script has none.
+  ASSERT_EQ(text.find('\0'), std::string::npos);
   size_t lines = 0;
-  {
-    std::ofstream out(script, std::ios::binary);
-    // At 1 Mbaud the run's characters cost a ninth of the clocks they do at 115,200.
-    out << "baud 1000000\nrender cube\n";
-    for (int i = 0; i < 400; ++i) {
-      const std::string line = random_line(rng);
-      out << line << "\r";
-      lines += 1 + static_cast<size_t>(std::count(line.begin(), line.end(), '\n'));
-    }
-    out << "\nset method auto\nset tolerance 1/16\nset filter scene\nvideo on\nrender cube\nquit\n";
+  bool after_cr = false;
+  for (const char c : text) {
+    lines += c == '\r' || c == '\x03' || (c == '\n' && !after_cr);
+    after_cr = c == '\r';
   }
   const auto r = htx::test::run_program(
       {"/bin/sh", "-c",
@@ -96,10 +100,11 @@ TEST(ConsoleFuzz, RandomLinesGetAnAnswerAndLeaveTheConsoleWorking) {
     crcs.push_back((*it)[1]);
   ASSERT_GE(crcs.size(), 2u) << r.out;
   EXPECT_EQ(crcs.front(), crcs.back());
-  // A prompt for every line (the baud, the first render, the junk, the settings, the last render).
+  // A prompt for every line (the baud, the first render, the junk, the settings, the last render),
+  // no more and no fewer: the one at boot, and one after each line's answer but `quit`'s.
   size_t prompts = 0;
   for (size_t at = r.out.find("htx> "); at != std::string::npos; at = r.out.find("htx> ", at + 1)) ++prompts;
-  EXPECT_GE(prompts, lines) << r.out.substr(r.out.size() > 4000 ? r.out.size() - 4000 : 0);
+  EXPECT_EQ(prompts, 1 + (lines - 1)) << r.out.substr(r.out.size() > 4000 ? r.out.size() - 4000 : 0);
   EXPECT_EQ(r.out.find("trap"), std::string::npos);
 }
 

@@ -35,6 +35,21 @@ std::string field_after(const std::string& text, const std::string& key) {
   return text.substr(start, text.find_first_of(" \r\n", start) - start);
 }
 
+// A CRC-32 as the console and htx print it: eight lowercase hex digits (field_after gives "" when
+// the key is missing, so two failed renders would otherwise compare equal).
+::testing::AssertionResult IsCrc32(const std::string& s) {
+  if (s.size() == 8 && s.find_first_not_of("0123456789abcdef") == std::string::npos)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "'" << s << "' is not a CRC-32 (eight hex digits)";
+}
+
+// A count the console printed: decimal digits, at least one.
+::testing::AssertionResult IsCount(const std::string& s) {
+  if (!s.empty() && s.size() <= 9 && s.find_first_not_of("0123456789") == std::string::npos)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "'" << s << "' is not a count";
+}
+
 // Reads from the terminal until a whole packet has arrived (or four frames went by without one).
 htx::fw::PacketStatus read_packet(int fd, htx::fw::Packet* p) {
   static htx::fw::PacketDecoder decoder;
@@ -106,7 +121,7 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   EXPECT_NE(r.out.find("error: nothing rendered yet"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("triangles 6 fragments 7082 pixels 7082"), std::string::npos) << r.out;
   const std::string crc = field_after(r.out.substr(r.out.find("render cube method auto")), "crc32 ");
-  ASSERT_EQ(crc.size(), 8u) << r.out;
+  ASSERT_TRUE(IsCrc32(crc)) << r.out;
 
   // A PNG that could not be written is refused before the frame is asked for, so the console is
   // not left sending it: the grab after it works.
@@ -290,7 +305,7 @@ TEST(SystemConsole, BaudSwitchesTheLineBothWays) {
   EXPECT_NE(r.out.find("htx> baud 1000000\nbaud 1000000\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("at 12000000 Hz, serial 1000000 baud"), std::string::npos) << r.out;
   const std::string crc = field_after(r.out.substr(r.out.find("render cube method auto")), "crc32 ");
-  ASSERT_EQ(crc.size(), 8u) << r.out;
+  ASSERT_TRUE(IsCrc32(crc)) << r.out;
   const std::string png = ::testing::TempDir() + "htx_console_baud_grab.png";
   const auto g = htx::test::run_program({HTX_BIN, "grab", "--port", cs.pty, "--out", png, "--timeout", "60"}, 180s);
   ASSERT_EQ(g.status, 0) << g.err;
@@ -363,12 +378,14 @@ TEST(SystemConsole, SpinTurnsTheSceneAndEndsWhereItStarted) {
     return at == std::string::npos ? std::string() : field_after(r.out.substr(at), "crc32 ");
   };
   const std::string rendered = crc_after("render cube method");
-  ASSERT_EQ(rendered.size(), 8u) << r.out;
+  ASSERT_TRUE(IsCrc32(rendered)) << r.out;
   EXPECT_EQ(crc_after("frame 4 frame_cycles"), rendered) << r.out;
   const std::string half = crc_after("frame 2 frame_cycles");
-  ASSERT_EQ(half.size(), 8u) << r.out;
+  ASSERT_TRUE(IsCrc32(half)) << r.out;
   EXPECT_NE(half, rendered) << r.out;
-  EXPECT_NE(crc_after("frame 1 frame_cycles"), half) << r.out;
+  const std::string quarter = crc_after("frame 1 frame_cycles");
+  ASSERT_TRUE(IsCrc32(quarter)) << r.out;
+  EXPECT_NE(quarter, half) << r.out;
   EXPECT_EQ(crc_after("spin cube frames 4 mcycles "), rendered) << r.out;
   // Without `crc` the frames' lines have none; the summary has the last frame's.
   const size_t two = r.out.find("htx> spin cube 2\n");
@@ -570,7 +587,7 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
   ASSERT_EQ(boot.status, 0) << boot.err;
   EXPECT_NE(boot.out.find("texture 0: 32x32 rgb565 (checkerboard)"), std::string::npos) << boot.out;
   const std::string checker_crc = render_crc(boot.out);
-  ASSERT_EQ(checker_crc.size(), 8u) << boot.out;
+  ASSERT_TRUE(IsCrc32(checker_crc)) << boot.out;
 
   // soc_texture.cpp's checkerboard: white and the model's ink in 4-texel squares.
   const std::string checker = ::testing::TempDir() + "htx_console_checker.png";
@@ -595,7 +612,7 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
   const auto drawn = cs.console({"render cube"});
   ASSERT_EQ(drawn.status, 0) << drawn.err;
   const std::string ramp_crc = render_crc(drawn.out);
-  ASSERT_EQ(ramp_crc.size(), 8u) << drawn.out;
+  ASSERT_TRUE(IsCrc32(ramp_crc)) << drawn.out;
   EXPECT_NE(ramp_crc, checker_crc);
 
   // Refused: too large for a slot and sides not powers of two (both before the port opens; the
@@ -637,6 +654,7 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
     close(fd);
   }
   const auto after = cs.console({"info", "render cube"});
+  ASSERT_EQ(after.status, 0) << after.err;
   EXPECT_NE(after.out.find("texture 0: 16x64 rgba4444 (uploaded)"), std::string::npos) << after.out;
   EXPECT_EQ(render_crc(after.out), ramp_crc) << after.out;
 
@@ -646,6 +664,7 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
   ASSERT_EQ(bare.status, 0) << bare.err;
   EXPECT_EQ(bare.out.find("texture ok"), std::string::npos) << bare.out;
   const auto bare_drawn = cs.console({"render upload"});
+  ASSERT_EQ(bare_drawn.status, 0) << bare_drawn.err;
   EXPECT_EQ(field_after(bare_drawn.out, "crc32 "), ramp_crc) << bare_drawn.out;
   // An OBJ sends its MTL's texture (8 x 16, level 0) the way an image is sent: the same frame.
   const auto obj = htx::test::run_program(
@@ -653,12 +672,18 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
   ASSERT_EQ(obj.status, 0) << obj.err;
   EXPECT_NE(obj.out.find("texture ok: 8x16 rgb565, 5 levels"), std::string::npos) << obj.out;
   const auto obj_drawn = cs.console({"render upload"});
+  ASSERT_EQ(obj_drawn.status, 0) << obj_drawn.err;
   const std::string obj_crc = field_after(obj_drawn.out, "crc32 ");
-  EXPECT_NE(field_after(obj_drawn.out, "fragments "), "0") << obj_drawn.out;
+  ASSERT_TRUE(IsCrc32(obj_crc)) << obj_drawn.out;
+  const std::string obj_fragments = field_after(obj_drawn.out, "fragments ");
+  ASSERT_TRUE(IsCount(obj_fragments)) << obj_drawn.out;
+  EXPECT_GT(std::stoul(obj_fragments), 0u) << obj_drawn.out;
+  EXPECT_NE(obj_crc, ramp_crc) << "the quad draws a frame of its own";
   const auto png = htx::test::run_program(
       {HTX_BIN, "upload", "--texture", HTX_TEST_DATA_DIR "/checker8x16.png", "--port", pty, "--timeout", "60"}, 180s);
   ASSERT_EQ(png.status, 0) << png.err;
   const auto png_drawn = cs.console({"render upload"});
+  ASSERT_EQ(png_drawn.status, 0) << png_drawn.err;
   EXPECT_EQ(field_after(png_drawn.out, "crc32 "), obj_crc) << png_drawn.out;
 
   // With its texture (the model's 64 x 64 checkerboard, sent as its 32 x 32 mip level: the
@@ -699,7 +724,7 @@ TEST(SystemConsole, TextureSlotsShareTheTextureMemory) {
   EXPECT_NE(two.out.find("texture 2: none (its meshes draw with texture 0)"), std::string::npos) << two.out;
   EXPECT_NE(two.out.find("texture memory: 684 of 1024 blocks"), std::string::npos) << two.out;
   const std::string two_crc = field_after(two.out, "crc32 ");
-  ASSERT_EQ(two_crc.size(), 8u) << two.out;
+  ASSERT_TRUE(IsCrc32(two_crc)) << two.out;
 
   const std::string ramp = ::testing::TempDir() + "htx_console_slot_ramp.png";
   write_texture_png(ramp, 32, 32, [](int x, int v) {
@@ -713,6 +738,7 @@ TEST(SystemConsole, TextureSlotsShareTheTextureMemory) {
             std::string::npos)
       << third.err;
   const auto kept = cs.console({"info", "render upload"});
+  ASSERT_EQ(kept.status, 0) << kept.err;
   EXPECT_NE(kept.out.find("texture 2: none"), std::string::npos) << kept.out;
   EXPECT_EQ(field_after(kept.out, "crc32 "), two_crc) << kept.out;
 
@@ -731,7 +757,7 @@ TEST(SystemConsole, TextureSlotsShareTheTextureMemory) {
       << fits.out;
   EXPECT_NE(fits.out.find("texture 3: 8x8 rgb565 (uploaded)"), std::string::npos) << fits.out;
   const std::string ramp_crc = field_after(fits.out, "crc32 ");
-  EXPECT_EQ(ramp_crc.size(), 8u) << fits.out;
+  ASSERT_TRUE(IsCrc32(ramp_crc)) << fits.out;
   EXPECT_NE(ramp_crc, two_crc) << "slot 1's meshes draw with the ramp now";
 
   const auto no_slot =
@@ -765,7 +791,7 @@ TEST(SystemConsole, MeshesLargerThanTheVertexCacheGoInParts) {
   const auto compiled = cs.console({"render floor"});
   ASSERT_EQ(compiled.status, 0) << compiled.err;
   const std::string floor_crc = field_after(compiled.out, "crc32 ");
-  ASSERT_EQ(floor_crc.size(), 8u) << compiled.out;
+  ASSERT_TRUE(IsCrc32(floor_crc)) << compiled.out;
 
   const auto up = htx::test::run_program(
       {HTX_BIN, "upload", "floor", "--mesh-vertices", "30", "--port", pty, "--timeout", "60"}, 180s);
@@ -773,8 +799,10 @@ TEST(SystemConsole, MeshesLargerThanTheVertexCacheGoInParts) {
   EXPECT_NE(up.err.find("upload: 1 meshes sent as "), std::string::npos) << up.err;
   EXPECT_NE(up.out.find("128 triangles"), std::string::npos) << up.out;
   const std::string parts = field_after(up.out, "bytes, ");
-  EXPECT_GT(std::stoi(parts.empty() ? "0" : parts), 3) << up.out;
+  ASSERT_TRUE(IsCount(parts)) << up.out;
+  EXPECT_GT(std::stoi(parts), 3) << up.out;
   const auto split = cs.console({"render upload"});
+  ASSERT_EQ(split.status, 0) << split.err;
   EXPECT_EQ(field_after(split.out, "crc32 "), floor_crc) << split.out;
 
   const auto rand = htx::test::run_program({HTX_BIN, "upload", "randmesh", "--port", pty, "--timeout", "60"}, 180s);

@@ -45,7 +45,10 @@ TEST(SystemStudyCli, QuickRatioSweepOnTheRtl) {
     return static_cast<size_t>(std::find(header.begin(), header.end(), name) - header.begin());
   };
   const size_t mismatch = column("mismatch"), clocks = column("clocks"), method = column("method");
-  ASSERT_LT(mismatch, header.size());
+  // Every column indexed below is in the header (column() gives header.size() for a missing one).
+  ASSERT_LT(mismatch, header.size()) << line;
+  ASSERT_LT(clocks, header.size()) << line;
+  ASSERT_LT(method, header.size()) << line;
   size_t rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = split(line);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -338,13 +339,30 @@ TEST(AutoChoose, FirmwareSkipTestAgreesWithTheChooser) {
     else if (got.skipped) ++chooser_skips[kind];
     else ++compared[kind];
   }
-  for (const Kind kind : {kAnywhere, kNearArea, kAtArea, kAtSpan, kThinAtArea}) {
-    SCOPED_TRACE(testing::Message() << "kind " << kind << ": " << integer_skips[kind] << " skipped in integers, "
-                                    << chooser_skips[kind] << " by the chooser, " << compared[kind] << " compared");
-    EXPECT_GT(integer_skips[kind], kind == kThinAtArea ? -1 : 1000);
-    EXPECT_GT(compared[kind], kind == kAtArea || kind == kThinAtArea ? -1 : 100);
-    EXPECT_GT(chooser_skips[kind], kind == kAtArea || kind == kThinAtArea ? 1000 : kind == kAtSpan ? 20 : -1);
-  }
+  for (const Kind kind : {kAnywhere, kNearArea, kAtArea, kAtSpan, kThinAtArea})
+    std::printf("kind %d: %d skipped in integers, %d by the chooser, %d compared\n", kind, integer_skips[kind],
+                chooser_skips[kind], compared[kind]);
+  // Both sides of each margin. Every kind has triangles the integer test skips, except the slivers:
+  // their determinant is under 2,000 units below the limit, far inside the integer test's slack
+  // (about 2^20 units there), so it leaves every one of them to the chooser.
+  EXPECT_GT(integer_skips[kAnywhere], 1000);
+  EXPECT_GT(integer_skips[kNearArea], 1000);
+  EXPECT_GT(integer_skips[kAtArea], 1000);
+  EXPECT_GT(integer_skips[kAtSpan], 1000);
+  EXPECT_EQ(integer_skips[kThinAtArea], 0);
+  // Every kind has triangles the chooser compares (few of those at the area's limit: most of them
+  // are skipped by one test or the other).
+  EXPECT_GT(compared[kAnywhere], 100);
+  EXPECT_GT(compared[kNearArea], 100);
+  EXPECT_GT(compared[kAtArea], 50);
+  EXPECT_GT(compared[kAtSpan], 100);
+  EXPECT_GT(compared[kThinAtArea], 1000);
+  // Triangles the integer test leaves and the chooser then skips lie within the integer test's
+  // slack: at the area's limit, at the span's, and the slivers. (Random triangles and those within
+  // 2 % of the area's limit almost never fall there, 0 and 1 of them with this seed: not counted on.)
+  EXPECT_GT(chooser_skips[kAtArea], 1000);
+  EXPECT_GT(chooser_skips[kAtSpan], 20);
+  EXPECT_GT(chooser_skips[kThinAtArea], 1000);
 }
 
 // choose_method finds only the bounds that can change its choice (docs/auto.md, "Arithmetic"):
@@ -426,9 +444,18 @@ TEST(AutoChoose, FallbackAndBadInput) {
   EXPECT_FALSE(htx::fw::choose_method(t, cfg, {}, 0x1F, 1.0f).within);
   t.w[1] = 4;
   EXPECT_FALSE(htx::fw::choose_method(t, cfg, {}, 0x1F, 0.0f).within);  // tolerance must be > 0
-  // A degenerate triangle (zero area) never divides by its determinant.
-  AutoTriangle line{{0, 10, 20}, {0, 10, 20}, {1, 2, 3}, {0, 5, 9}, {0, 1, 2}};
-  EXPECT_TRUE(htx::fw::choose_method(line, cfg, {}, 0x1F, 1.0f / 16).method < 5);
+  // A degenerate triangle (zero area, its w varying along it): SUBDIV's slope and curvature terms,
+  // which divide by the determinant, are taken as 0 instead, so with SUBDIV alone built it is
+  // within a 1/16-texel tolerance at its longest span. (Divided by the zero determinant, for which
+  // AutoNum's division gives 2^50, they would be huge: nothing within, and the fallback SUBDIV_2
+  // with within = false.)
+  const AutoTriangle line{{0, 10, 20}, {0, 10, 20}, {1, 2, 3}, {0, 5, 9}, {0, 1, 2}};
+  c = htx::fw::choose_method(line, cfg, {}, 1u << htx::fw::kAutoSubdiv, 1.0f / 16);
+  EXPECT_EQ(c.method, htx::fw::kAutoSubdiv);
+  EXPECT_TRUE(c.within);
+  EXPECT_EQ(c.subdiv_n, 64);
+  EXPECT_GT(c.bound, 0.0f);
+  EXPECT_LT(c.bound, 1.0f / 16);
 }
 
 TEST(AutoChoose, FirmwareAdapterSeesPixelsAndTexels) {

@@ -4,6 +4,7 @@
 // colour page.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <stdexcept>
 
@@ -70,11 +71,27 @@ TEST_P(GpuBus, MemoryPortReachesFramebufferDepthAndTextureWindows) {
   EXPECT_TRUE(sim.mem_read(0x30200000u, &v));
 }
 
+// docs/texture.md, "Memory layout", written here from the document and not from the uploader
+// (texture_layout.cpp): the texture window's base, and the word of texel (i, j) of level `level` of
+// a 2^lw0 x 2^lh0 chain at base block `base` (levels one after the other, each row-major in 2x2
+// blocks of four consecutive words).
+constexpr uint32_t kDocTextureWindow = 0x40000000u;
+uint32_t doc_word(uint32_t base, unsigned lw0, unsigned lh0, unsigned level, uint32_t i, uint32_t j) {
+  uint32_t offset = 0;
+  for (unsigned l = 0; l < level; ++l) {
+    const uint32_t w = std::max(1u, (1u << lw0) >> l), h = std::max(1u, (1u << lh0) >> l);
+    offset += std::max(1u, w / 2) * std::max(1u, h / 2);
+  }
+  const uint32_t wl = std::max(1u, (1u << lw0) >> level);
+  return 4 * (base + offset + (j >> 1) * std::max(1u, wl / 2) + (i >> 1)) + 2 * (j & 1) + (i & 1);
+}
+
 TEST_P(GpuBus, TextureUploadReadsBackInTheDocumentedLayout) {
   GpuSim sim(GetParam());
   std::vector<uint8_t> px(32 * 16 * 4);
   for (size_t i = 0; i < px.size(); ++i) px[i] = static_cast<uint8_t>(i * 37 + 11);
   const Texture tex = make_texture(TexFormat::RGBA4444, 5, 4, px);
+  ASSERT_EQ(GpuSim::kTextureWindow, kDocTextureWindow);
   std::vector<std::pair<uint32_t, uint32_t>> words;
   rtl::append_texture_words(tex, 7, GpuSim::kTextureWindow, words);
   size_t texels = 0;
@@ -82,15 +99,26 @@ TEST_P(GpuBus, TextureUploadReadsBackInTheDocumentedLayout) {
   ASSERT_EQ(words.size(), texels);
   EXPECT_EQ(rtl::texture_chain_blocks(tex), 128u + 32 + 8 + 2 + 1 + 1);
   EXPECT_EQ(sim.mem_write_burst(words), 0u);
+  // Every word the uploader wrote lies in blocks 7 .. 7 + chain - 1.
   for (const auto& [addr, value] : words) {
-    uint32_t got = 0;
-    ASSERT_FALSE(sim.mem_read(addr, &got));
-    ASSERT_EQ(got & 0xFFFFu, value) << "address " << addr;
-    // Every word of the chain lies in blocks 7 .. 7 + chain - 1.
-    const uint32_t block = (addr - GpuSim::kTextureWindow) / 16;
-    ASSERT_GE(block, 7u);
-    ASSERT_LT(block, 7u + rtl::texture_chain_blocks(tex));
+    const uint32_t block = (addr - kDocTextureWindow) / 16;
+    ASSERT_GE(block, 7u) << "address " << addr;
+    ASSERT_LT(block, 7u + 128 + 32 + 8 + 2 + 1 + 1) << "address " << addr;
   }
+  // Every texel of every level (32x16 down to 1x1) reads back at the document's address.
+  ASSERT_EQ(tex.levels.size(), 6u);
+  for (unsigned l = 0; l < tex.levels.size(); ++l) {
+    const uint32_t w = std::max(1u, 32u >> l), h = std::max(1u, 16u >> l);
+    ASSERT_EQ(tex.levels[l].size(), static_cast<size_t>(w) * h) << "level " << l;
+    for (uint32_t j = 0; j < h; ++j)
+      for (uint32_t i = 0; i < w; ++i) {
+        const uint32_t addr = kDocTextureWindow + 4 * doc_word(7, 5, 4, l, i, j);
+        uint32_t got = 0;
+        ASSERT_FALSE(sim.mem_read(addr, &got)) << "address " << addr;
+        ASSERT_EQ(got & 0xFFFFu, tex.levels[l][j * w + i]) << "level " << l << " (" << i << ", " << j << ")";
+      }
+  }
+  // TEX descriptor: BASE[15:0], LOG2_WIDTH[19:16], LOG2_HEIGHT[23:20], FORMAT[25:24] (RGBA4444 is 1).
   EXPECT_EQ(rtl::texture_descriptor(tex, 7), 7u | (5u << 16) | (4u << 20) | (1u << 24));
 }
 

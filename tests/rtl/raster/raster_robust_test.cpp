@@ -85,6 +85,21 @@ ScreenScene small_scene() {
   return s;
 }
 
+// A triangle of its own for the bad records: across the middle of small_scene's screen, nearer than
+// its triangles and another colour, so that it would show in the frame (and in the fragment and
+// pixel counters) if a bad record carrying it were drawn.
+ScreenScene intruder_scene() {
+  ScreenScene s = small_scene();
+  ScreenTri t = tri(6, 6, 58, 14, 26, 42, 0.05);
+  for (ScreenVertex& v : t.v) {
+    v.r = 1.0;
+    v.g = 0.0;
+    v.b = 1.0;
+  }
+  s.tris = {t};
+  return s;
+}
+
 void setup_frame(rtl::RasterSim& sim, const ScreenScene& s) {
   sim.write_reg(R(FB_SIZE), static_cast<uint32_t>(s.width) | (static_cast<uint32_t>(s.height) << 16));
   sim.write_reg(R(FB_STRIDE), static_cast<uint32_t>(s.width));
@@ -102,6 +117,15 @@ void expect_frame(rtl::RasterSim& sim, const ScreenScene& s, const ModelConfig& 
   uint32_t bad = 0;
   for (uint32_t i = 0; i < n; ++i) bad += (c[i] != m.color[i]) || ((z[i] & 0xFFFFFFu) != m.depth[i]);
   EXPECT_EQ(bad, 0u);
+}
+
+// The unit's fragment and pixel counters since it was made equal the model's for `s` alone: nothing
+// else was walked or written.
+void expect_counters(rtl::RasterSim& sim, const ScreenScene& s, const ModelConfig& cfg, const std::string& what) {
+  const Frame m = render_model(s, cfg);
+  ASSERT_GT(m.counters.pixels_written, 0u) << what;
+  EXPECT_EQ(sim.read_reg(R(CNT_FRAGMENTS)), m.counters.fragments) << what;
+  EXPECT_EQ(sim.read_reg(R(CNT_PIXELS)), m.counters.pixels_written) << what;
 }
 
 TEST(RasterRobust, FullFifoStallsTheBusAndDropsNothing) {
@@ -194,6 +218,8 @@ TEST(RasterRobust, AbortMidTriangleThenCleanFrame) {
 // A triangle whose state word asks for what is not built (here a depth function beyond `always`)
 // is consumed: ERR_STATE rises, it draws nothing, and the triangles around it are drawn. In
 // `icebreaker` setup works on the input stage's registers and releases such a record at once.
+// The bad record carries a triangle of its own (intruder_scene), nearer than the others and of
+// another colour, so that drawing it, or walking it, changes the frame or the counters.
 TEST(RasterRobust, BadStateWordIsConsumedBetweenGoodTriangles) {
   for (const char* name : {"full", "icebreaker"}) {
     const ModelConfig cfg = rtl_config(name);
@@ -202,8 +228,14 @@ TEST(RasterRobust, BadStateWordIsConsumedBetweenGoodTriangles) {
     setup_frame(sim, s);
     const std::vector<std::vector<uint32_t>> recs = records_of(s, cfg, sim);
     ASSERT_EQ(recs.size(), 3u);
-    // A copy of the second triangle with a bad depth function, before it and after the last.
-    std::vector<uint32_t> bad = recs[1];
+    const std::vector<std::vector<uint32_t>> intruder = records_of(intruder_scene(), cfg, sim);
+    ASSERT_EQ(intruder.size(), 1u);
+    // Drawn, the intruder would change the frame: the model says so.
+    ScreenScene with_intruder = s;
+    with_intruder.tris.push_back(intruder_scene().tris[0]);
+    ASSERT_GT(frame_mismatch_pixels(render_model(with_intruder, cfg), render_model(s, cfg)), 100u);
+    // The intruder with a bad depth function, before the second triangle and after the last.
+    std::vector<uint32_t> bad = intruder[0];
     bad[0] |= RASTER_STATE_DEPTH_FUNC_Msk;  // 7
     std::vector<uint32_t> stream = recs[0];
     for (const std::vector<uint32_t>& r : {bad, recs[1], recs[2], bad}) stream.insert(stream.end(), r.begin(), r.end());
@@ -211,6 +243,8 @@ TEST(RasterRobust, BadStateWordIsConsumedBetweenGoodTriangles) {
     sim.wait_idle(1'000'000);
     EXPECT_TRUE(sim.read_reg(R(STATUS)) & RASTER_STATUS_ERR_STATE_Msk) << name;
     EXPECT_EQ(sim.read_reg(R(STATUS)) & RASTER_STATUS_BUSY_Msk, 0u) << name;
+    EXPECT_EQ(sim.read_reg(R(CNT_TRIANGLES)), 5u) << name;
+    expect_counters(sim, s, cfg, name);
     expect_frame(sim, s, cfg);
   }
 }
@@ -429,7 +463,9 @@ TEST(RasterRobust, CapsNamesTheBuild) {
 
 // A plane record (CAPS.FW_SETUP) whose box is empty or reaches past FB_SIZE is read to its end,
 // draws nothing and raises ERR_STATE; the records around it draw as the model says. Likewise a
-// record cut short by ABORT, and one with a pair past the last plane index.
+// record cut short by ABORT, and one with a pair past the last plane index. The bad records carry
+// a triangle of their own (intruder_scene), so that drawing one (say with its box clipped to the
+// screen instead of refused) changes the frame and the fragment and pixel counters.
 TEST(RasterRobust, BadPlaneRecordsAreConsumedBetweenGoodOnes) {
   const ModelConfig cfg = rtl_config("icebreaker");
   const ScreenScene s = small_scene();  // 64 x 48, three triangles
@@ -443,7 +479,9 @@ TEST(RasterRobust, BadPlaneRecordsAreConsumedBetweenGoodOnes) {
     setup_frame(sim, s);
     const std::vector<std::vector<uint32_t>> recs = records_of(s, cfg, sim);
     ASSERT_EQ(recs.size(), 3u);
-    std::vector<uint32_t> bad = recs[1];
+    const std::vector<std::vector<uint32_t>> intruder = records_of(intruder_scene(), cfg, sim);
+    ASSERT_EQ(intruder.size(), 1u);
+    std::vector<uint32_t> bad = intruder[0];
     ASSERT_GT(bad.size(), fw::kPlaneHeaderWords + 6);
     if (variant < 3) {
       bad[2] = box_bad[variant];
@@ -460,6 +498,7 @@ TEST(RasterRobust, BadPlaneRecordsAreConsumedBetweenGoodOnes) {
     EXPECT_TRUE(sim.read_reg(R(STATUS)) & RASTER_STATUS_ERR_STATE_Msk) << "variant " << variant;
     EXPECT_EQ(sim.read_reg(R(STATUS)) & RASTER_STATUS_BUSY_Msk, 0u) << "variant " << variant;
     EXPECT_EQ(sim.read_reg(R(CNT_TRIANGLES)), 5u) << "variant " << variant;
+    expect_counters(sim, s, cfg, "variant " + std::to_string(variant));
     expect_frame(sim, s, cfg);
   }
   // Pairs at plane indices the traversal does not use (10..15) write nothing it reads.

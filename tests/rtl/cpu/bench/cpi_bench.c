@@ -2,10 +2,21 @@
 //   - Q16.16 4x4 matrix transforms of vertices (MUL/MULH, shifts), with a clip-code test per vertex
 //   - CRC-32 (bitwise, reflected polynomial 0xEDB88320) over a buffer
 //   - insertion sort of pseudo-random words
-// Each kernel checks itself; main returns 0 only if all checks hold. bench_result holds
+// The kernels and their inputs are cpi_kernels.h. Only the kernels run between the rdcycle/rdinstret
+// reads; the checks come after them (check_results, not inlined, so that its code stays out of the
+// measured window). The expected results (cpi_bench_expected.h) are the same kernels' results
+// computed on the host at build time by cpi_expect.c, so every result the core computes is checked
+// against a machine other than the core: the CRC-32 of the work buffer, the transform's checksum,
+// clip count and every output word, and the sorted keys word for word. The sort is also checked on
+// the core itself for order and for being a permutation of its input (the keys generated again:
+// their sum, xor and sum of squares). main returns 0 only if all checks hold. bench_result holds
 // {cycles, instret, crc of "123456789", crc of the work buffer, transform checksum, clip count,
-//  sort checksum, failures}, with cycles and instret measured around the kernels by the program.
+//  sort checksum (sum of the keys), failures (a bit per failed check)}, with cycles and instret
+// measured around the kernels by the program.
 #include <stdint.h>
+
+#include "cpi_bench_expected.h"
+#include "cpi_kernels.h"
 
 volatile uint32_t bench_result[8];
 
@@ -20,80 +31,49 @@ static inline uint32_t read_instret(void) {
   return v;
 }
 
-typedef int32_t fix16;  // Q16.16
+enum {
+  kBadCrcCheck = 1,     // CRC-32 of "123456789" is not the standard check value 0xCBF43926
+  kNotSorted = 2,       // a key greater than the next
+  kBadTransform = 4,    // the transform's output words differ from the host's
+  kBadCrcWork = 8,      // CRC-32 of the work buffer differs from the host's
+  kBadTsum = 16,        // transform checksum or clip count differs from the host's
+  kNotPermutation = 32, // the sorted keys' sum, xor or sum of squares is not the input's
+  kBadSorted = 64,      // the sorted keys differ from the host's (its own sort, qsort)
+};
 
-static fix16 fmul(fix16 a, fix16 b) { return (fix16)(((int64_t)a * b) >> 16); }
-
-static uint32_t lcg_state = 12345u;
-static uint32_t lcg(void) {
-  lcg_state = lcg_state * 1664525u + 1013904223u;
-  return lcg_state;
-}
-
-#define NVERT 48
-static fix16 verts[NVERT][4];
-static fix16 out[NVERT][4];
-static fix16 matrix[4][4];
-
-static uint32_t transform_all(uint32_t* clipped) {
-  uint32_t sum = 0;
-  uint32_t clip = 0;
-  for (int v = 0; v < NVERT; ++v) {
-    for (int r = 0; r < 4; ++r) {
-      fix16 acc = 0;
-      for (int c = 0; c < 4; ++c) acc += fmul(matrix[r][c], verts[v][c]);
-      out[v][r] = acc;
-    }
-    // Clip codes against the six planes -w <= x, y, z <= w.
-    const fix16 w = out[v][3];
-    uint32_t code = 0;
-    for (int k = 0; k < 3; ++k) {
-      if (out[v][k] > w) code |= 1u << (2 * k);
-      if (out[v][k] < -w) code |= 2u << (2 * k);
-    }
-    if (code) ++clip;
-    sum = (sum << 3 | sum >> 29) ^ (uint32_t)out[v][0] ^ (uint32_t)out[v][1] * 3u ^ code;
+// The results' checks, after the measured window.
+static __attribute__((noinline)) uint32_t check_results(uint32_t crc_check, uint32_t crc_work, uint32_t tsum,
+                                                         uint32_t clipped, uint32_t* ksum_out) {
+  uint32_t failures = 0;
+  if (crc_check != 0xCBF43926u) failures |= kBadCrcCheck;
+  if (crc_work != CPI_EXPECT_CRC_WORK) failures |= kBadCrcWork;
+  if (tsum != CPI_EXPECT_TSUM || clipped != CPI_EXPECT_CLIPPED) failures |= kBadTsum;
+  if (hash_words((const uint32_t*)out, NVERT * 4) != CPI_EXPECT_OUT_HASH) failures |= kBadTransform;
+  uint32_t ksum = 0, kxor = 0, ksq = 0;
+  for (int i = 0; i < NSORT; ++i) {
+    if (i > 0 && keys[i - 1] > keys[i]) failures |= kNotSorted;
+    ksum += keys[i];
+    kxor ^= keys[i];
+    ksq += keys[i] * keys[i];
   }
-  *clipped = clip;
-  return sum;
-}
-
-static uint32_t crc32(const uint8_t* p, uint32_t n) {
-  uint32_t crc = 0xFFFFFFFFu;
-  for (uint32_t i = 0; i < n; ++i) {
-    crc ^= p[i];
-    for (int b = 0; b < 8; ++b) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-  }
-  return ~crc;
-}
-
-#define NSORT 96
-static uint32_t keys[NSORT];
-
-static void insertion_sort(uint32_t* a, int n) {
-  for (int i = 1; i < n; ++i) {
-    const uint32_t x = a[i];
-    int j = i - 1;
-    while (j >= 0 && a[j] > x) {
-      a[j + 1] = a[j];
-      --j;
+  // The input keys again from the LCG (past the matrix's and the vertices' values).
+  uint32_t state = CPI_LCG_SEED, isum = 0, ixor = 0, isq = 0;
+  for (int i = 0; i < 16 + 3 * NVERT + NSORT; ++i) {
+    state = state * 1664525u + 1013904223u;
+    if (i >= 16 + 3 * NVERT) {
+      isum += state;
+      ixor ^= state;
+      isq += state * state;
     }
-    a[j + 1] = x;
   }
+  if (ksum != isum || kxor != ixor || ksq != isq) failures |= kNotPermutation;
+  if (hash_words(keys, NSORT) != CPI_EXPECT_SORTED_HASH) failures |= kBadSorted;
+  *ksum_out = ksum;
+  return failures;
 }
-
-static uint8_t work[256];
 
 int main(void) {
-  uint32_t failures = 0;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) matrix[r][c] = (fix16)((lcg() & 0x3FFFF) - 0x20000);
-  for (int v = 0; v < NVERT; ++v) {
-    for (int c = 0; c < 3; ++c) verts[v][c] = (fix16)((lcg() & 0x7FFFF) - 0x40000);
-    verts[v][3] = 1 << 16;
-  }
-  for (int i = 0; i < NSORT; ++i) keys[i] = lcg();
-  for (int i = 0; i < 256; ++i) work[i] = (uint8_t)lcg();
+  make_inputs();
   static const uint8_t check_string[9] = {'1', '2', '3', '4', '5', '6', '7', '8', '9'};
 
   const uint32_t c0 = read_cycle();
@@ -106,21 +86,8 @@ int main(void) {
   const uint32_t c1 = read_cycle();
   const uint32_t i1 = read_instret();
 
-  // Checks: the CRC-32 check value of "123456789" is 0xCBF43926; keys sorted; the transform agrees
-  // with a second evaluation that multiplies through 64-bit sums instead of per-term rounding.
-  if (crc_check != 0xCBF43926u) failures |= 1;
   uint32_t ksum = 0;
-  for (int i = 0; i < NSORT; ++i) {
-    if (i > 0 && keys[i - 1] > keys[i]) failures |= 2;
-    ksum += keys[i];
-  }
-  for (int v = 0; v < NVERT; ++v) {
-    for (int r = 0; r < 4; ++r) {
-      int64_t acc = 0;
-      for (int c = 0; c < 4; ++c) acc += ((int64_t)matrix[r][c] * verts[v][c]) >> 16;
-      if ((fix16)acc != out[v][r]) failures |= 4;
-    }
-  }
+  const uint32_t failures = check_results(crc_check, crc_work, tsum, clipped, &ksum);
 
   bench_result[0] = c1 - c0;
   bench_result[1] = i1 - i0;
