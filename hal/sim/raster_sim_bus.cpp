@@ -29,7 +29,12 @@ RasterSimBus::RasterSimBus(const std::string& config) : sim_(config) {}
 
 uint32_t RasterSimBus::read(uint32_t addr) {
   if (addr & 3u) fail("unaligned word read", addr);
-  if (in_raster(addr)) return sim_.read_reg(addr - HTX_RASTER_BASE);
+  if (in_raster(addr)) {
+    // A register the unit answers with an error is a load fault on the CPU: here an exception.
+    uint32_t data = 0;
+    if (sim_.reg_read(addr - HTX_RASTER_BASE, &data)) fail("bus error on register read", addr);
+    return data;
+  }
   if (in_mem(addr)) {
     uint32_t data = 0;
     if (sim_.mem_read(addr, &data)) fail("bus error on read", addr);
@@ -46,7 +51,8 @@ void RasterSimBus::write(uint32_t addr, uint32_t value) {
   if (addr & 3u) fail("unaligned word write", addr);
   if (in_raster(addr)) {
     if (addr - HTX_RASTER_BASE == offsetof(HTX_RASTER_Type, FIFO)) fifo_words_.push_back(value);
-    sim_.write_reg(addr - HTX_RASTER_BASE, value);
+    // A write the unit refuses (the full FIFO while CTRL.ENABLE is 0) is a store fault on the CPU.
+    if (sim_.reg_write(addr - HTX_RASTER_BASE, value)) fail("bus error on register write", addr);
     return;
   }
   if (in_mem(addr)) {

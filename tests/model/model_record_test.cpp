@@ -19,6 +19,13 @@ TEST(FixedPoint, RoundNearestTiesUp) {
   EXPECT_EQ(round_nearest(-0.5), 0);
   EXPECT_EQ(round_nearest(std::numeric_limits<double>::quiet_NaN()), 0);
   EXPECT_EQ(round_nearest(1e300), INT64_C(4611686018427387904));
+  // Exactly floor(x + 0.5), without rounding x + 0.5 first: just below a half, and past 2^52
+  // (where x + 0.5 rounds to the next even double).
+  EXPECT_EQ(round_nearest(0.49999999999999994), 0);
+  EXPECT_EQ(round_nearest(-0.50000000000000011), -1);
+  EXPECT_EQ(round_nearest(4503599627370497.0), INT64_C(4503599627370497));
+  EXPECT_EQ(round_nearest(-4503599627370497.0), -INT64_C(4503599627370497));
+  EXPECT_EQ(round_nearest(4503599627370495.5), INT64_C(4503599627370496));
   EXPECT_EQ(normalising_exponent(1.0), -1);
   EXPECT_EQ(normalising_exponent(0.5), 0);
   EXPECT_EQ(normalising_exponent(0.001), 9);

@@ -11,6 +11,7 @@
 #include "htx/hal/raster.h"
 #include "htx/hal/sim/fake_bus.hpp"
 #include "htx/hal/sim/system_devices.hpp"
+#include "htx/hal/texture.h"
 #include "htx/hal/timer.h"
 #include "htx/hal/uart.h"
 
@@ -106,12 +107,43 @@ TEST(HalTimer, NowRetriesWhenTheHighWordChangesAndWaitEnds) {
   FakeBus clocked;
   ScopedBus attach2(clocked);
   clocked.on_read(HTX_TIMER_BASE + TIMER_MTIME_LO_Offset, [&] { return static_cast<uint32_t>(clocked.cycles()); });
-  htx::hal::timer_wait(50);
+  clocked.on_read(HTX_TIMER_BASE + TIMER_CTRL_Offset, [] { return 0u; });  // stopped: no wait
+  EXPECT_FALSE(htx::hal::timer_wait(50));
+  EXPECT_LT(clocked.cycles(), 10u);
+  clocked.on_read(HTX_TIMER_BASE + TIMER_CTRL_Offset, [] { return uint32_t{TIMER_CTRL_ENABLE_Msk}; });
+  EXPECT_TRUE(htx::hal::timer_wait(50));
   EXPECT_GE(clocked.cycles(), 50u);
   EXPECT_LT(clocked.cycles(), 100u);
   const uint64_t before = htx::hal::cpu_cycles();
   htx::hal::cpu_idle(1000);
   EXPECT_EQ(htx::hal::cpu_cycles() - before, 1000u);
+}
+
+// texture_check against what the unit builds (CAPS), here the board's: 4 slots, the two 16-bit
+// formats, 2^10 blocks. A slot past them would point another slot's texture, a texel past the
+// memory is a store fault.
+TEST(HalTexture, CheckFollowsTheUnitsCapsAndDescriptorsWaitForTheRasterUnit) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  bus.poke(HTX_TEXTURE_BASE + TEXTURE_CAPS_Offset, (4u << TEXTURE_CAPS_SLOTS_Pos) | (3u << TEXTURE_CAPS_FORMATS_Pos) |
+                                                       (10u << TEXTURE_CAPS_BLOCK_BITS_Pos));
+  using htx::hal::texture_check;
+  EXPECT_EQ(texture_check(3, 0, 5, 5, 0), htx::hal::kTextureOk);
+  EXPECT_EQ(texture_check(4, 0, 5, 5, 0), htx::hal::kTextureBadSlot);
+  EXPECT_EQ(texture_check(0, 0, 5, 5, 1), htx::hal::kTextureOk);
+  EXPECT_EQ(texture_check(0, 0, 5, 5, 2), htx::hal::kTextureBadFormat);  // RGBA8888 not built
+  EXPECT_EQ(texture_check(0, 0, 6, 6, 0), htx::hal::kTextureTooLarge);   // 1,366 blocks of 1,024
+  const uint32_t chain32 = htx::hal::texture_chain_blocks(5, 5);
+  EXPECT_EQ(texture_check(0, 1024 - chain32, 5, 5, 0), htx::hal::kTextureOk);  // ends at the last block
+  EXPECT_EQ(texture_check(0, 1025 - chain32, 5, 5, 0), htx::hal::kTextureTooLarge);
+
+  // The raster unit busy (a textured triangle drawing): the descriptor is not written.
+  bus.poke(kRaster + RASTER_STATUS_Offset, RASTER_STATUS_BUSY_Msk);
+  EXPECT_EQ(htx::hal::texture_set_descriptor(1, 0, 5, 5, 0, 50), htx::hal::kTextureTimeout);
+  EXPECT_TRUE(bus.writes_to(HTX_TEXTURE_BASE + TEXTURE_TEX1_Offset).empty());
+  bus.poke(kRaster + RASTER_STATUS_Offset, 0);
+  EXPECT_EQ(htx::hal::texture_set_descriptor(1, 0, 5, 5, 0, 50), htx::hal::kTextureOk);
+  EXPECT_EQ(bus.writes_to(HTX_TEXTURE_BASE + TEXTURE_TEX1_Offset).size(), 1u);
 }
 
 TEST(HalUart, PutGetFlush) {

@@ -46,6 +46,7 @@ LineStatus read_line(char* buf) {
       fputs("\r\n", stdout);
       buf[n] = '\0';
       if (htx::hal::uart_take_overrun()) return LineStatus::kOverrun;
+      if (htx::hal::uart_take_frame_error()) return LineStatus::kGarbled;
       return beyond > 0 ? LineStatus::kTooLong : LineStatus::kLine;
     }
     if (c == kCtrlC) {

@@ -34,6 +34,12 @@ int main() {
             stdout);
       continue;
     }
+    if (st == console_app::LineStatus::kGarbled) {
+      fputs("error: a byte of this line arrived garbled (no stop bit: is the terminal at the console's baud "
+            "rate?) and was lost; the line was dropped\r\n",
+            stdout);
+      continue;
+    }
     if (st == console_app::LineStatus::kTooLong) {
       printf("error: line longer than %u characters\r\n", static_cast<unsigned>(console_app::kMaxLine));
       continue;

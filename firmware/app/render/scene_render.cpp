@@ -69,6 +69,7 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
 
   htx::render::DrawStatus mesh_status = htx::render::kDrawOk;
   htx::hal::raster_clear_state_error();
+  htx::hal::texture_clear_errors();
   const uint64_t f0 = htx::hal::cpu_cycles();
   const htx::render::FrameStatus st = htx::render::render_frame(
       frame, {kClearColor, kClearDepth, settings.clear}, sc.view_proj, g_draw_meshes, sc.mesh_count, &cache, kMaxPolls, &r.stats,
@@ -80,6 +81,12 @@ DrawResult draw_scene(const SceneData& sc, const DrawSettings& settings) {
   }
   if (htx::hal::raster_state_error()) {
     r.error = "the raster unit reports a state error";
+    return r;
+  }
+  // A format or filter the unit does not build samples as 0: plan_draw refuses both, so this is
+  // the hardware disagreeing with its CAPS.
+  if (htx::hal::texture_errors()) {
+    r.error = "the texture unit reports a format or filter error";
     return r;
   }
   htx::hal::raster_read_counters(&r.counters);

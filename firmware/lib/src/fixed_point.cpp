@@ -7,10 +7,13 @@ int64_t round_nearest(double x) {
   constexpr double kLimit = 4611686018427387904.0;  // 2^62
   if (x >= kLimit) return INT64_C(4611686018427387904);
   if (x <= -kLimit) return -INT64_C(4611686018427387904);
-  const double y = x + 0.5;
-  int64_t t = static_cast<int64_t>(y);  // truncates toward zero
-  if (static_cast<double>(t) > y) --t;  // make it floor for negative non-integers
-  return t;
+  // Beyond 2^52 every double is an integer. Below, floor(x) and x - floor(x) are exact, where
+  // x + 0.5 itself could round (0.49999999999999994 + 0.5 is 1.0, and 2^52 + 1 + 0.5 is 2^52 + 2).
+  constexpr double kIntegral = 4503599627370496.0;  // 2^52
+  if (x >= kIntegral || x <= -kIntegral) return static_cast<int64_t>(x);
+  int64_t t = static_cast<int64_t>(x);  // truncates toward zero
+  if (static_cast<double>(t) > x) --t;  // floor for negative non-integers
+  return x - static_cast<double>(t) >= 0.5 ? t + 1 : t;
 }
 
 int normalising_exponent(double x) {

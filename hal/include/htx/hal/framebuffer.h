@@ -36,6 +36,8 @@ inline uint32_t fb_draw_page_first_pixel() {
   return fb_draw_page() * fb_page_pixels();
 }
 
+// A pixel of the draw page. (x, y) must lie in the page (not checked: this is the checksum's
+// inner loop); past it the index reaches the next page, or beyond the colour window the depth window.
 inline uint16_t fb_read_pixel(uint32_t stride, uint32_t x, uint32_t y) {
   const uint32_t i = fb_draw_page_first_pixel() + y * stride + x;
   const uint32_t word = backend::mem_read32(kFbColorBase + 4u * (i >> 1));

@@ -43,6 +43,8 @@ struct RasterCounters {
 inline void raster_abort() { HTX_RASTER->CTRL = RASTER_CTRL_ENABLE_Msk | RASTER_CTRL_ABORT_Msk; }
 
 // Screen size (1..4096 each) and row stride in pixels; traversal clips every triangle to the size.
+// Not checked here (render_frame checks its viewport first): each field keeps its low 13 bits, so
+// 8192 would be 0, an empty screen.
 inline void raster_configure(uint32_t width, uint32_t height, uint32_t stride) {
   HTX_RASTER->FB_SIZE = ((width << RASTER_FB_SIZE_WIDTH_Pos) & RASTER_FB_SIZE_WIDTH_Msk) |
                         ((height << RASTER_FB_SIZE_HEIGHT_Pos) & RASTER_FB_SIZE_HEIGHT_Msk);

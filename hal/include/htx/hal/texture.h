@@ -9,6 +9,7 @@
 
 #include <stdint.h>
 
+#include "htx/hal/raster.h"
 #include "htx/hal/regs.h"
 
 namespace htx::hal {
@@ -104,22 +105,27 @@ inline uint32_t texture_descriptor_word(uint32_t base_block, uint32_t log2_w, ui
 
 enum TextureStatus : int {
   kTextureOk = 0,
-  kTextureBadSlot = 1,    // slot >= kTexMaxSlots
+  kTextureBadSlot = 1,    // slot >= CAPS.SLOTS (the unit takes slot numbers modulo its count)
   kTextureBadSize = 2,    // log2 side outside 3..8
-  kTextureBadFormat = 3,  // format > 2
+  kTextureBadFormat = 3,  // a format the unit does not build (CAPS.FORMATS)
   kTextureBadBase = 4,    // base block beyond the 16-bit BASE field
-  kTextureTooLarge = 5,   // the chain runs past the 1 MiB window
+  kTextureTooLarge = 5,   // the chain runs past the unit's memory (2^CAPS.BLOCK_BITS blocks, at most the window)
   kTextureTimeout = 6,    // the unit stayed busy
 };
 
-// Checks a texture's placement: the sizes, format, base and that the whole chain fits the window.
+// Checks a texture's placement against what this unit builds (CAPS): the slot, the sizes, the
+// format, the base and that the whole chain fits its memory. The board's unit has 4 slots, 16-bit
+// formats and 1,024 blocks: a slot beyond them would point another slot's texture, and a texel
+// written past the memory ends in a bus error (a store fault).
 inline TextureStatus texture_check(uint32_t slot, uint32_t base_block, uint32_t log2_w, uint32_t log2_h,
                                    uint32_t format) {
-  if (slot >= kTexMaxSlots) return kTextureBadSlot;
+  const TextureCaps caps = texture_caps();
+  if (slot >= kTexMaxSlots || slot >= caps.slots) return kTextureBadSlot;
   if (log2_w < 3 || log2_w > 8 || log2_h < 3 || log2_h > 8) return kTextureBadSize;
-  if (format > 2) return kTextureBadFormat;
+  if (format > 2 || !((caps.formats >> format) & 1u)) return kTextureBadFormat;
   if (base_block > (TEXTURE_TEX0_BASE_Msk >> TEXTURE_TEX0_BASE_Pos)) return kTextureBadBase;
-  if (16u * (base_block + texture_chain_blocks(log2_w, log2_h)) > kTexWindowBytes) return kTextureTooLarge;
+  const uint32_t end = base_block + texture_chain_blocks(log2_w, log2_h);
+  if (16u * end > kTexWindowBytes || (caps.block_bits < 32 && end > (1u << caps.block_bits))) return kTextureTooLarge;
   return kTextureOk;
 }
 
@@ -132,12 +138,14 @@ inline bool texture_wait_idle(uint32_t max_polls) {
   return false;
 }
 
-// Points a slot at a chain (descriptors may only change while the unit is idle: waits for it).
+// Points a slot at a chain. A descriptor may change only while no textured triangle is drawn
+// (TEXn's description): the raster unit's BUSY covers all of a triangle's fragments, the texture
+// unit's can fall between two of them, so both are waited for (up to max_polls polls each).
 inline TextureStatus texture_set_descriptor(uint32_t slot, uint32_t base_block, uint32_t log2_w, uint32_t log2_h,
                                             uint32_t format, uint32_t max_polls) {
   const TextureStatus st = texture_check(slot, base_block, log2_w, log2_h, format);
   if (st != kTextureOk) return st;
-  if (!texture_wait_idle(max_polls)) return kTextureTimeout;
+  if (!raster_wait_idle(max_polls) || !texture_wait_idle(max_polls)) return kTextureTimeout;
   texture_descriptor_reg(slot) = texture_descriptor_word(base_block, log2_w, log2_h, format);
   return kTextureOk;
 }

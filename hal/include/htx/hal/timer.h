@@ -16,12 +16,18 @@ inline uint64_t timer_now() {
   }
 }
 
+// Whether the counter advances (CTRL.ENABLE, set at reset).
+inline bool timer_running() { return (HTX_TIMER->CTRL & TIMER_CTRL_ENABLE_Msk) != 0; }
+
 // Busy-waits until at least `ticks` ticks have passed (each poll is a bus access, so in the host
-// simulation time advances with the polling and the loop ends).
-inline void timer_wait(uint64_t ticks) {
+// simulation time advances with the polling and the loop ends). false at once, without waiting,
+// when the counter is stopped (CTRL.ENABLE = 0): the wait would never end.
+inline bool timer_wait(uint64_t ticks) {
+  if (!timer_running()) return false;
   const uint64_t end = timer_now() + ticks;
   while (timer_now() < end) {
   }
+  return true;
 }
 
 // Cycles of the CPU (the cycle CSR on the SoC, simulated clocks on the host).

@@ -39,6 +39,14 @@ inline bool uart_take_overrun() {
   return true;
 }
 
+// Whether a byte arrived without its stop bit and was dropped since the last call (RX_FRAME_ERR,
+// cleared here): the other end at another baud rate, or noise on the line.
+inline bool uart_take_frame_error() {
+  if (!(HTX_UART->STATUS & UART_STATUS_RX_FRAME_ERR_Msk)) return false;
+  HTX_UART->STATUS = UART_STATUS_RX_FRAME_ERR_Msk;
+  return true;
+}
+
 // Waits until every queued byte has left the shift register (TX_IDLE), polling at most max_polls
 // times; returns false on a timeout.
 inline bool uart_flush(uint32_t max_polls) {

@@ -139,27 +139,40 @@ void RasterSim::idle(uint64_t n) {
 // One request on one port, held until accepted; its response is registered, so it is visible
 // right after the accepting edge.
 static PortResponse run_one(RasterPort& port, const PortRequest& req, bool on_mem, uint64_t& cycles) {
+  // A request may wait while the unit draws a large triangle (a FIFO write behind it: a few million
+  // clocks at most on the test scenes); one never taken is a deadlock, reported, not waited out.
+  constexpr uint64_t kRequestWaitLimit = uint64_t{1} << 26;
   PortResponse r, m;
-  for (;;) {
+  for (uint64_t waited = 0;; ++waited) {
     bool rr = false, mr = false;
     port.settle(on_mem ? PortRequest{} : req, on_mem ? req : PortRequest{}, &rr, &mr);
     const bool accepted = on_mem ? mr : rr;
     port.rise(&r, &m);
     ++cycles;
     if (accepted) break;
-    if (cycles > (uint64_t{1} << 40)) throw std::runtime_error("rtl engine: bus request never accepted");
+    if (waited >= kRequestWaitLimit) throw std::runtime_error("rtl engine: bus request not taken in 2^26 clocks");
   }
   return on_mem ? m : r;
 }
 
 uint32_t RasterSim::read_reg(uint32_t offset) {
-  const PortRequest q = read_at(HTX_RASTER_BASE + offset);
-  return run_one(*port_, q, false, cycles_).rdata;
+  uint32_t data = 0;
+  reg_read(offset, &data);
+  return data;
 }
 
-void RasterSim::write_reg(uint32_t offset, uint32_t value) {
+void RasterSim::write_reg(uint32_t offset, uint32_t value) { reg_write(offset, value); }
+
+bool RasterSim::reg_read(uint32_t offset, uint32_t* data) {
+  const PortRequest q = read_at(HTX_RASTER_BASE + offset);
+  const PortResponse o = run_one(*port_, q, false, cycles_);
+  *data = o.rdata;
+  return o.rsp_err;
+}
+
+bool RasterSim::reg_write(uint32_t offset, uint32_t value) {
   const PortRequest q = write_at(HTX_RASTER_BASE + offset, value);
-  run_one(*port_, q, false, cycles_);
+  return run_one(*port_, q, false, cycles_).rsp_err;
 }
 
 bool RasterSim::mem_read(uint32_t addr, uint32_t* data) {

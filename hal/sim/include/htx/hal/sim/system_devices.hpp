@@ -8,6 +8,8 @@
 #include <deque>
 #include <string>
 
+#include "htx_regs.h"
+
 namespace htx::hal::sim {
 
 class SystemDevices {
@@ -27,7 +29,10 @@ class SystemDevices {
   uint64_t mtime(uint64_t now) const { return now - mtime_offset_; }
   std::string uart_out_;
   std::deque<char> rx_;
-  uint32_t scratch_ = 0, uart_ctrl_ = 0, timer_ctrl_ = 0;
+  uint32_t scratch_ = 0;
+  // The registers' reset values (hw/regs): the divisor for 115200 baud at 12 MHz, the timer running.
+  uint32_t uart_ctrl_ = (UART_CTRL_DIVISOR_Reset << UART_CTRL_DIVISOR_Pos) | (UART_CTRL_LOOPBACK_Reset << UART_CTRL_LOOPBACK_Pos);
+  uint32_t timer_ctrl_ = (TIMER_CTRL_ENABLE_Reset << TIMER_CTRL_ENABLE_Pos) | (TIMER_CTRL_IRQ_ENABLE_Reset << TIMER_CTRL_IRQ_ENABLE_Pos);
   uint64_t mtime_offset_ = 0;
   uint64_t mtimecmp_ = ~uint64_t{0};
   bool exited_ = false;

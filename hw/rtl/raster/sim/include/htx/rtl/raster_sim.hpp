@@ -39,9 +39,14 @@ class RasterSim {
   // Framebuffer and depth memory size in pixels (the 1 MiB depth window: 262144).
   static constexpr uint32_t kFbPixels = 262144;
 
-  // Register access at RASTER (offset from the peripheral base). Each call runs until the response.
+  // Register access at RASTER (offset from the peripheral base). Each call runs until the response
+  // (std::runtime_error if the request is not taken within 2^26 clocks: a deadlock, not a wait).
+  // read_reg and write_reg ignore the response's error flag; reg_read and reg_write return it, as
+  // the CPU sees it (a write to the full FIFO while CTRL.ENABLE is 0, say).
   uint32_t read_reg(uint32_t offset);
   void write_reg(uint32_t offset, uint32_t value);
+  bool reg_read(uint32_t offset, uint32_t* data);
+  bool reg_write(uint32_t offset, uint32_t value);
 
   // Pushes words into the FIFO register back to back, one per clock while the FIFO has room; a
   // full FIFO holds the bus write (back-pressure) and the loop keeps the word presented until it is
