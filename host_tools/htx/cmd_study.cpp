@@ -40,6 +40,7 @@ study::Options make_options(const StudyArgs& a) {
   study::Options o;
   parse_size(a.size, o.width, o.height);
   o.config_name = a.config;
+  o.quick = a.quick;
 #ifdef HTX_HAVE_RTL_ENGINE
   const std::string clocks = a.clocks.empty() ? "rtl" : a.clocks;
 #else
@@ -82,15 +83,18 @@ void run_study(const StudyArgs& a) {
   namespace fs = std::filesystem;
   fs::create_directories(a.out_dir);
   std::vector<study::Result> results;
-  size_t mismatched = 0, not_finite = 0;
+  size_t mismatched = 0, not_finite = 0, unclean = 0;
   for (size_t i = 0; i < points.size(); ++i) {
     const study::Result r = study::run_point(points[i], options);
+    const std::string problems = study::accuracy_problems(r);
     std::cout << "[" << i + 1 << "/" << points.size() << "] " << r.point.sweep << " " << r.point.scene << " "
               << r.point.method << (r.point.param == "tolerance" ? " " + std::to_string(r.point.tolerance) : "")
               << ": max error " << r.max_error << ", " << r.clocks_per_pixel << " clocks/pixel"
-              << (r.mismatch > 0 ? ", FRAME DIFFERS FROM THE MODEL'S" : "") << std::endl;
+              << (r.mismatch > 0 ? ", FRAME DIFFERS FROM THE MODEL'S" : "")
+              << (problems.empty() ? "" : ", NOT A CLEAN MEASUREMENT: " + problems) << std::endl;
     mismatched += r.mismatch > 0 ? 1 : 0;
     not_finite += r.finite ? 0 : 1;
+    unclean += problems.empty() ? 0 : 1;
     results.push_back(r);
   }
 
@@ -121,6 +125,12 @@ void run_study(const StudyArgs& a) {
   if (mismatched)
     throw std::runtime_error(std::to_string(mismatched) + " point(s) where the RTL frame differs from the model's");
   if (not_finite) throw std::runtime_error(std::to_string(not_finite) + " point(s) with a figure that is not finite");
+  // (A point with no pixel compared reports errors of 0; pixels textured in one frame only, or by
+  // another mesh in each, are left out of its errors: study.md lists them.)
+  if (unclean)
+    throw std::runtime_error(std::to_string(unclean) +
+                             " point(s) whose errors are not a clean measurement (no pixel compared, or pixels "
+                             "textured in one frame only or by another mesh): listed in " + md_path);
 }
 
 }  // namespace
@@ -139,7 +149,9 @@ void register_study(CLI::App& app) {
       ->check(CLI::IsMember({"rtl", "estimate"}));
   cmd->add_option("--out-dir", args->out_dir, "directory for study.csv, study.md and the charts")
       ->capture_default_str();
-  cmd->add_flag("--quick", args->quick, "a few points per sweep (the ends and the middle)");
+  cmd->add_flag("--quick", args->quick,
+                "a few points per sweep: the ends and the middle of each swept range, the trade-off on cube at "
+                "1/16 texel (study.md says it was a quick run)");
   cmd->add_flag("--no-charts", args->no_charts, "write the gnuplot scripts without running gnuplot");
   cmd->callback([args] { run_study(*args); });
 }

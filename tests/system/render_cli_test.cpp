@@ -47,30 +47,38 @@ TEST(SystemRenderCli, BoardConfigurationDrawsOnTheBoardGpu) {
 
 // The rtl engine's texel-coordinate errors: the Verilated GPU has no probe, but where its frame is
 // the model's on the same records (colour and depth at every pixel) the model's probe is its
-// frame's, and the figures are those `--engine model` reports for the same options.
+// frame's, and the figures are those `--engine model` reports for the same options; so are
+// DIVFREE's per-pixel step counts, which only the model keeps (CNT_DIVFREE_STEPS is a total).
 TEST(SystemRenderCli, RtlEngineTakesTheModelsProbeWhereItsFrameIsTheModels) {
-  nlohmann::json by_engine[2];
-  for (int e = 0; e < 2; ++e) {
-    const std::string engine = e == 0 ? "rtl" : "model";
-    const std::string metrics = temp_path("probe_" + engine + ".json");
-    const auto r = htx::test::run_program({HTX_BIN, "render", "wsweep:r=10", "--engine", engine, "--config",
-                                           "icebreaker", "--method", "recip_lut", "--size", "80x60", "--out",
-                                           temp_path("probe_" + engine + ".png"), "--metrics", metrics},
-                                          120s);
-    ASSERT_FALSE(r.timed_out);
-    ASSERT_EQ(r.status, 0) << engine << ": " << r.err;
-    by_engine[e] = read_json(metrics);
+  for (const char* method : {"recip_lut", "divfree"}) {
+    nlohmann::json by_engine[2];
+    for (int e = 0; e < 2; ++e) {
+      const std::string engine = e == 0 ? "rtl" : "model";
+      const std::string metrics = temp_path("probe_" + engine + "_" + method + ".json");
+      const auto r = htx::test::run_program({HTX_BIN, "render", "wsweep:r=10", "--engine", engine, "--config",
+                                             "icebreaker", "--method", method, "--size", "80x60", "--out",
+                                             temp_path("probe_" + engine + ".png"), "--metrics", metrics},
+                                            120s);
+      ASSERT_FALSE(r.timed_out);
+      ASSERT_EQ(r.status, 0) << engine << " " << method << ": " << r.err;
+      by_engine[e] = read_json(metrics);
+    }
+    const nlohmann::json& rtl = by_engine[0];
+    const nlohmann::json& model = by_engine[1];
+    ASSERT_EQ(rtl.at("model_mismatch_pixels"), 0) << method;
+    EXPECT_EQ(rtl.at("probe"), "model") << method;
+    EXPECT_GT(rtl.at("compared_pixels").get<uint64_t>(), 1000u) << method;
+    EXPECT_GT(rtl.at("max_texel_error").get<double>(), 0.0) << method;  // the method's error, not a perfect probe
+    for (const char* key : {"max_texel_error", "rms_texel_error", "p999_texel_error", "compared_pixels",
+                            "coverage_diff_pixels", "surface_diff_pixels", "divfree_max_steps", "divfree_mean_steps",
+                            "divfree_cap_hits"})
+      EXPECT_EQ(rtl.at(key), model.at(key)) << method << " " << key;
+    if (std::string(method) == "divfree") {
+      EXPECT_GT(rtl.at("divfree_max_steps").get<uint64_t>(), 0u);
+      EXPECT_GT(rtl.at("divfree_mean_steps").get<double>(), 0.0);
+      EXPECT_EQ(rtl.at("divfree_steps_total"), rtl.at("model_divfree_steps_total"));
+    }
   }
-  const nlohmann::json& rtl = by_engine[0];
-  const nlohmann::json& model = by_engine[1];
-  ASSERT_EQ(rtl.at("model_mismatch_pixels"), 0);
-  EXPECT_EQ(rtl.at("probe"), "model");
-  EXPECT_GT(rtl.at("compared_pixels").get<uint64_t>(), 1000u);
-  EXPECT_GT(rtl.at("max_texel_error").get<double>(), 0.0);  // RECIP_LUT's table error, not a perfect probe
-  for (const char* key :
-       {"max_texel_error", "rms_texel_error", "p999_texel_error", "compared_pixels", "coverage_diff_pixels",
-        "surface_diff_pixels"})
-    EXPECT_EQ(rtl.at(key), model.at(key)) << key;
 }
 
 TEST(SystemRenderCli, BoardConfigurationRefusesAMethodItDoesNotBuild) {

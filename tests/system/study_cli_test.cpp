@@ -44,11 +44,13 @@ TEST(SystemStudyCli, QuickRatioSweepOnTheRtl) {
   const auto column = [&](const std::string& name) {
     return static_cast<size_t>(std::find(header.begin(), header.end(), name) - header.begin());
   };
-  const size_t mismatch = column("mismatch"), clocks = column("clocks"), method = column("method");
+  const size_t mismatch = column("mismatch"), clocks = column("clocks"), method = column("method"),
+               bound_ratio = column("bound_ratio");
   // Every column indexed below is in the header (column() gives header.size() for a missing one).
   ASSERT_LT(mismatch, header.size()) << line;
   ASSERT_LT(clocks, header.size()) << line;
   ASSERT_LT(method, header.size()) << line;
+  ASSERT_LT(bound_ratio, header.size()) << line;
   size_t rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = split(line);
@@ -56,11 +58,38 @@ TEST(SystemStudyCli, QuickRatioSweepOnTheRtl) {
     EXPECT_EQ(f[mismatch], "0") << line;  // the RTL drew the model's frame
     EXPECT_GT(std::stoull(f[clocks]), 1000u) << line;
     EXPECT_NE(f[method], "quadratic");  // the RTL builds no QUADRATIC: such points are left out
+    // Every pixel within the predicted bound of the triangle that drew it.
+    EXPECT_GE(std::stod(f[bound_ratio]), 0.0) << line;
+    EXPECT_LE(std::stod(f[bound_ratio]), 1.0) << line;
     ++rows;
   }
   EXPECT_EQ(rows, 15u);  // 3 ratios x 5 methods
-  EXPECT_TRUE(std::filesystem::exists(dir + "/study.md"));
+  std::ifstream md_file(dir + "/study.md");
+  std::stringstream md;
+  md << md_file.rdbuf();
+  // A quick run says so, first; each breakdown says whether the bound held.
+  EXPECT_EQ(md.str().rfind("**A quick run (`--quick`)", 0), 0u) << md.str();
+  EXPECT_NE(md.str().find("| worst error / bound | bound holds | finite |"), std::string::npos) << md.str();
   EXPECT_GT(std::filesystem::file_size(dir + "/study_ratio.svg"), 1000u);
+}
+
+// A point where no pixel was compared reports errors of 0, which is no result: at 1x1 the pixel
+// centre falls between `wrap`'s panels, and the run lists the points in study.md and fails.
+TEST(SystemStudyCli, APointWithNothingComparedFailsTheRun) {
+  const std::string dir = ::testing::TempDir() + "htx_study_cli_nothing";
+  std::filesystem::remove_all(dir);
+  const auto r = htx::test::run_program({HTX_BIN, "study", "offset", "--quick", "--clocks", "estimate", "--size",
+                                         "1x1", "--out-dir", dir, "--no-charts"},
+                                        120s);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find("15 point(s) whose errors are not a clean measurement"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("NOT A CLEAN MEASUREMENT: no pixel compared"), std::string::npos) << r.out;
+  std::ifstream md_file(dir + "/study.md");
+  std::stringstream md;
+  md << md_file.rdbuf();
+  EXPECT_NE(md.str().find("- offset `wrap:offset=16384` divfree: no pixel compared\n"), std::string::npos)
+      << md.str();
 }
 
 TEST(SystemStudyCli, RefusesUnknownSweepsAndClockSources) {

@@ -5,7 +5,7 @@ set title "Error against the distance from the texture origin (wrap)\nconfig ful
 set key outside right top
 set grid
 set logscale xy
-set xlabel 'largest |u|, |v| (texels)'
+set xlabel 'offset (texels): the repeat panel reaches +offset, the mirror panel -offset'
 set ylabel 'max texel-coordinate error (texels)'
 plot 'study_offset.dat' index 0 using 1:2 with linespoints title 'affine', \
      'study_offset.dat' index 1 using 1:2 with linespoints title 'subdiv4', \

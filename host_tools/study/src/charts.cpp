@@ -147,7 +147,7 @@ std::vector<std::string> write_chart_scripts(const std::string& dir, const std::
   const auto offset = series_of(results, "offset", "", false);
   if (!offset.empty()) {
     sweep_chart(dir, "study_offset", offset, "Error against the distance from the texture origin (wrap)",
-                "largest |u|, |v| (texels)", "", o);
+                "offset (texels): the repeat panel reaches +offset, the mirror panel -offset", "", o);
     scripts.push_back("study_offset.gp");
   }
   const auto subdiv = series_of(results, "subdiv", "", true);

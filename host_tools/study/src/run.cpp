@@ -1,8 +1,12 @@
 // One study point: the model's frame against ref (accuracy), the timer's clocks (speed), and the
 // predicted bound of the methods the triangles were drawn with (AUTO's bounds, docs/auto.md).
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
+#include <stdexcept>
+#include <vector>
 
 #include "htx/fw/auto_scene.h"
 #include "htx/model/geometry.hpp"
@@ -49,19 +53,30 @@ Result run_point(const Point& point, const Options& options) {
     fw::resolve_auto_methods(screen, auto_config, float(point.tolerance));
   }
 
+  // Each textured triangle's predicted bound, by its index in drawing order (PixelProbe::tri).
   const fw::AutoConfig ac = fw::auto_config_of(options.config);
+  std::vector<double> bounds(screen.tris.size(), -1);
   std::map<std::string, int> used;
-  bool textured = false, unbounded = false;
-  double bound = 0;
-  for (const ScreenTri& t : screen.tris) {
+  bool textured = false, unbounded = false, not_finite = false;
+  double largest = 0, first_not_finite = 0;
+  for (size_t i = 0; i < screen.tris.size(); ++i) {
+    const ScreenTri& t = screen.tris[i];
     if (!t.state.textured) continue;
     textured = true;
     ++used[method_name(t.state.method, t.state.subdiv_n)];
     const double b = method_bound(screen, t, ac);
-    if (b < 0 || !std::isfinite(b)) unbounded = true;
-    bound = std::max(bound, b);
+    bounds[i] = b;
+    if (!std::isfinite(b)) {
+      if (!not_finite) first_not_finite = b;
+      not_finite = true;
+    } else if (b < 0) {
+      unbounded = true;
+    } else {
+      largest = std::max(largest, b);
+    }
   }
-  r.bound = textured && !unbounded ? bound : -1;
+  // A bound that is not a number is not "no bound": it is kept, and makes the point not finite.
+  r.bound = not_finite ? first_not_finite : textured && !unbounded ? largest : -1;
   std::ostringstream names;
   for (const auto& [name, count] : used) names << (names.tellp() > 0 ? " " : "") << name << ":" << count;
   r.methods_used = names.str();
@@ -79,6 +94,25 @@ Result run_point(const Point& point, const Options& options) {
   r.surface_diff_pixels = m.surface_diff_pixels;
   r.divfree_cap_hits = m.divfree_cap_hits;
 
+  // Each pixel against the bound of its own triangle, over the pixels the errors are taken over
+  // (compute_metrics: textured in both frames by the same mesh).
+  if (not_finite) {
+    r.bound_ratio = std::numeric_limits<double>::quiet_NaN();
+  } else if (r.bound >= 0 && r.compared_pixels > 0) {
+    double worst = 0;
+    for (size_t i = 0; i < ref.probe.size(); ++i) {
+      const PixelProbe& e = model.probe[i];
+      const PixelProbe& f = ref.probe[i];
+      if (!(e.covered && f.covered) || e.mesh != f.mesh) continue;
+      if (e.tri < 0 || static_cast<size_t>(e.tri) >= bounds.size())
+        throw std::logic_error("study: the model's probe names no triangle of the scene");
+      const double b = bounds[static_cast<size_t>(e.tri)];
+      const double err = texel_error(e, f);
+      worst = std::max(worst, b > 0 ? err / b : err > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+    }
+    r.bound_ratio = worst;
+  }
+
   if (options.timer) {
     const Timing t = options.timer(screen, options.config, model);
     r.clocks = t.clocks;
@@ -92,6 +126,17 @@ Result run_point(const Point& point, const Options& options) {
   r.finite = std::isfinite(r.max_error) && std::isfinite(r.p999_error) && std::isfinite(r.rms_error) &&
              std::isfinite(r.bound) && std::isfinite(r.clocks_per_pixel);
   return r;
+}
+
+std::string accuracy_problems(const Result& r) {
+  std::string out;
+  const auto add = [&out](const std::string& what) { out += (out.empty() ? "" : "; ") + what; };
+  if (r.compared_pixels == 0) add("no pixel compared");
+  if (r.coverage_diff_pixels > 0)
+    add("textured in one frame only at " + std::to_string(r.coverage_diff_pixels) + " pixels");
+  if (r.surface_diff_pixels > 0)
+    add("another mesh in each frame at " + std::to_string(r.surface_diff_pixels) + " pixels");
+  return out;
 }
 
 }  // namespace htx::study

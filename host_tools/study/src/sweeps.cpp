@@ -49,10 +49,11 @@ std::vector<Point> range_points(bool quick) {
   return points;
 }
 
-// wrap's coordinates far from the origin (every wrap mode, tilted panels): the error should not
-// grow with |u|, since the raster unit interpolates coordinates relative to a per-triangle offset.
+// wrap's coordinates far from the origin (every wrap mode, tilted panels; the repeat panel's reach
+// +offset, the mirror panel's -offset): the error should not grow with the offset, since the raster
+// unit interpolates coordinates relative to a per-triangle offset.
 std::vector<Point> offset_points(bool quick) {
-  const std::vector<double> offsets = quick ? std::vector<double>{1, 16384}
+  const std::vector<double> offsets = quick ? std::vector<double>{1, 256, 16384}
                                             : std::vector<double>{1, 16, 256, 1024, 4096, 16384};
   std::vector<Point> points;
   for (double o : offsets)

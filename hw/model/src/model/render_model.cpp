@@ -65,7 +65,8 @@ struct FrameContext {
   Frame& frame;
 };
 
-void draw_record(const fw::TriangleRecord& rec, const TriState& st, Method method, int mesh, FrameContext& fc) {
+void draw_record(const fw::TriangleRecord& rec, const TriState& st, Method method, int mesh, int tri,
+                 FrameContext& fc) {
   const ModelConfig& cfg = fc.cfg;
   Frame& frame = fc.frame;
   Counters& cnt = frame.counters;
@@ -125,6 +126,7 @@ void draw_record(const fw::TriangleRecord& rec, const TriState& st, Method metho
         pr.lod = lod == INT32_MIN ? -64.0 : static_cast<double>(lod) * lod_scale;
         pr.divfree_steps = method == Method::DivFree ? span.divfree_steps[k] : 0;
         pr.mesh = mesh;
+        pr.tri = tri;
       } else {
         frame.probe[idx] = PixelProbe{};  // an untextured fragment hides what was sampled here
       }
@@ -159,7 +161,8 @@ Frame render_model(const ScreenScene& scene, const ModelConfig& cfg) {
   model::SpanCoords span;
   FrameContext fc{scene.textures, cfg, log2_unit, span, frame};
 
-  for (const ScreenTri& tri : scene.tris) {
+  for (size_t i = 0; i < scene.tris.size(); ++i) {
+    const ScreenTri& tri = scene.tris[i];
     ++frame.counters.triangles;
     const TriState& st = tri.state;
     const Method method = st.method == Method::Auto ? model::auto_method(tri, cfg) : st.method;
@@ -169,7 +172,7 @@ Frame render_model(const ScreenScene& scene, const ModelConfig& cfg) {
     const fw::EncodeStatus status = fw::encode_triangle(format, in, &rec);
     if (status == fw::kEncodeBadFormat) throw std::logic_error("model configuration yields a bad record format");
     if (status != fw::kEncodeOk) continue;  // the firmware does not send it: draws nothing
-    draw_record(rec, st, method, tri.mesh, fc);
+    draw_record(rec, st, method, tri.mesh, static_cast<int>(i), fc);
   }
   return frame;
 }
@@ -180,12 +183,13 @@ Frame render_model_records(const RecordScene& scene, const ModelConfig& cfg) {
   const model::Log2Unit log2_unit(cfg.lod_log_index_bits, cfg.lod_frac_bits + 2);
   model::SpanCoords span;
   FrameContext fc{scene.textures, cfg, log2_unit, span, frame};
-  for (const RecordTriangle& tri : scene.tris) {
+  for (size_t i = 0; i < scene.tris.size(); ++i) {
+    const RecordTriangle& tri = scene.tris[i];
     ++frame.counters.triangles;
     if (tri.state.method == Method::Auto)
       throw std::invalid_argument("render_model_records: a record's method must be resolved (not auto)");
     check_state(scene.textures, tri.state, cfg, tri.state.method);
-    draw_record(tri.record, tri.state, tri.state.method, tri.mesh, fc);
+    draw_record(tri.record, tri.state, tri.state.method, tri.mesh, static_cast<int>(i), fc);
   }
   return frame;
 }

@@ -32,8 +32,9 @@ struct Point {
   double tolerance = 0;   // AUTO's tolerance in texels (is_auto_method only)
 };
 
-// The sweeps, in the order they run. `quick` keeps the ends and the middle of each range (for tests
-// and a first look); the full sweeps are what docs/study.md charts.
+// The sweeps, in the order they run. `quick` keeps the ends and the middle of each swept range, and
+// of the trade-off sweep `cube` at 1/16 texel (for tests and a first look); the full sweeps are what
+// docs/study.md charts.
 const std::vector<std::string>& sweep_names();
 // Throws std::invalid_argument naming the accepted sweeps for an unknown name.
 std::vector<Point> sweep_points(const std::string& sweep, bool quick);
@@ -53,6 +54,7 @@ struct Options {
   int width = 160, height = 120;
   Timer timer;               // empty: the model's estimate (docs/model.md §9)
   std::string clock_source = "estimate";
+  bool quick = false;        // the points are sweep_points(..., true): the summary says so
 };
 
 struct Result {
@@ -63,17 +65,29 @@ struct Result {
   uint64_t coverage_diff_pixels = 0;
   uint64_t surface_diff_pixels = 0;  // textured in both by different meshes (not in the errors)
   // The largest predicted bound (AUTO's, docs/auto.md) of the methods the textured triangles were
-  // drawn with; negative when a method has no bound (QUADRATIC) or nothing was textured.
+  // drawn with; negative when a method has no bound (QUADRATIC) or nothing was textured; not finite
+  // (and `finite` false) when a triangle's predicted bound is not.
   double bound = -1;
+  // The largest ratio, over the compared pixels, of a pixel's error to the predicted bound of the
+  // triangle that drew it in the model's frame (PixelProbe::tri): <= 1 where every pixel is within
+  // its own triangle's bound. Negative when some textured triangle has no bound (as `bound`) or no
+  // pixel was compared; NaN when a triangle's bound is not finite; +infinity where a pixel errs
+  // under a bound of 0.
+  double bound_ratio = -1;
   uint64_t clocks = 0, fragments = 0;
   double clocks_per_pixel = 0;  // clocks / fragments (0 when nothing was drawn)
   int64_t mismatch = -1;        // the timer's comparison with the model's frame
   uint64_t divfree_cap_hits = 0;
   std::string methods_used;     // "recip_nr:3 subdiv16:5": triangles per resolved method
-  bool finite = true;           // every figure above is a finite number
+  bool finite = true;           // every figure above is a finite number (bound_ratio aside)
 };
 
 Result run_point(const Point& point, const Options& options);
+
+// What makes a point's accuracy figures not a clean measurement: no pixel compared (its errors of
+// 0 say nothing), pixels textured in one frame only, or by another mesh in each (left out of the
+// errors). Empty when there is none; otherwise e.g. "no pixel compared; coverage differs at 3 pixels".
+std::string accuracy_problems(const Result& r);
 
 // Where a method breaks down along a sweep: the first swept value at which its largest error
 // exceeds `threshold` texels (none: it never does), and whether its predicted bound held at every
@@ -84,7 +98,12 @@ struct Breakdown {
   bool breaks = false;
   double at = 0;               // first value over the threshold, when breaks
   double worst_error = 0;      // largest error over the sweep
-  double worst_bound_ratio = 0;  // largest error / bound over the sweep's points (<= 1: bound holds)
+  // Every point of the sweep had a bound for every textured triangle (false once one has none).
+  bool has_bound = true;
+  // Largest Result::bound_ratio over the sweep's points (per pixel, against the pixel's own
+  // triangle's bound): -1 once a point has no bound; NaN once a point's bound is not finite.
+  double worst_bound_ratio = 0;
+  // Every point had a finite bound for every triangle and every pixel was within its triangle's.
   bool bound_holds = true;
   bool finite = true;
 };
@@ -92,7 +111,9 @@ std::vector<Breakdown> find_breakdowns(const std::vector<Result>& results, doubl
 
 // CSV with a header row; one line per result, in order.
 void write_csv(std::ostream& out, const std::vector<Result>& results);
-// A Markdown summary: per sweep a breakdown table, and the speed/accuracy table of the trade-off sweep.
+// A Markdown summary: per sweep a breakdown table, and the speed/accuracy table of the trade-off
+// sweep; a quick run, the points the timer's frame differs at, and the points with accuracy_problems
+// are said first.
 std::string summary_markdown(const std::vector<Result>& results, const Options& options);
 
 // Writes DIR/<chart>.dat and DIR/<chart>.gp for each chart the results allow, and returns the

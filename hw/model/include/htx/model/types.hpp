@@ -89,6 +89,8 @@ struct PixelProbe {
   double lod = 0;          // level of detail
   uint32_t divfree_steps = 0;
   int mesh = -1;           // the scene mesh of that fragment's triangle (ScreenTri::mesh)
+  int tri = -1;            // that triangle's index in the scene's drawing order (ScreenScene::tris,
+                           // RecordScene::tris); -1 where the engine does not say (ref)
 };
 
 struct Counters {

@@ -5,7 +5,9 @@
 namespace htx::scenes {
 
 Scene make_wrap(SceneParams& p) {
-  const double offset = p.number("offset", 16384, 0, 16384);  // largest |u|, |v| in texels
+  // Texels: the repeat panel's coordinates end at +offset, the mirror panel's start at -offset, the
+  // mixed panel has both; the clamp panel stays at -16..80 (so at small offsets it reaches farthest).
+  const double offset = p.number("offset", 16384, 0, 16384);
   const double tilt = p.number("tilt", 35, 0, 80);           // degrees about the vertical axis
   Scene s;
   s.textures.push_back(gradient_texture(TexFormat::RGB565, 6));
