@@ -16,8 +16,11 @@
 #include "htx/model/texture.hpp"
 #include "htx/render/texture_pack.h"
 #include "htx/render/texture_upload.h"
+#include "doc_texture_layout.hpp"
 
 namespace {
+
+using htx::test::doc_word;
 
 using htx::hal::sim::FakeBus;
 
@@ -102,18 +105,6 @@ TEST(MipChain, EqualsTheModelChainForEveryFormatAndShape) {
       // The levels are not trivially equal: a random image has distinct texels at level 1.
       EXPECT_NE(model.levels[1][0], model.levels[1][1]);
     }
-}
-
-// docs/texture.md's layout written independently of the driver: levels one after the other, each
-// row-major in 2x2 blocks of four consecutive words.
-uint32_t doc_word(uint32_t base, unsigned lw0, unsigned lh0, unsigned level, uint32_t i, uint32_t j) {
-  uint32_t offset = 0;
-  for (unsigned l = 0; l < level; ++l) {
-    const uint32_t w = std::max(1u, (1u << lw0) >> l), h = std::max(1u, (1u << lh0) >> l);
-    offset += std::max(1u, w / 2) * std::max(1u, h / 2);
-  }
-  const uint32_t wl = std::max(1u, (1u << lw0) >> level);
-  return 4 * (base + offset + (j >> 1) * std::max(1u, wl / 2) + (i >> 1)) + 2 * (j & 1) + (i & 1);
 }
 
 TEST(TextureDriver, UploadWritesEveryLevelAtTheDocumentedLayoutThenTheDescriptor) {
