@@ -365,7 +365,7 @@ void cmd_render(char* rest) {
   printf("render %s method %s filter %s triangles %lu sent %lu dropped %lu auto_skipped %lu frame_cycles %lu ", name,
          g_settings.method_text, filter_text(g_settings.draw.filter), static_cast<unsigned long>(g_last.stats.triangles),
          static_cast<unsigned long>(g_last.stats.sent),
-         static_cast<unsigned long>(g_last.stats.encode_errors + g_last.stats.clip_dropped),
+         static_cast<unsigned long>(g_last.stats.dropped()),
          static_cast<unsigned long>(g_last.stats.auto_skipped),
          static_cast<unsigned long>(g_last.frame_cycles));
   render_app::print_raster_figures(g_last.counters);

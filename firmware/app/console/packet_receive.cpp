@@ -81,14 +81,12 @@ bool receive_packets(uint32_t size, uint32_t crc32, uint32_t capacity, const cha
            static_cast<unsigned long>(capacity));
     return false;
   }
-  htx::hal::uart_take_overrun();  // from before the upload: packets have their own checks
-  htx::hal::uart_take_frame_error();
+  htx::hal::uart_clear_rx_errors();  // from before the upload: packets have their own checks
   printf("ready\r\n");
   const bool ok = receive_into_staging(size, crc32, what);
   // Bytes the receive FIFO lost during the transfer were packets', sent again and taken: the flag
   // must not make the line reader drop the next command.
-  htx::hal::uart_take_overrun();
-  htx::hal::uart_take_frame_error();
+  htx::hal::uart_clear_rx_errors();
   return ok;
 }
 

@@ -37,7 +37,7 @@ bool render_scene(const render_app::SceneData& sc) {
   render_app::print_ratio(r.geometry_cycles, r.geometry_vertices);
   printf(" triangles %lu sent %lu dropped %lu clipped %lu culled %lu auto_skipped %lu frame_cycles %lu ",
          static_cast<unsigned long>(r.stats.triangles), static_cast<unsigned long>(r.stats.sent),
-         static_cast<unsigned long>(r.stats.encode_errors + r.stats.clip_dropped),
+         static_cast<unsigned long>(r.stats.dropped()),
          static_cast<unsigned long>(r.stats.clipped), static_cast<unsigned long>(r.stats.culled),
          static_cast<unsigned long>(r.stats.auto_skipped), static_cast<unsigned long>(r.frame_cycles));
   render_app::print_raster_figures(r.counters);

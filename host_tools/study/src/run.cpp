@@ -103,7 +103,7 @@ Result run_point(const Point& point, const Options& options) {
     for (size_t i = 0; i < ref.probe.size(); ++i) {
       const PixelProbe& e = model.probe[i];
       const PixelProbe& f = ref.probe[i];
-      if (!(e.covered && f.covered) || e.mesh != f.mesh) continue;
+      if (!compared_pixel(e, f)) continue;
       if (e.tri < 0 || static_cast<size_t>(e.tri) >= bounds.size())
         throw std::logic_error("study: the model's probe names no triangle of the scene");
       const double b = bounds[static_cast<size_t>(e.tri)];

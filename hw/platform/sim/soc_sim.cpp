@@ -89,7 +89,7 @@ struct SocSim::Impl {
   }
 };
 
-void check_runnable(const ElfImage& elf) {
+std::vector<uint32_t> check_runnable(const ElfImage& elf) {
   const std::vector<uint32_t> words = ram_words(elf, SocSim::kRamBytes);
   if (elf.entry != SocSim::kResetVector)
     throw std::runtime_error("entry point " + hex(elf.entry) + " is not the SoC's reset vector " +
@@ -101,12 +101,13 @@ void check_runnable(const ElfImage& elf) {
       throw std::runtime_error("symbol tohost (" + hex(*t) + ") holds " + hex(words[*t / 4]) +
                                " in the image: the run would end in its first clock");
   }
+  return words;
 }
 
 SocSim::SocSim(const ElfImage& elf, const SimOptions& options, SerialEndpoint* uart,
                std::ostream& console)
     : impl_(std::make_unique<Impl>(options, uart, console)) {
-  check_runnable(elf);  // before the trace file is opened
+  const std::vector<uint32_t> words = check_runnable(elf);  // before the trace file is opened
   Impl& s = *impl_;
   if (!options.trace_path.empty()) s.ctx->traceEverOn(true);
   s.top = std::make_unique<Vhtx_soc_sim_top>(s.ctx.get(), "soc");
@@ -119,7 +120,6 @@ SocSim::SocSim(const ElfImage& elf, const SimOptions& options, SerialEndpoint* u
   }
 
   auto& ram = s.ram();
-  const std::vector<uint32_t> words = ram_words(elf, kRamBytes);
   for (uint32_t i = 0; i < kRamBytes / 4; ++i) ram[i] = words[i];
   if (auto t = elf.symbol("tohost")) s.tohost_word = *t / 4;
 

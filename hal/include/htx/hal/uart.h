@@ -39,6 +39,9 @@ inline bool uart_take_overrun() {
   return true;
 }
 
+// Clears both flags of a dropped received byte (RX_OVERRUN, RX_FRAME_ERR) in one store.
+inline void uart_clear_rx_errors() { HTX_UART->STATUS = UART_STATUS_RX_OVERRUN_Msk | UART_STATUS_RX_FRAME_ERR_Msk; }
+
 // Whether a byte arrived without its stop bit and was dropped since the last call (RX_FRAME_ERR,
 // cleared here): the other end at another baud rate, or noise on the line.
 inline bool uart_take_frame_error() {

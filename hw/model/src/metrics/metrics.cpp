@@ -38,10 +38,8 @@ Metrics compute_metrics(const Frame& engine, const Frame& ref, const MetricsLabe
     const PixelProbe& e = engine.probe[i];
     const PixelProbe& r = ref.probe[i];
     if (e.covered != r.covered) ++m.coverage_diff_pixels;
-    if (!(e.covered && r.covered)) continue;
-    // Another mesh's coordinates are not an error of this one's interpolation.
-    if (e.mesh != r.mesh) {
-      ++m.surface_diff_pixels;
+    if (!compared_pixel(e, r)) {
+      if (e.covered && r.covered) ++m.surface_diff_pixels;  // another mesh in each frame
       continue;
     }
     const double err = texel_error(e, r);

@@ -75,6 +75,8 @@ struct DrawStats {
   uint32_t clip_dropped = 0;  // clipped to more vertices than a polygon holds (a few ulps across)
   uint32_t sent = 0;          // triangles streamed (after clipping, a fan counts per triangle)
   uint32_t auto_skipped = 0;  // AUTO's: RECIP_NR without comparing, where choosing would not pay
+  // Triangles not sent for what they are (the render lines' `dropped`): refused or not held.
+  uint32_t dropped() const { return encode_errors + clip_dropped; }
 };
 
 enum DrawStatus : int {

@@ -52,6 +52,11 @@ struct Metrics {
 
 // Per-pixel texel-coordinate error, as defined for Metrics (engine probe against ref probe).
 double texel_error(const PixelProbe& engine, const PixelProbe& ref);
+// Whether a pixel's texel error counts (compute_metrics' compared_pixels): textured in both frames,
+// by the same mesh (another mesh's coordinates are not an error of this one's interpolation).
+inline bool compared_pixel(const PixelProbe& engine, const PixelProbe& ref) {
+  return engine.covered && ref.covered && engine.mesh == ref.mesh;
+}
 
 // Throws std::invalid_argument when the frames' sizes differ or a frame is malformed.
 Metrics compute_metrics(const Frame& engine, const Frame& ref, const MetricsLabels& labels);

@@ -70,8 +70,9 @@ const char* to_string(StopReason r);
 // Checks that `elf` can run on the SoC, so that a tool can refuse it before it opens anything:
 // every segment in RAM, the entry point at the reset vector (the core starts there, whatever the
 // ELF says), and a `tohost` symbol, if there is one, on a RAM word that is zero in the image (a
-// non-zero one would end the run in its first clock). Throws std::runtime_error saying which.
-void check_runnable(const ElfImage& elf);
+// non-zero one would end the run in its first clock). Throws std::runtime_error saying which;
+// returns the RAM's words as loaded.
+std::vector<uint32_t> check_runnable(const ElfImage& elf);
 
 class SocSim {
  public:
