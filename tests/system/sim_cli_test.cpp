@@ -234,6 +234,18 @@ TEST(SystemSimCli, AFailedOutputStillReportsTheRunAndWritesTheOthers) {
   EXPECT_EQ(read_file(sig), "deadbeef\n00000000\n12345678\nfffffff9\n");
 }
 
+// The firmware's output and the JSON go to standard output: when it cannot be written (here
+// /dev/full), the run is reported on stderr and the status is 1, not the firmware's 0.
+TEST(SystemSimCli, AStandardOutputThatCannotBeWrittenIsStatusOne) {
+  const std::string command = std::string("exec '") + HTX_BIN + "' sim --elf '" + HTX_FIRMWARE_DIR +
+                              "/hello.elf' --json --max-cycles 5000000 >/dev/full";
+  const auto r = htx::test::run_program({"/bin/sh", "-c", command}, 60s);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("exit, exit code 0"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("standard output could not be written"), std::string::npos) << r.err;
+}
+
 // SIGINT ends the run as the cycle limit does: the summary, a whole trace, status 130.
 TEST(SystemSimCli, AnInterruptEndsTheRunAndClosesTheTrace) {
   const std::string trace = temp_path("interrupted.fst");

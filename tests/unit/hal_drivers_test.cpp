@@ -244,6 +244,18 @@ TEST(HalVideo, PageAndEnableKeepEachOther) {
   EXPECT_EQ(htx::hal::video_pages(), 3u);
 }
 
+// The control registers start at the hardware's reset values (hw/regs), as the firmware finds them
+// on the SoC: the UART at 115200 baud from 12 MHz (divisor 104), no loopback; the timer counting.
+TEST(HalSystemDevices, ControlRegistersStartAtTheirResetValues) {
+  htx::hal::sim::SystemDevices d;
+  const uint32_t uart_ctrl = d.read(HTX_UART_BASE + UART_CTRL_Offset, 0);
+  EXPECT_EQ((uart_ctrl & UART_CTRL_DIVISOR_Msk) >> UART_CTRL_DIVISOR_Pos, 104u);
+  EXPECT_EQ(uart_ctrl & UART_CTRL_LOOPBACK_Msk, 0u);
+  const uint32_t timer_ctrl = d.read(HTX_TIMER_BASE + TIMER_CTRL_Offset, 0);
+  EXPECT_NE(timer_ctrl & TIMER_CTRL_ENABLE_Msk, 0u);
+  EXPECT_EQ(timer_ctrl & TIMER_CTRL_IRQ_ENABLE_Msk, 0u);
+}
+
 TEST(HalSystemDevices, TimerFollowsTheClockUartCollectsBytes) {
   htx::hal::sim::SystemDevices d;
   EXPECT_EQ(d.read(HTX_TIMER_BASE + TIMER_MTIME_LO_Offset, 1234), 1234u);
