@@ -193,6 +193,7 @@ struct GrabArgs : PortArgs {
 };
 
 void run_grab(const GrabArgs& a) {
+  require_given_path(a.out, "--out");
   require_output_dir(a.out);
   console::SerialPort port(a.port, a.baud);
   console::ConsoleClient client(port, timeout_of(a));

@@ -29,23 +29,30 @@ struct LoaderCommand {
   std::vector<std::string> argv;
   const char* package;
 };
+// The bitstream as the loader's argument: a relative path that starts with '-' would be read as
+// one of its options.
+std::string bitstream_argument(const std::string& path) { return path.rfind('-', 0) == 0 ? "./" + path : path; }
+
 LoaderCommand loader_command(const FlashArgs& a) {
+  const std::string bitstream = bitstream_argument(a.bitstream);
   if (a.board == "ulx3s") {
     LoaderCommand c{{a.loader.empty() ? "openFPGALoader" : a.loader, "-b", "ulx3s"}, "openfpgaloader"};
     if (a.to_flash) c.argv.push_back("-f");
-    c.argv.push_back(a.bitstream);
+    c.argv.push_back(bitstream);
     return c;
   }
   if (a.board == "icebreaker") {  // iceprog writes the flash unless told -S (the FPGA's SRAM)
     LoaderCommand c{{a.loader.empty() ? "iceprog" : a.loader}, "fpga-icestorm"};
     if (!a.to_flash) c.argv.push_back("-S");
-    c.argv.push_back(a.bitstream);
+    c.argv.push_back(bitstream);
     return c;
   }
   throw std::runtime_error("no bitstream flow for board " + a.board);
 }
 
 int run_flash(const FlashArgs& a) {
+  if (!std::filesystem::is_regular_file(a.bitstream))
+    throw std::runtime_error(a.bitstream + ": not a file (a bitstream is read from one)");
   if (std::filesystem::file_size(a.bitstream) == 0) throw std::runtime_error(a.bitstream + " is empty");
   const LoaderCommand command = loader_command(a);
   const std::vector<std::string>& argv = command.argv;
@@ -56,8 +63,10 @@ int run_flash(const FlashArgs& a) {
 
   const ChildStatus status = run_child(argv);
   if (status.spawn_error != 0) {
-    throw std::runtime_error("cannot run " + argv[0] + " (" + std::strerror(status.spawn_error) +
-                             "); install it with: apt-get install " + command.package);
+    // The advice fits the default loaders only: a --loader program is the user's own.
+    const std::string advice =
+        a.loader.empty() ? "; install it with: apt-get install " + std::string(command.package) : "";
+    throw std::runtime_error("cannot run " + argv[0] + " (" + std::strerror(status.spawn_error) + ")" + advice);
   }
   if (status.succeeded()) {
     std::cout << "htx flash: loaded " << a.bitstream << (a.to_flash ? " into the board's flash" : " into the FPGA")
@@ -91,7 +100,7 @@ void register_flash(CLI::App& app) {
     } catch (const std::exception& e) {
       std::cerr << "htx flash: " << e.what() << "\n";
     }
-    std::exit(status);
+    std::exit(status_after_output("htx flash", status));
   });
 }
 

@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "htx/model/file_out.hpp"
+#include "output_path.hpp"
 
 #if __has_include("htx/sim/elf_image.hpp")
 #define HTX_HAVE_ELF_IMAGE 1
@@ -29,6 +30,9 @@ struct ImageArgs {
 
 int run_image(const ImageArgs& a) {
 #if HTX_HAVE_ELF_IMAGE
+  require_given_path(a.out, "-o");
+  require_output_files({&a.out});
+  require_not_input(a.out, a.elf);
   const sim::ElfImage elf = sim::load_elf(a.elf);
   // The core starts at its reset vector, not at the ELF's entry point: an image whose entry is
   // elsewhere would run from the wrong place.
@@ -67,7 +71,7 @@ void register_image(CLI::App& app) {
     } catch (const std::exception& e) {
       std::cerr << "htx image: " << e.what() << "\n";
     }
-    std::exit(status);
+    std::exit(status_after_output("htx image", status));
   });
 }
 

@@ -61,8 +61,24 @@ constexpr const char* kEngines = "ref, model, rtl, soc or board";
 constexpr const char* kEngines = "ref, model, soc or board";
 #endif
 
+}  // namespace
+
+void require_render_outputs(const RenderArgs& a, const Scene& scene) {
+  for (const std::string* out : {&a.out, &a.metrics}) {
+    for (const std::string& source : scene.sources) require_not_input(*out, source);
+    if (!a.firmware.empty()) require_not_input(*out, a.firmware);
+  }
+}
+
+namespace {
+
 void run_render(const RenderArgs& given) {
+  require_given_path(given.out, "--out");
   require_output_files({&given.out, &given.metrics});
+  // --tolerance bounds AUTO's choice; with another method for every triangle it would do nothing.
+  if (given.tolerance_given && !given.method.empty() && parse_method(given.method).method != Method::Auto)
+    throw std::invalid_argument("--tolerance is AUTO's (--method auto, or a scene's own AUTO triangles); --method " +
+                                given.method + " draws every triangle without it");
   if (given.engine == "soc" || given.engine == "board") return render_on_console(given);
 #ifdef HTX_HAVE_RTL_ENGINE
   const bool known = given.engine == "ref" || given.engine == "model" || given.engine == "rtl";
@@ -86,6 +102,7 @@ void run_render(const RenderArgs& given) {
   int width = 0, height = 0;
   parse_size(a.size, width, height);
   const Scene scene = load_scene(a.scene);
+  require_render_outputs(a, scene);
   for (const std::string& note : scene.notes) std::cerr << "htx: " << note << "\n";
   ScreenScene screen = prepare_screen_scene(scene, width, height);
   if (a.untextured)
@@ -204,6 +221,7 @@ void register_render(CLI::App& app) {
   cmd->callback([args, cmd] {
     args->baud_given = cmd->count("--baud") > 0;
     args->timeout_given = cmd->count("--timeout") > 0;
+    args->tolerance_given = cmd->count("--tolerance") > 0;
     run_render(*args);
   });
 }

@@ -1,4 +1,5 @@
 // htx sim: run a firmware ELF on the whole SoC in Verilator.
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -154,22 +156,46 @@ void write_screen(const sim::VideoCapture& screen, const std::string& path) {
 }
 
 // Every picture the screen showed, once each: a whole frame equal to the one written before it
-// is skipped, so a still screen writes one file and each flip of the frame shown one more.
+// is skipped, so a still screen writes one file and each flip of the frame shown one more. The
+// directory's screen_NNNN.png files from an earlier run are removed first, so that the set is this
+// run's. A picture that cannot be written (a full disk) ends the recording, not the run: the error
+// is kept for the run's report (error()).
 class ScreenRecorder {
  public:
-  explicit ScreenRecorder(std::string dir) : dir_(std::move(dir)) { std::filesystem::create_directories(dir_); }
+  explicit ScreenRecorder(std::string dir) : dir_(std::move(dir)), error_(std::make_shared<std::string>()) {
+    namespace fs = std::filesystem;
+    fs::create_directories(dir_);
+    for (const fs::directory_entry& e : fs::directory_iterator(dir_))
+      if (is_screen_picture_name(e.path().filename().string()) && e.is_regular_file()) fs::remove(e.path());
+  }
   void operator()(const sim::VideoCapture& screen) {
-    if (screen.last_frame() == last_) return;
+    if (!error_->empty() || screen.last_frame() == last_) return;
     last_ = screen.last_frame();
     char name[32];
     std::snprintf(name, sizeof name, "screen_%04u.png", written_++);
-    write_png((std::filesystem::path(dir_) / name).string(), image_of_screen(screen));
+    try {
+      write_png((std::filesystem::path(dir_) / name).string(), image_of_screen(screen));
+    } catch (const std::exception& e) {
+      *error_ = std::string(e.what()) + " (--screen-frames: no more pictures written)";
+    }
   }
+  // Shared by the copies the simulation holds: empty while every picture was written.
+  std::shared_ptr<const std::string> error() const { return error_; }
 
  private:
+  // screen_ and four or more digits, then .png: the names operator() writes.
+  static bool is_screen_picture_name(const std::string& n) {
+    constexpr std::string_view kPrefix = "screen_", kSuffix = ".png";
+    if (n.size() < kPrefix.size() + 4 + kSuffix.size()) return false;
+    if (n.compare(0, kPrefix.size(), kPrefix) != 0) return false;
+    if (n.compare(n.size() - kSuffix.size(), kSuffix.size(), kSuffix) != 0) return false;
+    const std::string digits = n.substr(kPrefix.size(), n.size() - kPrefix.size() - kSuffix.size());
+    return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+  }
   std::string dir_;
   std::vector<uint32_t> last_;
   unsigned written_ = 0;
+  std::shared_ptr<std::string> error_;
 };
 
 // Whether the last byte written to stdout (by SIM_PUTCHAR or a stdio UART) left a line open, so
@@ -297,9 +323,15 @@ int run_sim(const SimArgs& a) {
   }
   const SignatureRange signature = a.signature.empty() ? SignatureRange{} : signature_range(elf, a.elf);
   require_output_files({&a.signature, &a.screen, &a.frame, &a.trace});
-  for (const std::string* out : {&a.signature, &a.screen, &a.frame, &a.trace})
+  for (const std::string* out : {&a.signature, &a.screen, &a.frame, &a.trace}) {
     if (!out->empty() && same_output_file(*out, a.elf))
       throw std::runtime_error(*out + ": is the ELF being run; an output would overwrite it");
+    if (!out->empty() && !a.screen_frames.empty() && same_output_file(*out, a.screen_frames))
+      throw std::runtime_error(*out + ": is also --screen-frames' directory");
+  }
+  if (!a.screen_frames.empty() && std::filesystem::exists(a.screen_frames) &&
+      !std::filesystem::is_directory(a.screen_frames))
+    throw std::runtime_error(a.screen_frames + ": --screen-frames needs a directory, and this is a file");
   require_trace_path(a.trace);
 
   sim::SimOptions opt;
@@ -310,7 +342,12 @@ int run_sim(const SimArgs& a) {
   opt.capture_screen = !a.screen.empty() || !a.screen_frames.empty();
   opt.profile_pcs = a.hotspots;
   opt.stop = &g_stop_requested;
-  if (!a.screen_frames.empty()) opt.on_screen_frame = ScreenRecorder(a.screen_frames);
+  std::shared_ptr<const std::string> screen_frames_error;
+  if (!a.screen_frames.empty()) {
+    ScreenRecorder recorder(a.screen_frames);
+    screen_frames_error = recorder.error();
+    opt.on_screen_frame = std::move(recorder);
+  }
 
   StdoutTail tail;
   TrackedStdout putchar_buf(tail);
@@ -343,6 +380,7 @@ int run_sim(const SimArgs& a) {
       output_errors.push_back(e.what());
     }
   };
+  if (screen_frames_error && !screen_frames_error->empty()) output_errors.push_back(*screen_frames_error);
   write_output(a.signature, [&] { write_signature(soc, signature, a.signature); });
   write_output(a.screen, [&] { write_screen(*soc.screen(), a.screen); });
   const std::vector<uint16_t> frame = soc.read_frame(frame_w, frame_h);
@@ -447,7 +485,8 @@ void register_sim(CLI::App& app) {
                   "screen shows; black while the firmware has not turned the video on) as a PNG");
   cmd->add_option("--screen-frames", args->screen_frames,
                   "Write every picture the video scan-out showed, once each (a frame equal to the one "
-                  "before it is skipped), as DIR/screen_NNNN.png");
+                  "before it is skipped), as DIR/screen_NNNN.png; DIR's screen_NNNN.png from an earlier run "
+                  "are removed first");
   cmd->add_option("--frame-size", args->frame_size,
                   "Size of the frame in the colour window, WIDTHxHEIGHT with stride WIDTH (default 160x120)");
   cmd->add_flag("--profile", args->profile,
@@ -467,12 +506,7 @@ void register_sim(CLI::App& app) {
       std::cerr << "htx sim: " << e.what() << "\n";
       status = 1;
     }
-    std::cout.flush();
-    if (!std::cout || std::ferror(stdout)) {
-      std::cerr << "htx sim: standard output could not be written\n";
-      if (status == 0) status = 1;
-    }
-    std::exit(status);  // the command's status is the firmware's exit code
+    std::exit(status_after_output("htx sim", status));  // the firmware's exit code
   });
 }
 

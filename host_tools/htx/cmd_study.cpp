@@ -17,6 +17,7 @@
 #include "htx/model/file_out.hpp"
 #include "htx/model/names.hpp"
 #include "htx/study/study.hpp"
+#include "output_path.hpp"
 #if __has_include("htx/rtl/raster_engine.hpp")
 #include "htx/rtl/raster_engine.hpp"
 #define HTX_HAVE_RTL_ENGINE 1
@@ -82,6 +83,10 @@ void run_study(const StudyArgs& a) {
 
   namespace fs = std::filesystem;
   fs::create_directories(a.out_dir);
+  // The tables are checked before the points run (a full study is minutes of work); the charts'
+  // files are the scripts' own and gnuplot reports them.
+  const std::string csv_path = a.out_dir + "/study.csv", md_path = a.out_dir + "/study.md";
+  require_output_files({&csv_path, &md_path});
   std::vector<study::Result> results;
   size_t mismatched = 0, not_finite = 0, unclean = 0;
   for (size_t i = 0; i < points.size(); ++i) {
@@ -98,7 +103,6 @@ void run_study(const StudyArgs& a) {
     results.push_back(r);
   }
 
-  const std::string csv_path = a.out_dir + "/study.csv", md_path = a.out_dir + "/study.md";
   std::ostringstream csv;
   study::write_csv(csv, results);
   write_file(csv_path, csv.str());

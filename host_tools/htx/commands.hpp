@@ -2,6 +2,8 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
+#include <iostream>
 
 namespace htx {
 
@@ -10,5 +12,17 @@ namespace htx {
 #define HTX_DECLARE_COMMAND(name) void register_##name(CLI::App& app);
 #include "htx_commands.inc"
 #undef HTX_DECLARE_COMMAND
+
+// A command's status once its standard output is flushed: what it printed is its result, so an
+// output that could not be written (a full disk, a closed pipe's reader) is a failure, status 1,
+// whatever the command's own status was. `who` starts the message ("htx sim").
+inline int status_after_output(const char* who, int status) {
+  std::cout.flush();
+  if (!std::cout || std::ferror(stdout) || std::fflush(stdout) != 0) {
+    std::cerr << who << ": standard output could not be written\n";
+    if (status == 0) status = 1;
+  }
+  return status;
+}
 
 }  // namespace htx

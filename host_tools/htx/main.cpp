@@ -15,6 +15,13 @@ int main(int argc, char** argv) {
 #undef HTX_DECLARE_COMMAND
   try {
     app.parse(argc, argv);
+  } catch (const CLI::RequiredError& e) {
+    // A first word that names no subcommand: CLI11 only says one is required.
+    if (argc > 1 && argv[1][0] != '-' && app.get_subcommands().empty()) {
+      std::cerr << "htx: no command '" << argv[1] << "' (htx --help lists them)\n";
+      return 2;
+    }
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const CLI::ParseError& e) {
     // --help and --version: status 0. A command line htx cannot take: its message, and status 2
     // for every kind (CLI11's own codes, 105 to 109, would read as a firmware's exit code from
@@ -22,7 +29,8 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   } catch (const std::exception& e) {
     std::cerr << "htx: " << e.what() << "\n";
-    return 1;
+    return htx::status_after_output("htx", 1);
   }
-  return 0;
+  const auto ran = app.get_subcommands();
+  return htx::status_after_output(ran.empty() ? "htx" : ("htx " + ran.front()->get_name()).c_str(), 0);
 }

@@ -29,6 +29,18 @@ inline bool same_output_file(const std::string& a, const std::string& b) {
   return fs::weakly_canonical(fs::absolute(a)) == fs::weakly_canonical(fs::absolute(b));
 }
 
+// A required output given as an empty path (`--out ""`): refused, where require_output_dir reads
+// empty as "not asked for".
+inline void require_given_path(const std::string& path, const std::string& option) {
+  if (path.empty()) throw std::runtime_error(option + ": an empty path is no file to write");
+}
+
+// An output that is one of the command's own input files would destroy it: refused.
+inline void require_not_input(const std::string& output, const std::string& input) {
+  if (!output.empty() && same_output_file(output, input))
+    throw std::runtime_error(output + ": is the input '" + input + "'; writing it would destroy it");
+}
+
 // Each of `paths` (empty: not asked for) as above, and no two of them one file.
 inline void require_output_files(std::initializer_list<const std::string*> paths) {
   for (const std::string* path : paths) require_output_dir(*path);

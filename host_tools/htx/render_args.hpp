@@ -25,7 +25,14 @@ struct RenderArgs {
   double timeout_s = 120;
   bool baud_given = false;     // --baud given (board only; soc and the host engines refuse it)
   bool timeout_given = false;  // --timeout given (the host engines refuse it)
+  bool tolerance_given = false;  // --tolerance given (refused with a --method other than auto)
 };
+
+struct Scene;
+
+// --out and --metrics checked before the render: a path given and writable, and none of them one
+// of the scene's own files (its OBJ, material libraries, textures) or the --firmware ELF.
+void require_render_outputs(const RenderArgs& a, const Scene& scene);
 
 // `--engine soc` and `--engine board` (docs/engines.md): the scene uploaded to the console
 // firmware on the simulated SoC or on a board, drawn there and downloaded; the PNG and the

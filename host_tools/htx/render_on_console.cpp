@@ -82,7 +82,7 @@ void switch_line(console::ConsoleClient& client, const ConsoleDraw& draw, unsign
 
 std::string console_firmware(const RenderArgs& a) {
   const std::string elf = a.firmware.empty() ? std::string(HTX_PATH_FIRMWARE_DIR) + "/console.elf" : a.firmware;
-  if (!std::filesystem::exists(elf))
+  if (!std::filesystem::is_regular_file(elf))
     throw std::invalid_argument("no console firmware at '" + elf +
                                 "' (build the `firmware` target, or give --firmware FILE)");
   return elf;
@@ -159,6 +159,7 @@ void render_on_console(const RenderArgs& a) {
 
   // (The scene's notes come with the upload's, as a step.)
   const Scene scene = load_scene(a.scene);
+  require_render_outputs(a, scene);
   // For ref: on the background the console draws on.
   const auto screen_of = [&a](const Scene& sc) {
     ScreenScene s = prepare_screen_scene(sc, kScreenWidth, kScreenHeight);

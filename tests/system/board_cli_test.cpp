@@ -112,7 +112,14 @@ TEST(HtxFlash, ReportsALoaderThatFailsOrIsMissingAndAnEmptyFile) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("failed (exit status 3)"), std::string::npos) << r.err;
 
+  // A loader of the user's own that is missing: no package advice (it would be wrong); the
+  // default loader missing from PATH: the package that brings it.
   r = htx::test::run_program({HTX_BIN, "flash", bit, "--loader", "/nonexistent/openFPGALoader"}, 60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("cannot run /nonexistent/openFPGALoader"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("apt-get"), std::string::npos) << r.err;
+  r = htx::test::run_program(
+      {"/bin/sh", "-c", std::string("PATH=/nonexistent exec '") + HTX_BIN + "' flash '" + bit + "'"}, 60s);
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("apt-get install openfpgaloader"), std::string::npos) << r.err;
 
@@ -124,6 +131,43 @@ TEST(HtxFlash, ReportsALoaderThatFailsOrIsMissingAndAnEmptyFile) {
 
   r = htx::test::run_program({HTX_BIN, "flash", bit, "--board", "tangnano", "--dry-run"}, 60s);
   EXPECT_NE(r.status, 0);
+
+  r = htx::test::run_program({HTX_BIN, "flash", "/dev/null", "--dry-run"}, 60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("/dev/null: not a file"), std::string::npos) << r.err;
+}
+
+// A bitstream whose relative path starts with '-' reaches the loader as a path, not an option.
+TEST(HtxFlash, ABitstreamNamedLikeAnOptionIsPassedAsAPath) {
+  const std::string dir = ::testing::TempDir() + "htx_flash_dash";
+  mkdir(dir.c_str(), 0755);
+  std::ofstream(dir + "/-v.bit") << "bitstream bytes";
+  const std::string loader = fake_loader("htx_fake_loader_dash", 0);
+  const auto r = htx::test::run_program(
+      {"/bin/sh", "-c",
+       "cd '" + dir + "' && exec '" + HTX_BIN + "' flash --board icebreaker --loader '" + loader + "' -- -v.bit"},
+      60s);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_file(loader + ".args"), "-S\n./-v.bit\n");
+}
+
+// htx image writes its output only where it would not destroy the ELF it reads, and refuses an
+// empty output path, before it reads anything.
+TEST(HtxImage, RefusesToWriteOverItsElfOrToAnEmptyPath) {
+  const std::string elf = ::testing::TempDir() + "htx_image_self.elf";
+  {
+    std::ifstream in(HTX_FIRMWARE_DIR "/hello.elf", std::ios::binary);
+    std::ofstream out(elf, std::ios::binary);
+    out << in.rdbuf();
+  }
+  const std::string before = read_file(elf);
+  auto r = htx::test::run_program({HTX_BIN, "image", elf, "-o", elf}, 60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("writing it would destroy it"), std::string::npos) << r.err;
+  EXPECT_EQ(read_file(elf), before);
+  r = htx::test::run_program({HTX_BIN, "image", elf, "-o", ""}, 60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("-o: an empty path"), std::string::npos) << r.err;
 }
 
 }  // namespace

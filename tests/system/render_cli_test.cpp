@@ -230,4 +230,67 @@ TEST(SystemRenderCli, AutoReportsWhatItGaveTheTriangles) {
   EXPECT_FALSE(read_json(metrics).contains("auto"));
 }
 
+// An output over one of the command's own input files (the OBJ, its material library, its
+// texture) is refused before anything is drawn, and the file stays as it was.
+TEST(SystemRenderCli, AnOutputOverTheScenesOwnFilesIsRefused) {
+  namespace fs = std::filesystem;
+  const fs::path dir = temp_path("own_files");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const char* name : {"quad.obj", "quad.mtl", "checker8x16.png"})
+    fs::copy_file(fs::path(HTX_TEST_DATA_DIR) / name, dir / name);
+  const std::string obj = (dir / "quad.obj").string();
+  for (const char* name : {"quad.obj", "quad.mtl", "checker8x16.png"}) {
+    const std::string file = (dir / name).string();
+    const auto size = fs::file_size(file);
+    for (const char* option : {"--out", "--metrics"}) {
+      std::vector<std::string> args = {HTX_BIN, "render", obj, "--engine", "model"};
+      if (std::string(option) == "--out") {
+        args.insert(args.end(), {"--out", file});
+      } else {
+        args.insert(args.end(), {"--out", (dir / "frame.png").string(), "--metrics", file});
+      }
+      const auto r = htx::test::run_program(args, 60s);
+      ASSERT_FALSE(r.timed_out);
+      EXPECT_EQ(r.status, 1) << name << " " << option;
+      EXPECT_NE(r.err.find("writing it would destroy it"), std::string::npos) << r.err;
+      EXPECT_EQ(fs::file_size(file), size) << name << " " << option;
+    }
+  }
+  EXPECT_FALSE(fs::exists(dir / "frame.png"));
+}
+
+// Words htx cannot use are refused with a message that says what is wrong: an unknown command, an
+// empty output path, --tolerance beside a method that has none, parameters on an OBJ file, a
+// directory given as an OBJ; and a standard output that cannot be written is status 1.
+TEST(SystemRenderCli, MistakesAreNamed) {
+  auto r = htx::test::run_program({HTX_BIN, "bogus"}, 60s);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("no command 'bogus'"), std::string::npos) << r.err;
+  r = htx::test::run_program({HTX_BIN, "render", "cube", "--out", ""}, 60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("--out: an empty path"), std::string::npos) << r.err;
+  r = htx::test::run_program({HTX_BIN, "render", "cube", "--engine", "model", "--method", "affine", "--tolerance",
+                              "0.5", "--out", temp_path("tolerance.png")},
+                             60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("--tolerance is AUTO's"), std::string::npos) << r.err;
+  r = htx::test::run_program({HTX_BIN, "render", "cube", "--engine", "model", "--method", "auto", "--tolerance",
+                              "0.5", "--out", temp_path("tolerance.png")},
+                             60s);
+  EXPECT_EQ(r.status, 0) << r.err;
+  r = htx::test::run_program(
+      {HTX_BIN, "render", std::string(HTX_TEST_DATA_DIR) + "/quad.obj:yaw=3", "--out", temp_path("params.png")}, 60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("an OBJ file takes no parameters"), std::string::npos) << r.err;
+  const std::string dir_obj = temp_path("a_dir.obj");
+  std::filesystem::create_directories(dir_obj);
+  r = htx::test::run_program({HTX_BIN, "render", dir_obj, "--out", temp_path("dir_obj.png")}, 60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("a_dir.obj': not a file"), std::string::npos) << r.err;
+  r = htx::test::run_program({"/bin/sh", "-c", std::string("exec '") + HTX_BIN + "' scenes >/dev/full"}, 60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("htx scenes: standard output could not be written"), std::string::npos) << r.err;
+}
+
 }  // namespace

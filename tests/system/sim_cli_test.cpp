@@ -10,6 +10,7 @@
 
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <thread>
@@ -244,6 +245,65 @@ TEST(SystemSimCli, AStandardOutputThatCannotBeWrittenIsStatusOne) {
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("exit, exit code 0"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("standard output could not be written"), std::string::npos) << r.err;
+}
+
+// --screen-frames: the directory's pictures from an earlier run are removed first (the set is this
+// run's); a picture that cannot be written ends the recording, not the run (the run is reported,
+// the other outputs written, status 1); a path that is a file is refused before the run.
+TEST(SystemSimCli, ScreenFramesAreThisRunsAndAFailedOneDoesNotLoseTheRun) {
+  namespace fs = std::filesystem;
+  const std::string dir = temp_path("screen_frames");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir + "/screen_0005.png") << "stale";
+  std::ofstream(dir + "/notes.txt") << "kept";
+  // The console turns the video on at boot; the first whole frame ends after 420,000 clocks.
+  const std::vector<std::string> run = {HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/console.elf", "--max-cycles",
+                                        "1000000", "--json"};
+  auto args = run;
+  args.insert(args.end(), {"--screen-frames", dir});
+  auto r = htx::test::run_program(args, 120s);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 124) << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/screen_0000.png"));
+  EXPECT_FALSE(fs::exists(dir + "/screen_0005.png"));
+  EXPECT_TRUE(fs::exists(dir + "/notes.txt"));
+
+  // screen_0000.png a directory: the picture cannot be written.
+  fs::remove(dir + "/screen_0000.png");
+  fs::create_directories(dir + "/screen_0000.png/x");
+  const std::string frame = temp_path("beside_screen_frames.png");
+  std::remove(frame.c_str());
+  args = run;
+  args.insert(args.end(), {"--screen-frames", dir, "--frame", frame});
+  r = htx::test::run_program(args, 120s);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("htx sim: cycle_limit: 1000000 cycles"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no more pictures written"), std::string::npos) << r.err;
+  const auto json = last_json_line(r.out);
+  EXPECT_EQ(json.at("errors").size(), 1u);
+  EXPECT_TRUE(fs::exists(frame));
+
+  args = run;
+  args.insert(args.end(), {"--screen-frames", frame});
+  r = htx::test::run_program(args, 60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("--screen-frames needs a directory"), std::string::npos) << r.err;
+  args = run;
+  args.insert(args.end(), {"--screen-frames", temp_path("same_path"), "--screen", temp_path("same_path")});
+  r = htx::test::run_program(args, 60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("is also --screen-frames' directory"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(temp_path("same_path")));
+}
+
+// An ELF is read from a regular file only: a device would be read until memory ran out.
+TEST(SystemSimCli, AnElfThatIsNotARegularFileIsRefused) {
+  const auto r = htx::test::run_program({HTX_BIN, "sim", "--elf", "/dev/zero", "--max-cycles", "1000"}, 60s);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("/dev/zero: not a regular file"), std::string::npos) << r.err;
 }
 
 // SIGINT ends the run as the cycle limit does: the summary, a whole trace, status 130.

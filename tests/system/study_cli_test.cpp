@@ -132,4 +132,18 @@ TEST(SystemStudyCli, RepeatedSweepRunsOnceAndAnyDirectoryNameDraws) {
   EXPECT_GT(std::filesystem::file_size(dir + "/study_ratio.svg"), 1000u) << r.out;
 }
 
+// The tables are checked before the points run: a study.csv that is a directory costs nothing.
+TEST(SystemStudyCli, ATableThatCannotBeWrittenIsRefusedBeforeTheRun) {
+  const std::string dir = ::testing::TempDir() + "htx_study_table_dir";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir + "/study.csv");
+  const auto r = htx::test::run_program({HTX_BIN, "study", "ratio", "--quick", "--clocks", "estimate", "--size",
+                                         "32x24", "--out-dir", dir, "--no-charts"},
+                                        120s);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("study.csv: is a directory"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("[1/"), std::string::npos) << r.out;  // no point ran
+}
+
 }  // namespace

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -177,9 +178,23 @@ std::string readmemh_text(std::span<const uint32_t> words) {
 }
 
 ElfImage load_elf(const std::string& path) {
+  // Only a regular file of a size an ELF can have is read: a device (/dev/zero) or a pipe would
+  // be read until memory ran out.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw std::runtime_error(path + ": not a regular file (an ELF is read from one)");
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw std::runtime_error(path + ": cannot read its size: " + ec.message());
+  if (size > kMaxElfFileBytes)
+    throw std::runtime_error(path + ": " + std::to_string(size) + " bytes; an ELF for the SoC is at most " +
+                             std::to_string(kMaxElfFileBytes) + " bytes");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open");
-  std::vector<uint8_t> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<uint8_t> data(static_cast<size_t>(size));
+  in.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(data.size()));
+  if (in.gcount() != static_cast<std::streamsize>(data.size()))
+    throw std::runtime_error(path + ": read " + std::to_string(in.gcount()) + " of its " + std::to_string(size) +
+                             " bytes");
   return parse_elf(data, path);
 }
 

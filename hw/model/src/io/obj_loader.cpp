@@ -83,8 +83,9 @@ void check_decimals(const std::string& source, size_t line, const std::string& k
 
 // What tinyobjloader lets pass with at most a warning, checked before it reads the file: the
 // numbers of v and vt lines and of the material libraries' Kd lines, and that each material
-// library exists. Returns the material names the OBJ's usemtl lines ask for.
-std::set<std::string> check_obj_text(const std::string& path) {
+// library exists. Returns the material names the OBJ's usemtl lines ask for; adds each material
+// library's path to `libraries`.
+std::set<std::string> check_obj_text(const std::string& path, std::vector<std::string>* libraries) {
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   std::set<std::string> used;
   for_each_line(path, [&](size_t n, const std::string& key, const std::vector<std::string>& w) {
@@ -101,6 +102,7 @@ std::set<std::string> check_obj_text(const std::string& path) {
         if (!std::filesystem::is_regular_file(file))
           throw std::runtime_error("OBJ '" + path + "' line " + std::to_string(n) + ": material library '" + lib +
                                    "' not found");
+        libraries->push_back(file.string());
         for_each_line(file, [&](size_t m, const std::string& mkey, const std::vector<std::string>& mw) {
           if (mkey == "Kd")
             check_decimals("MTL '" + file.string() + "'", m, mkey, mw, mw.size() == 3, "Kd takes 3");
@@ -163,6 +165,8 @@ Texture texture_from_image(const Image& img, const std::string& path, TexFormat 
 }
 
 Scene load_obj_scene(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path))
+    throw std::runtime_error("OBJ '" + path + "': " + (std::filesystem::exists(path) ? "not a file" : "no such file"));
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = true;
@@ -170,7 +174,8 @@ Scene load_obj_scene(const std::string& path) {
   tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(path, config) || !reader.Valid())
     throw std::runtime_error("cannot load OBJ '" + path + "': " + reader.Error());
-  const std::set<std::string> used_materials = check_obj_text(path);
+  std::vector<std::string> libraries;
+  const std::set<std::string> used_materials = check_obj_text(path, &libraries);
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   const auto& materials = reader.GetMaterials();
   for (const std::string& name : used_materials) {
@@ -181,6 +186,8 @@ Scene load_obj_scene(const std::string& path) {
 
   Scene scene;
   scene.name = std::filesystem::path(path).filename().string();
+  scene.sources.push_back(path);
+  scene.sources.insert(scene.sources.end(), libraries.begin(), libraries.end());
   std::map<std::string, int> texture_index;  // by file name
   std::vector<int> material_texture(materials.size(), -1);
   for (size_t m = 0; m < materials.size(); ++m) {
@@ -191,6 +198,7 @@ Scene load_obj_scene(const std::string& path) {
     if (it == texture_index.end()) {
       std::string note;
       scene.textures.push_back(texture_from_image(fit_texture_image(load_image(full), full, &note), full));
+      scene.sources.push_back(full);
       if (!note.empty()) scene.notes.push_back(note);
       it = texture_index.emplace(full, static_cast<int>(scene.textures.size()) - 1).first;
     }

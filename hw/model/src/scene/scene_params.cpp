@@ -10,7 +10,7 @@ namespace {
 
 std::string format_number(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
+  std::snprintf(buf, sizeof buf, "%.10g", v);  // 1073741823, not 1.07374e+09
   return buf;
 }
 

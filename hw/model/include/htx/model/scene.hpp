@@ -44,6 +44,9 @@ struct Scene {
   // What loading changed that the user should hear of (an OBJ's texture drawn from a smaller mip
   // level); the tools print each line.
   std::vector<std::string> notes;
+  // The files it was read from (an OBJ, its material libraries and textures; none for a built-in
+  // scene), so that a tool can refuse to write an output over one of them.
+  std::vector<std::string> sources;
 };
 
 }  // namespace htx

@@ -73,6 +73,8 @@ Scene make_builtin_scene(const std::string& spec) {
     s.name = spec;
     return s;
   }
+  if (ends_with_obj(params.name()))
+    throw std::invalid_argument("'" + spec + "': an OBJ file takes no parameters (the built-in scenes do)");
   std::string names;
   for (const Entry& e : registry()) names += (names.empty() ? "" : ", ") + e.info.name;
   throw std::invalid_argument("unknown scene '" + params.name() + "' (built-in: " + names + "; or a .obj file)");

@@ -39,7 +39,10 @@ struct ElfImage {
 // Parses an ELF32 RISC-V executable. Throws std::runtime_error naming `what` and the problem for
 // anything that is not one (wrong magic, class, endianness or machine, truncated tables).
 ElfImage parse_elf(std::span<const uint8_t> data, const std::string& what);
-// Reads and parses a file; errors name the path.
+// The largest ELF file load_elf reads: far above any firmware with its debug sections (the
+// console's is under 1 MiB), far below what would exhaust a host's memory.
+inline constexpr uintmax_t kMaxElfFileBytes = uintmax_t{256} << 20;
+// Reads and parses a regular file of at most kMaxElfFileBytes; errors name the path.
 ElfImage load_elf(const std::string& path);
 
 // The RAM's contents once the image is loaded at address 0: ram_bytes / 4 little-endian words, zero
