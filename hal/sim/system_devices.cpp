@@ -79,11 +79,14 @@ void SystemDevices::write(uint32_t addr, uint32_t value, uint64_t now) {
   if (in(addr, HTX_TIMER_BASE)) {
     const uint64_t t = mtime(now);
     switch (addr - HTX_TIMER_BASE) {
-      case TIMER_MTIME_LO_Offset: mtime_offset_ = now - ((t & ~uint64_t{0xFFFFFFFFu}) | value); break;
-      case TIMER_MTIME_HI_Offset: mtime_offset_ = now - ((t & 0xFFFFFFFFu) | (uint64_t{value} << 32)); break;
+      case TIMER_MTIME_LO_Offset: set_mtime((t & ~uint64_t{0xFFFFFFFFu}) | value, now); break;
+      case TIMER_MTIME_HI_Offset: set_mtime((t & 0xFFFFFFFFu) | (uint64_t{value} << 32), now); break;
       case TIMER_MTIMECMP_LO_Offset: mtimecmp_ = (mtimecmp_ & ~uint64_t{0xFFFFFFFFu}) | value; break;
       case TIMER_MTIMECMP_HI_Offset: mtimecmp_ = (mtimecmp_ & 0xFFFFFFFFu) | (uint64_t{value} << 32); break;
-      case TIMER_CTRL_Offset: timer_ctrl_ = value; break;
+      case TIMER_CTRL_Offset:
+        timer_ctrl_ = value;
+        set_mtime(t, now);  // a stopped counter holds its value, a started one counts on from it
+        break;
       default: break;
     }
   }

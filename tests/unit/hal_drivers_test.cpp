@@ -117,6 +117,33 @@ TEST(HalTimer, NowRetriesWhenTheHighWordChangesAndWaitEnds) {
   const uint64_t before = htx::hal::cpu_cycles();
   htx::hal::cpu_idle(1000);
   EXPECT_EQ(htx::hal::cpu_cycles() - before, 1000u);
+
+  // A wait that ends past 2^64 counts elapsed ticks: it still waits its 50 (an end time would
+  // wrap to a small number and end the wait at once).
+  FakeBus near_wrap;
+  ScopedBus attach3(near_wrap);
+  near_wrap.on_read(HTX_TIMER_BASE + TIMER_CTRL_Offset, [] { return uint32_t{TIMER_CTRL_ENABLE_Msk}; });
+  near_wrap.on_read(HTX_TIMER_BASE + TIMER_MTIME_HI_Offset,
+                    [&] { return static_cast<uint32_t>((near_wrap.cycles() - 20) >> 32); });
+  near_wrap.on_read(HTX_TIMER_BASE + TIMER_MTIME_LO_Offset,
+                    [&] { return static_cast<uint32_t>(near_wrap.cycles() - 20); });  // 2^64 - 20 at clock 0
+  const uint64_t start = near_wrap.cycles();
+  EXPECT_TRUE(htx::hal::timer_wait(50));
+  EXPECT_GE(near_wrap.cycles() - start, 50u);
+}
+
+// uart_set_divisor writes only a divisor the field holds as it is: 3 would run as 4, 65,536 as 0.
+TEST(HalUart, SetDivisorRefusesWhatTheFieldCannotHold) {
+  FakeBus bus;
+  ScopedBus attach(bus);
+  bus.poke(HTX_UART_BASE + UART_CTRL_Offset, 104u);
+  EXPECT_FALSE(htx::hal::uart_set_divisor(3));
+  EXPECT_FALSE(htx::hal::uart_set_divisor(65536));
+  EXPECT_EQ(htx::hal::uart_divisor(), 104u);
+  EXPECT_TRUE(htx::hal::uart_set_divisor(4));
+  EXPECT_EQ(htx::hal::uart_divisor(), 4u);
+  EXPECT_TRUE(htx::hal::uart_set_divisor(65535));
+  EXPECT_EQ(htx::hal::uart_divisor(), 65535u);
 }
 
 // texture_check against what the unit builds (CAPS), here the board's: 4 slots, the two 16-bit
@@ -254,6 +281,20 @@ TEST(HalSystemDevices, ControlRegistersStartAtTheirResetValues) {
   const uint32_t timer_ctrl = d.read(HTX_TIMER_BASE + TIMER_CTRL_Offset, 0);
   EXPECT_NE(timer_ctrl & TIMER_CTRL_ENABLE_Msk, 0u);
   EXPECT_EQ(timer_ctrl & TIMER_CTRL_IRQ_ENABLE_Msk, 0u);
+}
+
+// A stopped timer holds its count (CTRL.ENABLE = 0), as the SoC's does, and counts on from it
+// when started again; MTIME written while stopped is what it holds.
+TEST(HalSystemDevices, AStoppedTimerHoldsItsCount) {
+  htx::hal::sim::SystemDevices d;
+  const uint32_t mtime = HTX_TIMER_BASE + TIMER_MTIME_LO_Offset, ctrl = HTX_TIMER_BASE + TIMER_CTRL_Offset;
+  EXPECT_EQ(d.read(mtime, 100), 100u);
+  d.write(ctrl, 0, 100);
+  EXPECT_EQ(d.read(mtime, 500), 100u);
+  d.write(mtime, 7, 600);
+  EXPECT_EQ(d.read(mtime, 700), 7u);
+  d.write(ctrl, TIMER_CTRL_ENABLE_Msk, 1000);
+  EXPECT_EQ(d.read(mtime, 1010), 17u);
 }
 
 TEST(HalSystemDevices, TimerFollowsTheClockUartCollectsBytes) {

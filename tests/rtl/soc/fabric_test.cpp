@@ -382,6 +382,20 @@ TEST_P(FabricTest, UartSerialPinsBothWaysAndFramingError) {
   soc.write(kUart + UART_STATUS_Offset, UART_STATUS_RX_FRAME_ERR_Msk);
   EXPECT_FALSE(soc.read(kUart + UART_STATUS_Offset).rdata & UART_STATUS_RX_FRAME_ERR_Msk);
 
+  // A break (the line low for two and a half frames) is one framing error, no byte: the receiver
+  // waits for the line to rise before it looks for a start bit, so neither the break nor the
+  // bits around its end are taken for bytes, and the byte after it arrives whole.
+  soc.uart_rx = false;
+  for (uint32_t i = 0; i < 25 * kDiv + kDiv / 3; ++i) soc.step();
+  soc.uart_rx = true;
+  for (uint32_t i = 0; i < 2 * kDiv; ++i) soc.step();
+  to_soc.push('A');
+  clock(12 * kDiv);
+  EXPECT_TRUE(soc.read(kUart + UART_STATUS_Offset).rdata & UART_STATUS_RX_FRAME_ERR_Msk);
+  EXPECT_EQ(soc.read(kUart + UART_DATA_Offset).rdata, static_cast<uint32_t>('A'));
+  EXPECT_TRUE(soc.read(kUart + UART_DATA_Offset).rdata & UART_DATA_RX_EMPTY_Msk);
+  soc.write(kUart + UART_STATUS_Offset, UART_STATUS_RX_FRAME_ERR_Msk);
+
   // Every bit on the TX pin lasts exactly the divisor: 0x55 changes the line at each of the nine
   // bit boundaries from the start bit to the stop bit.
   soc.dbus.pending.push_back({kUart + UART_DATA_Offset, true, 0x1, 0x55});

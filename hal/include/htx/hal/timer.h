@@ -24,8 +24,9 @@ inline bool timer_running() { return (HTX_TIMER->CTRL & TIMER_CTRL_ENABLE_Msk) !
 // when the counter is stopped (CTRL.ENABLE = 0): the wait would never end.
 inline bool timer_wait(uint64_t ticks) {
   if (!timer_running()) return false;
-  const uint64_t end = timer_now() + ticks;
-  while (timer_now() < end) {
+  // Elapsed ticks, not an end time: an end past 2^64 would wrap and end the wait at once.
+  const uint64_t start = timer_now();
+  while (timer_now() - start < ticks) {
   }
   return true;
 }

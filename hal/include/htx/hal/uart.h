@@ -60,8 +60,12 @@ inline bool uart_flush(uint32_t max_polls) {
 
 // The UART's clocks per bit (CTRL.DIVISOR; the UART takes at least 4).
 inline uint32_t uart_divisor() { return (HTX_UART->CTRL & UART_CTRL_DIVISOR_Msk) >> UART_CTRL_DIVISOR_Pos; }
-inline void uart_set_divisor(uint32_t divisor) {
-  HTX_UART->CTRL = (HTX_UART->CTRL & ~UART_CTRL_DIVISOR_Msk) | ((divisor << UART_CTRL_DIVISOR_Pos) & UART_CTRL_DIVISOR_Msk);
+// Sets the clocks per bit; false, and nothing written, for a divisor the field cannot hold as it
+// is (below 4, which the UART reads as 4, or above 65,535, whose low bits would be a faster rate).
+inline bool uart_set_divisor(uint32_t divisor) {
+  if (divisor < 4 || divisor > (UART_CTRL_DIVISOR_Msk >> UART_CTRL_DIVISOR_Pos)) return false;
+  HTX_UART->CTRL = (HTX_UART->CTRL & ~UART_CTRL_DIVISOR_Msk) | (divisor << UART_CTRL_DIVISOR_Pos);
+  return true;
 }
 
 }  // namespace htx::hal

@@ -26,7 +26,14 @@ class SystemDevices {
   uint32_t exit_code() const { return exit_code_; }
 
  private:
-  uint64_t mtime(uint64_t now) const { return now - mtime_offset_; }
+  // MTIME follows the bus clock while CTRL.ENABLE is set and holds its value while it is clear,
+  // as the SoC's timer does.
+  bool timer_enabled() const { return (timer_ctrl_ & TIMER_CTRL_ENABLE_Msk) != 0; }
+  uint64_t mtime(uint64_t now) const { return timer_enabled() ? now - mtime_offset_ : mtime_held_; }
+  void set_mtime(uint64_t value, uint64_t now) {
+    mtime_offset_ = now - value;
+    mtime_held_ = value;
+  }
   std::string uart_out_;
   std::deque<char> rx_;
   uint32_t scratch_ = 0;
@@ -34,6 +41,7 @@ class SystemDevices {
   uint32_t uart_ctrl_ = (UART_CTRL_DIVISOR_Reset << UART_CTRL_DIVISOR_Pos) | (UART_CTRL_LOOPBACK_Reset << UART_CTRL_LOOPBACK_Pos);
   uint32_t timer_ctrl_ = (TIMER_CTRL_ENABLE_Reset << TIMER_CTRL_ENABLE_Pos) | (TIMER_CTRL_IRQ_ENABLE_Reset << TIMER_CTRL_IRQ_ENABLE_Pos);
   uint64_t mtime_offset_ = 0;
+  uint64_t mtime_held_ = 0;  // MTIME while the counter is stopped
   uint64_t mtimecmp_ = ~uint64_t{0};
   bool exited_ = false;
   uint32_t exit_code_ = 0;
