@@ -6,7 +6,7 @@ package htx_uart_reg_pkg;
 
   // DATA (rw): Write: push a byte into the TX FIFO (a full FIFO stalls the bus write until there is room, so no byte is lost). Read: pop a byte from the RX FIFO (a read that takes BYTE's lane; a byte read at DATA + 1 tests RX_EMPTY and pops nothing)
   localparam logic [11:0] UART_DATA_OFFSET = 12'h000;
-  localparam logic [31:0] UART_DATA_RESET = 32'h00000000;
+  localparam logic [31:0] UART_DATA_RESET = 32'h00000100;
   localparam int unsigned UART_DATA_BYTE_LSB = 0;
   localparam int unsigned UART_DATA_BYTE_WIDTH = 8;
   localparam logic [31:0] UART_DATA_BYTE_MASK = 32'h000000FF;
@@ -14,7 +14,7 @@ package htx_uart_reg_pkg;
   localparam int unsigned UART_DATA_RX_EMPTY_LSB = 8;
   localparam int unsigned UART_DATA_RX_EMPTY_WIDTH = 1;
   localparam logic [31:0] UART_DATA_RX_EMPTY_MASK = 32'h00000100;
-  localparam logic [31:0] UART_DATA_RX_EMPTY_RESET = 32'h00000000;
+  localparam logic [31:0] UART_DATA_RX_EMPTY_RESET = 32'h00000100;
 
   // STATUS (rw): FIFO and line flags
   localparam logic [11:0] UART_STATUS_OFFSET = 12'h004;
