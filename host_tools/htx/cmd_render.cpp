@@ -147,8 +147,21 @@ void run_render(const RenderArgs& given) {
 #endif
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   write_png(a.out, image_from_rgb565(frame.width, frame.height, frame.color));
-  std::cout << a.engine << " rendered " << a.scene << " (" << screen.tris.size() << " triangles, " << width << "x"
-            << height << ") in " << ms << " ms -> " << a.out << "\n";
+  // Triangles the vertex-record encoder refused, which the firmware would not send either (ref
+  // draws every one): said as the soc engine says the console's.
+#ifdef HTX_HAVE_RTL_ENGINE
+  const uint64_t dropped = a.engine == "ref"     ? 0
+                           : a.engine == "model" ? frame.counters.dropped
+                                                 : screen.tris.size() - rtl_stats.triangles_encoded;
+#else
+  const uint64_t dropped = frame.counters.dropped;
+#endif
+  std::cout << a.engine << " rendered " << a.scene << " (" << screen.tris.size() << " triangles, "
+            << (dropped > 0 ? std::to_string(dropped) + " dropped, " : "") << width << "x" << height << ") in " << ms
+            << " ms -> " << a.out << "\n";
+  if (dropped > 0)
+    std::cerr << "htx render: " << a.engine << " dropped " << dropped
+              << " triangles: the vertex-record format cannot hold them (texture coordinates out of its range)\n";
 
   if (!a.metrics.empty()) {
     const Frame ref = a.engine == "ref" ? frame : render_ref(screen, ref_options);
@@ -156,6 +169,7 @@ void run_render(const RenderArgs& given) {
                          a.filter.empty() ? "scene" : a.filter, a.engine == "ref" ? "-" : a.config};
     nlohmann::json j = metrics_to_json(compute_metrics(frame, ref, labels));
     if (a.engine == "model") j["cycles"] = frame.counters.cycles;  // the model's estimate (docs/model.md §9)
+    if (a.engine != "ref") j["dropped"] = dropped;
     if (auto_summary.resolved > 0) j["auto"] = auto_summary_json(auto_summary);
 #ifdef HTX_HAVE_RTL_ENGINE
     if (a.engine == "rtl") {

@@ -67,13 +67,16 @@ std::vector<uint8_t> packed_texture_level(const Texture& t, std::string* note) {
 // The textures the scene's textured meshes use, in the order they first use them, packed for
 // console slots 0, 1, ... (at most render::kConsoleTextureSlots; one with no level the console
 // takes leaves its slot empty); (*slot_of)[index] is the slot of scene texture `index`, 0 for a
-// texture not sent.
+// texture not sent. The texture index is the Scene mesh's: render::TriState's is a byte, in
+// which texture 256 would read as 0.
 std::vector<std::vector<uint8_t>> textures_in_slots(const Scene& scene, const host::RenderScene& rs,
                                                     std::vector<int>* slot_of, std::string* note) {
   std::vector<int> used;
-  for (const host::RenderScene::MeshData& d : rs.meshes)
-    if (d.mesh.state.textured && std::find(used.begin(), used.end(), d.mesh.state.texture) == used.end())
-      used.push_back(d.mesh.state.texture);
+  for (const host::RenderScene::MeshData& d : rs.meshes) {
+    const int texture = scene.meshes[d.source].state.texture;
+    if (d.mesh.state.textured && std::find(used.begin(), used.end(), texture) == used.end())
+      used.push_back(texture);
+  }
   std::vector<std::vector<uint8_t>> textures;
   for (size_t slot = 0; slot < used.size() && slot < render::kConsoleTextureSlots; ++slot) {
     const size_t index = static_cast<size_t>(used[slot]);
@@ -131,13 +134,14 @@ ScenePayload scene_payload(const Scene& scene, const std::string& spec, const st
   // The firmware's form of the scene (as the render firmware's compiled-in scenes are made), packed.
   host::RenderScene rs;
   try {
-    rs = host::to_render_scene(scene, width, height);
+    rs = host::to_render_scene(scene, width, height, /*keep_wide=*/true);  // split_meshes narrows
   } catch (const std::out_of_range& e) {
     throw std::invalid_argument("'" + spec + "' cannot go to the console: " + e.what());
   }
   // A mesh without triangles draws nothing, and the console refuses one (an empty mesh is what a
   // damaged upload looks like), so it is not sent; a scene with none at all cannot be.
-  std::erase_if(rs.meshes, [](const host::RenderScene::MeshData& d) { return d.indices.empty(); });
+  std::erase_if(rs.meshes,
+                [](const host::RenderScene::MeshData& d) { return d.indices.empty() && d.wide_indices.empty(); });
   if (rs.meshes.empty()) throw std::invalid_argument("'" + spec + "' has no triangles to send to the console");
   const size_t whole_meshes = rs.meshes.size();
   host::split_meshes(&rs, mesh_vertices);
@@ -147,17 +151,17 @@ ScenePayload scene_payload(const Scene& scene, const std::string& spec, const st
     add_note(&p.note, std::to_string(whole_meshes) + " meshes sent as " + std::to_string(rs.meshes.size()) +
                           " of at most " + std::to_string(mesh_vertices) + " vertices");
   std::string texture_note;
-  std::vector<int> slot_of(256, 0);  // scene texture index -> console slot
+  std::vector<int> slot_of(scene.textures.size(), 0);  // scene texture index -> console slot
   if (with_texture && !untextured) p.textures = textures_in_slots(scene, rs, &slot_of, &texture_note);
-  p.slot_of_texture.assign(slot_of.begin(),
-                           slot_of.begin() + static_cast<std::ptrdiff_t>(std::min(scene.textures.size(), slot_of.size())));
+  p.slot_of_texture = slot_of;
 
   std::vector<render::Mesh> meshes;
   for (const host::RenderScene::MeshData& d : rs.meshes) {
     meshes.push_back(d.mesh);
     p.source_mesh.push_back(d.source);
     if (untextured) meshes.back().state.textured = false;
-    meshes.back().state.texture = static_cast<uint8_t>(slot_of[d.mesh.state.texture]);
+    const size_t texture = static_cast<size_t>(scene.meshes[d.source].state.texture);
+    meshes.back().state.texture = static_cast<uint8_t>(texture < slot_of.size() ? slot_of[texture] : 0);
   }
   const uint32_t count = static_cast<uint32_t>(meshes.size());
   p.scene.resize(render::packed_scene_size(meshes.data(), count));

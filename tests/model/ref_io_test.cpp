@@ -80,7 +80,8 @@ TEST(RefIo, ObjErrorsAreClear) {
     load_obj_scene((dir / "inf.obj").string());
     FAIL() << "a vertex at 1e308 (infinite as float) must be rejected";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("line 7: '1e308' is not a finite decimal number as a float"), std::string::npos)
+        << e.what();
   }
   // What tinyobjloader reads as 0 without a word, or only warns of, and would draw other than
   // written: each file is refused, naming the line where there is one.
@@ -99,7 +100,7 @@ TEST(RefIo, ObjErrorsAreClear) {
       {with_line("v 1 2"), "line 2: 'v' with 2 numbers"},
       {with_line("vt 0.5 inf"), "line 2: 'inf' is not a finite decimal"},
       {with_line("vt"), "line 2: 'vt' with 0 numbers"},
-      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n", "texture coordinate index out of range"},
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n", "line 5: texture coordinate index 2 out of range"},
       {"mtllib none.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: material library 'none.mtl' not found"},
       {"mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl blue\nf 1 2 3\n", "usemtl 'blue' is in none"},
       {"v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n", "usemtl 'red' is in none"},
@@ -122,6 +123,106 @@ TEST(RefIo, ObjErrorsAreClear) {
   ASSERT_EQ(forms.meshes.size(), 1u);
   EXPECT_EQ(forms.meshes[0].vertices[1].pos.x, 150.0);
   EXPECT_EQ(forms.meshes[0].vertices[0].s, 0.25);
+  std::filesystem::remove_all(dir);
+}
+
+// Loads `text` as dir/name and returns the error, or "" when it loads.
+std::string obj_error(const std::filesystem::path& dir, const std::string& name, const std::string& text) {
+  std::ofstream(dir / name, std::ios::binary) << text;
+  try {
+    load_obj_scene((dir / name).string());
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A UTF-8 byte-order mark first in an OBJ or an MTL (Windows editors write one) is stripped:
+// tinyobjloader read "\xEF\xBB\xBFv" as an unknown keyword, so the first vertex vanished and
+// every index after it pointed one vertex on; an MTL's first material vanished (drawn white).
+TEST(RefIo, ByteOrderMarksBeforeAnObjOrMtlAreStripped) {
+  const auto dir = std::filesystem::temp_directory_path() / "htx_ref_io_bom";
+  std::filesystem::create_directories(dir);
+  const std::string bom = "\xEF\xBB\xBF";
+  std::ofstream(dir / "red.mtl", std::ios::binary) << bom << "newmtl red\nKd 1 0 0\n";
+  ASSERT_EQ(obj_error(dir, "bom.obj", bom + "v 5 5 5\nv 0 0 0\nv 1 0 0\nv 0 1 0\nmtllib red.mtl\nusemtl red\nf 2 3 4\n"),
+            "");
+  const Scene s = load_obj_scene((dir / "bom.obj").string());
+  ASSERT_EQ(s.meshes.size(), 1u);
+  const Mesh& m = s.meshes[0];
+  ASSERT_EQ(m.triangles.size(), 1u);
+  const Vec3 want[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  for (size_t k = 0; k < 3; ++k) {
+    const Vertex& v = m.vertices[m.triangles[0][k]];
+    EXPECT_EQ(v.pos.x, want[k].x) << k;
+    EXPECT_EQ(v.pos.y, want[k].y) << k;
+    EXPECT_EQ(v.pos.z, want[k].z) << k;
+    EXPECT_EQ(v.r, 1.0) << k;
+    EXPECT_EQ(v.g, 0.0) << k;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// What tinyobjloader dropped with only a warning (a face) or drew otherwise than written (a
+// material not yet read, a texture coordinate of a relative index before the first `vt`, one at
+// some corners only, a number finite as a double but not as its float) is refused, by its line.
+TEST(RefIo, FacesTinyobjloaderWouldDropOrMisreadAreRefused) {
+  const auto dir = std::filesystem::temp_directory_path() / "htx_ref_io_faces";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "m.mtl") << "newmtl m\nKd 1 0 0\n";
+  std::ofstream(dir / "n.mtl") << "newmtl n\nKd 0 1 0\n";
+  const std::string three = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const std::string tex = three + "vt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\n";
+  const struct {
+    std::string text;
+    const char* message;
+  } refused[] = {
+      {three + "f 1 2 3 4\n", "line 4: vertex index 4 out of range (the file has 3 v lines)"},
+      {three + "f 1 2 3\nf 1 2\n", "line 5: a face with 2 corners (a face has 3 or more)"},
+      {three + "f 1\n", "line 4: a face with 1 corners"},
+      {three + "f 1 2 -4\n", "line 4: vertex index -4 out of range (3 v lines before it)"},
+      {three + "f 1 2 3.5\n", "line 4: '3.5' is not a vertex index"},
+      {three + "f 1 2/ 3\n", "line 4: '2/' is not a face corner"},
+      {tex + "f 1/1 2/-9 3/3\n", "line 8: texture coordinate index -9 out of range (3 vt lines before it)"},
+      {tex + "f 1/1 2/9 3/3\n", "line 8: texture coordinate index 9 out of range (the file has 3 vt lines)"},
+      {tex + "f 1/1/1 2/2/-2 3/3/1\n", "line 8: normal index -2 out of range (1 vn line before it)"},
+      {tex + "f 1//1 2//2 3//1\n", "line 8: normal index 2 out of range (the file has 1 vn line)"},
+      {tex + "f 1/1 2 3/1\n", "line 8: a face with texture coordinates at 2 of its 3 corners"},
+      {three + "vt 1e39 0\nf 1/1 2/1 3/1\n", "line 4: '1e39' is not a finite decimal number as a float"},
+      {"v 0 0 0 1 -1e39 1\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: '-1e39' is not a finite decimal number as a float"},
+      {three + "usemtl m\nmtllib m.mtl\nf 1 2 3\n", "line 4: usemtl 'm' is in none of the material libraries before it"},
+      // tinyobjloader reads only the first library of an mtllib line: its warning is an error.
+      {"mtllib m.mtl n.mtl\n" + three + "usemtl n\nf 1 2 3\n", "material [ 'n' ] not found in .mtl"},
+  };
+  for (const auto& c : refused)
+    EXPECT_NE(obj_error(dir, "refused.obj", c.text).find(c.message), std::string::npos)
+        << c.text << "gave: " << obj_error(dir, "refused.obj", c.text);
+  // Relative indices within range, and a material from a library before its usemtl, are taken.
+  EXPECT_EQ(obj_error(dir, "good.obj", "mtllib m.mtl\n" + tex + "usemtl m\nf -3/-3/-1 -2/-2/-1 -1/-1/-1\n"), "");
+  std::filesystem::remove_all(dir);
+}
+
+// Only the textures of materials that faces use are read: an unused material's image (here one
+// the GPU cannot take) neither fails the load nor takes a texture index.
+TEST(RefIo, OnlyTheTexturesOfUsedMaterialsAreLoaded) {
+  const auto dir = std::filesystem::temp_directory_path() / "htx_ref_io_used";
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(kData + "/checker8x16.png", dir / "checker8x16.png",
+                             std::filesystem::copy_options::overwrite_existing);
+  Image odd;  // 12 x 4: refused if it were read
+  odd.width = 12;
+  odd.height = 4;
+  odd.rgba.assign(12 * 4 * 4, 128);
+  write_png((dir / "odd.png").string(), odd);
+  std::ofstream(dir / "two.mtl") << "newmtl unused\nmap_Kd odd.png\nnewmtl used\nmap_Kd checker8x16.png\n";
+  ASSERT_EQ(obj_error(dir, "two.obj", "mtllib two.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl used\nf 1/1 2/1 3/1\n"),
+            "");
+  const Scene s = load_obj_scene((dir / "two.obj").string());
+  ASSERT_EQ(s.textures.size(), 1u);
+  EXPECT_EQ(s.textures[0].log2_width, 3u);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_TRUE(s.meshes[0].state.textured);
+  EXPECT_EQ(s.meshes[0].state.texture, 0);
   std::filesystem::remove_all(dir);
 }
 

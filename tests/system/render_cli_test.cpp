@@ -260,6 +260,41 @@ TEST(SystemRenderCli, AnOutputOverTheScenesOwnFilesIsRefused) {
   EXPECT_FALSE(fs::exists(dir / "frame.png"));
 }
 
+// A triangle the vertex-record encoder refuses (texture coordinate 30,000 on an 8 x 16 texture:
+// u beyond the record's range) draws nothing on model and rtl, as the firmware does not send it;
+// htx render says how many, in its line, on standard error and in the metrics (`dropped`), as the
+// soc engine reports the console's. Until 2026-12-06 they vanished without a word.
+TEST(SystemRenderCli, TrianglesTheEncoderRefusesAreCountedAsDropped) {
+  namespace fs = std::filesystem;
+  const fs::path dir = temp_path("dropped");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(fs::path(HTX_TEST_DATA_DIR) / "checker8x16.png", dir / "checker8x16.png");
+  std::ofstream(dir / "far.mtl") << "newmtl m\nKd 1 1 1\nmap_Kd checker8x16.png\n";
+  std::ofstream(dir / "far.obj") << "mtllib far.mtl\nv 0 0 -3\nv 1 0 -3\nv 0 1 -3\nv 1 1 -3\n"
+                                 << "vt 0 0\nvt 30000 0\nvt 0 1\nusemtl m\nf 1/1 2/2 3/3\nf 2/1 4/1 3/1\n";
+  for (const char* engine : {"model", "rtl", "ref"}) {
+    const std::string metrics = (dir / (std::string(engine) + ".json")).string();
+    const auto r = htx::test::run_program({HTX_BIN, "render", (dir / "far.obj").string(), "--engine", engine, "--size",
+                                           "80x60", "--out", (dir / "far.png").string(), "--metrics", metrics},
+                                          120s);
+    ASSERT_FALSE(r.timed_out);
+    ASSERT_EQ(r.status, 0) << engine << ": " << r.err;
+    const bool ref = std::string(engine) == "ref";  // draws every triangle exactly
+    EXPECT_EQ(r.out.find("(2 triangles, 1 dropped, 80x60)") != std::string::npos, !ref) << engine << ": " << r.out;
+    EXPECT_EQ(r.err.find(std::string(engine) + " dropped 1 triangles: the vertex-record format cannot hold them") !=
+                  std::string::npos,
+              !ref)
+        << engine << ": " << r.err;
+    const nlohmann::json j = read_json(metrics);
+    if (ref)
+      EXPECT_FALSE(j.contains("dropped"));
+    else
+      EXPECT_EQ(j.at("dropped"), 1) << engine;
+  }
+  fs::remove_all(dir);
+}
+
 // Words htx cannot use are refused with a message that says what is wrong: an unknown command, an
 // empty output path, --tolerance beside a method that has none, parameters on an OBJ file, a
 // directory given as an OBJ; and a standard output that cannot be written is status 1.

@@ -27,6 +27,7 @@
 #include "htx/hal/sim/gpu_sim_bus.hpp"
 #include "htx/model/image_io.hpp"
 #include "htx/model/model.hpp"
+#include "htx/model/proc_textures.hpp"
 #include "htx/model/scenes.hpp"
 #include "htx/model/texture.hpp"
 #include "htx/render/frame.h"
@@ -904,6 +905,87 @@ TEST(SystemRender, UploadPayloadPutsFourTexturesInSlotsAndTheFifthOnSlotZero) {
   EXPECT_EQ(std::unique(first_use.begin(), first_use.end()) - first_use.begin(), 5) << "five textures, one a mesh";
   EXPECT_TRUE(htx::scene_payload(spec, "160x120", true, htx::render::kMaxPackedMeshVertices, true).textures.empty());
   std::filesystem::remove_all(dir);
+}
+
+// A scene of more than 256 textures: the console's slots are picked by the Scene meshes' own
+// texture indices, not render::TriState's byte, in which texture 256 read as texture 0, so the
+// cube's texture 256 was sent as texture 0 and drawn with it.
+TEST(SystemRender, UploadPayloadPicksTexturesPastTheFirst256ByTheirOwnIndex) {
+  htx::Scene scene = htx::make_builtin_scene("cube");
+  ASSERT_EQ(scene.textures.size(), 1u);
+  const htx::Texture blue = htx::checkerboard_texture(htx::TexFormat::RGB565, 3, 1, {0, 0, 255, 255}, {0, 0, 255, 255});
+  scene.textures.insert(scene.textures.begin(), 256, blue);  // the cube's texture is now index 256
+  for (htx::Mesh& m : scene.meshes)
+    if (m.state.textured) m.state.texture = 256;
+  const htx::ScenePayload p = htx::scene_payload(scene, "cube", "160x120", true);
+  ASSERT_EQ(p.textures.size(), 1u);
+  ASSERT_EQ(p.slot_of_texture.size(), 257u);
+  EXPECT_EQ(p.slot_of_texture[256], 0);
+  htx::render::UnpackedTexture t;
+  std::vector<uint8_t> tex = p.textures[0];
+  ASSERT_EQ(htx::render::unpack_texture(tex.data(), tex.size(), htx::render::kConsoleTextureTexels, &t), nullptr);
+  EXPECT_EQ(t.log2_width, 5) << "the cube's 64 x 64 checkerboard as its 32 x 32 level, not the 8 x 8 blue";
+  const htx::Texture& cube = scene.textures[256];
+  EXPECT_EQ(static_cast<uint32_t>(t.texels[0] | (t.texels[1] << 8)),
+            htx::fw::encode_texel(htx::fw::kTexelRgb565, htx::fw::decode_texel(static_cast<uint8_t>(cube.format),
+                                                                              cube.levels[1][0])));
+}
+
+// A mesh of more than 65536 vertices (an OBJ grid of 22,000 triangles, three vertices each, as
+// the loader makes them) goes to the console split into parts: its whole form keeps 32-bit
+// indices until split_meshes narrows each part's; `htx upload` refused it before ("mesh '' has
+// more than 65536 vertices"). The form that is not split still refuses it, naming the mesh.
+TEST(SystemRender, UploadPayloadSplitsAMeshOfMoreThan65536Vertices) {
+  htx::Scene scene = htx::make_builtin_scene("cube");
+  htx::Mesh grid;
+  grid.state = scene.meshes.at(0).state;
+  constexpr int kSide = 110, kTriangles = 22000;
+  for (int t = 0; t < kTriangles; ++t) {
+    const double x = (t / 2 % kSide) / static_cast<double>(kSide) - 0.5, y = (t / 2 / kSide) / static_cast<double>(kSide) - 0.5;
+    const double d = 1.0 / kSide;
+    const std::array<std::array<double, 2>, 3> corners =
+        t % 2 ? std::array<std::array<double, 2>, 3>{{{x, y}, {x + d, y + d}, {x, y + d}}}
+              : std::array<std::array<double, 2>, 3>{{{x, y}, {x + d, y}, {x + d, y + d}}};
+    const uint32_t first = static_cast<uint32_t>(grid.vertices.size());
+    for (const auto& c : corners) {
+      htx::Vertex v;
+      v.pos = {c[0], c[1], 0};
+      v.s = c[0];
+      v.t = c[1];
+      grid.vertices.push_back(v);
+    }
+    grid.triangles.push_back({first, first + 1, first + 2});
+  }
+  scene.meshes = {grid};
+  ASSERT_GT(scene.meshes[0].vertices.size(), 65536u);
+  const htx::ScenePayload p = htx::scene_payload(scene, "grid", "160x120", true);
+  std::vector<htx::render::Mesh> meshes(htx::render::kConsoleSceneMeshes);
+  uint32_t triangles = 0;
+  for (const std::vector<uint8_t>& part : p.parts) {
+    htx::render::UnpackedScene up;
+    ASSERT_EQ(htx::render::unpack_scene(part.data(), part.size(), meshes.data(), htx::render::kConsoleSceneMeshes,
+                                        render_app::kMaxMeshVertices, &up),
+              nullptr);
+    // Each part's triangles are the whole mesh's, in order, their corners where they were.
+    for (uint32_t m = 0; m < up.mesh_count; ++m)
+      for (uint32_t k = 0; k < meshes[m].triangle_count; ++k, ++triangles) {
+        ASSERT_LT(triangles, static_cast<uint32_t>(kTriangles));
+        for (uint32_t c = 0; c < 3; ++c) {
+          const htx::render::MeshVertex& got = meshes[m].vertices[meshes[m].indices[3 * k + c]];
+          const htx::Vertex& want = grid.vertices[grid.triangles[triangles][c]];
+          ASSERT_EQ(got.x, htx::host::to_q16(want.pos.x)) << "triangle " << triangles;
+          ASSERT_EQ(got.y, htx::host::to_q16(want.pos.y)) << "triangle " << triangles;
+        }
+      }
+  }
+  EXPECT_EQ(triangles, static_cast<uint32_t>(kTriangles)) << "every triangle sent, once";
+  for (uint32_t source : p.source_mesh) EXPECT_EQ(source, 0u);
+  try {
+    htx::host::to_render_scene(scene, 160, 120);
+    ADD_FAILURE() << "a mesh of more than 65536 vertices in 16-bit indices";
+  } catch (const std::out_of_range& e) {
+    EXPECT_NE(std::string(e.what()).find("mesh 0 has more than 65536 vertices"), std::string::npos) << e.what();
+  }
 }
 
 // The SoC model stops the GPU's clock while the GPU is idle (htx_soc_fabric, Sim only), which must

@@ -59,9 +59,14 @@ uint32_t channel8(double c) {
   return static_cast<uint32_t>(k);
 }
 
+// How errors name a mesh: by its name, or by its place when it has none (an OBJ without `o`).
+std::string mesh_label(const Mesh& mesh, size_t index) {
+  return mesh.name.empty() ? "mesh " + std::to_string(index) : "mesh '" + mesh.name + "'";
+}
+
 }  // namespace
 
-RenderScene to_render_scene(const Scene& scene, int width, int height) {
+RenderScene to_render_scene(const Scene& scene, int width, int height, bool keep_wide) {
   RenderScene out;
   out.width = width;
   out.height = height;
@@ -73,7 +78,9 @@ RenderScene to_render_scene(const Scene& scene, int width, int height) {
     const Mesh& src = scene.meshes[m];
     RenderScene::MeshData& d = out.meshes[m];
     d.source = static_cast<uint32_t>(m);
-    if (src.vertices.size() > 65536) throw std::out_of_range("mesh '" + src.name + "' has more than 65536 vertices");
+    const bool wide = src.vertices.size() > 65536;
+    if (wide && !keep_wide)
+      throw std::out_of_range(mesh_label(src, m) + " has more than 65536 vertices");
     for (const Vertex& v : src.vertices) {
       render::MeshVertex mv{};
       mv.x = to_q16(v.pos.x);
@@ -85,17 +92,23 @@ RenderScene to_render_scene(const Scene& scene, int width, int height) {
       d.vertices.push_back(mv);
     }
     for (const auto& tri : src.triangles)
-      for (uint32_t i : tri) d.indices.push_back(static_cast<uint16_t>(i));
+      for (uint32_t i : tri) {
+        if (wide)
+          d.wide_indices.push_back(i);
+        else
+          d.indices.push_back(static_cast<uint16_t>(i));
+      }
     d.mesh.vertices = d.vertices.data();
     d.mesh.vertex_count = static_cast<uint32_t>(d.vertices.size());
-    d.mesh.indices = d.indices.data();
+    d.mesh.indices = wide ? nullptr : d.indices.data();
     d.mesh.triangle_count = static_cast<uint32_t>(src.triangles.size());
     d.mesh.model = to_mat4_fx(src.model);
     const int position_bits = render::mesh_position_bits(d.vertices.data(), d.mesh.vertex_count);
     // The firmware's limit (docs/firmware.md, "Number formats"), checked here so that a scene is
     // refused before it is sent, not by the console after the upload.
     if (position_bits > 14)
-      throw std::out_of_range("mesh '" + src.name + "' has a vertex coordinate of 16384 or more (2^14, the firmware's limit)");
+      throw std::out_of_range(mesh_label(src, m) +
+                              " has a vertex coordinate of 16384 or more (2^14, the firmware's limit)");
     d.mesh.position_bits = static_cast<int8_t>(position_bits);
     d.mesh.state = to_render_state(src.state);
     if (src.state.textured && src.state.texture >= 0 && static_cast<size_t>(src.state.texture) < scene.textures.size()) {
@@ -109,12 +122,14 @@ RenderScene to_render_scene(const Scene& scene, int width, int height) {
 
 void split_meshes(RenderScene* scene, uint32_t max_vertices) {
   if (max_vertices < 4) throw std::invalid_argument("a mesh part needs room for a triangle and its anchor vertex");
+  max_vertices = std::min<uint32_t>(max_vertices, 65536);  // a part's indices are 16-bit
   std::vector<RenderScene::MeshData> out;
   for (RenderScene::MeshData& whole : scene->meshes) {
-    if (whole.vertices.size() <= max_vertices) {
+    if (whole.vertices.size() <= max_vertices && whole.wide_indices.empty()) {
       out.push_back(std::move(whole));
       continue;
     }
+    if (whole.wide_indices.empty()) whole.wide_indices.assign(whole.indices.begin(), whole.indices.end());
     const int bits = render::mesh_position_bits(whole.vertices.data(), static_cast<uint32_t>(whole.vertices.size()));
     // The vertex whose coordinates need the most integer bits: the anchor of parts that need fewer.
     size_t anchor = 0;
@@ -135,14 +150,15 @@ void split_meshes(RenderScene* scene, uint32_t max_vertices) {
       part = {};
       std::fill(part_index.begin(), part_index.end(), -1);
     };
-    for (size_t t = 0; t + 2 < whole.indices.size(); t += 3) {
+    const std::vector<uint32_t>& indices = whole.wide_indices;
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
       uint32_t fresh = 0;
       for (size_t k = 0; k < 3; ++k)
-        if (part_index[whole.indices[t + k]] < 0) ++fresh;
+        if (part_index[indices[t + k]] < 0) ++fresh;
       // One place stays free for the anchor (a repeated index counts twice: harmless).
       if (part.vertices.size() + fresh > max_vertices - 1) finish();
       for (size_t k = 0; k < 3; ++k) {
-        const uint16_t i = whole.indices[t + k];
+        const uint32_t i = indices[t + k];
         if (part_index[i] < 0) {
           part_index[i] = static_cast<int32_t>(part.vertices.size());
           part.vertices.push_back(whole.vertices[i]);

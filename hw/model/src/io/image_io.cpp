@@ -4,26 +4,114 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "htx/fw/crc32.h"
 #include "htx/model/file_out.hpp"
 
 namespace htx {
 
-Image load_image(const std::string& path) {
-  int w = 0, h = 0, channels = 0;
-  unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
+namespace {
+
+std::string read_image_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw std::runtime_error("cannot load image '" + path + "': " +
+                             (std::filesystem::exists(path, ec) ? "not a file" : "no such file"));
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw std::runtime_error("cannot load image '" + path + "': " + ec.message());
+  if (size > kMaxImageFileBytes)
+    throw std::runtime_error("cannot load image '" + path + "': " + std::to_string(size) + " bytes (at most " +
+                             std::to_string(kMaxImageFileBytes) + ")");
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(static_cast<size_t>(size), '\0');
+  if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+    throw std::runtime_error("cannot load image '" + path + "': read failed");
+  return bytes;
+}
+
+uint32_t be32(const std::string& s, size_t at) {
+  return static_cast<uint32_t>(static_cast<uint8_t>(s[at])) << 24 | static_cast<uint32_t>(static_cast<uint8_t>(s[at + 1])) << 16 |
+         static_cast<uint32_t>(static_cast<uint8_t>(s[at + 2])) << 8 | static_cast<uint8_t>(s[at + 3]);
+}
+
+void append_be32(std::string& s, uint32_t v) {
+  for (int shift = 24; shift >= 0; shift -= 8) s.push_back(static_cast<char>(v >> shift));
+}
+
+// A palette PNG's PLTE chunk: where it starts and how many entries it has (0 entries: not a
+// palette PNG, or a structure the decoder will refuse itself).
+struct PaletteChunk {
+  size_t at = 0;
+  uint32_t entries = 0;
+};
+
+PaletteChunk find_palette(const std::string& png) {
+  static const std::string kSignature = "\x89PNG\r\n\x1a\n";
+  constexpr size_t kColourTypeAt = 8 + 8 + 9;  // IHDR's data: width, height, bit depth, colour type
+  if (png.compare(0, kSignature.size(), kSignature) != 0 || png.size() <= kColourTypeAt || png[kColourTypeAt] != 3)
+    return {};
+  for (size_t at = kSignature.size(); at + 12 <= png.size();) {
+    const uint32_t length = be32(png, at);
+    if (length > png.size() - at - 12) return {};
+    if (png.compare(at + 4, 4, "PLTE") == 0) return length % 3 == 0 ? PaletteChunk{at, length / 3} : PaletteChunk{};
+    at += 12 + length;
+  }
+  return {};
+}
+
+// The PNG with its palette padded to 256 entries of one grey level (the chunk's CRC made anew).
+std::string with_padded_palette(const std::string& png, const PaletteChunk& plte, uint8_t grey) {
+  const size_t data_at = plte.at + 8, data_len = size_t{plte.entries} * 3;
+  std::string chunk = "PLTE" + png.substr(data_at, data_len) + std::string(768 - data_len, static_cast<char>(grey));
+  std::string out = png.substr(0, plte.at);
+  append_be32(out, 768);
+  out += chunk;
+  append_be32(out, fw::crc32(reinterpret_cast<const uint8_t*>(chunk.data()), chunk.size()));
+  out += png.substr(data_at + data_len + 4);
+  return out;
+}
+
+std::vector<uint8_t> decode(const std::string& bytes, const std::string& path, int* w, int* h) {
+  int channels = 0;
+  unsigned char* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                                              static_cast<int>(bytes.size()), w, h, &channels, 4);
   if (!data) {
     const char* reason = stbi_failure_reason();
     throw std::runtime_error("cannot load image '" + path + "': " + (reason ? reason : "unknown error"));
   }
-  Image img;
-  img.width = w;
-  img.height = h;
-  img.rgba.assign(data, data + static_cast<size_t>(w) * h * 4);
+  std::vector<uint8_t> rgba(data, data + static_cast<size_t>(*w) * static_cast<size_t>(*h) * 4);
   stbi_image_free(data);
+  return rgba;
+}
+
+}  // namespace
+
+Image load_image(const std::string& path) {
+  const std::string bytes = read_image_file(path);
+  int w = 0, h = 0, channels = 0;
+  if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()), &w, &h,
+                            &channels) &&
+      static_cast<uint64_t>(w) * static_cast<uint64_t>(h) > kMaxImagePixels)
+    throw std::runtime_error("cannot load image '" + path + "': " + std::to_string(w) + "x" + std::to_string(h) +
+                             " is more than " + std::to_string(kMaxImagePixels) + " pixels");
+  Image img;
+  // stb_image expands a palette through a 256-entry table that it leaves uninitialised past the
+  // file's own entries. A palette shorter than 256 is padded in two grey levels and the image
+  // decoded twice: if the two differ, a pixel's index is beyond the palette.
+  const PaletteChunk plte = find_palette(bytes);
+  if (plte.entries > 0 && plte.entries < 256) {
+    img.rgba = decode(with_padded_palette(bytes, plte, 0x00), path, &img.width, &img.height);
+    if (decode(with_padded_palette(bytes, plte, 0xFF), path, &w, &h) != img.rgba)
+      throw std::runtime_error("cannot load image '" + path + "': a pixel's palette index is beyond its " +
+                               std::to_string(plte.entries) + "-entry palette (a corrupt PNG)");
+  } else {
+    img.rgba = decode(bytes, path, &img.width, &img.height);
+  }
   return img;
 }
 

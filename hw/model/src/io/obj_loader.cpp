@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -52,10 +53,25 @@ bool is_decimal(const std::string& tok) {
   return i == tok.size();
 }
 
+// A UTF-8 byte-order mark, which some Windows editors put first: tinyobjloader would read the first
+// line's keyword as "\xEF\xBB\xBFv" and drop that line, shifting every later vertex index. It is
+// stripped from the OBJ and from each MTL.
+constexpr std::string_view kBom = "\xEF\xBB\xBF";
+
+// The whole file, without a leading byte-order mark.
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::string s = std::move(text).str();
+  if (s.starts_with(kBom)) s.erase(0, kBom.size());
+  return s;
+}
+
 // Calls visit(line number, keyword, the words after it) for each line of `file` (comments cut).
 template <class Visit>
 void for_each_line(const std::filesystem::path& file, Visit visit) {
-  std::ifstream in(file);
+  std::istringstream in(read_text(file));
   std::string line;
   for (size_t number = 1; std::getline(in, line); ++number) {
     std::istringstream stream(line.substr(0, line.find('#')));
@@ -67,50 +83,144 @@ void for_each_line(const std::filesystem::path& file, Visit visit) {
   }
 }
 
-// Every word a finite decimal number and their count one the format allows: otherwise a clear
-// error naming the file and line, instead of tinyobjloader's silent 0 (a Kd of one number, which
-// the MTL format reads as grey, it reads as red: three are required).
+// Every word a decimal number finite as a float (tinyobjloader stores floats: 1e39 would be
+// infinite) and their count one the format allows: otherwise a clear error naming the file and
+// line, instead of tinyobjloader's silent 0 (a Kd of one number, which the MTL format reads as
+// grey, it reads as red: three are required).
 void check_decimals(const std::string& source, size_t line, const std::string& keyword,
                     const std::vector<std::string>& words, bool count_ok, const char* counts) {
   const std::string where = source + " line " + std::to_string(line) + ": ";
-  for (const std::string& w : words)
-    if (!is_decimal(w) || !std::isfinite(std::strtod(w.c_str(), nullptr)))
-      throw std::runtime_error(where + "'" + w + "' is not a finite decimal number");
+  for (const std::string& w : words) {
+    if (!is_decimal(w)) throw std::runtime_error(where + "'" + w + "' is not a finite decimal number");
+    if (!std::isfinite(std::strtof(w.c_str(), nullptr)))
+      throw std::runtime_error(where + "'" + w + "' is not a finite decimal number as a float (at most about 3.4e38)");
+  }
   if (!count_ok)
     throw std::runtime_error(where + "'" + keyword + "' with " + std::to_string(words.size()) + " numbers (" +
                              counts + ")");
 }
 
+// One kind of face index (v, vt or vn): the lines of its kind in the file and before the face.
+struct IndexKind {
+  const char* keyword;
+  const char* name;
+  int total = 0, so_far = 0;
+};
+
+// A face corner's index: a non-zero integer naming a line of its kind, counted from the first
+// (positive, any line of the file, as tinyobjloader takes them) or back from the face (negative).
+// tinyobjloader reads a relative index before the first line as a negative index, which is taken
+// as (0, 0) for a texture coordinate, so each is checked here, where the line is known.
+void check_index(const std::string& where, const std::string& word, const IndexKind& kind) {
+  const size_t sign = word.starts_with('-') || word.starts_with('+') ? 1 : 0;
+  const bool integer = word.size() > sign && word.size() - sign <= 9 &&
+                       std::all_of(word.begin() + static_cast<std::ptrdiff_t>(sign), word.end(),
+                                   [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)) != 0; });
+  if (!integer) throw std::runtime_error(where + "'" + word + "' is not a " + kind.name + " index");
+  const int k = std::stoi(word);
+  const auto lines = [&kind](int n) { return std::to_string(n) + " " + kind.keyword + " line" + (n == 1 ? "" : "s"); };
+  if (k > kind.total)
+    throw std::runtime_error(where + kind.name + " index " + word + " out of range (the file has " + lines(kind.total) + ")");
+  if (k == 0 || -k > kind.so_far)
+    throw std::runtime_error(where + kind.name + " index " + word + " out of range (" + lines(kind.so_far) +
+                             " before it)");
+}
+
+// A face line: at least 3 corners, each v, v/vt, v//vn or v/vt/vn with its indices in range, and
+// texture coordinates at every corner or at none (a corner without them would take (0, 0)).
+void check_face(const std::string& where, const std::vector<std::string>& corners, IndexKind* kinds) {
+  if (corners.size() < 3)
+    throw std::runtime_error(where + "a face with " + std::to_string(corners.size()) +
+                             " corners (a face has 3 or more)");
+  size_t with_vt = 0;
+  for (const std::string& corner : corners) {
+    std::vector<std::string> parts;
+    for (size_t at = 0;; ++at) {
+      const size_t slash = corner.find('/', at);
+      parts.push_back(corner.substr(at, slash - at));
+      if (slash == std::string::npos) break;
+      at = slash;
+    }
+    if (parts.size() > 3 || parts[0].empty() || (parts.size() == 2 && parts[1].empty()) ||
+        (parts.size() == 3 && parts[2].empty()))
+      throw std::runtime_error(where + "'" + corner + "' is not a face corner (v, v/vt, v//vn or v/vt/vn)");
+    for (size_t k = 0; k < parts.size(); ++k)
+      if (!parts[k].empty()) check_index(where, parts[k], kinds[k]);
+    if (parts.size() > 1 && !parts[1].empty()) ++with_vt;
+  }
+  if (with_vt != 0 && with_vt != corners.size())
+    throw std::runtime_error(where + "a face with texture coordinates at " + std::to_string(with_vt) + " of its " +
+                             std::to_string(corners.size()) + " corners (OBJ gives them at every corner or none)");
+}
+
 // What tinyobjloader lets pass with at most a warning, checked before it reads the file: the
-// numbers of v and vt lines and of the material libraries' Kd lines, and that each material
-// library exists. Returns the material names the OBJ's usemtl lines ask for; adds each material
-// library's path to `libraries`.
-std::set<std::string> check_obj_text(const std::string& path, std::vector<std::string>* libraries) {
+// numbers of v and vt lines and of the material libraries' Kd lines, each face's corners and
+// indices, that each material library exists and that each usemtl names a material of a library
+// given before it (tinyobjloader draws an unknown one white). Adds each material library's path
+// to `libraries`.
+void check_obj_text(const std::string& path, std::vector<std::string>* libraries) {
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
-  std::set<std::string> used;
+  IndexKind kinds[3] = {{"v", "vertex"}, {"vt", "texture coordinate"}, {"vn", "normal"}};
+  for_each_line(path, [&](size_t, const std::string& key, const std::vector<std::string>&) {
+    for (IndexKind& kind : kinds) kind.total += key == kind.keyword;
+  });
+  std::set<std::string> materials;  // those of the libraries given so far
   for_each_line(path, [&](size_t n, const std::string& key, const std::vector<std::string>& w) {
     const size_t c = w.size();
+    const std::string where = "OBJ '" + path + "' line " + std::to_string(n) + ": ";
+    for (IndexKind& kind : kinds) kind.so_far += key == kind.keyword;
     if (key == "v") {
       check_decimals("OBJ '" + path + "'", n, key, w, c == 3 || c == 4 || c == 6 || c == 7, "v takes 3, 4, 6 or 7");
     } else if (key == "vt") {
       check_decimals("OBJ '" + path + "'", n, key, w, c >= 1 && c <= 3, "vt takes 1 to 3");
+    } else if (key == "f") {
+      check_face(where, w, kinds);
     } else if (key == "usemtl" && c > 0) {
-      used.insert(w[0]);
+      if (!materials.contains(w[0]))
+        throw std::runtime_error(where + "usemtl '" + w[0] + "' is in none of the material libraries before it");
     } else if (key == "mtllib") {
       for (const std::string& lib : w) {
         const std::filesystem::path file = dir / lib;
         if (!std::filesystem::is_regular_file(file))
-          throw std::runtime_error("OBJ '" + path + "' line " + std::to_string(n) + ": material library '" + lib +
-                                   "' not found");
+          throw std::runtime_error(where + "material library '" + lib + "' not found");
         libraries->push_back(file.string());
         for_each_line(file, [&](size_t m, const std::string& mkey, const std::vector<std::string>& mw) {
           if (mkey == "Kd")
             check_decimals("MTL '" + file.string() + "'", m, mkey, mw, mw.size() == 3, "Kd takes 3");
+          else if (mkey == "newmtl" && !mw.empty())
+            materials.insert(mw[0]);
         });
       }
     }
   });
-  return used;
+}
+
+// tinyobjloader's material libraries, read from the OBJ's directory without a byte-order mark.
+class MaterialLibraryReader : public tinyobj::MaterialReader {
+ public:
+  explicit MaterialLibraryReader(std::filesystem::path dir) : dir_(std::move(dir)) {}
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* by_name, std::string* warn, std::string* err) override {
+    const std::filesystem::path file = dir_ / name;
+    if (!std::filesystem::is_regular_file(file)) {
+      *warn += "Material file [ " + name + " ] not found\n";
+      return false;
+    }
+    std::istringstream text(read_text(file));
+    tinyobj::LoadMtl(by_name, materials, &text, warn, err);
+    return true;
+  }
+
+ private:
+  std::filesystem::path dir_;
+};
+
+// tinyobjloader's warnings that lose nothing the loader draws (it keeps `d` over `Tr`; a group
+// without a name, an mtllib without a file). Any other drops a face or a material: an error.
+bool harmless_warning(const std::string& line) {
+  for (const char* harmless : {"Both `d` and `Tr`", "Empty group name", "Looks like empty filename for mtllib"})
+    if (line.find(harmless) != std::string::npos) return true;
+  return line.empty() || line == ".";
 }
 
 // The largest power of two not above n (n >= 1).
@@ -167,33 +277,39 @@ Texture texture_from_image(const Image& img, const std::string& path, TexFormat 
 Scene load_obj_scene(const std::string& path) {
   if (!std::filesystem::is_regular_file(path))
     throw std::runtime_error("OBJ '" + path + "': " + (std::filesystem::exists(path) ? "not a file" : "no such file"));
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = true;
-  config.mtl_search_path = std::filesystem::path(path).parent_path().string();
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config) || !reader.Valid())
-    throw std::runtime_error("cannot load OBJ '" + path + "': " + reader.Error());
   std::vector<std::string> libraries;
-  const std::set<std::string> used_materials = check_obj_text(path, &libraries);
-  const tinyobj::attrib_t& attrib = reader.GetAttrib();
-  const auto& materials = reader.GetMaterials();
-  for (const std::string& name : used_materials) {
-    const auto named = [&name](const tinyobj::material_t& m) { return m.name == name; };
-    if (std::none_of(materials.begin(), materials.end(), named))
-      throw std::runtime_error("OBJ '" + path + "': usemtl '" + name + "' is in none of its material libraries");
-  }
+  check_obj_text(path, &libraries);
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+  std::string warn, err;
+  std::istringstream text(read_text(path));
+  MaterialLibraryReader library_reader(dir);
+  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &text, &library_reader, /*triangulate=*/true,
+                        /*default_vcols_fallback=*/true))
+    throw std::runtime_error("cannot load OBJ '" + path + "': " + err);
+  // What the checks above do not foresee and tinyobjloader drops with only a warning (a face, a
+  // material) is refused too, with its words.
+  std::istringstream warnings(warn);
+  for (std::string line; std::getline(warnings, line);)
+    if (!harmless_warning(line)) throw std::runtime_error("OBJ '" + path + "': " + line);
 
   Scene scene;
   scene.name = std::filesystem::path(path).filename().string();
   scene.sources.push_back(path);
   scene.sources.insert(scene.sources.end(), libraries.begin(), libraries.end());
+  // Only the textures of materials a face uses: an unused material's image is neither read nor sent.
+  std::vector<bool> used(materials.size(), false);
+  for (const auto& shape : shapes)
+    for (const int m : shape.mesh.material_ids)
+      if (m >= 0 && static_cast<size_t>(m) < materials.size()) used[static_cast<size_t>(m)] = true;
   std::map<std::string, int> texture_index;  // by file name
   std::vector<int> material_texture(materials.size(), -1);
   for (size_t m = 0; m < materials.size(); ++m) {
     const std::string& tex = materials[m].diffuse_texname;
-    if (tex.empty()) continue;
-    const std::string full = (std::filesystem::path(config.mtl_search_path) / tex).string();
+    if (tex.empty() || !used[m]) continue;
+    const std::string full = (dir / tex).string();
     auto it = texture_index.find(full);
     if (it == texture_index.end()) {
       std::string note;
@@ -208,7 +324,7 @@ Scene load_obj_scene(const std::string& path) {
   const size_t nverts = attrib.vertices.size() / 3;
   Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
   Vec3 hi{-lo.x, -lo.y, -lo.z};
-  for (const auto& shape : reader.GetShapes()) {
+  for (const auto& shape : shapes) {
     std::map<int, Mesh> by_material;
     const auto& idx = shape.mesh.indices;
     for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
@@ -255,9 +371,14 @@ Scene load_obj_scene(const std::string& path) {
   }
   if (scene.meshes.empty()) throw std::runtime_error("OBJ '" + path + "' has no faces");
   for (const auto& mesh : scene.meshes)
-    for (const Vertex& v : mesh.vertices)
+    for (const Vertex& v : mesh.vertices) {
       if (!std::isfinite(v.pos.x) || !std::isfinite(v.pos.y) || !std::isfinite(v.pos.z))
         throw std::runtime_error("OBJ '" + path + "' has a non-finite vertex");
+      if (!std::isfinite(v.s) || !std::isfinite(v.t))
+        throw std::runtime_error("OBJ '" + path + "' has a non-finite texture coordinate");
+      if (!std::isfinite(v.r) || !std::isfinite(v.g) || !std::isfinite(v.b))
+        throw std::runtime_error("OBJ '" + path + "' has a non-finite colour");
+    }
 
   const Vec3 centre = (lo + hi) * 0.5;
   const double radius = std::max(length(hi - lo) * 0.5, 1e-6);

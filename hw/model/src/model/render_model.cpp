@@ -171,7 +171,10 @@ Frame render_model(const ScreenScene& scene, const ModelConfig& cfg) {
     fw::TriangleRecord rec;
     const fw::EncodeStatus status = fw::encode_triangle(format, in, &rec);
     if (status == fw::kEncodeBadFormat) throw std::logic_error("model configuration yields a bad record format");
-    if (status != fw::kEncodeOk) continue;  // the firmware does not send it: draws nothing
+    if (status != fw::kEncodeOk) {  // the firmware does not send it: draws nothing
+      ++frame.counters.dropped;
+      continue;
+    }
     draw_record(rec, st, method, tri.mesh, static_cast<int>(i), fc);
   }
   return frame;

@@ -20,6 +20,9 @@ struct RenderScene {
   struct MeshData {
     std::vector<render::MeshVertex> vertices;
     std::vector<uint16_t> indices;
+    // A whole mesh of more than 65536 vertices (to_render_scene with keep_wide): its indices, until
+    // split_meshes cuts it into parts with 16-bit ones; `indices` is empty and mesh.indices null.
+    std::vector<uint32_t> wide_indices;
     render::Mesh mesh{};
     uint32_t source = 0;  // the index of the Scene mesh it comes from (split_meshes keeps it)
   };
@@ -29,9 +32,12 @@ struct RenderScene {
   bool cull_backfaces = true;
 };
 
-// Converts with the host's camera (projection * view for the screen's aspect). Throws when a
-// value leaves Q16.16 or a mesh has more than 65536 vertices.
-RenderScene to_render_scene(const Scene& scene, int width, int height);
+// Converts with the host's camera (projection * view for the screen's aspect). Throws
+// std::out_of_range when a value leaves Q16.16 or (naming the mesh), unless keep_wide, a mesh has
+// more than 65536 vertices (keep_wide: such a mesh keeps wide_indices, for split_meshes).
+// render::TriState's texture is a byte: a scene of more than 256 textures names its meshes'
+// textures by the Scene meshes' own (MeshData::source), as scene_payload does.
+RenderScene to_render_scene(const Scene& scene, int width, int height, bool keep_wide = false);
 
 render::TriState to_render_state(const TriState& s);
 
@@ -40,7 +46,8 @@ render::TriState to_render_state(const TriState& s);
 // order, so they draw what the whole mesh draws. Each part keeps the whole mesh's transform
 // precision: a part whose own coordinates need fewer integer bits (mesh_position_bits) also
 // carries the mesh's largest vertex, unreferenced, so that every copy of a shared vertex is
-// transformed alike and the parts meet without cracks. Throws std::invalid_argument below 4.
+// transformed alike and the parts meet without cracks. Meshes with wide_indices are split however
+// few their vertices (max_vertices is taken as at most 65536). Throws std::invalid_argument below 4.
 void split_meshes(RenderScene* scene, uint32_t max_vertices);
 
 }  // namespace htx::host

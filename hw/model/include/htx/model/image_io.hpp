@@ -13,8 +13,15 @@ struct Image {
   std::vector<uint8_t> rgba;
 };
 
+// The largest image load_image decodes: 8192 x 8192 pixels (a texture is drawn from a mip level
+// of at most 256 x 256 anyway), from a regular file of at most 256 MiB.
+inline constexpr uint64_t kMaxImagePixels = uint64_t{1} << 26;
+inline constexpr uint64_t kMaxImageFileBytes = uint64_t{256} << 20;
+
 // Loads any image stb_image reads (PNG and others) as RGBA8. Throws std::runtime_error with the
-// file name and the decoder's reason on failure.
+// file name and the reason on failure: the decoder's, a file or an image above the limits, or a
+// palette PNG with a pixel whose index is beyond its palette (corrupt: stb_image would read
+// uninitialised memory for it).
 Image load_image(const std::string& path);
 
 // Writes a PNG. Throws std::runtime_error on failure.

@@ -1,6 +1,8 @@
 // Scenes from Wavefront OBJ/MTL files with PNG textures (tinyobjloader, stb_image).
 //
 // - One mesh per (shape, material); faces are triangulated; front faces counter-clockwise.
+// - A UTF-8 byte-order mark before the OBJ or an MTL is stripped. Only the materials faces use
+//   have their map_Kd image read.
 // - A material's map_Kd image becomes a texture (RGB565) with sides that are powers of two in
 //   8..256: other sides are shrunk to the largest powers of two within them (area averaging), a
 //   side above 256 halved as the mip levels are made, each with a line in Scene::notes.
@@ -18,8 +20,10 @@ namespace htx {
 
 // Throws std::runtime_error naming the file on any load or validation failure, including what
 // tinyobjloader passes silently or with a warning (docs/scenes.md): a v, vt or Kd number that is not
-// a finite decimal or a count the format does not allow, a missing material library, a usemtl
-// naming no material, a texture-coordinate index out of range.
+// a decimal finite as a float or a count the format does not allow, a missing material library, a
+// usemtl naming no material of a library before it, a face of fewer than 3 corners, a v, vt or vn
+// index out of range (relative ones too), texture coordinates at some corners of a face only, and
+// any warning of tinyobjloader's that drops a face or a material.
 Scene load_obj_scene(const std::string& path);
 
 // An image as a texture the way an OBJ's map_Kd is read (sides powers of two in 8..256, texel

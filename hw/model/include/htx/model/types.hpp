@@ -97,6 +97,9 @@ struct Counters {
   uint64_t triangles = 0, fragments = 0, pixels_written = 0;
   uint64_t divfree_steps_total = 0, divfree_steps_max = 0, divfree_cap_hits = 0, divfree_pixels = 0;
   uint64_t cycles = 0;  // engines that model time fill this
+  // Triangles the vertex-record encoder refused (counted in `triangles`, not drawn: the firmware
+  // does not send them), e.g. texture coordinates beyond the record's range.
+  uint64_t dropped = 0;
 };
 
 struct Frame {
