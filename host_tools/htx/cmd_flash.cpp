@@ -18,7 +18,8 @@ namespace {
 struct FlashArgs {
   std::string bitstream;
   std::string board = "ulx3s";
-  bool to_flash = false;
+  bool to_flash = false;  // --flash
+  bool to_sram = false;   // --sram
   std::string loader;  // empty: the board's loader from PATH
   bool dry_run = false;
 };
@@ -33,17 +34,28 @@ struct LoaderCommand {
 // one of its options.
 std::string bitstream_argument(const std::string& path) { return path.rfind('-', 0) == 0 ? "./" + path : path; }
 
+// Whether the bitstream goes to the board's flash: --flash or --sram, else the board's usual way.
+// The ULX3S loads the FPGA directly over JTAG; a stock iCEBreaker is programmed through its flash
+// (as every iCEBreaker example's `iceprog` does), since loading the FPGA's SRAM over its SPI needs
+// the board's SRAM-programming jumpers changed.
+bool writes_flash(const FlashArgs& a) {
+  if (a.to_flash && a.to_sram) throw std::invalid_argument("--flash and --sram: one or the other");
+  if (a.to_flash || a.to_sram) return a.to_flash;
+  return a.board == "icebreaker";
+}
+
 LoaderCommand loader_command(const FlashArgs& a) {
   const std::string bitstream = bitstream_argument(a.bitstream);
+  const bool flash = writes_flash(a);
   if (a.board == "ulx3s") {
     LoaderCommand c{{a.loader.empty() ? "openFPGALoader" : a.loader, "-b", "ulx3s"}, "openfpgaloader"};
-    if (a.to_flash) c.argv.push_back("-f");
+    if (flash) c.argv.push_back("-f");
     c.argv.push_back(bitstream);
     return c;
   }
   if (a.board == "icebreaker") {  // iceprog writes the flash unless told -S (the FPGA's SRAM)
     LoaderCommand c{{a.loader.empty() ? "iceprog" : a.loader}, "fpga-icestorm"};
-    if (!a.to_flash) c.argv.push_back("-S");
+    if (!flash) c.argv.push_back("-S");
     c.argv.push_back(bitstream);
     return c;
   }
@@ -69,7 +81,7 @@ int run_flash(const FlashArgs& a) {
     throw std::runtime_error("cannot run " + argv[0] + " (" + std::strerror(status.spawn_error) + ")" + advice);
   }
   if (status.succeeded()) {
-    std::cout << "htx flash: loaded " << a.bitstream << (a.to_flash ? " into the board's flash" : " into the FPGA")
+    std::cout << "htx flash: loaded " << a.bitstream << (writes_flash(a) ? " into the board's flash" : " into the FPGA")
               << "\n";
     return 0;
   }
@@ -88,8 +100,10 @@ void register_flash(CLI::App& app) {
   cmd->add_option("--board", args->board, "The board: ulx3s (default) or icebreaker")
       ->check(CLI::IsMember({"ulx3s", "icebreaker"}));
   cmd->add_flag("--flash", args->to_flash,
-                "Write the board's SPI flash, so the design loads at every power-on (default: the FPGA only, "
-                "until power-off)");
+                "Write the board's SPI flash, so the design loads at every power-on (the iCEBreaker's default)");
+  cmd->add_flag("--sram", args->to_sram,
+                "Load the FPGA only, until power-off (the ULX3S's default; an iCEBreaker needs its SRAM-programming "
+                "jumpers changed for it)");
   cmd->add_option("--loader", args->loader,
                   "The loader program to run (default: openFPGALoader or iceprog, as the board needs, from PATH)");
   cmd->add_flag("--dry-run", args->dry_run, "Print the loader's command line and stop");

@@ -93,16 +93,29 @@ TEST(HtxFlash, RunsEachBoardsLoaderIntoTheFpgaOrItsFlash) {
   EXPECT_EQ(read_file(loader + ".args"), "-b\nulx3s\n-f\n" + bit + "\n");
   EXPECT_NE(r.out.find("into the board's flash"), std::string::npos) << r.out;
 
-  // The iCEBreaker's loader is iceprog: -S for the FPGA's SRAM, nothing for the flash.
+  // The iCEBreaker's loader is iceprog: the flash by default (a stock board takes no SRAM load),
+  // -S for the FPGA's SRAM with --sram.
   r = htx::test::run_program({HTX_BIN, "flash", bit, "--board", "icebreaker", "--loader", loader}, 60s);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(read_file(loader + ".args"), "-S\n" + bit + "\n");
+  EXPECT_EQ(read_file(loader + ".args"), bit + "\n");
+  EXPECT_NE(r.out.find("into the board's flash"), std::string::npos) << r.out;
   r = htx::test::run_program({HTX_BIN, "flash", bit, "--board", "icebreaker", "--flash", "--loader", loader}, 60s);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(read_file(loader + ".args"), bit + "\n");
-  r = htx::test::run_program({HTX_BIN, "flash", bit, "--board", "icebreaker", "--dry-run"}, 60s);
+  r = htx::test::run_program({HTX_BIN, "flash", bit, "--board", "icebreaker", "--sram", "--loader", loader}, 60s);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_file(loader + ".args"), "-S\n" + bit + "\n");
+  EXPECT_NE(r.out.find("into the FPGA"), std::string::npos) << r.out;
+  r = htx::test::run_program({HTX_BIN, "flash", bit, "--board", "icebreaker", "--sram", "--dry-run"}, 60s);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("htx flash: iceprog -S " + bit), std::string::npos) << r.out;
+  // The ULX3S's --sram is its default; both flags at once are refused.
+  r = htx::test::run_program({HTX_BIN, "flash", bit, "--sram", "--loader", loader}, 60s);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_file(loader + ".args"), "-b\nulx3s\n" + bit + "\n");
+  r = htx::test::run_program({HTX_BIN, "flash", bit, "--sram", "--flash", "--dry-run"}, 60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("--flash and --sram"), std::string::npos) << r.err;
 }
 
 TEST(HtxFlash, ReportsALoaderThatFailsOrIsMissingAndAnEmptyFile) {
@@ -148,7 +161,7 @@ TEST(HtxFlash, ABitstreamNamedLikeAnOptionIsPassedAsAPath) {
        "cd '" + dir + "' && exec '" + HTX_BIN + "' flash --board icebreaker --loader '" + loader + "' -- -v.bit"},
       60s);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(read_file(loader + ".args"), "-S\n./-v.bit\n");
+  EXPECT_EQ(read_file(loader + ".args"), "./-v.bit\n");
 }
 
 // htx image writes its output only where it would not destroy the ELF it reads, and refuses an

@@ -26,6 +26,9 @@ class Board : public htx::test::BoardPins<Vhtx_icebreaker_top, IcebreakerPins> {
 TEST(BoardIcebreaker, BringUpFirmwareGreetsEchoesAndRestartsOnTheButton) {
   Board board(HTX_FIRMWARE_DIR "/bringup.elf");
   EXPECT_TRUE(board.red_led_lit()) << "the SoC is held in reset after configuration";
+  // Held 256 clocks (the iCE40's block RAMs read 0 for about 3 us after configuration).
+  for (int i = 0; i < 240; ++i) board.clock();
+  EXPECT_TRUE(board.red_led_lit()) << "the power-on reset holds past the block RAMs' start";
   for (int i = 0; i < 32; ++i) board.clock();
   EXPECT_FALSE(board.red_led_lit()) << "the power-on reset ends by itself";
 

@@ -12,7 +12,10 @@ module htx_ulx3s_clocks (
 );
 `ifdef HTX_ECP5
   logic clkop, clkos;
+  // The loop filter's settings, as Lattice's tools and ecppll write them: nextpnr writes 0 for
+  // each one that is not given, which is no charge-pump current and no filter resistor.
   (* FREQUENCY_PIN_CLKI="25" *) (* FREQUENCY_PIN_CLKOP="125" *) (* FREQUENCY_PIN_CLKOS="25" *)
+  (* ICP_CURRENT="12" *) (* LPF_RESISTOR="8" *) (* MFG_ENABLE_FILTEROPAMP="1" *) (* MFG_GMCREF_SEL="2" *)
   EHXPLLL #(
     .PLLRST_ENA("DISABLED"), .INTFB_WAKE("DISABLED"), .STDBY_ENABLE("DISABLED"),
     .DPHASE_SOURCE("DISABLED"), .OUTDIVIDER_MUXA("DIVA"), .OUTDIVIDER_MUXB("DIVB"),
