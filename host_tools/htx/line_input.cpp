@@ -71,13 +71,20 @@ bool LineInput::read(const std::string& prompt, std::string* line) {
   }
 #endif
   std::cout << prompt << std::flush;
+  // A terminal echoes what is typed; a script's lines (a pipe, a file) are shown after the
+  // prompt, so that a log reads as a session.
+  const bool show = !isatty(STDIN_FILENO);
   while (!take_line(line))
     if (!fill(-1)) {
-      if (pending_.empty()) return false;
+      if (pending_.empty()) {
+        if (show) std::cout << "\n" << std::flush;  // ends the last prompt's line
+        return false;
+      }
       *line = pending_;  // a last line without its end
       pending_.clear();
-      return true;
+      break;
     }
+  if (show) std::cout << *line << "\n" << std::flush;
   return true;
 }
 

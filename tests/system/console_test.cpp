@@ -211,6 +211,46 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   EXPECT_NE(cmp.out.find("differing_pixels 0"), std::string::npos) << cmp.out;
 }
 
+// One client at a time: a second htx client on the pty is refused at once, where its bytes and
+// the first one's answers used to mix (a grab "damaged", an upload waiting out its timeout). A
+// command with a control byte is refused before it is sent: a Ctrl-C in it ended the console's
+// line early and put every later answer one command out of step, and a zero made the console skip
+// up to 251 bytes. The console answers in step after both.
+TEST(SystemConsole, OneClientAtATimeAndNoControlBytesInACommand) {
+  ConsoleSim cs;
+  ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
+  {
+    htx::test::Child first({HTX_BIN, "console", "--port", cs.pty, "--timeout", "60"}, true);
+    ASSERT_TRUE(first.read_until("htx> ", 60s)) << first.output();
+    const auto second = cs.console({"info"});
+    EXPECT_EQ(second.status, 1) << second.out;
+    EXPECT_NE(second.err.find("is in use by another htx client"), std::string::npos) << second.err;
+    const auto grab = htx::test::run_program(
+        {HTX_BIN, "grab", "--port", cs.pty, "--out", ::testing::TempDir() + "htx_console_locked.png"}, 60s);
+    EXPECT_EQ(grab.status, 1) << grab.out;
+    EXPECT_NE(grab.err.find("is in use by another htx client"), std::string::npos) << grab.err;
+    first.write_input("scenes\n");
+    ASSERT_TRUE(first.read_until("cube", 60s)) << first.output();
+    // Its input is a pipe, not a terminal that echoes: the line is shown after the prompt.
+    EXPECT_NE(first.output().find("htx> scenes\n"), std::string::npos) << first.output();
+    first.close_input();
+    EXPECT_EQ(first.wait(60s), 0) << first.output();
+  }
+  const auto control = cs.console({"foo\x03scenes", "help"});
+  EXPECT_EQ(control.status, 1) << control.out;
+  EXPECT_NE(control.err.find("a command holds no control characters (byte 3)"), std::string::npos) << control.err;
+  const auto after = cs.console({"help", "info"});
+  ASSERT_EQ(after.status, 0) << after.err;
+  // In step: help's answer after `help`, info's after `info`.
+  const size_t help = after.out.find("htx> help\ncommands:");
+  const size_t info = after.out.find("htx> info\nhypertex console");
+  EXPECT_NE(help, std::string::npos) << after.out;
+  EXPECT_NE(info, std::string::npos) << after.out;
+  EXPECT_LT(help, info) << after.out;
+  EXPECT_EQ(cs.console({"quit"}).status, 0);
+  EXPECT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
+}
+
 // `htx console` typed at, as a person does: a spin's frames show as they are drawn, a line typed
 // while it runs stops it after its frame and then runs (shown after the prompt), and a line typed
 // while a render works waits for it, whole, though longer than the console's 16-byte receive

@@ -14,7 +14,8 @@ constexpr int kDelete = 0x7F;
 bool g_after_cr = false;  // swallow the LF of a CR LF pair
 // Inside a packet frame (after a zero byte, before the next): a packet the host sent again after
 // an upload had ended (its copy of a packet the console had taken), never text, since text holds
-// no zero byte. Bounded by a frame's length, so a lone zero (a NUL typed) costs a few bytes at most.
+// no zero byte. Bounded by a frame's length: a lone zero (a NUL typed, Ctrl-@) makes the console
+// skip up to kPacketMaxLine (251) bytes after it, line ends included (htx refuses to send one).
 size_t g_frame_bytes_left = 0;
 int g_unread = EOF;       // a byte given back by unread_byte
 }  // namespace

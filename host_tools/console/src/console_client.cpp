@@ -151,6 +151,13 @@ std::string ConsoleClient::command(const std::string& line) {
 void ConsoleClient::converse(const std::string& line, const std::function<void(const std::string&)>& show,
                              const std::function<bool()>& stop) {
   if (line.find_first_of("\r\n") != std::string::npos) throw std::invalid_argument("a command is one line");
+  // Other control bytes are the console's own keys: a zero starts a packet frame (the console skips
+  // up to a frame's length after it, lines and all) and Ctrl-C ends the line early (its answer and
+  // the rest's would come out of step with the commands).
+  for (const char c : line)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F)
+      throw std::invalid_argument("a command holds no control characters (byte " +
+                                  std::to_string(static_cast<unsigned char>(c)) + ")");
   port_.write(line + "\r");
   using Clock = std::chrono::steady_clock;
   const std::string prompt = kPrompt;

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/file.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -44,6 +45,16 @@ SerialPort::SerialPort(const std::string& path, unsigned baud) : path_(path) {
   const speed_t speed = speed_of(baud);
   fd_ = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
   if (fd_ < 0) throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
+  // One client at a time: a second one's bytes would be taken as the first one's answers (a grab
+  // "damaged", an upload waiting past its timeout). An advisory lock, which every htx tool takes;
+  // not TIOCEXCL, which would outlive the client on a pty whose other side stays open.
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int err = errno;
+    ::close(fd_);
+    if (err == EWOULDBLOCK)
+      throw std::runtime_error("'" + path + "' is in use by another htx client (one at a time)");
+    throw std::runtime_error("cannot lock '" + path + "': " + std::strerror(err));
+  }
   termios t{};
   if (::tcgetattr(fd_, &t) != 0) {
     const std::string why = std::strerror(errno);
