@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli_checks.hpp"
@@ -107,9 +108,10 @@ struct ConsoleArgs : PortArgs {
 // carried out by htx (their exchanges are binary), and `baud N` switches the port with the
 // console; everything else goes to the console as it is, its output shown as it comes, and
 // `stop` (typed mode: a line typed meanwhile) may stop it (ConsoleClient::converse).
-// Returns false after quit.
+// Returns false after quit. With `refused`, sets it when the console answers with an error line
+// (or refuses a `baud`).
 bool run_line(console::SerialPort& port, console::ConsoleClient& client, const std::string& line,
-              const std::function<bool()>& stop = {}) {
+              const std::function<bool()>& stop = {}, bool* refused = nullptr) {
   std::istringstream words(line);
   std::string verb, arg, format, extra, more;
   words >> verb >> arg >> format >> extra >> more;
@@ -128,6 +130,7 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
       // A rate this port cannot take (refused before the console was asked) or the console's
       // refusal: either way the line is as it was.
       std::cout << e.what() << "\n" << std::flush;
+      if (refused) *refused = true;
     }
     return true;
   }
@@ -149,7 +152,23 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
     }
     return true;
   }
-  client.converse(line, [](const std::string& text) { std::cout << text << std::flush; }, stop);
+  // The answer's lines that start with "error:" are the console's refusals.
+  std::string line_start;  // the current answer line's first characters, up to the marker's length
+  static constexpr std::string_view kError = "error:";
+  client.converse(
+      line,
+      [&](const std::string& text) {
+        std::cout << text << std::flush;
+        for (const char c : text) {
+          if (c == '\n') {
+            line_start.clear();
+          } else if (line_start.size() < kError.size()) {
+            line_start += c;
+            if (refused && line_start == kError) *refused = true;
+          }
+        }
+      },
+      stop);
   if (verb == "help" && arg.empty())  // what htx itself does with a line (the console's `upload` is its protocol)
     std::cout << "htx console also takes:\n"
                  "  upload SCENE          send a built-in scene or FILE.obj with its textures (then `render upload`)\n"
@@ -166,10 +185,20 @@ void run_console(const ConsoleArgs& a) {
   console::ConsoleClient client(port, timeout_of(a));
   client.sync();
   if (!a.commands.empty()) {
+    // Every command runs, as typed ones would; a script learns of refusals from the status.
+    size_t refusals = 0;
+    std::string first_refused;
+    bool quit = false;
     for (const std::string& c : a.commands) {
       std::cout << console::kPrompt << c << "\n" << std::flush;
-      if (!run_line(port, client, c)) return;
+      bool refused = false;
+      quit = !run_line(port, client, c, {}, &refused);
+      if (refused && refusals++ == 0) first_refused = c;
+      if (quit) break;
     }
+    if (refusals > 0)
+      throw std::runtime_error("the console answered " + std::to_string(refusals) + " of the commands with an error "
+                               "(the first: `" + first_refused + "`)");
     return;
   }
   // Interactive: a line from stdin at a time (LineInput: edited, with history, on a terminal),

@@ -102,7 +102,11 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
                               "info please", std::string(120, 'x'),
                           "render nosuch", "stats", "render cube", "stats"});
   ASSERT_FALSE(r.timed_out);
-  ASSERT_EQ(r.status, 0) << r.err;
+  // Every command runs; the refusals make the status 1 (a script learns of them).
+  ASSERT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("the console answered 8 of the commands with an error (the first: `set method bogus`)"),
+            std::string::npos)
+      << r.err;
   // `help`: the console's commands, then what htx itself does with a line.
   EXPECT_NE(r.out.find("commands:\n  help"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("htx console also takes:\n  upload SCENE"), std::string::npos) << r.out;
@@ -337,7 +341,9 @@ TEST(SystemConsole, BaudSwitchesTheLineBothWays) {
   const auto r = cs.console({"baud 250000", "info", "quit now", "baud 5000000", "baud 7", "baud 3000000",
                              "baud 1000000", "info", "render cube"});
   ASSERT_FALSE(r.timed_out);
-  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  ASSERT_EQ(r.status, 1) << r.out << r.err;  // five refusals, every command run
+  EXPECT_NE(r.err.find("answered 5 of the commands with an error (the first: `baud 250000`)"), std::string::npos)
+      << r.err;
   // A rate the UART makes but this end's port cannot take is refused before the console is asked,
   // so both ends stay at 115,200 (the console would otherwise have switched alone).
   EXPECT_NE(r.out.find("htx> baud 250000\nbaud 250000: want 9600, 19200"), std::string::npos) << r.out;
@@ -379,7 +385,8 @@ TEST(SystemConsole, ScreenShowsTheRenderedFrameScaled) {
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
   const auto r = cs.console(
       {"video", "video dim", "video off", "info", "video on", "render cube", "info", "info", "info", "quit"});
-  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(r.status, 1) << r.err;  // the two usage errors
+  EXPECT_NE(r.err.find("answered 2 of the commands with an error (the first: `video`)"), std::string::npos) << r.err;
   EXPECT_NE(r.out.find("htx> video\nerror: usage: video on|off\nhtx> video dim\nerror: usage: video on|off"),
             std::string::npos)
       << r.out;
@@ -418,7 +425,8 @@ TEST(SystemConsole, SpinTurnsTheSceneAndEndsWhereItStarted) {
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
   const auto r = cs.console({"spin", "spin cube 0", "spin cube 3601", "spin cube 2 3", "spin cube 2 crc x",
                              "spin nosuch", "render cube", "spin cube 4 crc", "spin cube 2"});
-  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(r.status, 1) << r.err;  // the six refusals
+  EXPECT_NE(r.err.find("answered 6 of the commands with an error (the first: `spin`)"), std::string::npos) << r.err;
   const std::string usage = "error: usage: spin SCENE [FRAMES] [crc] (FRAMES = 1..3600, 60 by default)";
   size_t usages = 0;
   for (size_t at = r.out.find(usage); at != std::string::npos; at = r.out.find(usage, at + 1)) ++usages;
