@@ -1,6 +1,8 @@
 // htx console and htx grab: talk to the console firmware (docs/console.md) on a board's serial port
 // or on the pseudo-terminal of `htx sim --uart pty`.
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -99,6 +101,35 @@ void upload_scene(console::ConsoleClient& client, const ScenePayload& p) {
     }
   }
 }
+
+// While it lives, SIGINT (Ctrl-C) asks the running command to stop (asked()) instead of ending
+// htx; a second one before the first was taken ends htx as Ctrl-C would have. Outside it (at the
+// prompt, where libedit reads) Ctrl-C keeps its usual meaning.
+class InterruptStops {
+ public:
+  InterruptStops() {
+    pending_ = 0;
+    struct sigaction on {};
+    on.sa_handler = &InterruptStops::on_interrupt;
+    sigemptyset(&on.sa_mask);
+    sigaction(SIGINT, &on, &before_);
+  }
+  ~InterruptStops() { sigaction(SIGINT, &before_, nullptr); }
+  InterruptStops(const InterruptStops&) = delete;
+  InterruptStops& operator=(const InterruptStops&) = delete;
+  // Whether Ctrl-C was pressed since the last call.
+  static bool asked() { return pending_.exchange(0) != 0; }
+
+ private:
+  static void on_interrupt(int) {
+    if (pending_.exchange(1) != 0) {  // the first not yet taken: quit
+      signal(SIGINT, SIG_DFL);
+      raise(SIGINT);
+    }
+  }
+  static inline std::atomic<int> pending_{0};
+  struct sigaction before_ {};
+};
 
 struct ConsoleArgs : PortArgs {
   std::vector<std::string> commands;
@@ -206,11 +237,14 @@ void run_console(const ConsoleArgs& a) {
   // it would lose characters). A line typed while the console works waits its turn, and stops a
   // `spin` (a single key goes to the console: see ConsoleClient::converse); it then runs, shown
   // after the prompt. A mistyped grab or upload is reported and the session goes on.
+  // Ctrl-C while the console works stops it as a typed line does (a `spin` ends after its frame),
+  // rather than leaving it spinning with no client; a second Ctrl-C before it has stopped quits.
   LineInput input;
   std::string line;
   while (input.read(console::kPrompt, &line)) {
     try {
-      if (!run_line(port, client, line, [&input] { return input.line_typed(); })) break;
+      const InterruptStops interrupts;
+      if (!run_line(port, client, line, [&input] { return input.line_typed() || InterruptStops::asked(); })) break;
     } catch (const std::invalid_argument& e) {
       std::cout << "error: " << e.what() << "\n";
     }

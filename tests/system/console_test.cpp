@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -213,6 +214,27 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   const auto cmp = htx::test::run_program({HTX_BIN, "compare", png, ref}, 60s);
   ASSERT_EQ(cmp.status, 0) << cmp.err;
   EXPECT_NE(cmp.out.find("differing_pixels 0"), std::string::npos) << cmp.out;
+}
+
+// Ctrl-C in `htx console` while the console works stops the command as a typed line does (a spin
+// ends after its frame) and the session goes on; until 2026-12-06 it ended htx and left the console
+// spinning with no client.
+TEST(SystemConsole, CtrlCStopsASpinAndTheSessionGoesOn) {
+  ConsoleSim cs;
+  ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
+  htx::test::Child console({HTX_BIN, "console", "--port", cs.pty, "--timeout", "60"}, true);
+  ASSERT_TRUE(console.read_until("htx> ", 60s)) << console.output();
+  console.write_input("spin floor 3600\n");
+  ASSERT_TRUE(console.read_until("frame 2 frame_cycles", 60s)) << console.output();
+  console.send_signal(SIGINT);
+  ASSERT_TRUE(console.read_until("spin floor frames ", 60s)) << console.output();
+  EXPECT_NE(console.output().find("(stopped)"), std::string::npos) << console.output();
+  console.write_input("info\n");
+  ASSERT_TRUE(console.read_until("serial 115384 baud", 60s)) << console.output();
+  console.write_input("quit\n");
+  console.close_input();
+  EXPECT_EQ(console.wait(60s), 0) << console.output();
+  EXPECT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
 }
 
 // One client at a time: a second htx client on the pty is refused at once, where its bytes and
