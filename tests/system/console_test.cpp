@@ -782,7 +782,8 @@ TEST(SystemConsole, TextureUploadDrawsWithTheUploadedTexture) {
 }
 
 // Texture slots: `htx upload nearclip` sends its two textures into slots 0 and 1, each beside the
-// textures in use (the boot checkerboard's blocks freed once slot 0 moved off them); a third
+// textures in use (slot 0's at the memory's end, so that the boot checkerboard's blocks, freed
+// once slot 0 moved off them, join the free space: place_texture_chain); a third
 // 32 x 32 chain does not fit the 340 blocks left and is refused with every texture kept; a new
 // texture for slot 1 goes over slot 1's own; a small one fits beside; a slot the console does not
 // have is refused before anything is sent. The uploaded scene draws with its meshes' slots.
@@ -793,7 +794,7 @@ TEST(SystemConsole, TextureSlotsShareTheTextureMemory) {
   ASSERT_FALSE(pty.empty()) << sim.output();
   const auto up = htx::test::run_program({HTX_BIN, "upload", "nearclip", "--port", pty, "--timeout", "60"}, 180s);
   ASSERT_EQ(up.status, 0) << up.err;
-  EXPECT_NE(up.out.find("texture ok: 32x32 rgb565, 6 levels, slot 0 at blocks 342..683 (342 of 1024 in use)"),
+  EXPECT_NE(up.out.find("texture ok: 32x32 rgb565, 6 levels, slot 0 at blocks 682..1023 (342 of 1024 in use)"),
             std::string::npos)
       << up.out;
   EXPECT_NE(up.out.find("texture ok: 32x32 rgb565, 6 levels, slot 1 at blocks 0..341 (684 of 1024 in use)"),
@@ -833,7 +834,7 @@ TEST(SystemConsole, TextureSlotsShareTheTextureMemory) {
   write_texture_png(tiny, 8, 8, [](int x, int) { return std::array<uint8_t, 4>{static_cast<uint8_t>(x * 30), 0, 0, 255}; });
   const auto fits = cs.console({"texture " + tiny + " rgb565 3", "info", "render upload"});
   ASSERT_EQ(fits.status, 0) << fits.err;
-  EXPECT_NE(fits.out.find("texture ok: 8x8 rgb565, 4 levels, slot 3 at blocks 684..705 (706 of 1024 in use)"),
+  EXPECT_NE(fits.out.find("texture ok: 8x8 rgb565, 4 levels, slot 3 at blocks 342..363 (706 of 1024 in use)"),
             std::string::npos)
       << fits.out;
   EXPECT_NE(fits.out.find("texture 3: 8x8 rgb565 (uploaded)"), std::string::npos) << fits.out;

@@ -74,9 +74,9 @@ void receive_texture(uint32_t size, uint32_t crc32, uint32_t slot) {
   const uint32_t need = why ? 0 : htx::hal::texture_chain_blocks(t.log2_width, t.log2_height);
   // Beside every texture in use if it fits, so that a failure changes nothing; else over this
   // slot's own.
-  uint32_t base = why ? total : htx::render::find_texture_gap(live_regions(kSlots), kSlots, need, total);
+  uint32_t base = why ? total : htx::render::place_texture_chain(live_regions(kSlots), kSlots, need, total);
   const bool over_own = !why && base == total;
-  if (over_own) base = htx::render::find_texture_gap(live_regions(slot), kSlots, need, total);
+  if (over_own) base = htx::render::place_texture_chain(live_regions(slot), kSlots, need, total);
   if (!why && base == total) why = "its mip chain does not fit beside the other slots' textures";
   if (why) {
     printf("error: not a valid texture (%s); the texture is unchanged\r\n", why);

@@ -30,4 +30,10 @@ uint32_t find_texture_gap(const TextureRegion* live, uint32_t count, uint32_t ne
   return best;
 }
 
+uint32_t place_texture_chain(const TextureRegion* live, uint32_t count, uint32_t need, uint32_t total) {
+  const uint32_t base = find_texture_gap(live, count, need, total);
+  if (base == total) return total;
+  return free_run(live, count, base, total - base, total) ? total - need : base;
+}
+
 }  // namespace htx::render

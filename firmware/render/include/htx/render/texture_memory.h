@@ -17,4 +17,11 @@ struct TextureRegion {
 // `count` regions in `live` (empty ones ignored), or `total` when there is none (or need is 0).
 uint32_t find_texture_gap(const TextureRegion* live, uint32_t count, uint32_t need, uint32_t total);
 
+// Where a chain of `need` blocks goes: at the start of the lowest gap find_texture_gap finds, or,
+// when that gap runs to the memory's end, at the end. A texture replaced beside its old chain then
+// leaves the freed blocks joined to the free space instead of splitting it in two (the lowest gap
+// alone put a 32 x 32 replacement of the boot texture in the middle of 1,024 blocks, after which
+// a 64 x 16 chain of 344 blocks found no room with 682 free). `total` when nothing fits.
+uint32_t place_texture_chain(const TextureRegion* live, uint32_t count, uint32_t need, uint32_t total);
+
 }  // namespace htx::render
