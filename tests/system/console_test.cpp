@@ -216,6 +216,32 @@ TEST(SystemConsole, CommandsRenderAndGrabThroughThePseudoTerminal) {
   EXPECT_NE(cmp.out.find("differing_pixels 0"), std::string::npos) << cmp.out;
 }
 
+// A client that ends in the middle of an upload (here an upload begun by hand, then the port
+// closed) leaves the console receiving packets; the next htx client's Abort ends that at once, so
+// its command is answered within a 10 s --timeout, where it used to wait out the console's own
+// silence timeout (most of a minute on the simulator) and fail.
+TEST(SystemConsole, TheNextClientEndsAnUploadTheLastOneLeft) {
+  ConsoleSim cs;
+  ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
+  {
+    const int fd = htx::test::open_raw_terminal(cs.pty);
+    ASSERT_GE(fd, 0) << "cannot open " << cs.pty << " raw";
+    std::string got;
+    ASSERT_TRUE(htx::test::read_fd_until(fd, got, "htx> ", 60s)) << got;  // booted: the FIFO is read
+    const std::string cmd = "upload 816 0badf00d\r";
+    ASSERT_EQ(write(fd, cmd.data(), cmd.size()), static_cast<ssize_t>(cmd.size()));
+    ASSERT_TRUE(htx::test::read_fd_until(fd, got, "ready\r\n", 60s)) << got;
+    close(fd);
+  }
+  const auto next = htx::test::run_program(
+      {HTX_BIN, "console", "--port", cs.pty, "--timeout", "10", "-c", "scenes", "-c", "quit"}, 120s);
+  ASSERT_FALSE(next.timed_out);
+  EXPECT_EQ(next.status, 0) << next.out << next.err;
+  EXPECT_NE(next.out.find("htx> scenes\n"), std::string::npos) << next.out;
+  EXPECT_NE(next.out.find("cube"), std::string::npos) << next.out;
+  EXPECT_EQ(cs.sim.wait(60s), 0) << cs.sim.output();
+}
+
 // Ctrl-C in `htx console` while the console works stops the command as a typed line does (a spin
 // ends after its frame) and the session goes on; until 2026-12-06 it ended htx and left the console
 // spinning with no client.

@@ -13,6 +13,7 @@ namespace htx::console {
 namespace {
 
 constexpr auto kSettle = std::chrono::milliseconds(300);
+constexpr auto kAbortAfter = std::chrono::milliseconds(1000);  // sync's silence before an Abort
 constexpr size_t kMaxText = 1 << 20;  // no answer of the console is near this
 
 bool ends_with(const std::string& s, const std::string& tail) {
@@ -82,7 +83,25 @@ std::string ConsoleClient::read_until_prompt() {
 
 void ConsoleClient::sync() {
   port_.write("\r");
-  read_until_prompt();
+  // A console still receiving an upload whose client ended answers no line break (until its own
+  // silence timeout: 10 s on a board, most of a minute on the simulator). After a second of
+  // silence without a prompt, an Abort ends such an upload at once; anywhere else the console
+  // skips it as a packet frame. Only after silence: a busy console's receive FIFO may be full of
+  // unread input, and a byte of the frame lost there would make the console skip what follows.
+  std::string text;
+  for (;;) {
+    uint8_t b = 0;
+    if (!next_byte_within(std::min<std::chrono::milliseconds>(kAbortAfter, timeout_), &b)) {
+      const uint8_t nothing = 0;
+      send_packet(fw::kPacketAbort, 0, &nothing, 1);
+      port_.write("\r");
+      read_until_prompt();
+      break;
+    }
+    if (text.size() > kMaxText) throw std::runtime_error("the console sent more than 1 MiB without a prompt");
+    text += static_cast<char>(b);
+    if (ends_with(text, kPrompt)) break;
+  }
   // A prompt printed before ours (the greeting's) may be followed by ours: drop everything up to a
   // moment of silence.
   pos_ = buf_.size();
