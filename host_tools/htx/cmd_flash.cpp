@@ -29,6 +29,7 @@ struct FlashArgs {
 struct LoaderCommand {
   std::vector<std::string> argv;
   const char* package;
+  bool to_flash;  // the board's flash, else the FPGA until power-off
 };
 // The bitstream as the loader's argument: a relative path that starts with '-' would be read as
 // one of its options.
@@ -48,13 +49,13 @@ LoaderCommand loader_command(const FlashArgs& a) {
   const std::string bitstream = bitstream_argument(a.bitstream);
   const bool flash = writes_flash(a);
   if (a.board == "ulx3s") {
-    LoaderCommand c{{a.loader.empty() ? "openFPGALoader" : a.loader, "-b", "ulx3s"}, "openfpgaloader"};
+    LoaderCommand c{{a.loader.empty() ? "openFPGALoader" : a.loader, "-b", "ulx3s"}, "openfpgaloader", flash};
     if (flash) c.argv.push_back("-f");
     c.argv.push_back(bitstream);
     return c;
   }
   if (a.board == "icebreaker") {  // iceprog writes the flash unless told -S (the FPGA's SRAM)
-    LoaderCommand c{{a.loader.empty() ? "iceprog" : a.loader}, "fpga-icestorm"};
+    LoaderCommand c{{a.loader.empty() ? "iceprog" : a.loader}, "fpga-icestorm", flash};
     if (!flash) c.argv.push_back("-S");
     c.argv.push_back(bitstream);
     return c;
@@ -81,7 +82,7 @@ int run_flash(const FlashArgs& a) {
     throw std::runtime_error("cannot run " + argv[0] + " (" + std::strerror(status.spawn_error) + ")" + advice);
   }
   if (status.succeeded()) {
-    std::cout << "htx flash: loaded " << a.bitstream << (writes_flash(a) ? " into the board's flash" : " into the FPGA")
+    std::cout << "htx flash: loaded " << a.bitstream << (command.to_flash ? " into the board's flash" : " into the FPGA")
               << "\n";
     return 0;
   }

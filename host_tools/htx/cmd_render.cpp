@@ -149,13 +149,7 @@ void run_render(const RenderArgs& given) {
   write_png(a.out, image_from_rgb565(frame.width, frame.height, frame.color));
   // Triangles the vertex-record encoder refused, which the firmware would not send either (ref
   // draws every one): said as the soc engine says the console's.
-#ifdef HTX_HAVE_RTL_ENGINE
-  const uint64_t dropped = a.engine == "ref"     ? 0
-                           : a.engine == "model" ? frame.counters.dropped
-                                                 : screen.tris.size() - rtl_stats.triangles_encoded;
-#else
   const uint64_t dropped = frame.counters.dropped;
-#endif
   std::cout << a.engine << " rendered " << a.scene << " (" << screen.tris.size() << " triangles, "
             << (dropped > 0 ? std::to_string(dropped) + " dropped, " : "") << width << "x" << height << ") in " << ms
             << " ms -> " << a.out << "\n";

@@ -28,6 +28,21 @@ uint32_t lowest_free_run(const std::vector<TextureRegion>& live, uint32_t need, 
   return total;
 }
 
+// Up to 8 live regions in `total` blocks: disjoint, some empty, in a shuffled order.
+std::vector<TextureRegion> random_layout(std::mt19937& rng, uint32_t total) {
+  std::vector<TextureRegion> live(1 + rng() % 8);
+  uint32_t at = rng() % 32;
+  for (TextureRegion& r : live) {
+    if (rng() % 4 == 0) continue;
+    const uint32_t blocks = 1 + rng() % (total / 4);
+    if (at + blocks > total) break;
+    r = {at, blocks};
+    at += blocks + rng() % 64;
+  }
+  std::shuffle(live.begin(), live.end(), rng);
+  return live;
+}
+
 TEST(TextureMemory, TheConsolesTwoTexturesAndAThird) {
   // The board's 1,024 blocks; a 32 x 32 chain takes 342.
   const uint32_t total = 1024, chain = 342;
@@ -62,16 +77,7 @@ TEST(TextureMemory, EqualsABlockByBlockSearch) {
   std::mt19937 rng(7);
   for (int trial = 0; trial < 20000; ++trial) {
     const uint32_t total = 64 + rng() % 1024;
-    std::vector<TextureRegion> live(1 + rng() % 8);
-    uint32_t at = rng() % 32;
-    for (TextureRegion& r : live) {  // disjoint, some empty, in a shuffled order
-      if (rng() % 4 == 0) continue;
-      const uint32_t blocks = 1 + rng() % (total / 4);
-      if (at + blocks > total) break;
-      r = {at, blocks};
-      at += blocks + rng() % 64;
-    }
-    std::shuffle(live.begin(), live.end(), rng);
+    const std::vector<TextureRegion> live = random_layout(rng, total);
     const uint32_t need = rng() % (total / 2);
     ASSERT_EQ(find_texture_gap(live.data(), static_cast<uint32_t>(live.size()), need, total),
               lowest_free_run(live, need, total))
@@ -108,16 +114,7 @@ TEST(TextureMemory, PlacementIsAFreeRunInTheLowestGap) {
   std::mt19937 rng(11);
   for (int trial = 0; trial < 20000; ++trial) {
     const uint32_t total = 64 + rng() % 1024;
-    std::vector<TextureRegion> live(1 + rng() % 8);
-    uint32_t at = rng() % 32;
-    for (TextureRegion& r : live) {
-      if (rng() % 4 == 0) continue;
-      const uint32_t blocks = 1 + rng() % (total / 4);
-      if (at + blocks > total) break;
-      r = {at, blocks};
-      at += blocks + rng() % 64;
-    }
-    std::shuffle(live.begin(), live.end(), rng);
+    const std::vector<TextureRegion> live = random_layout(rng, total);
     const uint32_t need = 1 + rng() % (total / 2);
     const uint32_t count = static_cast<uint32_t>(live.size());
     const uint32_t lowest = lowest_free_run(live, need, total);

@@ -72,12 +72,19 @@ uint8_t ConsoleClient::next_byte() {
   return b;
 }
 
+bool ConsoleClient::prompt_within(std::chrono::milliseconds wait, std::string* text) {
+  while (!ends_with(*text, kPrompt)) {
+    if (text->size() > kMaxText) throw std::runtime_error("the console sent more than 1 MiB without a prompt");
+    uint8_t b = 0;
+    if (!next_byte_within(wait, &b)) return false;
+    *text += static_cast<char>(b);
+  }
+  return true;
+}
+
 std::string ConsoleClient::read_until_prompt() {
   std::string text;
-  while (!ends_with(text, kPrompt)) {
-    if (text.size() > kMaxText) throw std::runtime_error("the console sent more than 1 MiB without a prompt");
-    text += static_cast<char>(next_byte());
-  }
+  if (!prompt_within(timeout_, &text)) silence();
   return text.substr(0, text.size() - std::string(kPrompt).size());
 }
 
@@ -89,18 +96,11 @@ void ConsoleClient::sync() {
   // skips it as a packet frame. Only after silence: a busy console's receive FIFO may be full of
   // unread input, and a byte of the frame lost there would make the console skip what follows.
   std::string text;
-  for (;;) {
-    uint8_t b = 0;
-    if (!next_byte_within(std::min<std::chrono::milliseconds>(kAbortAfter, timeout_), &b)) {
-      const uint8_t nothing = 0;
-      send_packet(fw::kPacketAbort, 0, &nothing, 1);
-      port_.write("\r");
-      read_until_prompt();
-      break;
-    }
-    if (text.size() > kMaxText) throw std::runtime_error("the console sent more than 1 MiB without a prompt");
-    text += static_cast<char>(b);
-    if (ends_with(text, kPrompt)) break;
+  if (!prompt_within(std::min<std::chrono::milliseconds>(kAbortAfter, timeout_), &text)) {
+    const uint8_t nothing = 0;
+    send_packet(fw::kPacketAbort, 0, &nothing, 1);
+    port_.write("\r");
+    read_until_prompt();
   }
   // A prompt printed before ours (the greeting's) may be followed by ours: drop everything up to a
   // moment of silence.

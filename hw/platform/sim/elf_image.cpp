@@ -4,10 +4,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
+
+#include "htx/host/file_in.hpp"
 
 namespace htx::sim {
 namespace {
@@ -178,24 +177,13 @@ std::string readmemh_text(std::span<const uint32_t> words) {
 }
 
 ElfImage load_elf(const std::string& path) {
-  // Only a regular file of a size an ELF can have is read: a device (/dev/zero) or a pipe would
-  // be read until memory ran out.
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw std::runtime_error(path + ": not a regular file (an ELF is read from one)");
-  const uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) throw std::runtime_error(path + ": cannot read its size: " + ec.message());
-  if (size > kMaxElfFileBytes)
-    throw std::runtime_error(path + ": " + std::to_string(size) + " bytes; an ELF for the SoC is at most " +
-                             std::to_string(kMaxElfFileBytes) + " bytes");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open");
-  std::vector<uint8_t> data(static_cast<size_t>(size));
-  in.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(data.size()));
-  if (in.gcount() != static_cast<std::streamsize>(data.size()))
-    throw std::runtime_error(path + ": read " + std::to_string(in.gcount()) + " of its " + std::to_string(size) +
-                             " bytes");
-  return parse_elf(data, path);
+  std::string bytes;
+  try {
+    bytes = host::read_regular_file(path, kMaxElfFileBytes);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(path + ": " + e.what() + " (an ELF for the SoC)");
+  }
+  return parse_elf(std::span(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()), path);
 }
 
 }  // namespace htx::sim

@@ -4,13 +4,12 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "htx/fw/crc32.h"
+#include "htx/host/file_in.hpp"
 #include "htx/model/file_out.hpp"
 
 namespace htx {
@@ -18,20 +17,11 @@ namespace htx {
 namespace {
 
 std::string read_image_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw std::runtime_error("cannot load image '" + path + "': " +
-                             (std::filesystem::exists(path, ec) ? "not a file" : "no such file"));
-  const uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) throw std::runtime_error("cannot load image '" + path + "': " + ec.message());
-  if (size > kMaxImageFileBytes)
-    throw std::runtime_error("cannot load image '" + path + "': " + std::to_string(size) + " bytes (at most " +
-                             std::to_string(kMaxImageFileBytes) + ")");
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes(static_cast<size_t>(size), '\0');
-  if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
-    throw std::runtime_error("cannot load image '" + path + "': read failed");
-  return bytes;
+  try {
+    return host::read_regular_file(path, kMaxImageFileBytes);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error("cannot load image '" + path + "': " + e.what());
+  }
 }
 
 uint32_t be32(const std::string& s, size_t at) {

@@ -252,6 +252,7 @@ Frame render_rtl(const ScreenScene& scene, const ModelConfig& cfg, RtlStats* sta
   for (uint32_t& z : frame.depth) z &= z_max;
   frame.probe.assign(n, PixelProbe{});
   frame.counters.triangles = scene.tris.size();
+  frame.counters.dropped = scene.tris.size() - encoded.size();  // the encoder's refusals, not sent
   frame.counters.fragments = s.covered_pixels;
   frame.counters.pixels_written = s.pixels_written;
   frame.counters.cycles = s.cycles;

@@ -72,6 +72,8 @@ class ConsoleClient {
   // The next byte if one comes within `wait` (false: none came; nothing is thrown).
   bool next_byte_within(std::chrono::milliseconds wait, uint8_t* byte);
   [[noreturn]] void silence() const;
+  // Reads into *text until it ends with a prompt; false when `wait` passes in silence first.
+  bool prompt_within(std::chrono::milliseconds wait, std::string* text);
   std::string read_until_prompt();
   // Reads text until it ends with `needle` (true) or with a prompt (false: the text without it).
   bool read_text_until(const std::string& needle, std::string* text);
