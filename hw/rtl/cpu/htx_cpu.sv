@@ -366,11 +366,13 @@ module htx_cpu #(
   // source registers takes the other half of the product the unit already holds instead of
   // multiplying again (MUL and MULH, the RISC-V spec's recommended pair, in either order). The
   // unit computes MUL's high half as signed x signed, so a MUL pairs with MULH and with anything
-  // before it; otherwise the signedness must match. The first one's destination cannot be a
+  // before it; otherwise the signedness must match. A MUL that was itself fused (e_mul_q low)
+  // left its predecessor's product in the unit, so a MULH after it pairs only if that MUL ran
+  // (after MULHSU or MULHU the high half is not MULH's). The first one's destination cannot be a
   // source of the second here: that is a late-result hazard, which puts a bubble in E first.
   logic fuse_d, fuse_mode;
   assign fuse_mode = (d_dec.funct3[1:0] == 2'b00) || (d_dec.funct3[1:0] == e_q.funct3[1:0]) ||
-                     ((e_q.funct3[1:0] == 2'b00) && (d_dec.funct3[1:0] == 2'b01));
+                     ((e_q.funct3[1:0] == 2'b00) && e_mul_q && (d_dec.funct3[1:0] == 2'b01));
   assign fuse_d    = d_dec.mul && e_valid_q && e_q.mul && !e_xtrap_q && fuse_mode &&
                      (e_q.uimm == d_ra) && (e_rb_q == d_rb);
 

@@ -64,6 +64,14 @@ TEST_BEGIN
   TEST_CASE(47, a3, 0xfffffeec, lw a0, 0(s0); li a1, 0xf0e1d2c3; mul a2, a0, a1; mulh a3, a0, a1)
   // A divide between two multiplies, and a multiply right after a divide of the same sources.
   TEST_CASE(48, a4, 0x05fadeb2, li a0, 0x9abcdef1; li a1, 0xf0e1d2c3; mul a2, a0, a1; div a3, a0, a1; mulh a4, a0, a1)
+  // A MUL fused behind MULHSU or MULHU leaves that product in the unit, whose high half is not
+  // MULH's: a MULH after it multiplies again (found by the differential test against QEMU).
+  TEST_CASE(49, a4, 0x05fadeb2, li a0, 0x9abcdef1; li a1, 0xf0e1d2c3; mulhsu a2, a0, a1; mul a3, a0, a1; mulh a4, a0, a1)
+  TEST_CASE(50, a3, 0xae908393, nop)
+  TEST_CASE(51, a4, 0x05fadeb2, li a0, 0x9abcdef1; li a1, 0xf0e1d2c3; mulhu a2, a0, a1; mul a3, a0, a1; mulh a4, a0, a1)
+  TEST_CASE(52, a4, 0xa0b7bda3, li a0, 0x9abcdef1; li a1, 0xf0e1d2c3; mulhu a2, a0, a1; mul a3, a0, a1; mulhsu a4, a0, a1)
+  // MUL, MUL (fused), MULH: the product in the unit is signed x signed either way.
+  TEST_CASE(53, a4, 0x05fadeb2, li a0, 0x9abcdef1; li a1, 0xf0e1d2c3; mul a2, a0, a1; mul a3, a0, a1; mulh a4, a0, a1)
 TEST_END
   .data
   .balign 4
