@@ -1,16 +1,18 @@
 // Differential test of htx_cpu against QEMU's RV32IM (qemu-riscv32, Linux user mode, from Debian's
-// qemu-user): seeded random programs (random_program.hpp) run on both, and the registers and the
-// data region each leaves must agree word for word, with the core's buses answering at once and
-// with random wait states. QEMU is the reference because it is an implementation of the ISA that
-// shares nothing with this project's; the instruction tests (tests/rtl/isa) check the edge cases
-// one by one, this test the instructions in the random orders, hazards and timings a compiler and
-// the buses produce.
+// qemu-user): seeded random programs (random_program.hpp) run on both, and the signature each
+// leaves (registers, data region, checkpoints, result log) must agree word for word, with the
+// core's buses answering at once and with random wait states. QEMU is the reference because it is
+// an implementation of the ISA that shares nothing with this project's; the instruction tests
+// (tests/rtl/isa) check the edge cases one by one, this test the instructions in the orders,
+// hazards and timings that programs and the buses produce.
 //
 // A failing program's source and ELFs stay in the build directory (random_programs/seed_N.*);
 // the message names the seed and the first differing word.
 //
-// Each of the kCases cases runs 16 programs, seeds 1 to 128 in all. A longer run over other seeds
-// (not a CTest run: the tests stay quick) sets the environment:
+// Each of the kCases cases runs 16 programs, seeds 1 to 128 in all; the first two of each also run
+// on the whole SoC (`htx sim --elf ... --signature ... --stall-seed`), its fabric and RAM between
+// the core and memory. A longer run over other seeds (not a CTest run: the tests stay quick) sets
+// the environment:
 //   HTX_CPU_DIFF_FIRST_SEED=N      the first seed (default 1)
 //   HTX_CPU_DIFF_PER_CASE=N        programs in each case (default 16)
 
@@ -39,6 +41,8 @@ using htx::test::run_program;
 using htx::test::RunResult;
 
 constexpr int kCases = 8;
+// The first programs of each case also run on the whole SoC (htx sim).
+constexpr uint64_t kOnSocPerCase = 2;
 // Every program executes at least this many instructions (the generator's loops and calls make
 // most run some thousands); fewer would mean the body was skipped.
 constexpr uint64_t kLeastInstructions = 400;
@@ -125,9 +129,20 @@ uint64_t environment_number(const char* name, uint64_t fallback) {
   return value;
 }
 
-// Runs the program for `seed` in QEMU and on the core, without and with wait states; empty when
-// all three agree, else what went wrong. Adds the core's instruction count to `instructions`.
-std::string check_program(uint64_t seed, uint64_t& instructions) {
+// `htx sim --signature`'s file: 8 hex digits a line.
+std::vector<uint32_t> words_from_signature_file(const fs::path& path) {
+  std::vector<uint32_t> words;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) words.push_back(static_cast<uint32_t>(std::stoul(line, nullptr, 16)));
+  return words;
+}
+
+// Runs the program for `seed` in QEMU and on the core, without and with wait states, and with
+// `on_soc` on the whole SoC too (`htx sim`: the SoC's fabric and RAM, random wait states on every
+// slave); empty when all agree, else what went wrong. Adds the core's instruction count to
+// `instructions`.
+std::string check_program(uint64_t seed, bool on_soc, uint64_t& instructions) {
   const ProgramFiles f = files_for(seed);
   std::ofstream(f.source) << htx::cpu_tb::random_program(seed);
   for (const auto& [elf, for_qemu] : {std::pair{f.core_elf, false}, std::pair{f.qemu_elf, true}}) {
@@ -170,6 +185,26 @@ std::string check_program(uint64_t seed, uint64_t& instructions) {
     }
     if (stall_seed == 0) instructions += *instret;
   }
+  if (on_soc) {
+    fs::path signature = f.source;
+    signature.replace_extension(".soc.sig");
+    const std::vector<std::string> argv = {HTX_BIN, "sim", "--elf", f.core_elf.string(),
+                                           "--signature", signature.string(), "--stall-seed",
+                                           std::to_string(seed), "--max-cycles", "4000000"};
+    std::string soc_command;
+    for (const std::string& a : argv) soc_command += (soc_command.empty() ? "" : " ") + a;
+    const RunResult r = run_program(argv, 120s);
+    if (r.status != 0) return soc_command + ": status " + std::to_string(r.status) + "\n" + r.err;
+    const std::vector<uint32_t> got = words_from_signature_file(signature);
+    if (got.size() != kRandomProgramSignatureWords) {
+      return soc_command + ": " + std::to_string(got.size()) + " signature words";
+    }
+    if (std::string diff = first_difference(got, expected); !diff.empty()) {
+      return soc_command + " against " + qemu_command + ": " + diff + " (source " +
+             f.source.string() + ")";
+    }
+    fs::remove(signature);
+  }
   fs::remove(f.source);
   fs::remove(f.core_elf);
   fs::remove(f.qemu_elf);
@@ -184,7 +219,8 @@ TEST_P(CpuAgainstQemu, RandomProgramsLeaveTheSameRegistersAndMemory) {
       environment_number("HTX_CPU_DIFF_FIRST_SEED", 1) + static_cast<uint64_t>(GetParam()) * per_case;
   uint64_t instructions = 0;
   for (uint64_t seed = first; seed < first + per_case; ++seed) {
-    EXPECT_EQ(check_program(seed, instructions), "") << "seed " << seed;
+    const bool on_soc = seed - first < kOnSocPerCase;
+    EXPECT_EQ(check_program(seed, on_soc, instructions), "") << "seed " << seed;
   }
   std::printf("seeds %" PRIu64 " to %" PRIu64 ": %" PRIu64 " instructions on the core\n", first,
               first + per_case - 1, instructions);

@@ -311,20 +311,36 @@ class Generator {
     place(target);
   }
 
-  // JAL, or JALR through an address register (its bit 0 set now and then, which JALR clears;
-  // now and then the link register is the address register itself).
+  // JAL, or JALR through an address register holding the target less JALR's offset (or, with
+  // an offset of 1, the target itself, so that JALR clears the sum's bit 0), written just before
+  // or stored and loaded back just before (a load's result used by the jump at once); now and
+  // then the link register is the address register itself.
   void forward_jump(const Scope& s) {
     const std::string target = label();
-    if (chance(50)) {
+    const uint32_t form = below(3);
+    if (form == 0) {
       const int rd = dest(s);
       line("jal " + reg(rd) + ", " + target);
       wrote(rd);
     } else {
+      const int offset = pick(std::array<int, 5>{0, 0, 1, 8, -8});
       const int address = nonzero_dest(s);
-      line("lla " + reg(address) + ", " + target);
+      const int adjust = offset == 1 ? 0 : offset;
+      line("lla " + reg(address) + ", " + target +
+           (adjust == 0 ? "" : (adjust > 0 ? "-" : "+") + std::to_string(adjust > 0 ? adjust : -adjust)));
       wrote(address);
-      const int rd = chance(25) ? address : dest(s);
-      line("jalr " + reg(rd) + ", " + (chance(30) ? "1" : "0") + "(" + reg(address) + ")");
+      int base = address;
+      if (form == 2) {
+        const std::string word =
+            std::to_string(static_cast<int>(below(kDataBytes / 4)) * 4 - kDataMid) + "(" +
+            reg(kBaseReg) + ")";
+        base = nonzero_dest(s);
+        line("sw " + reg(address) + ", " + word);
+        line("lw " + reg(base) + ", " + word);
+        wrote(base);
+      }
+      const int rd = chance(25) ? base : dest(s);
+      line("jalr " + reg(rd) + ", " + std::to_string(offset) + "(" + reg(base) + ")");
       wrote(rd);
     }
     skipped_run(s, 3);
@@ -472,7 +488,7 @@ class Generator {
   std::string data() {
     std::string d = "  .data\n  .balign 16\ninit_regs:\n";
     for (int r = 1; r <= 30; ++r) d += "  .word " + std::to_string(value()) + "\n";
-    d += "  .balign 16\n  .globl sig\nsig:\n  .space " +
+    d += "  .balign 16\n  .globl sig\n  .globl begin_signature\nsig:\nbegin_signature:\n  .space " +
          std::to_string(kRandomProgramRegWords * 4) + "\ndata:\n";
     for (uint32_t i = 0; i < kRandomProgramDataWords; ++i) {
       d += "  .word " + std::to_string(value()) + "\n";
@@ -480,6 +496,7 @@ class Generator {
     d += "checkpoints:\n  .space " +
          std::to_string(kRandomProgramCheckpoints * kRandomProgramRegWords * 4) + "\n";
     d += "log:\n  .space " + std::to_string(kRandomProgramLogWords * 4) + "\n";
+    d += "  .globl end_signature\nend_signature:\n";  // for htx sim --signature
     return d;
   }
 

@@ -10,8 +10,9 @@
 // runs; only the start and the end differ, chosen by the C preprocessor:
 //   HTX_QEMU defined:  for qemu-riscv32 (Linux user mode): the signature goes to standard output
 //                      by the write system call, then exit(0).
-//   otherwise:         for htx_cpu_tb: a trap vector that ends the run with SIM_EXIT 3 (no program
-//                      traps), the end through SYSCTRL SIM_EXIT 0; the signature is read at `sig`.
+//   otherwise:         for htx_cpu_tb or htx sim: a trap vector that ends the run with SIM_EXIT 3
+//                      (no program traps), the end through SYSCTRL SIM_EXIT 0; the signature is
+//                      read at `sig` (begin_signature to end_signature for htx sim --signature).
 // Both are linked by tests/rtl/isa/link.ld at address 0, so PC-relative values (AUIPC, links)
 // agree.
 #pragma once
