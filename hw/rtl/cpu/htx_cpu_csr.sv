@@ -1,7 +1,9 @@
 // Machine-mode CSRs, the cycle and instret counters, and the trap/mret state updates.
 // Implemented: mstatus (MIE, MPIE; MPP reads 3), misa, mie/mip (read 0: no interrupt sources),
 // mtvec (direct mode only), mscratch, mepc, mcause, mtval, mcycle(h), minstret(h), the read-only
-// user aliases cycle(h)/instret(h) and mvendorid/marchid/mimpid/mhartid (read 0).
+// user aliases cycle(h)/instret(h) and mvendorid/marchid/mimpid/mhartid/mconfigptr (read 0);
+// mstatush and the mhpm counters and event selectors read 0 and ignore writes (the decoder's
+// CsrZero).
 module htx_cpu_csr (
   input  logic                    clk_i,
   input  logic                    rst_ni,

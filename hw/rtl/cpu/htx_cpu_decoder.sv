@@ -49,7 +49,8 @@ module htx_cpu_decoder (
     endcase
   end
 
-  // CSR address -> selector; read_only covers the user counter aliases and the machine id registers.
+  // CSR address -> selector; read_only covers the user counter aliases and the machine id and
+  // configuration registers. The zero CSRs (CsrZero) read 0.
   logic     csr_known;
   logic     csr_read_only;
   htx_cpu_pkg::csr_sel_e csr_sel;
@@ -75,8 +76,12 @@ module htx_cpu_decoder (
       12'hC02: begin csr_sel = htx_cpu_pkg::CsrInstret;  csr_read_only = 1'b1; end
       12'hC80: begin csr_sel = htx_cpu_pkg::CsrCycleh;   csr_read_only = 1'b1; end
       12'hC82: begin csr_sel = htx_cpu_pkg::CsrInstreth; csr_read_only = 1'b1; end
-      12'hF11, 12'hF12, 12'hF13, 12'hF14: csr_read_only = 1'b1;
-      default: csr_known = 1'b0;
+      12'hF11, 12'hF12, 12'hF13, 12'hF14, 12'hF15: csr_read_only = 1'b1;
+      12'h310: ;  // mstatush: little-endian only, zero, writes ignored
+      // mhpmcounter3-31, their high halves and mhpmevent3-31: zero, writes ignored (the
+      // privileged spec's legal minimum for the counters it says should exist).
+      default: csr_known = ((csr_addr[11:5] == 7'h58) || (csr_addr[11:5] == 7'h5C) ||
+                            (csr_addr[11:5] == 7'h19)) && (csr_addr[4:0] >= 5'd3);
     endcase
   end
 

@@ -30,7 +30,7 @@ package htx_cpu_pkg;
     CsrCycleh   = 4'd10,
     CsrInstret  = 4'd11,
     CsrInstreth = 4'd12,
-    CsrZero     = 4'd13  // mvendorid, marchid, mimpid, mhartid: read-only zero
+    CsrZero     = 4'd13  // the id registers, mconfigptr, mstatush, the mhpm counters: zero
   } csr_sel_e;
 
   // mcause exception codes (interrupt bit clear).

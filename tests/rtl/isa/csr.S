@@ -50,6 +50,25 @@ TEST_BEGIN
   TEST_ILLEGAL(30, csrr a0, 0x3a0)
   // A trapping CSR instruction does not write its rd.
   TEST_CASE(31, a1, 0x55, li a1, 0x55; la s7, 1f; csrrw a1, 0x7c0, a0; 1:)
+  // The privileged spec's zero CSRs: mconfigptr (read-only), mstatush (little-endian only),
+  // mhpmcounter3-31(h) and mhpmevent3-31 (hardwired to zero, writes ignored).
+  TEST_CASE(32, a0, 0, li a0, -1; csrr a0, 0xf15)
+  TEST_ILLEGAL(33, csrw 0xf15, a0)
+  TEST_CASE(34, a0, 0, li a1, -1; csrw 0x310, a1; csrr a0, 0x310)
+  TEST_CASE(35, a0, 0, li a1, -1; csrw 0xb03, a1; csrr a0, 0xb03; csrw 0xb1f, a1; csrr a2, 0xb1f;
+            or a0, a0, a2)
+  TEST_CASE(36, a0, 0, li a1, -1; csrw 0xb83, a1; csrr a0, 0xb83; csrs 0xb9f, a1; csrr a2, 0xb9f;
+            or a0, a0, a2)
+  TEST_CASE(37, a0, 0, li a1, -1; csrw 0x323, a1; csrr a0, 0x323; csrw 0x33f, a1; csrr a2, 0x33f;
+            or a0, a0, a2)
+  // Their neighbours are not CSRs here: 0xB01 and 0xB81 (no machine time), mcountinhibit (0x320,
+  // optional), 0x321, 0x322, the user hpmcounter3 alias (no Zihpm).
+  TEST_ILLEGAL(38, csrr a0, 0xb01)
+  TEST_ILLEGAL(39, csrr a0, 0xb81)
+  TEST_ILLEGAL(40, csrr a0, 0x320)
+  TEST_ILLEGAL(41, csrr a0, 0x322)
+  TEST_ILLEGAL(42, csrr a0, 0xc03)
+  TEST_ILLEGAL(43, csrr a0, 0xb20)
 TEST_END
   .text
 TRAP_HANDLER(csr_trap)
