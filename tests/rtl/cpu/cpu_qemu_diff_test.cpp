@@ -15,6 +15,7 @@
 // the environment:
 //   HTX_CPU_DIFF_FIRST_SEED=N      the first seed (default 1)
 //   HTX_CPU_DIFF_PER_CASE=N        programs in each case (default 16)
+//   HTX_CPU_DIFF_ON_SOC=N          of which the first N also run on the SoC (default 2)
 
 #include <gtest/gtest.h>
 
@@ -41,8 +42,6 @@ using htx::test::run_program;
 using htx::test::RunResult;
 
 constexpr int kCases = 8;
-// The first programs of each case also run on the whole SoC (htx sim).
-constexpr uint64_t kOnSocPerCase = 2;
 // Every program executes at least this many instructions (the generator's loops and calls make
 // most run some thousands); fewer would mean the body was skipped.
 constexpr uint64_t kLeastInstructions = 400;
@@ -217,9 +216,10 @@ TEST_P(CpuAgainstQemu, RandomProgramsLeaveTheSameRegistersAndMemory) {
   const uint64_t per_case = environment_number("HTX_CPU_DIFF_PER_CASE", 16);
   const uint64_t first =
       environment_number("HTX_CPU_DIFF_FIRST_SEED", 1) + static_cast<uint64_t>(GetParam()) * per_case;
+  const uint64_t on_soc_per_case = environment_number("HTX_CPU_DIFF_ON_SOC", 2);
   uint64_t instructions = 0;
   for (uint64_t seed = first; seed < first + per_case; ++seed) {
-    const bool on_soc = seed - first < kOnSocPerCase;
+    const bool on_soc = seed - first < on_soc_per_case;
     EXPECT_EQ(check_program(seed, on_soc, instructions), "") << "seed " << seed;
   }
   std::printf("seeds %" PRIu64 " to %" PRIu64 ": %" PRIu64 " instructions on the core\n", first,
