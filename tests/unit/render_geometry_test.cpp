@@ -235,6 +235,34 @@ TEST(RenderGeometry, ClipCoordinatesBeyondQ16AreScaledNotWrapped) {
   expect_mesh_transform_scales(vp, htx::scale({2, 2, 2}), {1.5, -2, -3}, 0, 8);
 }
 
+// A projective model matrix with entries near 2^15 (only a crafted upload comes close; no scene
+// the host builds does) needs more than 31 halvings before its clip coordinates fit Q16.16:
+// mesh_mvp stopped at 31 and the sums wrapped (clip y 30,894 for -34,642).
+TEST(RenderGeometry, AnyMatrixIsScaledUntilItsClipCoordinatesFit) {
+  const htx::render::Mat4 view_proj{{{0, -2097152, 1024, 0},
+                                     {INT32_MAX, INT32_MAX, 0, INT32_MAX},
+                                     {INT32_MIN, INT32_MIN, -72, -1311489185},
+                                     {-1, -131072, INT32_MAX, INT32_MAX}},
+                                    17};
+  const htx::render::Mat4 model{{{INT32_MAX, 1073741824, -1048576, 1980606561},
+                                 {-64, -92346492, INT32_MIN, 0},
+                                 {-4, -536870912, INT32_MIN, 4698496},
+                                 {INT32_MAX, INT32_MAX, INT32_MIN, -64}},
+                                16};
+  const int32_t p[3] = {-1073741823, -1073741823, 1073741823};  // (-16384, -16384, 16384) - 1 ulp
+  int down = 0;
+  const htx::render::Mat4 mvp = htx::render::mesh_mvp(view_proj, model, 14, &down);
+  EXPECT_GT(down, 31);
+  const htx::render::Vec4 got =
+      htx::render::apply(htx::render::make_vertex_transform(mvp, 14), p[0], p[1], p[2]);
+  const int32_t rows[4] = {got.x, got.y, got.z, got.w};
+  for (int i = 0; i < 4; ++i) {
+    double exact = q16(mvp.m[i][3]);
+    for (int j = 0; j < 3; ++j) exact += std::ldexp(static_cast<double>(mvp.m[i][j]), -mvp.frac) * q16(p[j]);
+    EXPECT_NEAR(q16(rows[i]), exact, 8 * kQ) << "row " << i;
+  }
+}
+
 // Rounded cut points can make a triangle a few ulps across non-convex, so that a later plane cuts
 // it more than twice: a polygon that would not fit is dropped whole (the clipper wrote past its
 // buffer there), and any smaller one keeps every vertex and cut point.
@@ -409,6 +437,26 @@ TEST(RenderProject, MatchesTheDoubleViewportWithinOneSubpixel) {
       ASSERT_LE(std::fabs(s.y / 256.0 - d.y), 1.0 / 256 + 1e-9) << ww;
       ASSERT_NEAR(std::ldexp(static_cast<double>(s.z), -32), d.z, std::ldexp(1.0, -28));
     }
+  }
+}
+
+// A vertex on the near plane (z = -w, where the clipper puts its cut points) gets the nearest depth
+// and one on the far plane the farthest, for every w: the reciprocal of w can be a unit above 1/w,
+// which put c/w a unit below -1, and the near plane's depth wrapped to the far end (0xFFFFFFFF) for
+// 660,797 of the first 2^20 values of w.
+TEST(RenderProject, VerticesOnTheNearAndFarPlanesGetTheExtremeDepths) {
+  std::mt19937 rng(23);
+  std::uniform_int_distribution<int32_t> any_w(1, INT32_MAX);
+  htx::render::ScreenVert s;
+  for (int i = 1; i <= (1 << 21); ++i) {
+    htx::render::ClipVert v{};
+    v.w = i <= (1 << 20) ? i : any_w(rng);
+    v.z = -v.w;
+    htx::render::project(v, {320, 240}, &s);
+    ASSERT_LE(s.z, 16u) << "near plane at w = " << v.w;
+    v.z = v.w;
+    htx::render::project(v, {320, 240}, &s);
+    ASSERT_GE(s.z, 0xFFFFFFF0u) << "far plane at w = " << v.w;
   }
 }
 

@@ -29,7 +29,8 @@ Reciprocal reciprocal(uint32_t x) {
   // Seed with 9 correct bits from the table, then two Newton-Raphson steps (9 -> 18 -> 31 bits).
   uint32_t y = static_cast<uint32_t>(kSeeds.v[(m >> 23) & 0xFFu]) << 16;
   for (int step = 0; step < 2; ++step) {
-    // e = m * y / 2^32 ~ 2^31 (x*y ~ 1 in Q31); y' = y * (2 - x*y) <= 1/x (Newton approaches from below).
+    // e = m * y / 2^32 ~ 2^31 (x*y ~ 1 in Q31); y' = y * (2 - x*y). Newton approaches 1/x from
+    // below, but the two truncated products can leave y a unit above it (callers clamp).
     const uint32_t e = static_cast<uint32_t>((static_cast<uint64_t>(m) * y) >> 32);
     const uint32_t t = 0u - e;  // 2^32 - e
     const uint64_t next = (static_cast<uint64_t>(y) * t) >> 31;

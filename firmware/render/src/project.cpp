@@ -33,9 +33,11 @@ void project(const ClipVert& v, const Viewport& vp, ScreenVert* s) {
   // Subpixel x = (ndc + 1) * width * 128 (y flipped: (1 - ndc) * height * 128).
   s->x = to_subpixels(nx, vp.width) + (vp.width << 7);
   s->y = to_subpixels(-ny, vp.height) + (vp.height << 7);
-  // z = (ndc + 1) / 2 as a 0.32 fraction = (ndc29 + 2^29) * 4; ndc29 is in [-2^29, 2^29].
-  const uint32_t z = static_cast<uint32_t>(nz + (int32_t{1} << 29));
-  s->z = z >= (uint32_t{1} << 30) ? 0xFFFFFFFFu : z << 2;
+  // z = (ndc + 1) / 2 as a 0.32 fraction = (ndc29 + 2^29) * 4, clamped at both ends: ndc29 can be
+  // a unit beyond [-2^29, 2^29] at the planes (the reciprocal may be a unit above 1/w), and the
+  // near plane must not wrap to the far end.
+  const int32_t z = nz + (int32_t{1} << 29);
+  s->z = z <= 0 ? 0u : z >= (int32_t{1} << 30) ? 0xFFFFFFFFu : static_cast<uint32_t>(z) << 2;
   s->w = v.w;
   s->attr = &v;
 }

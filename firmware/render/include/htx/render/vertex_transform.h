@@ -27,10 +27,12 @@ int position_int_bits(const int32_t* xyz, uint32_t count, uint32_t stride_words)
 VertexTransform make_vertex_transform(const Mat4& mvp, int position_bits);
 
 // view_proj * model for a mesh whose positions are below 2^position_bits, scaled down by 2^down
-// (0 for any sane scene; at most kMaxMeshScaleDown) when its clip coordinates could otherwise
-// reach 2^15 or an entry saturated (a large scene seen from far away): the projected points are
-// the same, the clip coordinates lose low bits. `down` may be null.
-inline constexpr int kMaxMeshScaleDown = 31;
+// (0 for any sane scene) when its clip coordinates could otherwise reach 2^15 or an entry
+// saturated (a large scene seen from far away): the projected points are the same, the clip
+// coordinates lose low bits. By kMaxMeshScaleDown every entry of view_proj has been rounded to 0,
+// so the loop always ends with coordinates that fit (a crafted matrix needed more than 31).
+// `down` may be null.
+inline constexpr int kMaxMeshScaleDown = 62;
 Mat4 mesh_mvp(const Mat4& view_proj, const Mat4& model, int position_bits, int* down);
 
 // The per-vertex form of mesh_mvp's matrix.
