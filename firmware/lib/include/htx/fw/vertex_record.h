@@ -22,7 +22,7 @@ namespace htx::fw {
 // Field widths of one configuration (a subset of the model's ModelConfig).
 struct RecordFormat {
   uint8_t xy_int_bits = 16;  // integer bits of x and y including the sign (8 fractional bits follow)
-  uint8_t z_bits = 24;       // 16..24
+  uint8_t z_bits = 24;       // 8..24 (the encoders refuse others); the GPU builds use 16 and 24
   uint8_t q_bits = 32;       // 8..32
   uint8_t uv_int_bits = 16;  // integer bits of u - u_offset including the sign, 2..24
 };
