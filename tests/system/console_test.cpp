@@ -86,8 +86,12 @@ struct ConsoleSim {
   htx::test::Child sim;
   const std::string pty;  // empty if it printed none
 
+  // `htx console` on this SoC's pty, typed at (a Child) or given commands (console()).
+  std::vector<std::string> console_argv() const {
+    return {HTX_BIN, "console", "--port", pty, "--timeout", "60"};
+  }
   htx::test::RunResult console(const std::vector<std::string>& commands) const {
-    std::vector<std::string> argv = {HTX_BIN, "console", "--port", pty, "--timeout", "60"};
+    std::vector<std::string> argv = console_argv();
     for (const std::string& c : commands) argv.insert(argv.end(), {"-c", c});
     return htx::test::run_program(argv, 180s);
   }
@@ -248,7 +252,7 @@ TEST(SystemConsole, TheNextClientEndsAnUploadTheLastOneLeft) {
 TEST(SystemConsole, CtrlCStopsASpinAndTheSessionGoesOn) {
   ConsoleSim cs;
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
-  htx::test::Child console({HTX_BIN, "console", "--port", cs.pty, "--timeout", "60"}, true);
+  htx::test::Child console(cs.console_argv(), true);
   ASSERT_TRUE(console.read_until("htx> ", 60s)) << console.output();
   console.write_input("spin floor 3600\n");
   ASSERT_TRUE(console.read_until("frame 2 frame_cycles", 60s)) << console.output();
@@ -272,7 +276,7 @@ TEST(SystemConsole, OneClientAtATimeAndNoControlBytesInACommand) {
   ConsoleSim cs;
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
   {
-    htx::test::Child first({HTX_BIN, "console", "--port", cs.pty, "--timeout", "60"}, true);
+    htx::test::Child first(cs.console_argv(), true);
     ASSERT_TRUE(first.read_until("htx> ", 60s)) << first.output();
     const auto second = cs.console({"info"});
     EXPECT_EQ(second.status, 1) << second.out;
@@ -312,7 +316,7 @@ TEST(SystemConsole, OneClientAtATimeAndNoControlBytesInACommand) {
 TEST(SystemConsole, TypedLinesStopASpinAndRunAfterIt) {
   ConsoleSim cs;
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
-  htx::test::Child console({HTX_BIN, "console", "--port", cs.pty, "--timeout", "60"}, true);
+  htx::test::Child console(cs.console_argv(), true);
   ASSERT_TRUE(console.read_until("htx> ", 60s)) << console.output();
   // A local file that does not load is the line's error; the session goes on.
   console.write_input("texture /no/such/image.png\n");
@@ -352,7 +356,7 @@ TEST(SystemConsole, TypedLinesStopASpinAndRunAfterIt) {
 TEST(SystemConsole, AtATerminalTheUpArrowRecallsAnEarlierLine) {
   ConsoleSim cs;
   ASSERT_FALSE(cs.pty.empty()) << cs.sim.output();
-  htx::test::Child console({HTX_BIN, "console", "--port", cs.pty, "--timeout", "60"},
+  htx::test::Child console(cs.console_argv(),
                           htx::test::Child::Terminal{{"TERM=xterm"}});
   ASSERT_TRUE(console.read_until("htx> ", 60s)) << console.output();
   console.write_input("info\r");

@@ -57,11 +57,19 @@ ProgramFiles files_for(uint64_t seed) {
   return {dir / (stem + ".S"), dir / (stem + ".core.elf"), dir / (stem + ".qemu.elf")};
 }
 
+// A command for messages: its arguments joined by spaces.
+std::string command_line(const std::vector<std::string>& argv) {
+  std::string text;
+  for (const std::string& a : argv) text += (text.empty() ? "" : " ") + a;
+  return text;
+}
+
 // Empty on success, else the compiler's message.
 std::string compile(const fs::path& source, const fs::path& elf, bool for_qemu) {
   std::vector<std::string> argv = {HTX_RISCV_GCC, "-march=rv32im", "-misa-spec=2.2",
                                    "-mabi=ilp32", "-nostdlib", "-nostartfiles",
-                                   "-Wl,--no-warn-rwx-segments", "-T", HTX_ISA_LINK_SCRIPT};
+                                   "-Wl,--no-warn-rwx-segments", "-I", HTX_ISA_TEST_DIR,
+                                   "-T", HTX_ISA_TEST_DIR "/link.ld"};
   if (for_qemu) argv.push_back("-DHTX_QEMU");
   argv.insert(argv.end(), {"-o", elf.string(), source.string()});
   const RunResult r = run_program(argv, 60s);
@@ -148,8 +156,9 @@ std::string check_program(uint64_t seed, bool on_soc, uint64_t& instructions) {
     if (std::string error = compile(f.source, elf, for_qemu); !error.empty()) return error;
   }
 
-  const RunResult q = run_program({HTX_QEMU_RISCV32, f.qemu_elf.string()}, 30s);
-  const std::string qemu_command = std::string(HTX_QEMU_RISCV32) + " " + f.qemu_elf.string();
+  const std::vector<std::string> qemu_argv = {HTX_QEMU_RISCV32, f.qemu_elf.string()};
+  const RunResult q = run_program(qemu_argv, 30s);
+  const std::string qemu_command = command_line(qemu_argv);
   if (q.status != 0) return qemu_command + ": status " + std::to_string(q.status) + "\n" + q.err;
   if (q.out.size() != kRandomProgramSignatureWords * 4) {
     return qemu_command + ": " + std::to_string(q.out.size()) + " bytes of signature";
@@ -158,13 +167,12 @@ std::string check_program(uint64_t seed, bool on_soc, uint64_t& instructions) {
 
   // Without wait states, then with random ones on both buses (htx_cpu_tb's seed).
   for (const uint64_t stall_seed : {uint64_t{0}, seed}) {
-    const std::string core_command = std::string(HTX_CPU_TB) + " --elf " + f.core_elf.string() +
-                                     " --seed " + std::to_string(stall_seed);
-    const RunResult c = run_program(
-        {HTX_CPU_TB, "--elf", f.core_elf.string(), "--seed", std::to_string(stall_seed),
-         "--max-cycles", "2000000", "--print-words",
-         "sig:" + std::to_string(kRandomProgramSignatureWords)},
-        60s);
+    const std::vector<std::string> core_argv = {
+        HTX_CPU_TB,     "--elf",   f.core_elf.string(), "--seed",
+        std::to_string(stall_seed), "--max-cycles", "2000000", "--print-words",
+        "sig:" + std::to_string(kRandomProgramSignatureWords)};
+    const RunResult c = run_program(core_argv, 60s);
+    const std::string core_command = command_line(core_argv);
     if (c.status != 0) {
       return core_command + ": status " + std::to_string(c.status) + " (SIM_EXIT " +
              std::to_string(htx::cpu_tb::kRandomProgramTrapExit) + " is a trap)\n" + c.out +
@@ -190,8 +198,7 @@ std::string check_program(uint64_t seed, bool on_soc, uint64_t& instructions) {
     const std::vector<std::string> argv = {HTX_BIN, "sim", "--elf", f.core_elf.string(),
                                            "--signature", signature.string(), "--stall-seed",
                                            std::to_string(seed), "--max-cycles", "4000000"};
-    std::string soc_command;
-    for (const std::string& a : argv) soc_command += (soc_command.empty() ? "" : " ") + a;
+    const std::string soc_command = command_line(argv);
     const RunResult r = run_program(argv, 120s);
     if (r.status != 0) return soc_command + ": status " + std::to_string(r.status) + "\n" + r.err;
     const std::vector<uint32_t> got = words_from_signature_file(signature);

@@ -1,6 +1,7 @@
 #include "random_program.hpp"
 
 #include <array>
+#include <cstdlib>
 #include <random>
 #include <utility>
 #include <vector>
@@ -45,6 +46,9 @@ struct Scope {
 };
 
 std::string reg(int r) { return "x" + std::to_string(r); }
+// A memory operand: "imm(xN)".
+std::string at(int imm, int base) { return std::to_string(imm) + "(" + reg(base) + ")"; }
+std::string store_op(int size) { return size == 4 ? "sw" : size == 2 ? "sh" : "sb"; }
 
 class Generator {
  public:
@@ -112,6 +116,13 @@ class Generator {
     op_dests_.push_back(rd);
     for (size_t i = recent_.size() - 1; i > 0; --i) recent_[i] = recent_[i - 1];
     recent_[0] = rd;
+  }
+
+  // A load of `size` bytes, below a word signed or unsigned at random.
+  std::string load_op(int size) {
+    if (size == 4) return "lw";
+    const bool is_signed = chance(50);
+    return size == 2 ? (is_signed ? "lh" : "lhu") : (is_signed ? "lb" : "lbu");
   }
 
   std::string label() { return ".L" + std::to_string(next_label_++); }
@@ -205,16 +216,13 @@ class Generator {
       wrote(base);
       imm = offset - step;
     }
-    const std::string address = std::to_string(imm) + "(" + reg(base) + ")";
     if (chance(50)) {
-      const char* op = size == 4 ? "lw" : size == 2 ? (chance(50) ? "lh" : "lhu")
-                                                    : (chance(50) ? "lb" : "lbu");
+      const std::string op = load_op(size);
       const int rd = dest(s);
-      line(std::string(op) + " " + reg(rd) + ", " + address);
+      line(op + " " + reg(rd) + ", " + at(imm, base));
       wrote(rd);
     } else {
-      const char* op = size == 4 ? "sw" : size == 2 ? "sh" : "sb";
-      line(std::string(op) + " " + reg(source()) + ", " + address);
+      line(store_op(size) + " " + reg(source()) + ", " + at(imm, base));
     }
   }
 
@@ -225,14 +233,10 @@ class Generator {
     const int load_size = 1 << below(3);
     const int store_at = word + static_cast<int>(below(4 / store_size)) * store_size;
     const int load_at = word + static_cast<int>(below(4 / load_size)) * load_size;
-    const char* store = store_size == 4 ? "sw" : store_size == 2 ? "sh" : "sb";
-    const char* load = load_size == 4 ? "lw" : load_size == 2 ? (chance(50) ? "lh" : "lhu")
-                                                             : (chance(50) ? "lb" : "lbu");
-    line(std::string(store) + " " + reg(source()) + ", " + std::to_string(store_at) + "(" +
-         reg(kBaseReg) + ")");
+    const std::string load = load_op(load_size);
+    line(store_op(store_size) + " " + reg(source()) + ", " + at(store_at, kBaseReg));
     const int rd = dest(s);
-    line(std::string(load) + " " + reg(rd) + ", " + std::to_string(load_at) + "(" +
-         reg(kBaseReg) + ")");
+    line(load + " " + reg(rd) + ", " + at(load_at, kBaseReg));
     wrote(rd);
   }
 
@@ -251,7 +255,7 @@ class Generator {
     const std::string slot = label();
     line("li " + reg(value) + ", " + std::to_string(static_cast<int32_t>(word)));
     line("lla " + reg(address) + ", " + slot);
-    line("sw " + reg(value) + ", 0(" + reg(address) + ")");
+    line("sw " + reg(value) + ", " + at(0, address));
     line("fence.i");
     place(slot);
     line("nop");
@@ -270,7 +274,7 @@ class Generator {
     for (const int rd : op_dests_) {
       if (log_sites_ == kRandomProgramLogWords) return;
       ++log_sites_;
-      line("sw " + reg(rd) + ", 0(" + reg(kLogReg) + ")");
+      line("sw " + reg(rd) + ", " + at(0, kLogReg));
       line("addi " + reg(kLogReg) + ", " + reg(kLogReg) + ", 4");
     }
   }
@@ -327,20 +331,19 @@ class Generator {
       const int address = nonzero_dest(s);
       const int adjust = offset == 1 ? 0 : offset;
       line("lla " + reg(address) + ", " + target +
-           (adjust == 0 ? "" : (adjust > 0 ? "-" : "+") + std::to_string(adjust > 0 ? adjust : -adjust)));
+           (adjust == 0 ? "" : (adjust > 0 ? "-" : "+") + std::to_string(std::abs(adjust))));
       wrote(address);
       int base = address;
       if (form == 2) {
         const std::string word =
-            std::to_string(static_cast<int>(below(kDataBytes / 4)) * 4 - kDataMid) + "(" +
-            reg(kBaseReg) + ")";
+            at(static_cast<int>(below(kDataBytes / 4)) * 4 - kDataMid, kBaseReg);
         base = nonzero_dest(s);
         line("sw " + reg(address) + ", " + word);
         line("lw " + reg(base) + ", " + word);
         wrote(base);
       }
       const int rd = chance(25) ? base : dest(s);
-      line("jalr " + reg(rd) + ", " + std::to_string(offset) + "(" + reg(base) + ")");
+      line("jalr " + reg(rd) + ", " + at(offset, base));
       wrote(rd);
     }
     skipped_run(s, 3);
@@ -371,7 +374,7 @@ class Generator {
       const int address = nonzero_dest(s);
       line("lla " + reg(address) + ", " + name);
       wrote(address);
-      line("jalr " + reg(kLinkReg) + ", 0(" + reg(address) + ")");
+      line("jalr " + reg(kLinkReg) + ", " + at(0, address));
     }
     wrote(kLinkReg);
     std::string caller_body;  // the subroutine is written into body_ meanwhile
@@ -387,10 +390,8 @@ class Generator {
 
   // x0..x31 into checkpoint area k, after the data region.
   void checkpoint(int k) {
-    const int at = kDataBytes - kDataMid + k * static_cast<int>(kRandomProgramRegWords) * 4;
-    for (int r = 0; r < 32; ++r) {
-      line("sw " + reg(r) + ", " + std::to_string(at + 4 * r) + "(" + reg(kBaseReg) + ")");
-    }
+    const int first = kDataBytes - kDataMid + k * static_cast<int>(kRandomProgramRegWords) * 4;
+    for (int r = 0; r < 32; ++r) line("sw " + reg(r) + ", " + at(first + 4 * r, kBaseReg));
   }
 
   void block(const Scope& s) {
@@ -415,6 +416,7 @@ class Generator {
   // targets land), so that both images put every instruction and data word at the same address.
   std::string prologue() {
     std::string p =
+        "#include \"htx_test.h\"\n"  // HTX_SIM_EXIT_ADDR
         "  .option norelax\n"
         "  .section .text.init, \"ax\"\n"
         "  .globl _start\n"
@@ -439,7 +441,7 @@ class Generator {
         "#ifndef HTX_QEMU\n"
         "  .balign 4\n"
         "trapped:\n"
-        "  li x5, 0x20000014\n"  // SYSCTRL SIM_EXIT
+        "  li x5, HTX_SIM_EXIT_ADDR\n"
         "  li x6, " +
         std::to_string(kRandomProgramTrapExit) +
         "\n"
@@ -450,7 +452,7 @@ class Generator {
         "setup:\n"
         "  lla x31, init_regs\n";
     for (int r = 1; r <= 30; ++r) {
-      p += "  lw " + reg(r) + ", " + std::to_string(4 * (r - 1)) + "(x31)\n";
+      p += "  lw " + reg(r) + ", " + at(4 * (r - 1), kBaseReg) + "\n";
     }
     p += "  lla " + reg(kLogReg) + ", log\n";
     p += "  lla x31, data + " + std::to_string(kDataMid) + "\n  j body\n";
@@ -461,7 +463,7 @@ class Generator {
     std::string e = ".Ldone:\n";
     const int regs_at = -kDataMid - static_cast<int>(kRandomProgramRegWords) * 4;
     for (int r = 0; r < 32; ++r) {
-      e += "  sw " + reg(r) + ", " + std::to_string(regs_at + 4 * r) + "(x31)\n";
+      e += "  sw " + reg(r) + ", " + at(regs_at + 4 * r, kBaseReg) + "\n";
     }
     e += "finish:\n"
          "#ifdef HTX_QEMU\n"
@@ -476,7 +478,7 @@ class Generator {
          "  li a0, 0\n"
          "  ecall\n"
          "#else\n"
-         "  li x5, 0x20000014\n"  // SYSCTRL SIM_EXIT
+         "  li x5, HTX_SIM_EXIT_ADDR\n"
          "  sw x0, 0(x5)\n"
          "#endif\n"
          "1: j 1b\n"

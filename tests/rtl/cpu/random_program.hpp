@@ -13,8 +13,8 @@
 //   otherwise:         for htx_cpu_tb or htx sim: a trap vector that ends the run with SIM_EXIT 3
 //                      (no program traps), the end through SYSCTRL SIM_EXIT 0; the signature is
 //                      read at `sig` (begin_signature to end_signature for htx sim --signature).
-// Both are linked by tests/rtl/isa/link.ld at address 0, so PC-relative values (AUIPC, links)
-// agree.
+// Both are built with tests/rtl/isa on the include path (htx_test.h's HTX_SIM_EXIT_ADDR) and
+// linked by its link.ld at address 0, so PC-relative values (AUIPC, links) agree.
 #pragma once
 
 #include <cstdint>
