@@ -40,7 +40,7 @@ htx_synth_cell_count(${area_stat} SB_SPRAM256KA spram)
 set(netlist ${WORK}/${NAME}.pnr.netlist.json)
 run_yosys(${PNR_TOP} "${pnr_files}" ${WORK}/${NAME}.pnr.stat.json ${netlist} ${WORK}/${NAME}.pnr.yosys.log)
 # Place and route once per seed (SEEDS, default 1;2;3) and keep the best: nextpnr's placement moves
-# Fmax by about +-0.7 MHz from seed to seed on these designs (docs/cpu.md), and a board build would
+# Fmax by about +-0.7 MHz from seed to seed on these designs (docs/cpu_area_log.md), and a board build would
 # use the seed that meets timing. Every seed's figure is recorded ("fmax_by_seed"); the chosen seed's
 # log is copied to NAME.nextpnr.log.
 if(NOT DEFINED SEEDS OR "${SEEDS}" STREQUAL "")

@@ -74,7 +74,7 @@ struct SocSim::Impl {
   }
 
   uint32_t fb_draw_page() {
-    return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__g_gpu__DOT__u_gpu__DOT__u_subsys__DOT__u_raster__DOT__draw_page_q;
+    return top->rootp->htx_soc_sim_top__DOT__u_soc__DOT__u_fabric__DOT__g_gpu__DOT__u_gpu__DOT__u_subsys__DOT__u_raster__DOT__u_regs__DOT__draw_page_q;
   }
 
   void half_cycle(bool clk) {

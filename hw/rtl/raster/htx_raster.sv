@@ -1,4 +1,4 @@
-// The raster unit (docs/raster.md): register block (hw/regs/raster.json), vertex FIFO with bus
+// The raster unit (docs/raster.md): register block (htx_raster_regs), vertex FIFO with bus
 // back-pressure, input assembly, setup, traversal, interpolation output and the fragment stage with
 // the fast clear. The framebuffer and depth memories sit outside (hw/rtl/fb/htx_fb.sv).
 // Parameters are the fields of the model's ModelConfig (docs/model.md) that this unit builds.
@@ -128,39 +128,13 @@ module htx_raster #(
   localparam int unsigned LvlW = $clog2(FifoDepth) + 1;
 
   // ---- Registers -------------------------------------------------------------------------------
-  logic [11:0] offset;
-  logic        accept, wr, is_fifo, fifo_full, fifo_empty;
-  logic        enable_q, err_state_q;
-  logic [1:0]  draw_page_q /* verilator public_flat_rd */;  // (htx sim reads the page drawn)
-  logic [15:0] clear_color_q;
-  logic [23:0] clear_depth_q;
-  logic [12:0] width_q, height_q, stride_q;
-  logic        abort, clear_req, cnt_reset;
-  logic        cnt_read, cnt_ack;
-  logic        clr_pend_q, clr_color_q, clr_depth_q;
+  // The register block (htx_raster_regs) is instantiated below, once the status it reads is named.
+  logic        abort, enable, fifo_push, fifo_full, fifo_empty;
+  logic [12:0] fb_width, fb_height, fb_stride;
+  logic [15:0] clear_color;
+  logic [23:0] clear_depth;
+  logic        clr_pend, clr_color, clr_depth;
   logic [LvlW-1:0] fifo_level;
-
-  // Registers are decoded by word (a byte or half-word read gets its word's lanes); only whole
-  // words are written, and a narrower write is refused with a bus error.
-  assign offset  = {req_addr_i[11:2], 2'b00};
-  assign wr      = req_we_i && (&req_be_i);
-  assign is_fifo = (offset == htx_raster_reg_pkg::RASTER_FIFO_OFFSET);
-  // A full FIFO holds the write on the bus until a word leaves: back-pressure, never a drop. With
-  // the unit disabled nothing leaves, so that write is refused with a bus error instead of holding
-  // the bus (and the CPU, the only master that could enable the unit) for ever.
-  // A counter read waits for its counter's turn in the counter RAM (htx_raster_counters).
-  logic fifo_refused;
-  assign fifo_refused = is_fifo && req_we_i && fifo_full && !enable_q;
-  // (Only a whole word waits for room: a narrower write is refused at once, full or not.)
-  assign req_ready_o = !(is_fifo && wr && fifo_full && enable_q) && !(cnt_read && !cnt_ack);
-  assign accept = req_valid_i && req_ready_o;
-
-  logic ctrl_wr;
-  assign ctrl_wr   = accept && wr && (offset == htx_raster_reg_pkg::RASTER_CTRL_OFFSET);
-  assign abort     = ctrl_wr && req_wdata_i[htx_raster_reg_pkg::RASTER_CTRL_ABORT_LSB];
-  assign clear_req = ctrl_wr && (req_wdata_i[htx_raster_reg_pkg::RASTER_CTRL_CLEAR_COLOR_LSB] ||
-                                 req_wdata_i[htx_raster_reg_pkg::RASTER_CTRL_CLEAR_DEPTH_LSB]);
-  assign cnt_reset = ctrl_wr && req_wdata_i[htx_raster_reg_pkg::RASTER_CTRL_COUNTERS_RESET_LSB];
 
   // ---- FIFO and input --------------------------------------------------------------------------
   logic        fifo_pop;
@@ -178,7 +152,7 @@ module htx_raster #(
   htx_raster_fifo #(.Depth(FifoDepth), .Hold(RecInFifo)) u_fifo (
     .clk_i, .rst_ni,
     .flush_i   (abort),
-    .push_i    (accept && is_fifo && wr && !fifo_full),
+    .push_i    (fifo_push),
     .wdata_i   (req_wdata_i),
     .pop_i     (fifo_pop),
     .rdata_o   (fifo_rdata),
@@ -227,10 +201,10 @@ module htx_raster #(
     htx_raster_planes_in #(.Methods(Methods), .DW(DW), .EW(EW), .AW(AWP), .GradW(GradW), .GWU(GWU)) u_planes_in (
       .clk_i, .rst_ni,
       .abort_i        (abort),
-      .enable_i       (enable_q),
-      .hold_i         (clr_pend_q),
-      .width_i        (width_q),
-      .height_i       (height_q),
+      .enable_i       (enable),
+      .hold_i         (clr_pend),
+      .width_i        (fb_width),
+      .height_i       (fb_height),
       .fifo_none_i    (fifo_none),
       .fifo_pop_o     (fifo_pop),
       .fifo_rdata_i   (fifo_rdata),
@@ -284,7 +258,7 @@ module htx_raster #(
     htx_raster_input #(.XW(XW), .ZBits(ZBits), .QBits(QBits), .UQ(UQ)) u_input (
       .clk_i, .rst_ni,
       .abort_i     (abort),
-      .enable_i    (enable_q),
+      .enable_i    (enable),
       .fifo_empty_i(fifo_none),
       .fifo_pop_o  (fifo_pop),
       .fifo_rdata_i(fifo_rdata),
@@ -313,11 +287,11 @@ module htx_raster #(
     ) u_setup (
       .clk_i, .rst_ni,
       .abort_i        (abort),
-      .width_i        (width_q),
-      .height_i       (height_q),
+      .width_i        (fb_width),
+      .height_i       (fb_height),
       .rec_valid_i    (rec_valid),
       .rec_ready_o    (rec_ready),
-      .hold_i         (clr_pend_q),
+      .hold_i         (clr_pend),
       .rec_state_i    (rec_state),
       .rec_x_i        (rec_x),
       .rec_y_i        (rec_y),
@@ -410,7 +384,7 @@ module htx_raster #(
                         .SerialPlanes(Iterative)) u_traverse (
     .clk_i, .rst_ni,
     .abort_i         (abort),
-    .stride_i        (stride_q),
+    .stride_i        (fb_stride),
     .tri_valid_i     (tri_valid),
     .tri_ready_o     (tri_ready),
     .tri_side_i      ({tri_dfg_side, tri_lod_shift, tri_lod_g, tri_v_off, tri_u_off, tri_flat, tri_state}),
@@ -963,12 +937,12 @@ module htx_raster #(
     .in_rgb_i      (c_rgb),
     .in_state_i    (t_state),
     .clear_start_i (clear_start),
-    .clear_color_i (clr_color_q),
-    .clear_depth_i (clr_depth_q),
-    .clear_rgb565_i(clear_color_q),
-    .clear_z_i     (clear_depth_q),
-    .height_i      (height_q),
-    .stride_i      (stride_q),
+    .clear_color_i (clr_color),
+    .clear_depth_i (clr_depth),
+    .clear_rgb565_i(clear_color),
+    .clear_z_i     (clear_depth),
+    .height_i      (fb_height),
+    .stride_i      (fb_stride),
     .clear_hold_i,
     .clearing_o    (clearing),
     .zr_en_o, .zr_addr_o, .zr_data_i,
@@ -976,165 +950,52 @@ module htx_raster #(
     .busy_o        (frag_busy),
     .pixel_o       (pixel)
   );
-  assign draw_page_o = draw_page_q;
 
   // A clear waits until setup holds nothing and every later stage is empty; setup takes no new
   // triangle meanwhile (hold_i), so the clear lands between the triangles before and after it.
   logic pipe_idle;
   assign pipe_idle   = !setup_busy && !tri_valid && !trav_busy && (pend_q == 0) && (out_cnt_q == 0) &&
                        !cmb_busy && !frag_busy;
-  assign clear_start = clr_pend_q && pipe_idle && !clearing;
+  assign clear_start = clr_pend && pipe_idle && !clearing;
 
   logic busy;
   assign busy = !fifo_empty || in_busy || setup_busy || tri_valid || trav_busy || (pend_q != 0) ||
-                (out_cnt_q != 0) || cmb_busy || frag_busy || clr_pend_q;
+                (out_cnt_q != 0) || cmb_busy || frag_busy || clr_pend;
 
-  // ---- Counters --------------------------------------------------------------------------------
-  // CNT_BUSY .. CNT_PIXELS are eight consecutive words from a 32-byte boundary, counter i at
-  // CNT_BUSY + 4 i, kept in one block RAM; CNT_DIVFREE_STEPS adds several a clock and stays a register.
-  // Without Counters every CNT_* reads 0 at once (CAPS.COUNTERS = 0).
-  logic [31:0] cnt_rdata, cnt_df_q;
-  assign cnt_read = !req_we_i &&
-                    ((offset & ~12'h01F) == htx_raster_reg_pkg::RASTER_CNT_BUSY_OFFSET);
-  if (Counters) begin : g_counters
-    htx_raster_counters #(.N(8)) u_counters (
-      .clk_i, .rst_ni,
-      .clear_i  (cnt_reset),
-      .inc_i    ({pixel, tv_valid && tv_ready, setup_taken, setup_busy, trav_stall, setup_stall,
-                  in_partial, busy}),
-      .rd_i     (req_valid_i && cnt_read),
-      .rd_idx_i (offset[4:2]),
-      .rd_ack_o (cnt_ack),
-      .rd_data_o(cnt_rdata)
-    );
-  end else begin : g_no_counters
-    assign cnt_ack   = 1'b1;
-    assign cnt_rdata = '0;
-    logic unused_events;
-    assign unused_events = ^{pixel, trav_stall, setup_stall, in_partial};
-  end
-
-  // ---- Register writes and reads ---------------------------------------------------------------
-  logic [31:0] rdata_d, rsp_rdata_q;
-  logic        rsp_valid_q, rsp_err_q;
-  logic [31:0] last_state_q;
-  always_comb begin
-    rdata_d = '0;
-    unique case (offset)
-      htx_raster_reg_pkg::RASTER_CTRL_OFFSET:
-        rdata_d[htx_raster_reg_pkg::RASTER_CTRL_ENABLE_LSB] = enable_q;
-      htx_raster_reg_pkg::RASTER_STATUS_OFFSET: begin
-        rdata_d[htx_raster_reg_pkg::RASTER_STATUS_BUSY_LSB]       = busy;
-        rdata_d[htx_raster_reg_pkg::RASTER_STATUS_CLEARING_LSB]   = clearing || clr_pend_q;
-        rdata_d[htx_raster_reg_pkg::RASTER_STATUS_FIFO_EMPTY_LSB] = fifo_empty;
-        rdata_d[htx_raster_reg_pkg::RASTER_STATUS_FIFO_FULL_LSB]  = fifo_full;
-        rdata_d[htx_raster_reg_pkg::RASTER_STATUS_FIFO_LEVEL_LSB +: 8] =
-          ((32'(fifo_level) >> 8) != 0) ? 8'hFF : 8'(fifo_level);
-        rdata_d[htx_raster_reg_pkg::RASTER_STATUS_ERR_STATE_LSB]  = err_state_q;
-      end
-      htx_raster_reg_pkg::RASTER_CLEAR_COLOR_OFFSET: rdata_d = 32'(clear_color_q);
-      htx_raster_reg_pkg::RASTER_CLEAR_DEPTH_OFFSET: rdata_d = 32'(clear_depth_q);
-      htx_raster_reg_pkg::RASTER_FB_SIZE_OFFSET: begin
-        rdata_d[htx_raster_reg_pkg::RASTER_FB_SIZE_WIDTH_LSB +: 13]  = width_q;
-        rdata_d[htx_raster_reg_pkg::RASTER_FB_SIZE_HEIGHT_LSB +: 13] = height_q;
-      end
-      htx_raster_reg_pkg::RASTER_FB_STRIDE_OFFSET: rdata_d = 32'(stride_q);
-      // A diagnostic, built with the counters (CAPS.STATE): the board's build leaves both out.
-      htx_raster_reg_pkg::RASTER_STATE_OFFSET: rdata_d = Counters ? last_state_q : 32'd0;
-      htx_raster_reg_pkg::RASTER_FB_MEM_OFFSET: begin
-        rdata_d[htx_raster_reg_pkg::RASTER_FB_MEM_PIXELS_LSB +: 20] = 20'(FbPixels);
-        rdata_d[htx_raster_reg_pkg::RASTER_FB_MEM_PAGES_LSB +: 2]   = 2'(ColorPages);
-      end
-      htx_raster_reg_pkg::RASTER_FB_PAGE_OFFSET:
-        rdata_d[htx_raster_reg_pkg::RASTER_FB_PAGE_DRAW_LSB +: 2] = draw_page_q;
-      htx_raster_reg_pkg::RASTER_CAPS_OFFSET: begin
-        rdata_d[htx_raster_reg_pkg::RASTER_CAPS_METHODS_LSB +: 5]  = Methods;
-        rdata_d[htx_raster_reg_pkg::RASTER_CAPS_COUNTERS_LSB]      = Counters;
-        rdata_d[htx_raster_reg_pkg::RASTER_CAPS_STATE_LSB]         = Counters;
-        rdata_d[htx_raster_reg_pkg::RASTER_CAPS_FW_SETUP_LSB]      = FwSetup;
-      end
-      htx_raster_reg_pkg::RASTER_CNT_BUSY_OFFSET,
-      htx_raster_reg_pkg::RASTER_CNT_STALL_INPUT_OFFSET,
-      htx_raster_reg_pkg::RASTER_CNT_STALL_SETUP_OFFSET,
-      htx_raster_reg_pkg::RASTER_CNT_STALL_FRAGMENT_OFFSET,
-      htx_raster_reg_pkg::RASTER_CNT_SETUP_BUSY_OFFSET,
-      htx_raster_reg_pkg::RASTER_CNT_TRIANGLES_OFFSET,
-      htx_raster_reg_pkg::RASTER_CNT_FRAGMENTS_OFFSET,
-      htx_raster_reg_pkg::RASTER_CNT_PIXELS_OFFSET:         rdata_d = cnt_rdata;
-      htx_raster_reg_pkg::RASTER_CNT_DIVFREE_STEPS_OFFSET:  rdata_d = cnt_df_q;
-      default: ;
-    endcase
-  end
-
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      enable_q      <= 1'(htx_raster_reg_pkg::RASTER_CTRL_ENABLE_RESET >> htx_raster_reg_pkg::RASTER_CTRL_ENABLE_LSB);
-      err_state_q   <= 1'b0;
-      draw_page_q   <= 2'd0;
-      clear_color_q <= '0;
-      clear_depth_q <= 24'(htx_raster_reg_pkg::RASTER_CLEAR_DEPTH_RESET);
-      width_q       <= 13'(htx_raster_reg_pkg::RASTER_FB_SIZE_WIDTH_RESET >> htx_raster_reg_pkg::RASTER_FB_SIZE_WIDTH_LSB);
-      height_q      <= 13'(htx_raster_reg_pkg::RASTER_FB_SIZE_HEIGHT_RESET >> htx_raster_reg_pkg::RASTER_FB_SIZE_HEIGHT_LSB);
-      stride_q      <= 13'(htx_raster_reg_pkg::RASTER_FB_STRIDE_RESET);
-      clr_pend_q    <= 1'b0;
-      clr_color_q   <= 1'b0;
-      clr_depth_q   <= 1'b0;
-      last_state_q  <= '0;
-      rsp_valid_q   <= 1'b0;
-      rsp_err_q     <= 1'b0;
-      rsp_rdata_q   <= '0;
-      cnt_df_q      <= '0;
-    end else begin
-      rsp_valid_q <= accept;
-      rsp_err_q   <= accept && ((req_we_i && !wr) || fifo_refused);
-      if (accept && !req_we_i) rsp_rdata_q <= rdata_d;
-      if (setup_taken) last_state_q <= rec_state;
-      if (accept && wr) begin
-        unique case (offset)
-          htx_raster_reg_pkg::RASTER_CTRL_OFFSET:
-            enable_q <= req_wdata_i[htx_raster_reg_pkg::RASTER_CTRL_ENABLE_LSB];
-          htx_raster_reg_pkg::RASTER_STATUS_OFFSET:
-            if (req_wdata_i[htx_raster_reg_pkg::RASTER_STATUS_ERR_STATE_LSB]) err_state_q <= 1'b0;
-          htx_raster_reg_pkg::RASTER_CLEAR_COLOR_OFFSET: clear_color_q <= req_wdata_i[15:0];
-          htx_raster_reg_pkg::RASTER_CLEAR_DEPTH_OFFSET: clear_depth_q <= req_wdata_i[23:0];
-          htx_raster_reg_pkg::RASTER_FB_SIZE_OFFSET: begin
-            width_q  <= req_wdata_i[htx_raster_reg_pkg::RASTER_FB_SIZE_WIDTH_LSB +: 13];
-            height_q <= req_wdata_i[htx_raster_reg_pkg::RASTER_FB_SIZE_HEIGHT_LSB +: 13];
-          end
-          htx_raster_reg_pkg::RASTER_FB_STRIDE_OFFSET: stride_q <= req_wdata_i[12:0];
-          htx_raster_reg_pkg::RASTER_FB_PAGE_OFFSET:
-            // A page the memory does not have leaves the register as it was.
-            if (32'(req_wdata_i[htx_raster_reg_pkg::RASTER_FB_PAGE_DRAW_LSB +: 2]) < ColorPages) begin
-              draw_page_q <= req_wdata_i[htx_raster_reg_pkg::RASTER_FB_PAGE_DRAW_LSB +: 2];
-            end
-          default: ;
-        endcase
-      end
-      // After the write-one-to-clear above, so an error in the clearing clock is not lost.
-      if (setup_err) err_state_q <= 1'b1;
-      // Clear: requested, then started by the fragment stage once the pipeline is empty.
-      if (abort) begin
-        clr_pend_q <= 1'b0;
-      end else if (clear_req) begin
-        clr_pend_q  <= 1'b1;
-        clr_color_q <= req_wdata_i[htx_raster_reg_pkg::RASTER_CTRL_CLEAR_COLOR_LSB];
-        clr_depth_q <= req_wdata_i[htx_raster_reg_pkg::RASTER_CTRL_CLEAR_DEPTH_LSB];
-      end else if (clear_start) begin
-        clr_pend_q <= 1'b0;
-      end
-      if (cnt_reset || !Counters) begin
-        cnt_df_q <= '0;
-      end else begin
-        cnt_df_q <= cnt_df_q + (df_steps_valid ? 32'(df_steps) : 32'd0);
-      end
-    end
-  end
-
-  assign rsp_valid_o = rsp_valid_q;
-  assign rsp_rdata_o = rsp_rdata_q;
-  assign rsp_err_o   = rsp_err_q;
+  // ---- Register block --------------------------------------------------------------------------
+  htx_raster_regs #(.LvlW(LvlW), .FbPixels(FbPixels), .ColorPages(ColorPages), .Methods(Methods),
+                    .Counters(Counters), .FwSetup(FwSetup)) u_regs (
+    .clk_i, .rst_ni,
+    .req_valid_i, .req_ready_o, .req_addr_i, .req_we_i, .req_be_i, .req_wdata_i,
+    .rsp_valid_o, .rsp_rdata_o, .rsp_err_o,
+    .fifo_push_o     (fifo_push),
+    .fifo_full_i     (fifo_full),
+    .fifo_empty_i    (fifo_empty),
+    .fifo_level_i    (fifo_level),
+    .abort_o         (abort),
+    .enable_o        (enable),
+    .width_o         (fb_width),
+    .height_o        (fb_height),
+    .stride_o        (fb_stride),
+    .draw_page_o,
+    .clear_color_o   (clear_color),
+    .clear_depth_o   (clear_depth),
+    .clr_pend_o      (clr_pend),
+    .clr_color_o     (clr_color),
+    .clr_depth_o     (clr_depth),
+    .clear_start_i   (clear_start),
+    .clearing_i      (clearing),
+    .busy_i          (busy),
+    .setup_taken_i   (setup_taken),
+    .rec_state_i     (rec_state),
+    .setup_err_i     (setup_err),
+    .events_i        ({pixel, tv_valid && tv_ready, setup_taken, setup_busy, trav_stall, setup_stall,
+                       in_partial, busy}),
+    .df_steps_valid_i(df_steps_valid),
+    .df_steps_i      (df_steps)
+  );
 
   logic unused;
-  assign unused = ^{req_addr_i[31:12], req_addr_i[1:0], tv_y, clearing, tri_state, tri_flat,
+  assign unused = ^{tv_y, tri_state, tri_flat,
                     sd_side[63:32], rq_st_q[23:16], rq_st_q[9:0]};
 endmodule

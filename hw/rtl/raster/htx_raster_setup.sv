@@ -202,12 +202,6 @@ module htx_raster_setup #(
 
   // ---- Deltas, box -----------------------------------------------------------------------------
 
-  // Word offsets of vertex i's fields in the record (ValuesInFifo): 4 + 9 i + (x 0, y 1, z 2, q 3,
-  // uq 4 and 5, vq 6 and 7, rgba 8).
-  function automatic logic [4:0] vert_word(input logic [1:0] i, input logic [3:0] field);
-    vert_word = 5'd4 + ((i == 2'd1) ? 5'd9 : (i == 2'd2) ? 5'd18 : 5'd0) + 5'(field);
-  endfunction
-
   // Pixel centres 256 i + 128 inside [min, max]: ceil((min - 128) / 256) .. floor((max - 128) / 256),
   // clipped to the screen. The bounds come from the vertices the edges' signs pick (below): at once
   // through multiplexers, or (ValuesInFifo) one at a time from the record's words in the FIFO.
@@ -314,7 +308,7 @@ module htx_raster_setup #(
     assign rd_take = cf_got_q;
     assign rd_idx  = cf_q;
     // x: word 0 of a vertex, y: word 1
-    assign rd_off  = cf_q[3] ? bx_off : vert_word(cf_v, {3'd0, cf_q[2]});
+    assign rd_off  = cf_q[3] ? bx_off : htx_raster_pkg::rec_vert_word(cf_v, {3'd0, cf_q[2]});
     assign cf_word = $signed(vr_data_i[XW-1:0]);
     assign cf_diff = DW'(cf_word) - DW'(cf_prev_q);
     always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -478,7 +472,7 @@ module htx_raster_setup #(
     assign bx_y   = bx_q[1];
     assign bx_sel = (bx_q == 2'd0) ? minx_sel : (bx_q == 2'd1) ? maxx_sel
                   : (bx_q == 2'd2) ? miny_sel : maxy_sel;
-    assign bx_off = vert_word(bx_sel, bx_y ? 4'd1 : 4'd0);  // x, y: words 0, 1 of a vertex
+    assign bx_off = htx_raster_pkg::rec_vert_word(bx_sel, bx_y ? 4'd1 : 4'd0);  // x, y: words 0, 1 of a vertex
     assign bv     = $signed(vr_data_i[XW-1:0]);
     assign bb     = BoxW'((bv + (bx_min ? XW'(127) : -XW'(128))) >>> 8);
     assign bres   = bx_min ? (bb[BoxW-1] ? '0 : bb) : clip_hi(bb, bx_y ? height_i : width_i);
@@ -975,7 +969,7 @@ module htx_raster_setup #(
         else                    field = 4'd6 + {3'd0, lhi_q}; // vq
       end
       assign ld_req = (ld_q == LdReq) && !late;
-      assign ld_off = vert_word(lv_q, field);
+      assign ld_off = htx_raster_pkg::rec_vert_word(lv_q, field);
       // The low word as an AND-OR of one-hot selects decoded once: the word under the plane's
       // mask (z, q, the low word of uq or vq), or one byte of rgba (r, g, b).
       logic        is_z, is_q, is_uv;
@@ -1108,228 +1102,60 @@ module htx_raster_setup #(
     assign unused_s = ^{s_gxw, s_gyw, s_word};
   end
 
-  // ---- LOD gradients: one block shift s_g = max(0, msb(max |g|) + 2 - GradW) for all six -------
-  // Six magnitudes and six shifters side by side, or (SharedPlanes) one magnitude and one shift
-  // register taking the six in turn once the q, uq and vq planes are done.
-  logic [GWU-1:0] lg_or;    // OR of the six magnitudes: its msb is the largest one's
-  logic [7:0]     lg_msb1;  // msb + 1 (0: all gradients zero)
-  logic [7:0]     lg_shift;
+  // ---- LOD gradients: one block shift for all six (htx_raster_setup_lod) -----------------------
   logic           lod_done;
-  always_comb begin
-    lg_msb1 = '0;
-    for (int b = 0; b < GWU; b++) if (lg_or[b]) lg_msb1 = 8'(b + 1);
-    lg_shift = (lg_msb1 + 8'd1 > 8'(GradW)) ? lg_msb1 + 8'd1 - 8'(GradW) : 8'd0;
+  logic [6*GWU-1:0] lg_flat;
+  for (genvar i = 0; i < 6; i++) begin : g_lg_flat
+    assign lg_flat[GWU*i +: GWU] = lg[i];
   end
-  if (!Lod) begin : g_lod_off
-    assign lg_or    = '0;
-    assign lod_done = 1'b1;
-    assign tri_lod_g_o = '0;
-    logic [5:0] unused_lg;
-    for (genvar i = 0; i < 6; i++) begin : g_unused
-      assign unused_lg[i] = ^lg[i];
-    end
-  end else begin : g_lod_on
-    if (!SharedPlanes) begin : g_lod_par
-      always_comb begin
-        lg_or = '0;
-        for (int i = 0; i < 6; i++) lg_or = lg_or | (lg[i][GWU-1] ? GWU'(-lg[i]) : lg[i]);
-      end
-      for (genvar i = 0; i < 6; i++) begin : g_lod
-        logic [GWU-1:0] sh;
-        assign sh = GWU'($signed(lg[i]) >>> lg_shift);
-        assign tri_lod_g_o[GradW*i +: GradW] = sh[GradW-1:0];
-        logic unused_sh;
-        assign unused_sh = ^sh[GWU-1:GradW];
-      end
-      assign lod_done = 1'b1;
-    end else begin : g_lod_seq
-      // One gradient at a time: OR the six magnitudes (6 clocks), then shift each one right in a
-      // register, 8 bits a clock while 8 or more remain and then 1 (at most 7 + 7 clocks each),
-      // instead of a barrel shifter.
-      typedef enum logic [2:0] {LsIdle, LsOr, LsLoad, LsShift, LsDone} ls_e;
-      ls_e            ls_q;
-      logic [2:0]     li_q;
-      logic [7:0]     lcnt_q;
-      logic [GWU-1:0] lor_q, lsel, lsr_q;
-      logic [GradW-1:0] lgs_q [6];
-      assign lsel = lg[li_q];
-      always_ff @(posedge clk_i or negedge rst_ni) begin
-        if (!rst_ni) begin
-          ls_q   <= LsIdle;
-          li_q   <= '0;
-          lcnt_q <= '0;
-          lor_q  <= '0;
-          lsr_q  <= '0;
-          for (int i = 0; i < 6; i++) lgs_q[i] <= '0;
-        end else if (planes_abort || plane_start_q) begin
-          ls_q <= LsIdle;
-        end else begin
-          unique case (ls_q)
-            LsIdle: if (&plane_done[6:4]) begin ls_q <= LsOr; li_q <= '0; lor_q <= '0; end
-            LsOr: begin
-              lor_q <= lor_q | (lsel[GWU-1] ? GWU'(-lsel) : lsel);
-              li_q  <= (li_q == 3'd5) ? 3'd0 : li_q + 3'd1;
-              if (li_q == 3'd5) ls_q <= LsLoad;
-            end
-            LsLoad: begin
-              lsr_q  <= lsel;
-              lcnt_q <= lg_shift;
-              ls_q   <= LsShift;
-            end
-            LsShift: begin
-              if (lcnt_q >= 8'd8) begin
-                lsr_q  <= GWU'($signed(lsr_q) >>> 8);
-                lcnt_q <= lcnt_q - 8'd8;
-              end else if (lcnt_q != 8'd0) begin
-                lsr_q  <= GWU'($signed(lsr_q) >>> 1);
-                lcnt_q <= lcnt_q - 8'd1;
-              end else begin
-                lgs_q[li_q] <= lsr_q[GradW-1:0];
-                li_q        <= li_q + 3'd1;
-                ls_q        <= (li_q == 3'd5) ? LsDone : LsLoad;
-              end
-            end
-            default: ;
-          endcase
-        end
-      end
-      assign lg_or = lor_q;
-      for (genvar i = 0; i < 6; i++) begin : g_lod
-        assign tri_lod_g_o[GradW*i +: GradW] = lgs_q[i];
-      end
-      assign lod_done = (ls_q == LsDone);
-    end
-  end
-  assign tri_lod_shift_o = lg_shift;
-  for (genvar i = 0; i < 6; i++) begin : g_dfg
-    assign tri_dfg_o[GWU*i +: GWU] = lg[i];
-  end
+  htx_raster_setup_lod #(.GWU(GWU), .GradW(GradW), .Lod(Lod), .Serial(SharedPlanes)) u_lod (
+    .clk_i, .rst_ni,
+    .abort_i      (planes_abort),
+    .start_i      (plane_start_q),
+    .planes_done_i(&plane_done[6:4]),
+    .grad_i       (lg_flat),
+    .grad_o       (tri_lod_g_o),
+    .shift_o      (tri_lod_shift_o),
+    .done_o       (lod_done)
+  );
+  assign tri_dfg_o = lg_flat;  // (DIVFREE takes them at full precision)
 
-  // ---- AFFINE: u_i = round(uq_i R(q_i) 2^(TF - 2W + 1)) per vertex, then planes of u_i, v_i -----
-  // q_i < 2^W, so the numerator shift s = msb - (W - 1) is never positive: uq_i << (W - 1 - msb).
+  // ---- AFFINE: the vertices' u_i, v_i and their planes (htx_raster_setup_affine) ---------------
   logic av_done;
   if (HasAffine) begin : g_affine
-    localparam int unsigned RS = 2 * RecipW - 1 - TF;
-    // ValuesInFifo adds the reads: q_i before its reciprocal (AvRdQ), and uq_i, vq_i in two words
-    // each into au_q before their products (AvRdLo, AvRdHi, AvHi).
-    typedef enum logic [3:0] {
-      AvIdle, AvRdQ, AvStart, AvRecip, AvRdLo, AvRdHi, AvHi, AvMulU, AvMulV, AvPlanes, AvWait,
-      AvDone
-    } av_e;
-    av_e av_q;
-    logic [1:0]           ai_q;
-    logic                 uv_q;      // ValuesInFifo: reading vq_i (else uq_i)
-    logic [UQ-1:0]        au_q;      // ValuesInFifo: uq_i or vq_i
-    logic [RecipW:0]      r_q;
-    logic [MsbW-1:0]      m_q;
-    logic [LocW-1:0]      ua_q [3];
-    logic [LocW-1:0]      va_q [3];
-    logic                 amul_start, amul_done, apl_start_q;
-    logic [LocW-1:0]      av_coord;                 // u_i or v_i of the product just done
-    assign amul_start = (av_q == AvMulU) || (av_q == AvMulV);
-    // (uq_i 2^s) R rounded by RS bits is uq_i R rounded by RS - s bits (s = W - 1 - msb): the
-    // multiplier shifts the product right by RS - s - 1 itself (extra_i; the one-bit multiplier in its
-    // own registers) and only the last halving with its rounding is left. No shifter on the operand.
-    localparam int unsigned AE = $clog2(2 * RecipW);
-    logic signed [UQ-1:0]        amul_a;
-    logic signed [UQ+RecipW+1:0] amul_p, arnd;
-    logic [AE-1:0]               amul_extra;
-    if (ValuesInFifo) begin : g_au
-      assign amul_a = $signed(au_q);
-    end else begin : g_au_rec
-      assign amul_a = (av_q == AvMulU) ? $signed(uq_v[ai_q]) : $signed(vq_v[ai_q]);
-      logic unused_au;
-      assign unused_au = ^au_q;
+    logic [3*UQ-1:0]   uq_flat, vq_flat;
+    logic [3*LocW-1:0] ua_flat, va_flat;
+    for (genvar i = 0; i < 3; i++) begin : g_flat
+      assign uq_flat[UQ*i +: UQ] = uq_v[i];
+      assign vq_flat[UQ*i +: UQ] = vq_v[i];
+      assign ua_v[i] = ua_flat[LocW*i +: LocW];
+      assign va_v[i] = va_flat[LocW*i +: LocW];
     end
-    assign av_req = ValuesInFifo && ((av_q == AvRdQ) || (av_q == AvRdLo) || (av_q == AvRdHi));
-    always_comb begin
-      if (av_q == AvRdQ)       av_off = vert_word(ai_q, 4'd3);
-      else if (av_q == AvRdLo) av_off = vert_word(ai_q, uv_q ? 4'd6 : 4'd4);
-      else                     av_off = vert_word(ai_q, uv_q ? 4'd7 : 4'd5);
-    end
-    assign amul_extra = AE'(RS - RecipW) + AE'(m_q);
-    htx_raster_mul #(.AWidth(UQ), .BWidth(RecipW + 2), .Iterative(Iterative), .ExtraW(AE)) u_amul (
-      .clk_i, .rst_ni, .abort_i(planes_abort),
-      .start_i(amul_start),
-      .a_i    (amul_a),
-      .b_i    ($signed({1'b0, r_q})),
-      .neg_i  (1'b0),
-      .extra_i(amul_extra),
-      .done_o (amul_done),
-      .p_o    (amul_p)
+    htx_raster_setup_affine #(.RecipW(RecipW), .TF(TF), .UQ(UQ), .LocW(LocW), .MsbW(MsbW),
+                              .Iterative(Iterative), .ValuesInFifo(ValuesInFifo)) u_affine (
+      .clk_i, .rst_ni,
+      .abort_i       (planes_abort),
+      .start_i       (recip_done && det_pend_q && affine_q),
+      .recip_start_o (av_start),
+      .vtx_o         (av_i),
+      .recip_done_i  (recip_done),
+      .recip_r_i     (recip_r),
+      .recip_msb_i   (recip_msb),
+      .rd_req_o      (av_req),
+      .rd_off_o      (av_off),
+      .rd_data_i     (vr_data_i),
+      .uq_i          (uq_flat),
+      .vq_i          (vq_flat),
+      .late_ok_i     ((state_q == StWait) && !plane_start_q),
+      .planes_start_o(apl_start),
+      .planes_done_i (apl_done),
+      .release_i     ((state_q == StOut) && tri_ready_i),
+      .ua_take_i     (ua_take),
+      .va_take_i     (va_take),
+      .ua_o          (ua_flat),
+      .va_o          (va_flat),
+      .done_o        (av_done)
     );
-    assign arnd     = (amul_p + $signed((UQ+RecipW+2)'(1))) >>> 1;
-    assign av_coord = LocW'(arnd);
-    logic unused_arnd;
-    assign unused_arnd = ^arnd[UQ+RecipW+1:LocW];
-    assign av_start = (av_q == AvStart);
-    assign av_i     = ai_q;
-
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        av_q <= AvIdle; ai_q <= '0; r_q <= '0; m_q <= '0; apl_start_q <= 1'b0;
-        uv_q <= 1'b0; au_q <= '0;
-        for (int i = 0; i < 3; i++) begin ua_q[i] <= '0; va_q[i] <= '0; end
-      end else if (planes_abort) begin
-        av_q <= AvIdle; apl_start_q <= 1'b0;
-      end else begin
-        apl_start_q <= 1'b0;
-        if (ValuesInFifo) begin
-          // A coordinate enters at the tail; the loader takes from the head (what enters then is
-          // not read).
-          if (((av_q == AvMulU) && amul_done) || ua_take) begin
-            ua_q[0] <= ua_q[1]; ua_q[1] <= ua_q[2]; ua_q[2] <= av_coord;
-          end
-          if (((av_q == AvMulV) && amul_done) || va_take) begin
-            va_q[0] <= va_q[1]; va_q[1] <= va_q[2]; va_q[2] <= av_coord;
-          end
-        end
-        unique case (av_q)
-          AvIdle: if (recip_done && det_pend_q && affine_q) begin
-            ai_q <= '0;
-            av_q <= ValuesInFifo ? AvRdQ : AvStart;
-          end
-          AvRdQ: av_q <= AvStart;  // (AFFINE's reads always go first)
-          AvStart: av_q <= AvRecip;
-          AvRecip: if (recip_done) begin
-            r_q <= recip_r; m_q <= recip_msb; uv_q <= 1'b0;
-            av_q <= ValuesInFifo ? AvRdLo : AvMulU;
-          end
-          AvRdLo: av_q <= AvRdHi;
-          AvRdHi: begin au_q[31:0] <= vr_data_i; av_q <= AvHi; end
-          AvHi: begin
-            au_q[UQ-1:32] <= vr_data_i[UQ-33:0];
-            av_q <= uv_q ? AvMulV : AvMulU;
-          end
-          AvMulU: if (amul_done) begin
-            if (!ValuesInFifo) ua_q[ai_q] <= av_coord;
-            uv_q <= 1'b1;
-            av_q <= ValuesInFifo ? AvRdLo : AvMulV;
-          end
-          AvMulV: if (amul_done) begin
-            if (!ValuesInFifo) va_q[ai_q] <= av_coord;
-            ai_q <= ai_q + 1'b1;
-            av_q <= (ai_q == 2'd2) ? AvPlanes : ValuesInFifo ? AvRdQ : AvStart;
-          end
-          // (The late planes start only after the first ones: SharedPlanes starts those after the
-          // edges, and the plane sequencer takes a late start only after its start.)
-          AvPlanes: if ((state_q == StWait) && !plane_start_q) begin
-            apl_start_q <= 1'b1;
-            av_q <= AvWait;
-          end
-          AvWait: if (!apl_start_q && (&apl_done)) av_q <= AvDone;
-          AvDone: if (state_q == StOut && tri_ready_i) av_q <= AvIdle;
-          default: av_q <= AvIdle;
-        endcase
-      end
-    end
-    assign av_done = (av_q == AvDone);
-
-    assign apl_start = apl_start_q;
-    for (genvar i = 0; i < 3; i++) begin : g_uv_out
-      assign ua_v[i] = ua_q[i];
-      assign va_v[i] = va_q[i];
-    end
   end else begin : g_no_affine
     logic unused_take;
     assign unused_take = ua_take ^ va_take;
