@@ -139,29 +139,20 @@ module htx_raster #(
   // ---- FIFO and input --------------------------------------------------------------------------
   logic        fifo_pop;
   logic [31:0] fifo_rdata;
-  // RecInFifo (`icebreaker`): the record setup works on stays in the FIFO's block RAM, and setup
-  // reads its values from there (htx_raster_setup ValuesInFifo).
-  localparam bit RecInFifo = Iterative && !PerspColor && !FwSetup;
   // `icebreaker` (Iterative): an AFFINE triangle's u, v planes take the places of its uq, vq
-  // planes, which it does not use (setup writes them over those, FoldUv), so the traversal steps
-  // seven planes a pass instead of nine; planes 7 and 8 of the fragment are its planes 5 and 6.
+  // planes, which it does not use (its plane record puts them there, FoldUv), so the traversal
+  // steps seven planes a pass instead of nine; planes 7 and 8 of the fragment are its planes 5, 6.
   localparam bit          FoldUv = Iterative && Textured;
   localparam int unsigned NPT    = !Textured ? 4 : FoldUv ? 7 : NP;
-  logic        fifo_none, rec_release, vr_req;
-  logic [4:0]  vr_off;
-  htx_raster_fifo #(.Depth(FifoDepth), .Hold(RecInFifo)) u_fifo (
+  htx_raster_fifo #(.Depth(FifoDepth)) u_fifo (
     .clk_i, .rst_ni,
     .flush_i   (abort),
     .push_i    (fifo_push),
     .wdata_i   (req_wdata_i),
     .pop_i     (fifo_pop),
     .rdata_o   (fifo_rdata),
-    .peek_i    (vr_req),
-    .peek_off_i($clog2(FifoDepth)'(vr_off)),
-    .release_i (rec_release),
     .full_o    (fifo_full),
     .empty_o   (fifo_empty),
-    .none_o    (fifo_none),
     .level_o   (fifo_level)
   );
 
@@ -185,16 +176,12 @@ module htx_raster #(
   logic [6*GWU-1:0]   tri_dfg;
   logic [DfgW-1:0]    tri_dfg_side;
   logic               setup_busy, setup_stall, setup_taken, setup_err;
-  // The iterative divider's reciprocal unit also serves setup (1/|det| and AFFINE's 1/q_i): one
-  // unit, table and multiplier instead of two. The pipelined divider's unit cannot take requests
-  // between fragments, so there setup keeps its own. (FwSetup: no setup, so no second client.)
-  localparam bit          SharedRecip = !PixelPipelined && Textured;
-  localparam int unsigned DetW        = 2 * DW + 1;
-  logic                      rq_start, rq_done;
-  logic [DetW-1:0]           rq_x;
-  logic [RecipW:0]           rq_r;
-  logic [$clog2(DetW)-1:0]   rq_msb;
-
+  // Setup in hardware is the `full` configuration's (Iterative = 0); a configuration with the
+  // iterative units takes plane records (FwSetup). The time-multiplexed hardware setup that once
+  // served it is in the history (docs/raster.md, "Setup").
+  if (Iterative && !FwSetup) begin : g_bad_config
+    $error("htx_raster: Iterative needs FwSetup (setup in firmware)");
+  end
 
   if (FwSetup) begin : g_fw_setup
     // The firmware did setup: the reader takes the plane records.
@@ -205,7 +192,7 @@ module htx_raster #(
       .hold_i         (clr_pend),
       .width_i        (fb_width),
       .height_i       (fb_height),
-      .fifo_none_i    (fifo_none),
+      .fifo_none_i    (fifo_empty),
       .fifo_pop_o     (fifo_pop),
       .fifo_rdata_i   (fifo_rdata),
       .tri_valid_o    (tri_valid),
@@ -238,13 +225,6 @@ module htx_raster #(
     );
     assign in_busy     = 1'b0;
     assign rec_state   = fifo_rdata;  // (the state word, in the clock taken_o rises)
-    assign rec_release = 1'b0;
-    assign vr_req      = 1'b0;
-    assign vr_off      = '0;
-    assign rq_start    = 1'b0;
-    assign rq_x        = '0;
-    logic unused_rq;
-    assign unused_rq   = ^{rq_done, rq_r, rq_msb};
     assign tri_b       = '0;
     assign tri_p       = '0;
   end else begin : g_hw_setup
@@ -259,7 +239,7 @@ module htx_raster #(
       .clk_i, .rst_ni,
       .abort_i     (abort),
       .enable_i    (enable),
-      .fifo_empty_i(fifo_none),
+      .fifo_empty_i(fifo_empty),
       .fifo_pop_o  (fifo_pop),
       .fifo_rdata_i(fifo_rdata),
       .rec_valid_o (rec_valid),
@@ -280,10 +260,9 @@ module htx_raster #(
 
     htx_raster_setup #(
       .XyIntBits(XyIntBits), .ZBits(ZBits), .GF(GF), .RecipW(RecipW), .RecipK(RecipK),
-      .RecipG(RecipG), .NrSteps(SetupSteps), .Iterative(Iterative), .QBits(QBits),
+      .RecipG(RecipG), .NrSteps(SetupSteps), .QBits(QBits),
       .UvIntBits(UvIntBits), .TF(TF), .GradW(GradW), .Methods(Methods), .PerspColor(PerspColor),
-      .Lod(TexLod || HasDf), .ExtRecip(SharedRecip), .HoldRecord(Iterative),
-      .ValuesInFifo(RecInFifo), .FoldUv(FoldUv), .AW(AWP), .NP(NP)
+      .Lod(TexLod || HasDf), .AW(AWP), .NP(NP)
     ) u_setup (
       .clk_i, .rst_ni,
       .abort_i        (abort),
@@ -317,10 +296,6 @@ module htx_raster #(
       .tri_dneg_o     (tri_dneg),
       .tri_e_o        (tri_e),
       .tri_p_o        (tri_p),
-      .pl_we_o        (pl_we),
-      .pl_sel_o       (pl_sel),
-      .pl_idx_o       (pl_idx),
-      .pl_data_o      (pl_data),
       .tri_u_off_o    (tri_u_off),
       .tri_v_off_o    (tri_v_off),
       .tri_lod_g_o    (tri_lod_g),
@@ -329,18 +304,13 @@ module htx_raster #(
       .busy_o         (setup_busy),
       .stall_o        (setup_stall),
       .taken_o        (setup_taken),
-      .err_o          (setup_err),
-      .rq_start_o     (rq_start),
-      .rq_x_o         (rq_x),
-      .rq_done_i      (rq_done),
-      .rq_r_i         (rq_r),
-      .rq_msb_i       (rq_msb),
-      .vr_req_o       (vr_req),
-      .vr_off_o       (vr_off),
-      .vr_data_i      (fifo_rdata)
+      .err_o          (setup_err)
     );
-    // The FIFO frees the record's words when setup releases it (a FIFO without Hold ignores that).
-    assign rec_release = rec_valid && rec_ready;
+    // (The planes go on tri_p; the traversal's plane RAM is the plane records'.)
+    assign pl_we   = 1'b0;
+    assign pl_sel  = '0;
+    assign pl_idx  = '0;
+    assign pl_data = '0;
   end
 
   // ---- Traversal -------------------------------------------------------------------------------
@@ -562,10 +532,10 @@ module htx_raster #(
   logic [LocW-1:0]   dv_u, dv_v;
   logic [23:0]       dv_rgb;
   logic [PayD-1:0]   dv_pay;
-  // RECIP_LUT as the only method that divides per pixel, no perspective-correct colour and no
-  // setup client (the board's GPU): the divider without Newton steps (htx_raster_lut_divider).
+  // RECIP_LUT as the only method that divides per pixel and no perspective-correct colour (the
+  // board's GPU): the divider without Newton steps (htx_raster_lut_divider).
   localparam bit LutDivider = Textured && !PixelPipelined && !PerspColor &&
-                              !(SharedRecip && !FwSetup) && !Methods[1] && !Methods[3] && !Methods[4];
+                              !Methods[1] && !Methods[3] && !Methods[4];
   if (LutDivider) begin : g_lut_divider
     htx_raster_lut_divider #(
       .AccQ(AccQ), .AccU(AccU), .UvIntBits(UvIntBits), .W(RecipW), .K(RecipK), .G(RecipG), .TF(TF),
@@ -587,17 +557,13 @@ module htx_raster #(
       .out_pay_o  (dv_pay)
     );
     assign dv_rgb  = '0;
-    assign rq_done = 1'b0;
-    assign rq_r    = '0;
-    assign rq_msb  = '0;
     logic unused_lut_div;
-    assign unused_lut_div = ^{df_c, rq_start, rq_x};
+    assign unused_lut_div = ^df_c;
   end else if (Textured) begin : g_divider
     htx_raster_divider #(
       .AccQ(AccQ), .AccU(AccU), .AccC(AccC), .UvIntBits(UvIntBits), .W(RecipW), .K(RecipK), .G(RecipG),
       .Steps(PixelSteps), .TF(TF), .LocW(LocW), .PayW(PayD), .Pipelined(PixelPipelined),
-      .Color(PerspColor), .MulIterative(PixelMulIterative), .MulDigits(Iterative),
-      .Aux(SharedRecip && !FwSetup), .AuxW(DetW), .AuxSteps(SetupSteps)
+      .Color(PerspColor), .MulIterative(PixelMulIterative), .MulDigits(Iterative)
     ) u_divider (
       .clk_i, .rst_ni,
       .abort_i    (abort),
@@ -615,26 +581,18 @@ module htx_raster #(
       .out_u_o    (dv_u),
       .out_v_o    (dv_v),
       .out_rgb_o  (dv_rgb),
-      .out_pay_o  (dv_pay),
-      .aux_start_i(rq_start),
-      .aux_x_i    (rq_x),
-      .aux_done_o (rq_done),
-      .aux_r_o    (rq_r),
-      .aux_msb_o  (rq_msb)
+      .out_pay_o  (dv_pay)
     );
   end else begin : g_no_divider
-    // No texel coordinates to divide for; setup's reciprocals come from its own unit.
+    // No texel coordinates to divide for.
     assign dv_valid = df_valid;
     assign df_ready = dv_ready;
     assign dv_u     = '0;
     assign dv_v     = '0;
     assign dv_rgb   = '0;
     assign dv_pay   = {df_side, df_addr, df_z, df_rgb, df_ua, df_va, df_q, df_exact, df_x, df_div_color};
-    assign rq_done  = 1'b0;
-    assign rq_r     = '0;
-    assign rq_msb   = '0;
     logic unused_div;
-    assign unused_div = ^{sh_need, df_u, df_v, df_c, rq_start, rq_x};
+    assign unused_div = ^{sh_need, df_u, df_v, df_c};
   end
 
   logic [SideW-1:0] dv_side;

@@ -24,13 +24,7 @@ module htx_raster_divider #(
   parameter bit          Pipelined    = 1'b1,
   parameter bit          Color        = 1'b1,
   parameter bit          MulIterative = 1'b0,
-  parameter bit          MulDigits    = 1'b0,   // Pipelined = 0: the multiplier digit-serial (2 DSPs)
-  // Pipelined = 0: the reciprocal unit also serves a second client (setup: the determinant and
-  // AFFINE's vertex reciprocals), with AuxSteps Newton steps, between fragments.
-  parameter bit          Aux          = 1'b0,
-  parameter int unsigned AuxW         = AccQ,
-  parameter int unsigned AuxSteps     = Steps,
-  parameter int unsigned AuxMsbW      = $clog2(AuxW)
+  parameter bit          MulDigits    = 1'b0    // Pipelined = 0: the multiplier digit-serial (2 DSPs)
 ) (
   input  logic                clk_i,
   input  logic                rst_ni,
@@ -49,21 +43,9 @@ module htx_raster_divider #(
   input  logic                out_ready_i,
   output logic [LocW-1:0]     out_u_o, out_v_o,
   output logic [23:0]         out_rgb_o,
-  output logic [PayW-1:0]     out_pay_o,
-
-  // Aux: a reciprocal request (a pulse; aux_x_i is taken with it). aux_done_o pulses with the
-  // result on aux_r_o and aux_msb_o (valid in that clock only), as htx_recip's done_o, r_o, msb_o.
-  // One request at a time: the client waits for aux_done_o before it asks again (setup does).
-  input  logic                aux_start_i,
-  input  logic [AuxW-1:0]     aux_x_i,
-  output logic                aux_done_o,
-  output logic [W:0]          aux_r_o,
-  output logic [AuxMsbW-1:0]  aux_msb_o
+  output logic [PayW-1:0]     out_pay_o
 );
   localparam int unsigned MsbW = $clog2(AccQ);
-  localparam int unsigned RXW  = (Aux && AuxW > AccQ) ? AuxW : AccQ;  // the unit's X width
-  localparam int unsigned RMsbW = $clog2(RXW);
-  localparam int unsigned QSkip = RXW - AccQ;  // top bits of the unit's X that a pixel's Q leaves 0
   localparam int unsigned NIN  = (AccU > AccC) ? AccU : AccC;   // numerator input width
   localparam int unsigned WSH  = NIN + W;                       // after a left shift by < W
   localparam int unsigned NSU  = UvIntBits + W + 2;             // |U'| < |u| 2^W
@@ -200,10 +182,7 @@ module htx_raster_divider #(
     assign out_rgb_o   = rgb_q;
     assign out_pay_o   = pay_q;
     logic unused_p;
-    assign unused_p = ^{in_need_i, aux_start_i, aux_x_i};
-    assign aux_done_o = 1'b0;
-    assign aux_r_o    = '0;
-    assign aux_msb_o  = '0;
+    assign unused_p = in_need_i;
   end else begin : g_iter
     typedef enum logic [1:0] {StIdle, StRecip, StMul, StOut} state_e;
     state_e              state_q;
@@ -212,49 +191,15 @@ module htx_raster_divider #(
     logic [2:0]          k_q;
     logic                r_start, r_done, r_busy;
     logic [W:0]          r_nr, r_t, r_sel;
-    logic [RMsbW-1:0]    r_msb;
+    logic [MsbW-1:0]     r_msb;
     logic [LocW-1:0]     u_q, v_q;
     logic [23:0]         rgb_q;
 
-    // An aux request waits (aux_pend_q) until the unit is idle between fragments and then runs
-    // while no fragment is taken; it goes first when both wait, so setup, which asks a few times a
-    // triangle, is never starved by a stream of fragments. A fragment's reciprocal starts as the
-    // divider leaves StIdle, so a busy reciprocal unit in StIdle is running an aux request.
-    logic            aux_pend_q, aux_run, aux_go;
-    logic [RXW-1:0]  aux_x_q;
-    assign aux_run = r_busy && (state_q == StIdle);
-    if (Aux) begin : g_aux
-      always_ff @(posedge clk_i or negedge rst_ni) begin
-        if (!rst_ni) begin
-          aux_pend_q <= 1'b0;
-        end else if (abort_i) begin
-          aux_pend_q <= 1'b0;
-        end else if (aux_start_i) begin
-          aux_pend_q <= 1'b1;
-        end else if (aux_go) begin
-          aux_pend_q <= 1'b0;
-        end
-      end
-      always_ff @(posedge clk_i) begin
-        if (aux_start_i) aux_x_q <= RXW'(aux_x_i);
-      end
-    end else begin : g_no_aux
-      assign aux_pend_q = 1'b0;
-      assign aux_x_q    = '0;
-      logic unused_aux;
-      assign unused_aux = ^{aux_start_i, aux_x_i};
-    end
-    assign aux_go     = aux_pend_q && !aux_run && (state_q == StIdle);
-    assign aux_done_o = aux_run && r_done;
-    assign aux_r_o    = r_nr;
-    assign aux_msb_o  = AuxMsbW'(r_msb);  // an aux X has at most AuxW bits
-
-    assign in_ready_o = !aux_pend_q && !aux_run &&
-                        ((state_q == StIdle) || ((state_q == StOut) && out_ready_i));
+    assign in_ready_o = (state_q == StIdle) || ((state_q == StOut) && out_ready_i);
     assign take       = in_valid_i && in_ready_o;
     // The reciprocal starts as the fragment is taken (it is idle then: the last one finished before
     // the products).
-    assign r_start    = (take && in_need_i) || aux_go;
+    assign r_start    = take && in_need_i;
 
     // The reciprocal's Newton products go through the numerators' multiplier (ExtMul): the two
     // never work at once (the numerators wait for the reciprocal), so one multiplier serves both.
@@ -262,12 +207,11 @@ module htx_raster_divider #(
     logic signed [W+2:0]    r_mul_a, r_mul_b;
     logic signed [2*W+5:0]  r_mul_p;
     logic                   r_shift;
-    htx_recip #(.XWidth(RXW), .W(W), .K(K), .G(G), .Steps(Steps), .Iterative(MulIterative),
-                .Pipelined(1'b0), .SerialNorm(1'b1), .ExtMul(1'b1), .AltSteps(AuxSteps),
-                .NormSkip(QSkip)) u_recip (
+    htx_recip #(.XWidth(AccQ), .W(W), .K(K), .G(G), .Steps(Steps), .Iterative(MulIterative),
+                .Pipelined(1'b0), .SerialNorm(1'b1), .ExtMul(1'b1)) u_recip (
       .clk_i, .rst_ni, .abort_i,
-      .start_i(r_start), .en_i(1'b1), .table_only_i(!aux_go && in_lut_i && !Color),
-      .alt_i(aux_go), .x_i(aux_go ? aux_x_q : RXW'(q_eff) << QSkip),
+      .start_i(r_start), .en_i(1'b1), .table_only_i(in_lut_i && !Color),
+      .alt_i(1'b0), .x_i(q_eff),
       .busy_o(r_busy), .done_o(r_done), .r_o(r_nr), .r0_o(r_t), .msb_o(r_msb),
       .mul_start_o(r_mul_start), .mul_a_o(r_mul_a), .mul_b_o(r_mul_b), .mul_done_i(r_mul_done),
       .mul_p_i(r_mul_p), .norm_shift_o(r_shift)
@@ -277,12 +221,12 @@ module htx_raster_divider #(
     logic                   m_start, m_done;
     localparam int unsigned MA = Color ? ((NSU > NSC) ? NSU : NSC) : NSU;
     // The numerators shift in step with the unit's serial normaliser instead of through a barrel
-    // shifter keyed to msb. Q arrives NormSkip bits up and shifts left c times in all (c counting
-    // NormSkip), so msb = RXW - 1 - c and s = msb - (W - 1) = NL - c with NL = RXW - W. Register i
-    // holds N_i 2^c (its low NL + MA bits, which is all the MA-bit result depends on): N 2^-s is
-    // its bits from NL up, and for s > 0 round(N 2^-s) = (floor(N 2^(1-s)) + 1) >> 1 adds its bit
-    // NL - 1 to them. (The model's divide_fixed, bit for bit; NL >= 1 as RXW >= AccQ > W.)
-    localparam int unsigned NL = RXW - W;
+    // shifter keyed to msb. Q shifts left c times in all, so msb = AccQ - 1 - c and
+    // s = msb - (W - 1) = NL - c with NL = AccQ - W. Register i holds N_i 2^c (its low NL + MA
+    // bits, which is all the MA-bit result depends on): N 2^-s is its bits from NL up, and for
+    // s > 0 round(N 2^-s) = (floor(N 2^(1-s)) + 1) >> 1 adds its bit NL - 1 to them. (The model's
+    // divide_fixed, bit for bit; NL >= 1 as AccQ > W.)
+    localparam int unsigned NL = AccQ - W;
     localparam int unsigned NRW = NL + MA;
     logic [NRW-1:0]         nr_q [NN];
     logic [NRW-1:0]         nr_sel;
@@ -321,7 +265,7 @@ module htx_raster_divider #(
     assign r_mul_p    = (2*W+6)'(s_p);
     assign r_mul_done = s_done && r_mul_start;
     logic unused_s;
-    assign unused_s = ^s_p;
+    assign unused_s = ^{s_p, r_busy};  // (the reciprocal is idle whenever a fragment is taken)
     logic signed [MA+W+1:0] m_ru, m_rc;
     assign m_ru = (m_p + $signed((MA+W+2)'(1) << (RSU - 1))) >>> RSU;
     assign m_rc = (m_p + $signed((MA+W+2)'(1) << (RSC - 1))) >>> RSC;
@@ -340,11 +284,9 @@ module htx_raster_divider #(
           lut_q <= in_lut_i;
           pay_q <= in_pay_i;
           k_q   <= '0;
-          for (int i = 0; i < NN; i++) nr_q[i] <= NRW'($signed(nin[i])) << QSkip;
+          for (int i = 0; i < NN; i++) nr_q[i] <= NRW'($signed(nin[i]));
           state_q <= in_need_i ? StRecip : StOut;
         end else begin
-          // (An aux request's normalisation shifts them too, between fragments: the next take
-          // loads them again.)
           if (r_shift) begin
             for (int i = 0; i < NN; i++) nr_q[i] <= nr_q[i] << 1;
           end

@@ -26,12 +26,6 @@ package htx_raster_pkg;
     below_const = lt;
   endfunction
 
-  // Word offsets of vertex i's fields in a triangle record (htx_raster_setup ValuesInFifo, which
-  // reads them from the FIFO): 4 + 9 i + (x 0, y 1, z 2, q 3, uq 4 and 5, vq 6 and 7, rgba 8).
-  function automatic logic [4:0] rec_vert_word(input logic [1:0] i, input logic [3:0] field);
-    rec_vert_word = 5'd4 + ((i == 2'd1) ? 5'd9 : (i == 2'd2) ? 5'd18 : 5'd0) + 5'(field);
-  endfunction
-
   // Perspective methods (the state word's METHOD field, htx::Method).
   localparam logic [2:0] MethodAffine  = 3'd0;
   localparam logic [2:0] MethodSubdiv  = 3'd1;

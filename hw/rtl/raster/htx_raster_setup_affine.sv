@@ -2,17 +2,12 @@
 // u_i = round(uq_i R(q_i) 2^(TF - 2W + 1)) and likewise v_i, with R(q_i) from setup's reciprocal
 // unit, then the start of the planes of u_i and v_i once setup's first planes are under way.
 // q_i < 2^W, so the numerator shift s = msb - (W - 1) is never positive: uq_i << (W - 1 - msb).
-// With ValuesInFifo the record's q_i, uq_i and vq_i are read from the FIFO (rd_*), and the
-// coordinates wait in two shift chains that the plane loader takes from the head (ua_take_i,
-// va_take_i); otherwise they come from the record's registers and sit in registers by vertex.
 module htx_raster_setup_affine #(
   parameter int unsigned RecipW       = 32,
   parameter int unsigned TF           = 16,
   parameter int unsigned UQ           = 48,   // uq_i, vq_i width (signed)
   parameter int unsigned LocW         = 32,   // u_i, v_i width
-  parameter int unsigned MsbW         = 6,    // the reciprocal's msb index width
-  parameter bit          Iterative    = 1'b0, // the multiplier: one bit a clock
-  parameter bit          ValuesInFifo = 1'b0
+  parameter int unsigned MsbW         = 6     // the reciprocal's msb index width
 ) (
   input  logic               clk_i,
   input  logic               rst_ni,
@@ -24,11 +19,7 @@ module htx_raster_setup_affine #(
   input  logic               recip_done_i,
   input  logic [RecipW:0]    recip_r_i,
   input  logic [MsbW-1:0]    recip_msb_i,
-  // ValuesInFifo: word rd_off_o of the record asked for, on rd_data_i in the next clock.
-  output logic               rd_req_o,
-  output logic [4:0]         rd_off_o,
-  input  logic [31:0]        rd_data_i,
-  // Otherwise the record's registers, vertex i at UQ i.
+  // The record's values, vertex i at UQ i.
   input  logic [3*UQ-1:0]    uq_i,
   input  logic [3*UQ-1:0]    vq_i,
   // The planes of u_i, v_i: started (a pulse) once late_ok_i (setup waits for its first planes,
@@ -37,23 +28,16 @@ module htx_raster_setup_affine #(
   output logic               planes_start_o,
   input  logic [1:0]         planes_done_i,
   input  logic               release_i,      // the triangle leaves setup
-  input  logic               ua_take_i,      // ValuesInFifo: the loader takes the chain's head
-  input  logic               va_take_i,
-  output logic [3*LocW-1:0]  ua_o,           // u_i at LocW i (ValuesInFifo: the chain, head first)
+  output logic [3*LocW-1:0]  ua_o,           // u_i at LocW i
   output logic [3*LocW-1:0]  va_o,
   output logic               done_o          // coordinates and their planes are done
 );
   localparam int unsigned RS = 2 * RecipW - 1 - TF;
-  // ValuesInFifo adds the reads: q_i before its reciprocal (AvRdQ), and uq_i, vq_i in two words
-  // each into au_q before their products (AvRdLo, AvRdHi, AvHi).
-  typedef enum logic [3:0] {
-    AvIdle, AvRdQ, AvStart, AvRecip, AvRdLo, AvRdHi, AvHi, AvMulU, AvMulV, AvPlanes, AvWait,
-    AvDone
+  typedef enum logic [2:0] {
+    AvIdle, AvStart, AvRecip, AvMulU, AvMulV, AvPlanes, AvWait, AvDone
   } av_e;
   av_e av_q;
   logic [1:0]           ai_q;
-  logic                 uv_q;      // ValuesInFifo: reading vq_i (else uq_i)
-  logic [UQ-1:0]        au_q;      // ValuesInFifo: uq_i or vq_i
   logic [RecipW:0]      r_q;
   logic [MsbW-1:0]      m_q;
   logic [LocW-1:0]      ua_q [3];
@@ -68,23 +52,9 @@ module htx_raster_setup_affine #(
   logic signed [UQ-1:0]        amul_a;
   logic signed [UQ+RecipW+1:0] amul_p, arnd;
   logic [AE-1:0]               amul_extra;
-  if (ValuesInFifo) begin : g_au
-    assign amul_a = $signed(au_q);
-    logic unused_regs;
-    assign unused_regs = ^{uq_i, vq_i};
-  end else begin : g_au_rec
-    assign amul_a = (av_q == AvMulU) ? $signed(uq_i[UQ*ai_q +: UQ]) : $signed(vq_i[UQ*ai_q +: UQ]);
-    logic unused_au;
-    assign unused_au = ^{au_q, rd_data_i, ua_take_i, va_take_i};
-  end
-  assign rd_req_o = ValuesInFifo && ((av_q == AvRdQ) || (av_q == AvRdLo) || (av_q == AvRdHi));
-  always_comb begin
-    if (av_q == AvRdQ)       rd_off_o = htx_raster_pkg::rec_vert_word(ai_q, 4'd3);
-    else if (av_q == AvRdLo) rd_off_o = htx_raster_pkg::rec_vert_word(ai_q, uv_q ? 4'd6 : 4'd4);
-    else                     rd_off_o = htx_raster_pkg::rec_vert_word(ai_q, uv_q ? 4'd7 : 4'd5);
-  end
+  assign amul_a = (av_q == AvMulU) ? $signed(uq_i[UQ*ai_q +: UQ]) : $signed(vq_i[UQ*ai_q +: UQ]);
   assign amul_extra = AE'(RS - RecipW) + AE'(m_q);
-  htx_raster_mul #(.AWidth(UQ), .BWidth(RecipW + 2), .Iterative(Iterative), .ExtraW(AE)) u_amul (
+  htx_raster_mul #(.AWidth(UQ), .BWidth(RecipW + 2), .Iterative(1'b0), .ExtraW(AE)) u_amul (
     .clk_i, .rst_ni, .abort_i(abort_i),
     .start_i(amul_start),
     .a_i    (amul_a),
@@ -104,51 +74,31 @@ module htx_raster_setup_affine #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       av_q <= AvIdle; ai_q <= '0; r_q <= '0; m_q <= '0; apl_start_q <= 1'b0;
-      uv_q <= 1'b0; au_q <= '0;
       for (int i = 0; i < 3; i++) begin ua_q[i] <= '0; va_q[i] <= '0; end
     end else if (abort_i) begin
       av_q <= AvIdle; apl_start_q <= 1'b0;
     end else begin
       apl_start_q <= 1'b0;
-      if (ValuesInFifo) begin
-        // A coordinate enters at the tail; the loader takes from the head (what enters then is
-        // not read).
-        if (((av_q == AvMulU) && amul_done) || ua_take_i) begin
-          ua_q[0] <= ua_q[1]; ua_q[1] <= ua_q[2]; ua_q[2] <= av_coord;
-        end
-        if (((av_q == AvMulV) && amul_done) || va_take_i) begin
-          va_q[0] <= va_q[1]; va_q[1] <= va_q[2]; va_q[2] <= av_coord;
-        end
-      end
       unique case (av_q)
         AvIdle: if (start_i) begin
           ai_q <= '0;
-          av_q <= ValuesInFifo ? AvRdQ : AvStart;
+          av_q <= AvStart;
         end
-        AvRdQ: av_q <= AvStart;  // (AFFINE's reads always go first)
         AvStart: av_q <= AvRecip;
         AvRecip: if (recip_done_i) begin
-          r_q <= recip_r_i; m_q <= recip_msb_i; uv_q <= 1'b0;
-          av_q <= ValuesInFifo ? AvRdLo : AvMulU;
-        end
-        AvRdLo: av_q <= AvRdHi;
-        AvRdHi: begin au_q[31:0] <= rd_data_i; av_q <= AvHi; end
-        AvHi: begin
-          au_q[UQ-1:32] <= rd_data_i[UQ-33:0];
-          av_q <= uv_q ? AvMulV : AvMulU;
+          r_q <= recip_r_i; m_q <= recip_msb_i;
+          av_q <= AvMulU;
         end
         AvMulU: if (amul_done) begin
-          if (!ValuesInFifo) ua_q[ai_q] <= av_coord;
-          uv_q <= 1'b1;
-          av_q <= ValuesInFifo ? AvRdLo : AvMulV;
+          ua_q[ai_q] <= av_coord;
+          av_q <= AvMulV;
         end
         AvMulV: if (amul_done) begin
-          if (!ValuesInFifo) va_q[ai_q] <= av_coord;
+          va_q[ai_q] <= av_coord;
           ai_q <= ai_q + 1'b1;
-          av_q <= (ai_q == 2'd2) ? AvPlanes : ValuesInFifo ? AvRdQ : AvStart;
+          av_q <= (ai_q == 2'd2) ? AvPlanes : AvStart;
         end
-        // (The late planes start only after the first ones: SharedPlanes starts those after the
-        // edges, and the plane sequencer takes a late start only after its start.)
+        // (The late planes start only after setup's first ones have started.)
         AvPlanes: if (late_ok_i) begin
           apl_start_q <= 1'b1;
           av_q <= AvWait;

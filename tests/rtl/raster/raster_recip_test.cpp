@@ -1,6 +1,8 @@
-// htx_recip Verilated alone as the `icebreaker` divider's unit uses it: the FSM form with the serial
-// normaliser (one bit a clock), X of 47 bits (setup's determinant, alt_i: 2 Newton
-// steps) or of 42 bits brought shifted left by NormSkip = 5 (a pixel's Q: 1 step, or the table only).
+// htx_recip Verilated alone as the `icebreaker` divider's unit used it while it also served the
+// time-multiplexed setup (until 2026-12-07): the FSM form with the serial normaliser (one bit a
+// clock), X of 47 bits (setup's determinant, alt_i: 2 Newton steps) or of 42 bits brought shifted
+// left by NormSkip = 5 (a pixel's Q: 1 step, or the table only). The divider now builds the unit
+// with X = Q and neither input; the raster scene tests cover that form.
 // Every result against the model's reciprocal (value and shift), for X with its leading one at
 // every position, and the clocks each normalisation takes (label `rtl`).
 #include <gtest/gtest.h>
