@@ -148,7 +148,7 @@ module htx_gpu_subsys #(
     .XyIntBits(XyIntBits), .ZBits(ZBits), .GF(GF), .RecipW(RecipW), .RecipK(RecipK),
     .RecipG(RecipG), .SetupSteps(SetupSteps), .Iterative(Iterative), .FifoDepth(FifoDepth),
     .FbPixels(FbPixels), .AddrW(AddrW), .QBits(QBits), .UvIntBits(UvIntBits), .TF(TF),
-    .PixelSteps(PixelSteps), .Methods(Methods), .TexLod(TexFilters[2]), .PerspColor(PerspColor),
+    .PixelSteps(PixelSteps), .Methods(Methods), .PerspColor(PerspColor),
     .PixelPipelined(PixelPipelined), .PixelMulIterative(PixelMulIterative),
     .SubdivDepth(SubdivDepth), .DfFracBits(DfFracBits), .DfCap(DfCap), .LF(LF), .LogIdx(LogIdx),
     .CoordW(CoordW), .QW(QW), .GradW(GradW), .LocW(LocW), .Counters(RasterCounters),

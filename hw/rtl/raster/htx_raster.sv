@@ -16,7 +16,9 @@ module htx_raster #(
   parameter int unsigned RecipK     = 10,
   parameter int unsigned RecipG     = 2,
   parameter int unsigned SetupSteps = 2,
-  parameter bit          Iterative  = 1'b0,  // setup multipliers: 0 one product per clock, 1 shift-add
+  // The `icebreaker` datapath: the iterative per-pixel divider, the traversal's planes in RAM,
+  // the serial combine; needs FwSetup (setup in firmware) and only it does.
+  parameter bit          Iterative  = 1'b0,
   parameter int unsigned FifoDepth  = 64,
   parameter int unsigned FbPixels   = 76800,
   parameter int unsigned AddrW      = 24,
@@ -25,9 +27,6 @@ module htx_raster #(
   parameter int unsigned TF         = 16,       // texcoord_frac_bits
   parameter int unsigned PixelSteps = 2,        // pixel_nr_steps
   parameter logic [4:0]  Methods    = 5'b01111, // bit m: htx::Method m built (4: DIVFREE)
-  // The texture unit behind the port takes the LOD inputs (it builds trilinear); 0: it samples
-  // level 0 only, so without DIVFREE setup leaves the LOD gradients out (tex_req_lod_* are 0).
-  parameter bit          TexLod     = 1'b1,
   parameter bit          PerspColor = 1'b1,     // perspective_color
   parameter bit          PixelPipelined = 1'b1, // per-pixel divider: pipelined, else iterative
   parameter bit          PixelMulIterative = 1'b0, // iterative divider's multiplier: shift-and-add
@@ -176,11 +175,12 @@ module htx_raster #(
   logic [6*GWU-1:0]   tri_dfg;
   logic [DfgW-1:0]    tri_dfg_side;
   logic               setup_busy, setup_stall, setup_taken, setup_err;
-  // Setup in hardware is the `full` configuration's (Iterative = 0); a configuration with the
-  // iterative units takes plane records (FwSetup). The time-multiplexed hardware setup that once
-  // served it is in the history (docs/raster.md, "Setup").
-  if (Iterative && !FwSetup) begin : g_bad_config
-    $error("htx_raster: Iterative needs FwSetup (setup in firmware)");
+  // Setup in hardware is the `full` configuration's (Iterative = 0); the configuration with the
+  // iterative units takes plane records (FwSetup), whose planes only its traversal (planes in RAM)
+  // reads. The time-multiplexed hardware setup that once served it is in the history
+  // (docs/raster.md, "Setup").
+  if (Iterative != FwSetup) begin : g_bad_config
+    $error("htx_raster: Iterative and FwSetup go together (setup in firmware for the iterative units)");
   end
 
   if (FwSetup) begin : g_fw_setup
@@ -262,7 +262,7 @@ module htx_raster #(
       .XyIntBits(XyIntBits), .ZBits(ZBits), .GF(GF), .RecipW(RecipW), .RecipK(RecipK),
       .RecipG(RecipG), .NrSteps(SetupSteps), .QBits(QBits),
       .UvIntBits(UvIntBits), .TF(TF), .GradW(GradW), .Methods(Methods), .PerspColor(PerspColor),
-      .Lod(TexLod || HasDf), .AW(AWP), .NP(NP)
+      .AW(AWP), .NP(NP)
     ) u_setup (
       .clk_i, .rst_ni,
       .abort_i        (abort),

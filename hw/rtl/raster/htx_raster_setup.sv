@@ -22,9 +22,6 @@ module htx_raster_setup #(
   parameter int unsigned GradW     = 24,       // lod_grad_bits
   parameter logic [4:0]  Methods   = 5'b01111, // bit m: method m built (htx::Method order)
   parameter bit          PerspColor = 1'b1,
-  // The LOD gradients are built (a trilinear texture unit or DIVFREE takes them); 0: tri_lod_*_o
-  // are 0 and the LOD block is left out.
-  parameter bit          Lod       = 1'b1,
   // Derived widths (docs/raster.md).
   parameter int unsigned UQ   = QBits + UvIntBits,            // uq, vq vertex values (signed)
   parameter int unsigned LocW = UvIntBits + TF,               // local texel coordinates (signed)
@@ -105,7 +102,11 @@ module htx_raster_setup #(
   // ---- Accept and check the state word --------------------------------------------------------
   // A method this build leaves out, a subdivision length outside 2..64 or a depth function beyond
   // `always` is consumed, draws nothing and raises ERR_STATE.
-  localparam bit Textured = |Methods;  // texture mapping built (some perspective method)
+  // Setup in hardware is the `full` configuration's, with AFFINE among its methods (the builds
+  // without texture mapping or without AFFINE take plane records: htx_raster FwSetup).
+  if (!Methods[0]) begin : g_bad_methods
+    $error("htx_raster_setup: AFFINE must be built (other configurations take plane records)");
+  end
   logic take, state_bad, tri_skip;
   logic [2:0] rec_method;
   assign rec_method  = rec_state_i[htx_raster_reg_pkg::RASTER_STATE_METHOD_LSB +: 3];
@@ -305,7 +306,6 @@ module htx_raster_setup #(
   assign det_next = DetW'(part_sum);
 
   // ---- Reciprocals: 1/|det|, then (AFFINE) 1/q_i of each vertex -------------------------------
-  localparam bit HasAffine = Methods[0];
   logic                recip_start, recip_done, recip_valid_q, det_pend_q;
   logic [RecipW:0]     recip_r, rdet_q;
   logic [MsbW-1:0]     recip_msb, msbdet_q;
@@ -356,8 +356,7 @@ module htx_raster_setup #(
                               recip_norm_shift};
 
   // ---- Planes: z, r, g, b, q, uq, vq, and for AFFINE ua, va -------------------------------------
-  // Nine plane units working in parallel. Planes built: ua, va only for AFFINE; q, uq, vq only with texture mapping.
-  localparam int unsigned NS  = HasAffine ? NP : Textured ? 7 : 4;
+  // Nine plane units working in parallel.
   logic                 apl_start;         // AFFINE's vertex coordinates are ready (pulse)
   logic [1:0]           apl_done;          // the ua, va planes are done
   logic [LocW-1:0]      ua_v [3];
@@ -413,16 +412,9 @@ module htx_raster_setup #(
     assign sv[VSW*(24+i) +: VSW] = VSW'($signed(va_v[i]));
   end
 
-  // Planes not built (ua, va without AFFINE) give zeros on tri_p_o.
-  for (genvar p = NS; p < NP; p++) begin : g_plane_off
-    assign pgx[p] = '0;
-    assign pgy[p] = '0;
-    assign pst[p] = '0;
-  end
-
   // One plane unit per plane; ua and va (planes 7, 8) start when AFFINE's vertex coordinates are
   // ready. The unit of q, uq, vq also gives its gradients at full precision to the LOD shift.
-  for (genvar p = 0; p < NS; p++) begin : g_plane
+  for (genvar p = 0; p < NP; p++) begin : g_plane
     localparam int unsigned VBP = plane_vb(p);
     localparam int unsigned AP  = VBP + GF + 2;
     localparam int unsigned GP  = VBP + DW + 2 + GF + 1;
@@ -456,22 +448,14 @@ module htx_raster_setup #(
       assign unused_w = ^{gxw, gyw};
     end
   end
-  if (NS < NP) begin : g_done_off
-    assign plane_done[NP-1:NS] = '0;
-  end
   assign apl_done = plane_done[8:7];
-  if (!Textured) begin : g_no_lg
-    for (genvar k = 0; k < 6; k++) begin : g_zero
-      assign lg[k] = '0;
-    end
-  end
 
   // ---- LOD gradients: one block shift for all six (htx_raster_setup_lod) -----------------------
   logic [6*GWU-1:0] lg_flat;
   for (genvar i = 0; i < 6; i++) begin : g_lg_flat
     assign lg_flat[GWU*i +: GWU] = lg[i];
   end
-  htx_raster_setup_lod #(.GWU(GWU), .GradW(GradW), .Lod(Lod)) u_lod (
+  htx_raster_setup_lod #(.GWU(GWU), .GradW(GradW)) u_lod (
     .grad_i (lg_flat),
     .grad_o (tri_lod_g_o),
     .shift_o(tri_lod_shift_o)
@@ -480,46 +464,33 @@ module htx_raster_setup #(
 
   // ---- AFFINE: the vertices' u_i, v_i and their planes (htx_raster_setup_affine) ---------------
   logic av_done;
-  if (HasAffine) begin : g_affine
-    logic [3*UQ-1:0]   uq_flat, vq_flat;
-    logic [3*LocW-1:0] ua_flat, va_flat;
-    for (genvar i = 0; i < 3; i++) begin : g_flat
-      assign uq_flat[UQ*i +: UQ] = uq_v[i];
-      assign vq_flat[UQ*i +: UQ] = vq_v[i];
-      assign ua_v[i] = ua_flat[LocW*i +: LocW];
-      assign va_v[i] = va_flat[LocW*i +: LocW];
-    end
-    htx_raster_setup_affine #(.RecipW(RecipW), .TF(TF), .UQ(UQ), .LocW(LocW), .MsbW(MsbW)) u_affine (
-      .clk_i, .rst_ni,
-      .abort_i       (planes_abort),
-      .start_i       (recip_done && det_pend_q && affine_q),
-      .recip_start_o (av_start),
-      .vtx_o         (av_i),
-      .recip_done_i  (recip_done),
-      .recip_r_i     (recip_r),
-      .recip_msb_i   (recip_msb),
-      .uq_i          (uq_flat),
-      .vq_i          (vq_flat),
-      .late_ok_i     ((state_q == StWait) && !plane_start_q),
-      .planes_start_o(apl_start),
-      .planes_done_i (apl_done),
-      .release_i     ((state_q == StOut) && tri_ready_i),
-      .ua_o          (ua_flat),
-      .va_o          (va_flat),
-      .done_o        (av_done)
-    );
-  end else begin : g_no_affine
-    assign av_start = 1'b0;
-    assign av_i     = 2'd0;
-    assign av_done  = 1'b0;
-    assign apl_start = 1'b0;
-    for (genvar i = 0; i < 3; i++) begin : g_uv_out
-      assign ua_v[i] = '0;
-      assign va_v[i] = '0;
-    end
-    logic unused_a;
-    assign unused_a = affine_q;
+  logic [3*UQ-1:0]   uq_flat, vq_flat;
+  logic [3*LocW-1:0] ua_flat, va_flat;
+  for (genvar i = 0; i < 3; i++) begin : g_flat
+    assign uq_flat[UQ*i +: UQ] = uq_v[i];
+    assign vq_flat[UQ*i +: UQ] = vq_v[i];
+    assign ua_v[i] = ua_flat[LocW*i +: LocW];
+    assign va_v[i] = va_flat[LocW*i +: LocW];
   end
+  htx_raster_setup_affine #(.RecipW(RecipW), .TF(TF), .UQ(UQ), .LocW(LocW), .MsbW(MsbW)) u_affine (
+    .clk_i, .rst_ni,
+    .abort_i       (planes_abort),
+    .start_i       (recip_done && det_pend_q && affine_q),
+    .recip_start_o (av_start),
+    .vtx_o         (av_i),
+    .recip_done_i  (recip_done),
+    .recip_r_i     (recip_r),
+    .recip_msb_i   (recip_msb),
+    .uq_i          (uq_flat),
+    .vq_i          (vq_flat),
+    .late_ok_i     ((state_q == StWait) && !plane_start_q),
+    .planes_start_o(apl_start),
+    .planes_done_i (apl_done),
+    .release_i     ((state_q == StOut) && tri_ready_i),
+    .ua_o          (ua_flat),
+    .va_o          (va_flat),
+    .done_o        (av_done)
+  );
 
   // ---- Sequencer -------------------------------------------------------------------------------
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -553,7 +524,7 @@ module htx_raster_setup #(
       end
       unique case (state_q)
         StIdle: if (take && !state_bad) begin
-          affine_q <= HasAffine && (rec_method == htx_raster_pkg::MethodAffine);
+          affine_q <= (rec_method == htx_raster_pkg::MethodAffine);
           plane_start_q <= 1'b1;  // (n_x, n_y do not wait for the determinant)
           recip_valid_q <= 1'b0;
           state_q       <= StDet0;

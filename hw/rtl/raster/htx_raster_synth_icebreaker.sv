@@ -1,7 +1,7 @@
 // Synthesis and place-and-route harness of the raster unit in the `icebreaker` configuration
 // (htx_raster_synth_wrapper) as the board's GPU builds it (gpu_icebreaker_up5k): AFFINE and
-// RECIP_LUT, no LOD gradients (its texture unit has no trilinear), no event counters; the
-// synth-report design raster_icebreaker_up5k.
+// RECIP_LUT (its plane records carry LOD gradients for DIVFREE only, so the LOD outputs are 0), no
+// event counters; the synth-report design raster_icebreaker_up5k.
 module htx_raster_synth_icebreaker (
   input  logic clk_i,
   input  logic rst_ni,
@@ -9,7 +9,7 @@ module htx_raster_synth_icebreaker (
   output logic dout_o
 );
   htx_raster_synth_wrapper #(.Full(1'b0), .Methods(htx_raster_pkg::board_methods()),
-                            .TexLod(1'b0), .Counters(1'b0)) u_wrapper (
+                            .Counters(1'b0)) u_wrapper (
     .clk_i, .rst_ni, .din_i, .dout_o
   );
 endmodule

@@ -8,7 +8,7 @@ module htx_raster_synth_icebreaker_untextured (
   input  logic din_i,
   output logic dout_o
 );
-  htx_raster_synth_wrapper #(.Full(1'b0), .Methods(5'b00000), .TexLod(1'b0), .Counters(1'b0))
+  htx_raster_synth_wrapper #(.Full(1'b0), .Methods(5'b00000), .Counters(1'b0))
   u_wrapper (
     .clk_i, .rst_ni, .din_i, .dout_o
   );

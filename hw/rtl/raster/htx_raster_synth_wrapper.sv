@@ -5,7 +5,6 @@
 module htx_raster_synth_wrapper #(
   parameter bit         Full    = 1'b0,
   parameter logic [4:0] Methods = 5'b01111, // the synth-report designs leave DIVFREE out
-  parameter bit         TexLod  = 1'b1,     // the LOD gradients for a trilinear texture unit
   parameter bit         Counters = 1'b1     // the CNT_* event counters
 ) (
   input  logic clk_i,
@@ -47,7 +46,7 @@ module htx_raster_synth_wrapper #(
     .RecipK(Full ? 10 : 8), .RecipG(2), .SetupSteps(2), .Iterative(!Full), .FifoDepth(64),
     .FbPixels(Full ? 76800 : 19200), .AddrW(AddrW),
     .QBits(Full ? 32 : 24), .UvIntBits(Full ? 16 : 13), .TF(Full ? 16 : 10),
-    .PixelSteps(Full ? 2 : 1), .Methods(Methods), .TexLod(TexLod), .PerspColor(Full),
+    .PixelSteps(Full ? 2 : 1), .Methods(Methods), .PerspColor(Full),
     .PixelPipelined(Full),
     .PixelMulIterative(1'b0), .SubdivDepth(Full ? 128 : 64), .DfFracBits(Full ? 4 : 2), .DfCap(64),
     .LF(Full ? 8 : 6), .LogIdx(Full ? 10 : 6), .CoordW(CoordW), .GradW(GradW), .Counters(Counters), .FwSetup(!Full)
