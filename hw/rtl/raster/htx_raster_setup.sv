@@ -1,13 +1,14 @@
-// Triangle setup (docs/model.md §2, docs/raster.md): determinant, winding (the model swaps vertices
-// 1 and 2 for a negative determinant: both windings are drawn), edge functions with the top-left rule, the pixel
-// box clipped to the screen, 1/det from its reciprocal unit, and the planes of z, the colour
-// channels (c q with PerspColor), q, uq, vq (with some method built) and, for AFFINE, the vertex
+// Triangle setup (docs/model.md §2, docs/raster.md): determinant, winding (the model swaps
+// vertices 1 and 2 for a negative determinant: both windings are drawn), edge functions with the
+// top-left rule, the pixel box clipped to the screen, 1/det from its reciprocal unit, and the
+// planes of z, the colour channels (c q with PerspColor), q, uq, vq and, for AFFINE, the vertex
 // texel coordinates u_i = uq_i / q_i (three more reciprocals from the same unit, docs/model.md
 // §5.1; htx_raster_setup_affine), and the LOD unit's block-shifted gradients (§6;
 // htx_raster_setup_lod). Nine plane units work in parallel. This is the `full` configuration's
-// setup; the iterative configurations take plane records instead (htx_raster FwSetup). Edge values and plane values are delivered at the box's first pixel centre
-// (256 x_lo + 128, 256 y_lo + 128), where traversal starts. Zero-area triangles and triangles whose
-// box holds no pixel centre of the screen are consumed here and never reach traversal.
+// setup; the iterative configurations take plane records instead (htx_raster FwSetup). Edge
+// values and plane values are delivered at the box's first pixel centre (256 x_lo + 128,
+// 256 y_lo + 128), where traversal starts. Zero-area triangles and triangles whose box holds no
+// pixel centre of the screen are consumed here and never reach traversal.
 module htx_raster_setup #(
   parameter int unsigned XyIntBits = 16,
   parameter int unsigned ZBits     = 24,
