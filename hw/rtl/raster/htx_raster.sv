@@ -192,7 +192,7 @@ module htx_raster #(
       .hold_i         (clr_pend),
       .width_i        (fb_width),
       .height_i       (fb_height),
-      .fifo_none_i    (fifo_empty),
+      .fifo_empty_i   (fifo_empty),
       .fifo_pop_o     (fifo_pop),
       .fifo_rdata_i   (fifo_rdata),
       .tri_valid_o    (tri_valid),

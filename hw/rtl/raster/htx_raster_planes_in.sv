@@ -22,7 +22,7 @@ module htx_raster_planes_in #(
   input  logic [12:0]        width_i,
   input  logic [12:0]        height_i,
 
-  input  logic               fifo_none_i,   // nothing to pop
+  input  logic               fifo_empty_i,  // nothing to pop
   output logic               fifo_pop_o,
   input  logic [31:0]        fifo_rdata_i,  // the popped word, a clock after the pop
 
@@ -73,7 +73,7 @@ module htx_raster_planes_in #(
 
   // One word every two clocks (no pop while a popped word is on its way), so the reader never
   // pops a word past the record's end. A record starts only once the last one was taken.
-  assign fifo_pop_o = enable_i && !abort_i && !fifo_none_i && !pend_q && !valid_q &&
+  assign fifo_pop_o = enable_i && !abort_i && !fifo_empty_i && !pend_q && !valid_q &&
                       (in_rec_q || !hold_i);
 
   // The box words: lo [12:0] <= hi [28:16] < the screen's size.
@@ -205,7 +205,7 @@ module htx_raster_planes_in #(
 
   assign busy_o    = in_rec_q;
   assign stall_o   = valid_q && !tri_ready_i;
-  assign partial_o = in_rec_q && fifo_none_i;
+  assign partial_o = in_rec_q && fifo_empty_i;
   assign taken_o   = got_state;
   assign err_o     = got_last && drop_q;
 

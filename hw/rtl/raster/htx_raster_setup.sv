@@ -90,8 +90,7 @@ module htx_raster_setup #(
   logic [ZBits-1:0]       z_v [3];
   logic [31:0]            rgba_v [3];
   logic [QBits-1:0]       q_v [3];
-  logic [UQ-1:0]          uq_v [3];
-  logic [UQ-1:0]          vq_v [3];
+  logic [3*UQ-1:0]        uq_v, vq_v;  // vertex i at UQ i, as the record and the AFFINE unit have them
   logic [31:0]            u_off_v, v_off_v;
   logic signed [DetW-1:0] det_q;     // |det|, from StDet1 on (edge 1 starts from it)
   logic                   det_neg_q;
@@ -124,22 +123,24 @@ module htx_raster_setup #(
       st_v    <= '0;
       u_off_v <= '0;
       v_off_v <= '0;
+      uq_v    <= '0;
+      vq_v    <= '0;
       for (int i = 0; i < 3; i++) begin
         x_v[i] <= '0; y_v[i] <= '0; z_v[i] <= '0; rgba_v[i] <= '0;
-        q_v[i] <= '0; uq_v[i] <= '0; vq_v[i] <= '0;
+        q_v[i] <= '0;
       end
     end else if (take && !state_bad && !abort_i) begin
       st_v    <= rec_state_i;
       u_off_v <= rec_u_off_i;
       v_off_v <= rec_v_off_i;
+      uq_v    <= rec_uq_i;
+      vq_v    <= rec_vq_i;
       for (int i = 0; i < 3; i++) begin
         x_v[i]    <= rec_x_i[XW*i +: XW];
         y_v[i]    <= rec_y_i[XW*i +: XW];
         z_v[i]    <= rec_z_i[ZBits*i +: ZBits];
         rgba_v[i] <= rec_rgba_i[32*i +: 32];
         q_v[i]    <= rec_q_i[QBits*i +: QBits];
-        uq_v[i]   <= rec_uq_i[UQ*i +: UQ];
-        vq_v[i]   <= rec_vq_i[UQ*i +: UQ];
       end
     end
   end
@@ -250,8 +251,6 @@ module htx_raster_setup #(
   // A multiplier of setup's own, eight products: det's two and two for each edge value.
   logic                     emul_done;
   logic signed [EW-1:0]     part_sum;
-  logic [1:0]               ek;
-  assign ek = edge_k_q;
   logic                     emul_start;
   logic signed [DW-1:0]     emul_a, emul_b;
   logic signed [2*DW-1:0]   emul_p;
@@ -265,8 +264,8 @@ module htx_raster_setup #(
       // is 0 for the two edges through vertex 0 and det for edge 1 (the first product is added
       // to it): every edge multiplies the deltas that the planes use, no per-edge subtraction.
       StEdges: begin
-        if (!edge_half_q) begin emul_a = ea[ek]; emul_b = dxs; end
-        else              begin emul_a = eb[ek]; emul_b = dys; end
+        if (!edge_half_q) begin emul_a = ea[edge_k_q]; emul_b = dxs; end
+        else              begin emul_a = eb[edge_k_q]; emul_b = dys; end
       end
       default: ;
     endcase
@@ -278,7 +277,7 @@ module htx_raster_setup #(
     .start_i(emul_start),
     .a_i    (emul_a),
     .b_i    (emul_b),
-    .neg_i  ((state_q == StEdges) ? ethr[ek] : (state_q == StDet1)),
+    .neg_i  ((state_q == StEdges) ? ethr[edge_k_q] : (state_q == StDet1)),
     .extra_i(1'b0),
     .done_o (emul_done),
     .p_o    (emul_p)
@@ -289,7 +288,7 @@ module htx_raster_setup #(
   logic signed [EW-1:0]   part_base;
   always_comb begin
     if ((state_q == StDet0) || ((state_q == StEdges) && !edge_half_q)) begin
-      part_base = ((state_q == StEdges) && (ek == 2'd1)) ? EW'(det_q) : '0;  // det_q: |det|
+      part_base = ((state_q == StEdges) && (edge_k_q == 2'd1)) ? EW'(det_q) : '0;  // det_q: |det|
     end else begin
       part_base = part_q;
     end
@@ -300,7 +299,7 @@ module htx_raster_setup #(
   htx_raster_addsub #(.W(EW)) u_part (
     .a_i  (EW'(emul_p)),
     .b_i  (part_base),
-    .sub_i((state_q == StEdges) && !edge_half_q && (ethr[ek] ^ det_neg_q)),
+    .sub_i((state_q == StEdges) && !edge_half_q && (ethr[edge_k_q] ^ det_neg_q)),
     .sum_o(part_sum)
   );
   logic signed [DetW-1:0] det_next;
@@ -360,8 +359,7 @@ module htx_raster_setup #(
   // Nine plane units working in parallel.
   logic                 apl_start;         // AFFINE's vertex coordinates are ready (pulse)
   logic [1:0]           apl_done;          // the ua, va planes are done
-  logic [LocW-1:0]      ua_v [3];
-  logic [LocW-1:0]      va_v [3];
+  logic [3*LocW-1:0]    ua_v, va_v;        // AFFINE's u_i, v_i, vertex i at LocW i
   logic                 plane_start_q;
   logic [NP-1:0]        plane_done;
   logic [AW-1:0]        pgx [NP];
@@ -369,8 +367,7 @@ module htx_raster_setup #(
   logic [AW-1:0]        pst [NP];
 
   localparam int unsigned GWU = UQ + DW + 2 + GF + 1;     // full-precision gradient of uq, vq
-  logic [GWU-1:0] lg [6];                                  // uq x, uq y, vq x, vq y, q x, q y
-
+  logic [6*GWU-1:0] lg;  // uq x, uq y, vq x, vq y, q x, q y, gradient k at GWU k
 
   // Colour channel values of the colour planes: channel c of vertex i at 3 c + i.
   logic [CB-1:0] cv [9];
@@ -407,10 +404,10 @@ module htx_raster_setup #(
       assign sv[VSW*(3*(1+c)+i) +: VSW] = VSW'(cv[3*c+i]);
     end
     assign sv[VSW*(12+i) +: VSW] = VSW'(q_v[i]);
-    assign sv[VSW*(15+i) +: VSW] = VSW'($signed(uq_v[i]));
-    assign sv[VSW*(18+i) +: VSW] = VSW'($signed(vq_v[i]));
-    assign sv[VSW*(21+i) +: VSW] = VSW'($signed(ua_v[i]));
-    assign sv[VSW*(24+i) +: VSW] = VSW'($signed(va_v[i]));
+    assign sv[VSW*(15+i) +: VSW] = VSW'($signed(uq_v[UQ*i +: UQ]));
+    assign sv[VSW*(18+i) +: VSW] = VSW'($signed(vq_v[UQ*i +: UQ]));
+    assign sv[VSW*(21+i) +: VSW] = VSW'($signed(ua_v[LocW*i +: LocW]));
+    assign sv[VSW*(24+i) +: VSW] = VSW'($signed(va_v[LocW*i +: LocW]));
   end
 
   // One plane unit per plane; ua and va (planes 7, 8) start when AFFINE's vertex coordinates are
@@ -442,8 +439,8 @@ module htx_raster_setup #(
     assign pst[p] = AW'(st);
     if ((p >= 4) && (p <= 6)) begin : g_lod
       localparam int unsigned L = (p == 4) ? 4 : 2 * (p - 5);  // lg: uq x, y, vq x, y, q x, y
-      assign lg[L]   = GWU'($signed(gxw));
-      assign lg[L+1] = GWU'($signed(gyw));
+      assign lg[GWU*L +: GWU]     = GWU'($signed(gxw));
+      assign lg[GWU*(L+1) +: GWU] = GWU'($signed(gyw));
     end else begin : g_no_lod
       logic unused_w;
       assign unused_w = ^{gxw, gyw};
@@ -452,27 +449,15 @@ module htx_raster_setup #(
   assign apl_done = plane_done[8:7];
 
   // ---- LOD gradients: one block shift for all six (htx_raster_setup_lod) -----------------------
-  logic [6*GWU-1:0] lg_flat;
-  for (genvar i = 0; i < 6; i++) begin : g_lg_flat
-    assign lg_flat[GWU*i +: GWU] = lg[i];
-  end
   htx_raster_setup_lod #(.GWU(GWU), .GradW(GradW)) u_lod (
-    .grad_i (lg_flat),
+    .grad_i (lg),
     .grad_o (tri_lod_g_o),
     .shift_o(tri_lod_shift_o)
   );
-  assign tri_dfg_o = lg_flat;  // (DIVFREE takes them at full precision)
+  assign tri_dfg_o = lg;  // (DIVFREE takes them at full precision)
 
   // ---- AFFINE: the vertices' u_i, v_i and their planes (htx_raster_setup_affine) ---------------
   logic av_done;
-  logic [3*UQ-1:0]   uq_flat, vq_flat;
-  logic [3*LocW-1:0] ua_flat, va_flat;
-  for (genvar i = 0; i < 3; i++) begin : g_flat
-    assign uq_flat[UQ*i +: UQ] = uq_v[i];
-    assign vq_flat[UQ*i +: UQ] = vq_v[i];
-    assign ua_v[i] = ua_flat[LocW*i +: LocW];
-    assign va_v[i] = va_flat[LocW*i +: LocW];
-  end
   htx_raster_setup_affine #(.RecipW(RecipW), .TF(TF), .UQ(UQ), .LocW(LocW), .MsbW(MsbW)) u_affine (
     .clk_i, .rst_ni,
     .abort_i       (planes_abort),
@@ -482,14 +467,14 @@ module htx_raster_setup #(
     .recip_done_i  (recip_done),
     .recip_r_i     (recip_r),
     .recip_msb_i   (recip_msb),
-    .uq_i          (uq_flat),
-    .vq_i          (vq_flat),
+    .uq_i          (uq_v),
+    .vq_i          (vq_v),
     .late_ok_i     ((state_q == StWait) && !plane_start_q),
     .planes_start_o(apl_start),
     .planes_done_i (apl_done),
     .release_i     ((state_q == StOut) && tri_ready_i),
-    .ua_o          (ua_flat),
-    .va_o          (va_flat),
+    .ua_o          (ua_v),
+    .va_o          (va_v),
     .done_o        (av_done)
   );
 
@@ -543,10 +528,10 @@ module htx_raster_setup #(
             part_q      <= part_sum;
             edge_half_q <= 1'b1;
           end else begin
-            e_q[ek]     <= part_sum;
+            e_q[edge_k_q]     <= part_sum;
             edge_half_q <= 1'b0;
             edge_k_q    <= edge_k_q + 1'b1;
-            if (ek == 2'd2) state_q <= StWait;
+            if (edge_k_q == 2'd2) state_q <= StWait;
           end
         end
         // (Not in the clock the planes start: their done flags still show the last triangle's.)
@@ -567,9 +552,6 @@ module htx_raster_setup #(
   end
 
   // ---- Outputs ---------------------------------------------------------------------------------
-  logic unused;
-  assign unused = ^{rec_state_i, plane_done[8:7]};
-
   assign tri_valid_o     = (state_q == StOut);
   assign tri_state_o     = st_v;
   assign tri_flat_rgba_o = rgba_v[0];  // vertex 0 is never reordered

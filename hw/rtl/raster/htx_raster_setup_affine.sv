@@ -46,8 +46,8 @@ module htx_raster_setup_affine #(
   logic [LocW-1:0]      av_coord;                 // u_i or v_i of the product just done
   assign amul_start = (av_q == AvMulU) || (av_q == AvMulV);
   // (uq_i 2^s) R rounded by RS bits is uq_i R rounded by RS - s bits (s = W - 1 - msb): the
-  // multiplier shifts the product right by RS - s - 1 itself (extra_i; the one-bit multiplier in its
-  // own registers) and only the last halving with its rounding is left. No shifter on the operand.
+  // multiplier shifts the product right by RS - s - 1 itself (extra_i) and only the last halving
+  // with its rounding is left. No shifter on the operand.
   localparam int unsigned AE = $clog2(2 * RecipW);
   logic signed [UQ-1:0]        amul_a;
   logic signed [UQ+RecipW+1:0] amul_p, arnd;
