@@ -2,6 +2,9 @@
 // which are SPRAM or external on a board) on a small package: every input comes from a register
 // chain fed by one pin, every output is registered and folded into one pin, so all paths are timed
 // register to register. Full selects the `full` parameters, else `icebreaker`. Not part of any SoC.
+// The texture request's LOD fields (direct LOD, level, q, gradients, shift, LOD coordinates) are
+// kept only with Full: the board's `icebreaker` texture unit has no LOD unit and drops them, so the
+// GPU's synthesis removes their logic, and this harness must too to count what the board builds.
 module htx_raster_synth_wrapper #(
   parameter bit         Full    = 1'b0,
   parameter logic [4:0] Methods = 5'b01111, // the synth-report designs leave DIVFREE out
@@ -107,12 +110,20 @@ module htx_raster_synth_wrapper #(
     end
   end
 
+  localparam int unsigned LodLo = 2 * CoordW + 14;                          // tex_req_lod_direct_o
+  localparam int unsigned LodHi = 2 * CoordW + 47 + QW + 6 * GradW + 2 * LocW;  // past lod_v
+  logic [ReqBits-1:0] req_kept;
+  always_comb begin
+    req_kept = tq_bits;
+    if (!Full) req_kept[LodHi-1:LodLo] = '0;
+  end
+
   logic [OutBits-1:0] out_q;
   logic [ReqBits-1:0] req_q;
   always_ff @(posedge clk_i) begin
     out_q  <= {req_ready, rsp_valid, rsp_rdata, rsp_err, zr_en, zr_addr, wc_en, wz_en, w_addr,
                wc_data, wz_data};
-    req_q  <= tq_bits;
+    req_q  <= req_kept;
     dout_o <= ^out_q ^ ^req_q ^ tq_valid;
   end
 endmodule
