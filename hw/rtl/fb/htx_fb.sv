@@ -58,8 +58,8 @@ module htx_fb #(
   assign is_color = (req_addr_i[31:20] == 12'h300);
   assign is_depth = (req_addr_i[31:20] == 12'h301);
   assign bus_word = req_addr_i[19:2];
-  assign in_range = is_color ? htx_raster_pkg::below_const(32'(bus_word), CWords * ColorPages)
-                             : (is_depth && htx_raster_pkg::below_const(32'(bus_word), FbPixels));
+  assign in_range = is_color ? htx_cmp_pkg::below_const(32'(bus_word), CWords * ColorPages)
+                             : (is_depth && htx_cmp_pkg::below_const(32'(bus_word), FbPixels));
   // The raster's ports come first: a bus read of depth needs the depth read port, a bus write the
   // write port of its memory (SinglePort: any access needs the memory's one port).
   // The video port's read needs the colour read port (SinglePort: the colour memory).

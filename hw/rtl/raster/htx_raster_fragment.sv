@@ -70,7 +70,7 @@ module htx_raster_fragment #(
   assign q_g = htx_rgb565_pkg::quantise(in_rgb_i[15:8], 3'd6);
   assign q_b = htx_rgb565_pkg::quantise(in_rgb_i[23:16], 3'd5);
 
-  assign in_range   = htx_raster_pkg::below_const(32'(in_addr_i), 32'(AddrW'(FbPixels)));
+  assign in_range   = htx_cmp_pkg::below_const(32'(in_addr_i), 32'(AddrW'(FbPixels)));
   assign in_ready_o = !clearing_o && (Forward || !f2_valid_q);
   assign zr_en_o    = in_valid_i && in_ready_o && in_range;
   assign zr_addr_o  = in_addr_i;
