@@ -30,7 +30,9 @@ using htx::console::SerialPort;
 // refuses the upload, kNeverAck takes nothing, kSpuriousNak answers the first packet with a Nak it
 // was not asked for and then its Ack (as a CR LF line end's stray LF did: every answer after it is
 // one packet late), kLastAckDamaged damages the last packet's Ack (its verdict follows as text),
-// kGivesUp stops after the first packet with its own timeout's error.
+// kGivesUp stops after the first packet with its own timeout's error. Two devices that are not a
+// console: kTrickle sends a byte every 50 ms and never a prompt (as a port at another baud rate
+// shows a stream of bytes), kChatty greets with a prompt and then prints a line every 50 ms.
 enum class GrabMode {
   kGood,
   kGap,
@@ -43,7 +45,9 @@ enum class GrabMode {
   kNeverAck,
   kSpuriousNak,
   kLastAckDamaged,
-  kGivesUp
+  kGivesUp,
+  kTrickle,
+  kChatty
 };
 
 // The console's side: answers each line it reads from the master end of a pty.
@@ -150,6 +154,7 @@ class FakeConsole {
     }
   }
   void serve() {
+    if (mode_ == GrabMode::kTrickle || mode_ == GrabMode::kChatty) return stream();
     put("hypertex console. Type help.\r\nhtx> ");
     std::string line;
     htx::fw::PacketDecoder decoder;
@@ -182,6 +187,15 @@ class FakeConsole {
       } else {
         line += c;
       }
+    }
+  }
+  void stream() {
+    if (mode_ == GrabMode::kChatty) put("hypertex console. Type help.\r\nhtx> ");
+    while (!stop_) {
+      put(mode_ == GrabMode::kChatty ? "noise\r\n" : "~");
+      char drop[64];
+      pollfd p{master_, POLLIN, 0};
+      if (::poll(&p, 1, 50) > 0) (void)!::read(master_, drop, sizeof drop);
     }
   }
 
@@ -427,6 +441,27 @@ TEST(ConsoleClient, BaudSwitchesThePortAfterTheConsolesOk) {
   EXPECT_EQ(speed(), static_cast<speed_t>(B1000000));
   EXPECT_EQ(client.command("info"), "line one\nline two\n");
   EXPECT_THROW(port.set_baud(12345), std::invalid_argument);
+}
+
+// A device that keeps sending but is not a console (no prompt, or no pause after it) is an error
+// within twice the timeout: `--timeout` measures silence, which such a stream never gives.
+TEST(ConsoleClient, AStreamWithoutAConsoleIsAnErrorNotAHang) {
+  for (GrabMode mode : {GrabMode::kTrickle, GrabMode::kChatty}) {
+    FakeConsole fake(mode);
+    SerialPort port(fake.path(), 115200);
+    ConsoleClient client(port, 1s);
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+      client.sync();
+      ADD_FAILURE() << "sync returned";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("without a console prompt and a pause after it"), std::string::npos)
+          << e.what();
+    }
+    const auto took = std::chrono::steady_clock::now() - t0;
+    EXPECT_GE(took, 2s);
+    EXPECT_LT(took, 4s);
+  }
 }
 
 TEST(ConsoleClient, RefusesAPathThatIsNotATerminal) {

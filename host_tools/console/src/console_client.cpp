@@ -72,9 +72,19 @@ uint8_t ConsoleClient::next_byte() {
   return b;
 }
 
-bool ConsoleClient::prompt_within(std::chrono::milliseconds wait, std::string* text) {
+void ConsoleClient::no_prompt_in_stream(size_t bytes) const {
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%g", 2.0 * static_cast<double>(timeout_.count()) / 1000.0);
+  throw std::runtime_error("the port kept sending (" + std::to_string(bytes) + " bytes in " + seconds +
+                           " s) without a console prompt and a pause after it: is the console on this "
+                           "port, at this baud rate?");
+}
+
+bool ConsoleClient::prompt_within(std::chrono::milliseconds wait, std::string* text,
+                                  std::chrono::steady_clock::time_point deadline) {
   while (!ends_with(*text, kPrompt)) {
     if (text->size() > kMaxText) throw std::runtime_error("the console sent more than 1 MiB without a prompt");
+    if (std::chrono::steady_clock::now() > deadline) no_prompt_in_stream(text->size());
     uint8_t b = 0;
     if (!next_byte_within(wait, &b)) return false;
     *text += static_cast<char>(b);
@@ -89,6 +99,10 @@ std::string ConsoleClient::read_until_prompt() {
 }
 
 void ConsoleClient::sync() {
+  // A console answers a line break at once unless it is busy, and a busy console is silent (a
+  // render) or stops at the key (a spin), so a stream of bytes that outlasts this is not one.
+  const auto deadline = std::chrono::steady_clock::now() + 2 * timeout_;
+  size_t streamed = 0;
   port_.write("\r");
   // A console still receiving an upload whose client ended answers no line break (until its own
   // silence timeout: 10 s on a board, most of a minute on the simulator). After a second of
@@ -96,17 +110,23 @@ void ConsoleClient::sync() {
   // skips it as a packet frame. Only after silence: a busy console's receive FIFO may be full of
   // unread input, and a byte of the frame lost there would make the console skip what follows.
   std::string text;
-  if (!prompt_within(std::min<std::chrono::milliseconds>(kAbortAfter, timeout_), &text)) {
+  if (!prompt_within(std::min<std::chrono::milliseconds>(kAbortAfter, timeout_), &text, deadline)) {
+    streamed += text.size();
     const uint8_t nothing = 0;
     send_packet(fw::kPacketAbort, 0, &nothing, 1);
     port_.write("\r");
-    read_until_prompt();
+    text.clear();
+    if (!prompt_within(timeout_, &text, deadline)) silence();
   }
+  streamed += text.size();
   // A prompt printed before ours (the greeting's) may be followed by ours: drop everything up to a
   // moment of silence.
+  streamed += buf_.size() - pos_;
   pos_ = buf_.size();
   uint8_t drop[256];
-  while (port_.read_some(drop, sizeof drop, kSettle) != 0) {
+  while (const size_t n = port_.read_some(drop, sizeof drop, kSettle)) {
+    streamed += n;
+    if (std::chrono::steady_clock::now() > deadline) no_prompt_in_stream(streamed);
   }
 }
 

@@ -28,7 +28,9 @@ class ConsoleClient {
   ConsoleClient(SerialPort& port, std::chrono::milliseconds timeout);
 
   // Brings the exchange to a fresh prompt: sends a line break and reads until a prompt followed by
-  // a moment of silence, so a greeting or prompt printed before we attached is consumed.
+  // a moment of silence, so a greeting or prompt printed before we attached is consumed. A port
+  // that keeps sending without giving both within twice the timeout (a device that is not the
+  // console, or one at another baud rate, sends a stream of bytes) is a std::runtime_error.
   void sync();
   // Sends one line and returns what the console printed for it, without the echoed line and the
   // prompt, with CR LF as LF. Throws std::runtime_error on a timeout.
@@ -72,8 +74,11 @@ class ConsoleClient {
   // The next byte if one comes within `wait` (false: none came; nothing is thrown).
   bool next_byte_within(std::chrono::milliseconds wait, uint8_t* byte);
   [[noreturn]] void silence() const;
-  // Reads into *text until it ends with a prompt; false when `wait` passes in silence first.
-  bool prompt_within(std::chrono::milliseconds wait, std::string* text);
+  // Reads into *text until it ends with a prompt; false when `wait` passes in silence first. Past
+  // `deadline`, bytes still coming without a prompt are a std::runtime_error (sync's bound).
+  bool prompt_within(std::chrono::milliseconds wait, std::string* text,
+                     std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
+  [[noreturn]] void no_prompt_in_stream(size_t bytes) const;
   std::string read_until_prompt();
   // Reads text until it ends with `needle` (true) or with a prompt (false: the text without it).
   bool read_text_until(const std::string& needle, std::string* text);
