@@ -1,8 +1,16 @@
 // Output files are checked before the work that fills them (a long simulation, a frame over a serial
 // line), so a mistyped path costs nothing: the directory must exist, the path must not be a
-// directory, and two outputs of one command must not be the same file.
+// directory, a file must be one that can be created or written, it must not be the command's
+// standard output (which carries its report lines: an image there would be corrupted by them),
+// and two outputs of one command must not be the same file.
 #pragma once
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <initializer_list>
 #include <stdexcept>
@@ -16,6 +24,18 @@ inline void require_output_dir(const std::string& path) {
   if (!dir.empty() && !std::filesystem::is_directory(dir))
     throw std::runtime_error(path + ": no directory " + dir.string() + " to write it in");
   if (std::filesystem::is_directory(path)) throw std::runtime_error(path + ": is a directory, not a file to write");
+  struct stat out {}, std_out {};
+  const bool exists = ::stat(path.c_str(), &out) == 0;
+  if (exists && ::fstat(STDOUT_FILENO, &std_out) == 0 && out.st_dev == std_out.st_dev && out.st_ino == std_out.st_ino)
+    throw std::runtime_error(path + ": is this command's standard output, which carries its report lines; "
+                             "give a file of its own");
+  // A regular file (or a new one) is opened once to see that it can be written, without changing
+  // it; a new one is removed again. Devices and pipes are left alone (a pipe's open would wait).
+  if (exists && !S_ISREG(out.st_mode)) return;
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_NOCTTY | O_CLOEXEC | (exists ? 0 : O_EXCL), 0666);
+  if (fd < 0) throw std::runtime_error(path + ": cannot be written (" + std::strerror(errno) + ")");
+  ::close(fd);
+  if (!exists) ::unlink(path.c_str());
 }
 
 // Whether two output paths name one regular file, existing (also through a link) or to be created.
