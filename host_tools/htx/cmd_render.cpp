@@ -222,7 +222,8 @@ void register_render(CLI::App& app) {
   cmd->add_option("--baud", args->baud, "board: baud rate (a pty ignores it)")->capture_default_str();
   cmd->add_option("--fast-baud", args->fast_baud,
                   "board: switch the console and the port to this rate for the transfers (the console's `baud`) "
-                  "and back to --baud at the end, also after an error");
+                  "and back to --baud at the end, also after an error")
+      ->check(CLI::Range(uint32_t{1}, uint32_t{3000000}));  // (0 is how the code says "not given")
   cmd->add_option("--timeout", args->timeout_s, "soc and board: longest silence to wait through, seconds")
       ->check(timeout_seconds())
       ->capture_default_str();

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "frame_size.hpp"
 
 #if __has_include("htx/sim/soc_sim.hpp")
 #define HTX_HAVE_SOC_SIM 1
@@ -55,11 +56,9 @@ struct SimArgs {
 
 // "WxH" -> (W, H); both 1..4096.
 std::pair<uint32_t, uint32_t> parse_frame_size(const std::string& s) {
-  unsigned w = 0, h = 0;
-  char tail = 0;
-  if (std::sscanf(s.c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 4096 || h > 4096)
-    throw std::runtime_error("--frame-size '" + s + "' is not WIDTHxHEIGHT with sides 1..4096");
-  return {w, h};
+  const auto size = parse_wxh(s, 4096);
+  if (!size) throw std::runtime_error("--frame-size '" + s + "' is not WIDTHxHEIGHT with sides 1..4096");
+  return *size;
 }
 
 #if HTX_HAVE_SOC_SIM

@@ -2,6 +2,7 @@
 #include <exception>
 #include <iostream>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "htx_version.h"
 
@@ -13,12 +14,18 @@ int main(int argc, char** argv) {
 #define HTX_DECLARE_COMMAND(name) htx::register_##name(app);
 #include "htx_commands.inc"
 #undef HTX_DECLARE_COMMAND
+  htx::require_decimal_integers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::RequiredError& e) {
     // A first word that names no subcommand: CLI11 only says one is required.
     if (argc > 1 && argv[1][0] != '-' && app.get_subcommands().empty()) {
       std::cerr << "htx: no command '" << argv[1] << "' (htx --help lists them)\n";
+      return 2;
+    }
+    // An unknown option first (fallthrough leaves it to the subcommand, and there is none).
+    if (argc > 1 && argv[1][0] == '-' && app.get_subcommands().empty()) {
+      std::cerr << "htx: no option '" << argv[1] << "' before a command (htx --help lists them)\n";
       return 2;
     }
     return app.exit(e) == 0 ? 0 : 2;

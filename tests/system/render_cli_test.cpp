@@ -204,6 +204,11 @@ TEST(SystemRenderCli, OptionsOfOtherEnginesAndValuesOutOfRangeAreRefused) {
       {{"--engine", "soc", "--timeout", "nan"}, 2, "--timeout: want seconds from 0.001 to 86400, not nan"},
       {{"--engine", "soc", "--timeout", "1e300"}, 2, "--timeout: want seconds from 0.001 to 86400, not 1e300"},
       {{"--config", "icebreaker-boards"}, 2, "--config: icebreaker-boards not in {full,icebreaker,icebreaker-board}"},
+      {{"--engine", "board", "--port", "/dev/null", "--fast-baud", "0"}, 2, "--fast-baud: Value 0 not in range 1 to 3000000"},
+      // Sizes are two decimal numbers in range (sscanf's %d wrapped 4294967306 to 10).
+      {{"--size", "4294967306x10"}, 1, "--size '4294967306x10': want WxH with 1 <= W, H <= 4096"},
+      {{"--size", "+10x+10"}, 1, "--size '+10x+10': want WxH"},
+      {{"--size", "10x10 "}, 1, "--size '10x10 ': want WxH"},
   };
   for (const auto& c : cases) {
     std::vector<std::string> args = {HTX_BIN, "render", "cube", "--out", temp_path("refused_option.png")};

@@ -57,7 +57,16 @@ TEST(SystemSimCli, CommandLineErrorsEndWithStatusTwo) {
       {{HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/echo.elf", "--max-cycles", "many"}, "--max-cycles"},
       {{HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/echo.elf", "--no-such-option"}, "--no-such-option"},
       {{HTX_BIN, "compare", temp_path("none_a.png"), temp_path("none_b.png")}, "File does not exist"},
-      {{HTX_BIN}, "A subcommand is required"}};
+      {{HTX_BIN}, "A subcommand is required"},
+      {{HTX_BIN, "--bogus"}, "htx: no option '--bogus' before a command"},
+      // Whole numbers are decimal digits that fit 64 bits (CLI11 alone read 0x10 as 16, wrapped a
+      // negative number and saturated a large one).
+      {{HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/echo.elf", "--max-cycles", "0x10"},
+       "--max-cycles: want a whole number >= 0 in decimal digits, not 0x10"},
+      {{HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/echo.elf", "--max-cycles", "-18446744073709551515"},
+       "--max-cycles: want a whole number >= 0 in decimal digits, not -18446744073709551515"},
+      {{HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/echo.elf", "--stall-seed", "99999999999999999999"},
+       "--stall-seed: 99999999999999999999 does not fit 64 bits"}};
   for (const auto& [argv, message] : usage) {
     const auto r = htx::test::run_program(argv, 30s);
     EXPECT_EQ(r.status, 2) << argv.back() << ": " << r.err;
@@ -67,6 +76,24 @@ TEST(SystemSimCli, CommandLineErrorsEndWithStatusTwo) {
   EXPECT_EQ(htx::test::run_program({HTX_BIN, "sim", "--help"}, 30s).status, 0);
   const auto later = htx::test::run_program({HTX_BIN, "render", "nosuch", "--out", temp_path("x.png")}, 30s);
   EXPECT_EQ(later.status, 1) << later.err;
+}
+
+// A whole number with leading zeros is decimal (CLI11 alone read 0100 as octal, 64), and a frame
+// size is two decimal numbers (sscanf's %u took -4294967295 as 1).
+TEST(SystemSimCli, WholeNumbersAreDecimalAndFrameSizesExact) {
+  const auto r = htx::test::run_program(
+      {HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/echo.elf", "--max-cycles", "0100"}, 60s);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 124);
+  EXPECT_NE(r.err.find("cycle limit of 100 cycles reached"), std::string::npos) << r.err;
+  for (const char* size : {"-4294967295x10", "4294967297x1", "+8x8", " 8x8", "8x8x"}) {
+    const auto bad = htx::test::run_program({HTX_BIN, "sim", "--elf", HTX_FIRMWARE_DIR "/echo.elf", "--max-cycles",
+                                             "100", "--frame-size", size, "--frame", temp_path("size.png")},
+                                            60s);
+    EXPECT_EQ(bad.status, 1) << size;
+    EXPECT_NE(bad.err.find(std::string("--frame-size '") + size + "' is not WIDTHxHEIGHT"), std::string::npos)
+        << bad.err;
+  }
 }
 
 TEST(SystemSimCli, RefusesAFileThatIsNotAnElf) {
