@@ -286,6 +286,7 @@ int status_of(const sim::SimResult& r) {
     case sim::StopReason::CycleLimit: return kCycleLimitStatus;
     case sim::StopReason::InputEnded: return 0;
     case sim::StopReason::Stopped: return 128 + (g_stop_signal ? static_cast<int>(g_stop_signal) : SIGINT);
+    case sim::StopReason::Stuck: return 1;
     case sim::StopReason::Exit:
     case sim::StopReason::ToHost: break;
   }

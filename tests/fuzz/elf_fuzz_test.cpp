@@ -158,6 +158,32 @@ TEST(ElfFuzz, SegmentsThatWouldLoseOrMixBytesAreRefused) {
   EXPECT_EQ(htx::sim::parse_elf(adjacent, "adjacent").segments.size(), 2u);
 }
 
+// e_flags for compressed instructions, a hardware floating-point ABI or RV32E: the CPU is rv32im
+// (an RVC build ran no instruction at all until the cycle limit); TSO (0x10) changes nothing here.
+TEST(ElfFuzz, ElfsBuiltForAnotherIsaOrAbiAreRefused) {
+  const std::pair<uint32_t, const char*> cases[] = {
+      {0x1, "built for compressed instructions (e_flags RVC)"},
+      {0x2, "built for a hardware floating-point ABI"},
+      {0x4, "built for a hardware floating-point ABI"},
+      {0x6, "built for a hardware floating-point ABI"},
+      {0x8, "built for RV32E"},
+      {0x5, "built for compressed instructions"},
+  };
+  for (const auto& [flags, message] : cases) {
+    std::vector<uint8_t> f = seed_elf();
+    put32(f, 36, flags);
+    try {
+      htx::sim::parse_elf(f, "input");
+      ADD_FAILURE() << "e_flags 0x" << std::hex << flags << " accepted";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+  std::vector<uint8_t> tso = seed_elf();
+  put32(tso, 36, 0x10);
+  EXPECT_EQ(htx::sim::parse_elf(tso, "tso").segments.size(), 2u);
+}
+
 TEST(ElfFuzz, EveryTruncationIsRefusedOrComplete) {
   const std::vector<uint8_t> seed = seed_elf();
   for (size_t n = 0; n < seed.size(); ++n) {

@@ -78,6 +78,25 @@ TEST(SystemSimCli, CommandLineErrorsEndWithStatusTwo) {
   EXPECT_EQ(later.status, 1) << later.err;
 }
 
+// A run in which no instruction retires for 2^23 clocks (here a trap loop: an illegal instruction
+// at mtvec) ends there with a message that says so and status 1, not at the cycle limit minutes
+// later with advice to raise it.
+TEST(SystemSimCli, ARunThatRetiresNothingEndsAsStuck) {
+  const auto r = htx::test::run_program(
+      {HTX_BIN, "sim", "--elf", HTX_SYSTEM_TEST_ELF_DIR "/sim_trap_loop.elf", "--json"}, 90s);
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("no instruction retired in 8388608 cycles (execute stage at pc 0x00000000): the CPU "
+                       "traps in a loop"),
+            std::string::npos)
+      << r.err;
+  const auto json = last_json_line(r.out);
+  EXPECT_EQ(json.at("reason"), "stuck");
+  EXPECT_EQ(json.at("instret"), 0);
+  EXPECT_EQ(json.at("exit_code"), 1);
+  EXPECT_LT(json.at("cycles").get<uint64_t>(), 8388608u + 512u);
+}
+
 // A whole number with leading zeros is decimal (CLI11 alone read 0100 as octal, 64), and a frame
 // size is two decimal numbers (sscanf's %u took -4294967295 as 1).
 TEST(SystemSimCli, WholeNumbersAreDecimalAndFrameSizesExact) {

@@ -70,6 +70,13 @@ ElfImage parse_elf(std::span<const uint8_t> data, const std::string& what) {
   if (r.u8(5) != 1) r.fail("not little-endian");
   if (r.u16(16) != kEtExec) r.fail("not an executable (ET_EXEC)");
   if (r.u16(18) != kEmRiscv) r.fail("machine is not RISC-V");
+  // e_flags (the RISC-V ELF psABI): an ELF built for compressed instructions, a hardware
+  // floating-point ABI or RV32E is refused, since the CPU runs rv32im with the ilp32 ABI; the
+  // first would run no instruction at all, the others would call conventions nothing here keeps.
+  const uint32_t flags = r.u32(36);
+  if (flags & 0x1) r.fail("built for compressed instructions (e_flags RVC); the CPU is rv32im: build with -march=rv32im");
+  if (flags & 0x6) r.fail("built for a hardware floating-point ABI (e_flags); the CPU is rv32im: build with -mabi=ilp32");
+  if (flags & 0x8) r.fail("built for RV32E (e_flags); the CPU is rv32im");
 
   ElfImage img;
   img.entry = r.u32(24);

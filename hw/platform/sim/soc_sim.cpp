@@ -16,6 +16,11 @@ namespace {
 // How often (in clocks) the host endpoint is polled for input: a syscall per poll, and far shorter
 // than one serial bit time would need (104 clocks at 115200 baud).
 constexpr uint64_t kPollInterval = 256;
+// A run in which no instruction retires for this many clocks has stopped for good: the CPU traps
+// in a loop (every trap handler retires instructions; one at an illegal address does not) or waits
+// on a bus access that never completes. No access of the SoC waits near this long: the longest,
+// a vertex write into a full raster FIFO, waits for a few triangles' pixels (some 10^5 clocks).
+constexpr uint64_t kStuckClocks = uint64_t{1} << 23;
 // The UART's divisor at reset (hw/regs/uart.json), where the host's end of the line starts; from
 // the first clock on it follows the register.
 constexpr uint32_t kUartResetDivisor = UART_CTRL_DIVISOR_Reset;
@@ -39,6 +44,7 @@ const char* to_string(StopReason r) {
     case StopReason::CycleLimit: return "cycle_limit";
     case StopReason::InputEnded: return "input_ended";
     case StopReason::Stopped: return "stopped";
+    case StopReason::Stuck: return "stuck";
   }
   return "?";
 }
@@ -161,6 +167,7 @@ SimResult SocSim::run() {
   uint64_t last_empty_read = 0;
   if (s.opt.profile_pcs) res.pcs.emplace(kRamBytes);
   uint32_t last_pc = 0;
+  uint64_t last_instret = s.top->instret_o, last_retire = 0;
   while (!done && c < s.opt.max_cycles) {
     if (res.pcs) {
       // This clock's state, settled by the last edge's eval (e_done is combinational).
@@ -212,6 +219,18 @@ SimResult SocSim::run() {
         // this harness does not serve, so they end the run as a failure.
         res.exit_code = (v & 1u) ? static_cast<int>(v >> 1) : 1;
         if (!(v & 1u)) res.note = "tohost = " + hex(v) + " is a syscall request, which is not supported";
+        done = true;
+      }
+    }
+    if (c % kPollInterval == 0) {
+      if (s.top->instret_o != last_instret) {
+        last_instret = s.top->instret_o;
+        last_retire = c;
+      } else if (c - last_retire >= kStuckClocks && !done) {
+        res.reason = StopReason::Stuck;
+        res.note = "no instruction retired in " + std::to_string(c - last_retire) +
+                   " cycles (execute stage at pc " + hex(s.top->cpu_e_pc_o) +
+                   "): the CPU traps in a loop, or waits on a bus access that never completes";
         done = true;
       }
     }

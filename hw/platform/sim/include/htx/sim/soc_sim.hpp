@@ -40,8 +40,9 @@ struct SimOptions {
 };
 
 // InputEnded: a script's input ended and the firmware then waited for more (SocSim::run).
-// Stopped: SimOptions::stop was set.
-enum class StopReason { Exit, ToHost, CycleLimit, InputEnded, Stopped };
+// Stopped: SimOptions::stop was set. Stuck: no instruction retired for 2^23 clocks (a trap loop,
+// or a bus access that never completes; SimResult::note says where).
+enum class StopReason { Exit, ToHost, CycleLimit, InputEnded, Stopped, Stuck };
 
 // Where the CPU's clocks went (hw/platform/sim/htx_cpu_profile.sv): every clock after reset is
 // charged to one cause, judged at the execute stage, so the counts add up to the clocks run.
