@@ -104,6 +104,48 @@ TEST(ImageLoad, AnImageAboveThePixelLimitIsRefusedFromItsHeader) {
   }
 }
 
+// A byte damaged anywhere in a chunk is refused by that chunk's CRC (stb_image checks neither the
+// chunk CRCs nor zlib's checksum, so a flipped pixel byte loaded as a wrong texel); the undamaged
+// file loads.
+TEST(ImageLoad, AChunkWhoseCrcDoesNotMatchIsACorruptImage) {
+  const std::string good = palette_png(8, 16, 5);
+  ASSERT_EQ(load_image(write_temp("crc_good.png", good)).rgba.size(), 8u * 8u * 4u);
+  const size_t idat = good.find("IDAT");
+  ASSERT_NE(idat, std::string::npos);
+  // A pixel index in the stored block (a valid index: it decodes, only to the wrong colour), a
+  // byte of IHDR's width, and the IEND chunk's CRC.
+  const struct {
+    size_t at;
+    std::string type;
+  } cases[] = {{idat + 4 + 2 + 5 + 3, "IDAT"}, {8 + 8 + 3, "IHDR"}, {good.size() - 1, "IEND"}};
+  for (const auto& c : cases) {
+    std::string bad = good;
+    bad[c.at] = static_cast<char>(bad[c.at] ^ 0x01);
+    try {
+      load_image(write_temp("crc_bad.png", bad));
+      ADD_FAILURE() << "loaded with byte " << c.at << " damaged";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("the CRC of its " + c.type + " chunk at byte"), std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("(a corrupt PNG)"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// A PNG cut short anywhere before the end of its IEND chunk is refused, also where its pixel data
+// is whole (stb_image decoded those).
+TEST(ImageLoad, APngCutShortIsACorruptImage) {
+  const std::string good = palette_png(8, 16, 5);
+  for (size_t n = 8; n < good.size(); ++n) {
+    try {
+      load_image(write_temp("cut.png", good.substr(0, n)));
+      ADD_FAILURE() << "loaded when cut to " << n << " of " << good.size() << " bytes";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("cut.png"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(ImageLoad, OnlyRegularFilesAreRead) {
   EXPECT_THROW(load_image("/dev/zero"), std::runtime_error);
   EXPECT_THROW(load_image(std::filesystem::temp_directory_path().string()), std::runtime_error);

@@ -66,6 +66,31 @@ std::string with_padded_palette(const std::string& png, const PaletteChunk& plte
   return out;
 }
 
+// A PNG's chunks each end with the CRC-32 of their type and data, which stb_image does not check
+// (nor zlib's own checksum): a damaged byte decoded silently into a wrong texel. Each chunk up to
+// IEND is checked here, and a file that ends before IEND (a chunk running past its end, or none
+// left) is refused too: stb_image decoded such a file when its pixel data came before the damage.
+void check_png_chunks(const std::string& png, const std::string& path) {
+  static const std::string kSignature = "\x89PNG\r\n\x1a\n";
+  if (png.compare(0, kSignature.size(), kSignature) != 0) return;
+  for (size_t at = kSignature.size();;) {
+    const uint32_t length = at + 12 <= png.size() ? be32(png, at) : 0;
+    if (at + 12 > png.size() || length > png.size() - at - 12)
+      throw std::runtime_error("cannot load image '" + path + "': it ends before its IEND chunk, in the chunk at byte " +
+                               std::to_string(at) + " (a truncated or corrupt PNG)");
+    const uint32_t crc = fw::crc32(reinterpret_cast<const uint8_t*>(png.data() + at + 4), size_t{length} + 4);
+    if (crc != be32(png, at + 8 + length)) {
+      std::string type = png.substr(at + 4, 4);
+      for (char& c : type)
+        if (c < 0x20 || c > 0x7E) c = '?';
+      throw std::runtime_error("cannot load image '" + path + "': the CRC of its " + type + " chunk at byte " +
+                               std::to_string(at) + " does not match (a corrupt PNG)");
+    }
+    if (png.compare(at + 4, 4, "IEND") == 0) return;
+    at += 12 + length;
+  }
+}
+
 std::vector<uint8_t> decode(const std::string& bytes, const std::string& path, int* w, int* h) {
   int channels = 0;
   unsigned char* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
@@ -83,6 +108,7 @@ std::vector<uint8_t> decode(const std::string& bytes, const std::string& path, i
 
 Image load_image(const std::string& path) {
   const std::string bytes = read_image_file(path);
+  check_png_chunks(bytes, path);
   int w = 0, h = 0, channels = 0;
   if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()), &w, &h,
                             &channels) &&
