@@ -163,6 +163,30 @@ TEST(RefIo, ByteOrderMarksBeforeAnObjOrMtlAreStripped) {
   std::filesystem::remove_all(dir);
 }
 
+// An OBJ or MTL larger than kMaxSceneFileBytes is refused before it is read (a 3 GB one ran out of
+// memory), and one holding a NUL byte is not text (an error quoting a word was cut at the NUL).
+TEST(RefIo, ObjFilesTooLargeOrNotTextAreRefused) {
+  const auto dir = std::filesystem::temp_directory_path() / "htx_ref_io_limits";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "huge.obj") << "v 0 0 0\n";
+  std::filesystem::resize_file(dir / "huge.obj", kMaxSceneFileBytes + 1);  // sparse: nothing is written
+  EXPECT_EQ(obj_error(dir, "ok.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "");
+  const std::string huge_path = (dir / "huge.obj").string();
+  try {
+    load_obj_scene(huge_path);
+    ADD_FAILURE() << "loaded";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot read '" + huge_path + "': " + std::to_string(kMaxSceneFileBytes + 1) +
+                                         " bytes, more than the " + std::to_string(kMaxSceneFileBytes) + " read");
+  }
+  EXPECT_EQ(obj_error(dir, "nul.obj", std::string("v 0 0 0\nv 1\0 0 0\nv 0 1 0\nf 1 2 3\n", 33)),
+            "'" + (dir / "nul.obj").string() + "' line 2: a NUL byte (not a text file)");
+  std::ofstream(dir / "nul.mtl", std::ios::binary) << std::string("newmtl a\nKd 1 1\0 1\n", 19);
+  EXPECT_EQ(obj_error(dir, "lib.obj", "mtllib nul.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n"),
+            "'" + (dir / "nul.mtl").string() + "' line 2: a NUL byte (not a text file)");
+  std::filesystem::remove_all(dir);
+}
+
 // What tinyobjloader dropped with only a warning (a face) or drew otherwise than written (a
 // material not yet read, a texture coordinate of a relative index before the first `vt`, one at
 // some corners only, a number finite as a double but not as its float) is refused, by its line.

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "htx/host/file_in.hpp"
 #include "htx/model/image_io.hpp"
 #include "htx/model/texture.hpp"
 
@@ -58,12 +59,19 @@ bool is_decimal(const std::string& tok) {
 // stripped from the OBJ and from each MTL.
 constexpr std::string_view kBom = "\xEF\xBB\xBF";
 
-// The whole file, without a leading byte-order mark.
+// The whole file, without a leading byte-order mark: a regular file of at most
+// kMaxSceneFileBytes, and text (a NUL byte would also cut the error messages that quote a word).
 std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  std::string s = std::move(text).str();
+  std::string s;
+  try {
+    s = host::read_regular_file(file.string(), kMaxSceneFileBytes);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error("cannot read '" + file.string() + "': " + e.what());
+  }
+  if (const size_t nul = s.find('\0'); nul != std::string::npos)
+    throw std::runtime_error("'" + file.string() + "' line " +
+                             std::to_string(1 + std::count(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(nul), '\n')) +
+                             ": a NUL byte (not a text file)");
   if (s.starts_with(kBom)) s.erase(0, kBom.size());
   return s;
 }

@@ -11,6 +11,7 @@
 // - The camera frames the bounding sphere from +z, slightly above, 60 degree vertical field of view.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "htx/model/image_io.hpp"
@@ -18,12 +19,17 @@
 
 namespace htx {
 
+// The largest OBJ or MTL file read (a 64 MiB OBJ holds some 1.5 million vertices; reading it takes
+// seconds and some hundreds of MiB): a larger one is refused before it is read.
+inline constexpr uint64_t kMaxSceneFileBytes = uint64_t{64} << 20;
+
 // Throws std::runtime_error naming the file on any load or validation failure, including what
 // tinyobjloader passes silently or with a warning (docs/scenes.md): a v, vt or Kd number that is not
 // a decimal finite as a float or a count the format does not allow, a missing material library, a
 // usemtl naming no material of a library before it, a face of fewer than 3 corners, a v, vt or vn
 // index out of range (relative ones too), texture coordinates at some corners of a face only, and
-// any warning of tinyobjloader's that drops a face or a material.
+// any warning of tinyobjloader's that drops a face or a material; a file larger than
+// kMaxSceneFileBytes, not a regular file, or holding a NUL byte (not text).
 Scene load_obj_scene(const std::string& path);
 
 // An image as a texture the way an OBJ's map_Kd is read (sides powers of two in 8..256, texel
