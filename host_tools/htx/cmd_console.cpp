@@ -19,6 +19,7 @@
 #include "htx/console/serial_port.hpp"
 #include "console_payload.hpp"
 #include "line_input.hpp"
+#include "line_reader.hpp"
 #include "htx/model/image_io.hpp"
 #include "output_path.hpp"
 
@@ -181,6 +182,13 @@ bool run_line(console::SerialPort& port, console::ConsoleClient& client, const s
       upload(client, local_file_step([&] { return packed_texture(arg, format.empty() ? "rgb565" : format); }),
              console::ConsoleClient::Payload::kTexture, extra.empty() ? 0u : static_cast<unsigned>(std::stoul(extra)));
     }
+    return true;
+  }
+  // A line the console would read to its end only to refuse (a long one at the line's rate: a
+  // 20 KB line took 12 s, an 8 MB one most of an hour) is refused here, in the console's words.
+  if (line.size() > console_app::kMaxLine) {
+    std::cout << "error: line longer than " << console_app::kMaxLine << " characters (not sent)\n" << std::flush;
+    if (refused) *refused = true;
     return true;
   }
   // The answer's lines that start with "error:" are the console's refusals.
