@@ -32,7 +32,8 @@ using htx::console::SerialPort;
 // one packet late), kLastAckDamaged damages the last packet's Ack (its verdict follows as text),
 // kGivesUp stops after the first packet with its own timeout's error. Two devices that are not a
 // console: kTrickle sends a byte every 50 ms and never a prompt (as a port at another baud rate
-// shows a stream of bytes), kChatty greets with a prompt and then prints a line every 50 ms.
+// shows a stream of bytes), kChatty greets with a prompt and then prints a line every 50 ms, and
+// kPromptOnly answers every line with a prompt alone (no echo, no answer).
 enum class GrabMode {
   kGood,
   kGap,
@@ -47,7 +48,8 @@ enum class GrabMode {
   kLastAckDamaged,
   kGivesUp,
   kTrickle,
-  kChatty
+  kChatty,
+  kPromptOnly
 };
 
 // The console's side: answers each line it reads from the master end of a pty.
@@ -167,6 +169,9 @@ class FakeConsole {
         htx::fw::Packet packet;
         if (htx::fw::packet_feed(&decoder, static_cast<uint8_t>(c), &packet) == htx::fw::kPacketReady)
           upload_packet(packet);
+      } else if (c == '\r' && mode_ == GrabMode::kPromptOnly) {
+        put("htx> ");
+        line.clear();
       } else if (c == '\r') {
         if (line.rfind("upload ", 0) == 0 || line.rfind("texture ", 0) == 0) {
           put(line + "\r\n");
@@ -289,6 +294,9 @@ TEST(ConsoleClient, GrabFailuresSayWhatWentWrong) {
   EXPECT_NE(grab_error(GrabMode::kBadCrc).find("CRC-32 does not match"), std::string::npos);
   EXPECT_NE(grab_error(GrabMode::kNoFrame).find("sent no frame: error: no framebuffer"), std::string::npos);
   EXPECT_NE(grab_error(GrabMode::kSilent).find("said nothing for"), std::string::npos);
+  // A device that only prompts: the message says what came instead of leaving it blank.
+  EXPECT_EQ(grab_error(GrabMode::kPromptOnly),
+            "grab: the console sent no frame: only a prompt, without the command's echo (is this the console?)");
 }
 
 TEST(ConsoleClient, UploadResendsWhatWasNotTakenAndReportsTheVerdict) {
@@ -319,7 +327,7 @@ TEST(ConsoleClient, UploadResendsWhatWasNotTakenAndReportsTheVerdict) {
     return "no error";
   };
   EXPECT_EQ(upload_error(GrabMode::kRefuse),
-            "upload: the console refused: error: a scene of 600 bytes does not fit the store (1..3072)\n");
+            "upload: the console refused: error: a scene of 600 bytes does not fit the store (1..3072)");
   EXPECT_EQ(upload_error(GrabMode::kNeverAck),
             "upload: packet 0 was not taken after 8 tries; the console's scene is unchanged");
   // The console's own error ends the transfer in its words (waiting for an answer, the client used

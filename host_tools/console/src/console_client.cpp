@@ -33,6 +33,16 @@ std::string without_echo(const std::string& s) {
   return nl == std::string::npos ? std::string() : s.substr(nl + 1);
 }
 
+// The console's answer to a command, for an error message: its text without the echoed line, or
+// what was there when it said nothing else (a device that only prompts is not the console).
+std::string answer_of(const std::string& text) {
+  std::string answer = unix_lines(without_echo(text));
+  while (!answer.empty() && (answer.back() == '\n' || answer.back() == ' ')) answer.pop_back();
+  if (!answer.empty()) return answer;
+  return text.find('\n') == std::string::npos ? "only a prompt, without the command's echo (is this the console?)"
+                                               : "nothing but the command's echo";
+}
+
 const char* status_name(fw::PacketStatus s) {
   switch (s) {
     case fw::kPacketBadCobs: return "not COBS";
@@ -264,7 +274,7 @@ GrabbedFrame ConsoleClient::grab(const std::function<void(size_t)>& progress) {
   // The echo and any message come as text; the packets start at the first zero byte.
   std::string text;
   if (!read_text_until(std::string(1, '\0'), &text))
-    throw std::runtime_error("grab: the console sent no frame: " + unix_lines(without_echo(text)));
+    throw std::runtime_error("grab: the console sent no frame: " + answer_of(text));
   decoder_ = {};
   GrabbedFrame f;
   std::vector<uint8_t> coded;
@@ -335,7 +345,7 @@ std::string ConsoleClient::upload(const std::vector<uint8_t>& bytes, const std::
   // The console answers `ready`, or refuses with a message and a prompt.
   std::string text;
   if (!read_text_until("ready\r\n", &text))
-    throw std::invalid_argument("upload: the console refused: " + unix_lines(without_echo(text)));
+    throw std::invalid_argument("upload: the console refused: " + answer_of(text));
   decoder_ = {};
   // The console's verdict (its text before the prompt), taken as the transfer's end.
   const auto verdict_of = [](const std::string& said) {
