@@ -226,6 +226,49 @@ TEST(RefIo, FacesTinyobjloaderWouldDropOrMisreadAreRefused) {
   std::filesystem::remove_all(dir);
 }
 
+// map_Kd's options: -clamp on clamps that material's texture (it repeats otherwise); -s, -o and -t,
+// which move the image on the surface, are refused by material (they were dropped silently); a
+// map_Kd image that is not there is named with the material; CR alone ends a line (classic Mac OS).
+TEST(RefIo, MapKdOptionsAreDrawnOrRefusedAndCrEndsALine) {
+  const auto dir = std::filesystem::temp_directory_path() / "htx_ref_io_map_kd";
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(kData + "/checker8x16.png", dir / "checker8x16.png",
+                             std::filesystem::copy_options::overwrite_existing);
+  std::ofstream(dir / "m.mtl") << "newmtl clamped\nmap_Kd -clamp on checker8x16.png\n"
+                                  "newmtl plain\nmap_Kd checker8x16.png\n"
+                                  "newmtl scaled\nmap_Kd -s 2 2 1 checker8x16.png\n"
+                                  "newmtl moved\nmap_Kd -o 0.5 0 0 checker8x16.png\n"
+                                  "newmtl missing\nmap_Kd nothere.png\n";
+  const std::string tri = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n";
+  ASSERT_EQ(obj_error(dir, "c.obj", tri + "usemtl clamped\nf 1/1 2/1 3/1\nusemtl plain\nf 3/1 2/1 1/1\n"), "");
+  const Scene s = load_obj_scene((dir / "c.obj").string());
+  ASSERT_EQ(s.meshes.size(), 2u);
+  int clamped = 0;
+  for (const Mesh& m : s.meshes) {
+    const bool clamp = m.state.wrap_u == Wrap::Clamp && m.state.wrap_v == Wrap::Clamp;
+    const bool repeat = m.state.wrap_u == Wrap::Repeat && m.state.wrap_v == Wrap::Repeat;
+    EXPECT_TRUE(clamp || repeat);
+    clamped += clamp;
+  }
+  EXPECT_EQ(clamped, 1);
+  const std::string obj = (dir / "r.obj").string();
+  for (const char* material : {"scaled", "moved"})
+    EXPECT_EQ(obj_error(dir, "r.obj", tri + "usemtl " + material + "\nf 1/1 2/1 3/1\n"),
+              "OBJ '" + obj + "': material '" + material +
+                  "': map_Kd's -s, -o and -t options are not supported (the texture coordinates are drawn as the vt "
+                  "lines give them)");
+  EXPECT_EQ(obj_error(dir, "r.obj", tri + "usemtl missing\nf 1/1 2/1 3/1\n"),
+            "OBJ '" + obj + "': material 'missing': its map_Kd image 'nothere.png' is not there (" +
+                (dir / "nothere.png").string() + ")");
+  // CR alone as the line end: the same triangle as with LF.
+  ASSERT_EQ(obj_error(dir, "cr.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r"), "");
+  const Scene cr = load_obj_scene((dir / "cr.obj").string());
+  ASSERT_EQ(cr.meshes.size(), 1u);
+  EXPECT_EQ(cr.meshes[0].triangles.size(), 1u);
+  EXPECT_EQ(cr.meshes[0].vertices[cr.meshes[0].triangles[0][1]].pos.x, 1.0);
+  std::filesystem::remove_all(dir);
+}
+
 // Only the textures of materials that faces use are read: an unused material's image (here one
 // the GPU cannot take) neither fails the load nor takes a texture index.
 TEST(RefIo, OnlyTheTexturesOfUsedMaterialsAreLoaded) {

@@ -33,7 +33,8 @@ using htx::console::SerialPort;
 // kGivesUp stops after the first packet with its own timeout's error. Two devices that are not a
 // console: kTrickle sends a byte every 50 ms and never a prompt (as a port at another baud rate
 // shows a stream of bytes), kChatty greets with a prompt and then prints a line every 50 ms, and
-// kPromptOnly answers every line with a prompt alone (no echo, no answer).
+// kPromptOnly answers every line with a prompt alone (no echo, no answer), kEcho sends back what
+// it gets (a loop-back cable, or a terminal program at the other end).
 enum class GrabMode {
   kGood,
   kGap,
@@ -49,7 +50,8 @@ enum class GrabMode {
   kGivesUp,
   kTrickle,
   kChatty,
-  kPromptOnly
+  kPromptOnly,
+  kEcho
 };
 
 // The console's side: answers each line it reads from the master end of a pty.
@@ -157,7 +159,7 @@ class FakeConsole {
   }
   void serve() {
     if (mode_ == GrabMode::kTrickle || mode_ == GrabMode::kChatty) return stream();
-    put("hypertex console. Type help.\r\nhtx> ");
+    if (mode_ != GrabMode::kEcho) put("hypertex console. Type help.\r\nhtx> ");
     std::string line;
     htx::fw::PacketDecoder decoder;
     while (!stop_) {
@@ -165,7 +167,9 @@ class FakeConsole {
       if (::poll(&p, 1, 20) <= 0) continue;
       char c;
       if (::read(master_, &c, 1) != 1) continue;
-      if (uploading_) {
+      if (mode_ == GrabMode::kEcho) {
+        put(std::string(1, c));
+      } else if (uploading_) {
         htx::fw::Packet packet;
         if (htx::fw::packet_feed(&decoder, static_cast<uint8_t>(c), &packet) == htx::fw::kPacketReady)
           upload_packet(packet);
@@ -469,6 +473,22 @@ TEST(ConsoleClient, AStreamWithoutAConsoleIsAnErrorNotAHang) {
     const auto took = std::chrono::steady_clock::now() - t0;
     EXPECT_GE(took, 2s);
     EXPECT_LT(took, 4s);
+  }
+}
+
+// A device that only echoes: its bytes are quoted in the error, which used to blame silence.
+TEST(ConsoleClient, AnEchoIsNotAConsole) {
+  FakeConsole fake(GrabMode::kEcho);
+  SerialPort port(fake.path(), 115200);
+  ConsoleClient client(port, 1s);
+  try {
+    client.sync();
+    ADD_FAILURE() << "sync returned";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("no console prompt: the port sent ", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(\"\\x0d\\x00"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("then nothing for 1 s (an echo of what htx sent?"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -90,6 +90,21 @@ void ConsoleClient::no_prompt_in_stream(size_t bytes) const {
                            "port, at this baud rate?");
 }
 
+void ConsoleClient::no_prompt_after(const std::string& seen) const {
+  std::string shown;
+  for (size_t i = 0; i < seen.size() && i < 32; ++i) {
+    const unsigned char c = static_cast<unsigned char>(seen[i]);
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "\\x%02x", c);
+    shown += (c >= 0x20 && c < 0x7F && c != '"') ? std::string(1, static_cast<char>(c)) : std::string(hex);
+  }
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%g", static_cast<double>(timeout_.count()) / 1000.0);
+  throw std::runtime_error("no console prompt: the port sent " + std::to_string(seen.size()) + " bytes (\"" + shown +
+                           (seen.size() > 32 ? "...\"" : "\"") + "), then nothing for " + seconds +
+                           " s (an echo of what htx sent? is the console on this port, at this baud rate?)");
+}
+
 bool ConsoleClient::prompt_within(std::chrono::milliseconds wait, std::string* text,
                                   std::chrono::steady_clock::time_point deadline) {
   while (!ends_with(*text, kPrompt)) {
@@ -122,11 +137,18 @@ void ConsoleClient::sync() {
   std::string text;
   if (!prompt_within(std::min<std::chrono::milliseconds>(kAbortAfter, timeout_), &text, deadline)) {
     streamed += text.size();
+    std::string seen = std::move(text);
     const uint8_t nothing = 0;
     send_packet(fw::kPacketAbort, 0, &nothing, 1);
     port_.write("\r");
     text.clear();
-    if (!prompt_within(timeout_, &text, deadline)) silence();
+    if (!prompt_within(timeout_, &text, deadline)) {
+      // Bytes without a prompt (an echo of what was sent, a device at another rate) are not the
+      // silence of a console that is not running: say what came.
+      seen += text;
+      if (seen.empty()) silence();
+      no_prompt_after(seen);
+    }
   }
   streamed += text.size();
   // A prompt printed before ours (the greeting's) may be followed by ours: drop everything up to a

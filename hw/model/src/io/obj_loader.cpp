@@ -73,6 +73,9 @@ std::string read_text(const std::filesystem::path& file) {
                              std::to_string(1 + std::count(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(nul), '\n')) +
                              ": a NUL byte (not a text file)");
   if (s.starts_with(kBom)) s.erase(0, kBom.size());
+  // Classic Mac OS line ends (CR alone) are line ends: tinyobjloader read such a file as one line.
+  for (size_t i = 0; i < s.size(); ++i)
+    if (s[i] == '\r' && (i + 1 == s.size() || s[i + 1] != '\n')) s[i] = '\n';
   return s;
 }
 
@@ -318,6 +321,16 @@ Scene load_obj_scene(const std::string& path) {
     const std::string& tex = materials[m].diffuse_texname;
     if (tex.empty() || !used[m]) continue;
     const std::string full = (dir / tex).string();
+    const std::string material = "OBJ '" + path + "': material '" + materials[m].name + "'";
+    if (!std::filesystem::exists(full))
+      throw std::runtime_error(material + ": its map_Kd image '" + tex + "' is not there (" + full + ")");
+    // The options that move or repeat the image on the surface are not drawn: refused, not dropped.
+    const tinyobj::texture_option_t& opt = materials[m].diffuse_texopt;
+    for (int k = 0; k < 3; ++k) {
+      if (opt.scale[k] != 1 || opt.origin_offset[k] != 0 || opt.turbulence[k] != 0)
+        throw std::runtime_error(material + ": map_Kd's -s, -o and -t options are not supported (the texture "
+                                 "coordinates are drawn as the vt lines give them)");
+    }
     auto it = texture_index.find(full);
     if (it == texture_index.end()) {
       std::string note;
@@ -346,6 +359,9 @@ Scene load_obj_scene(const std::string& path) {
         mesh.state.texture = mat >= 0 ? material_texture[static_cast<size_t>(mat)] : -1;
         mesh.state.textured = mesh.state.texture >= 0;
         if (!mesh.state.textured) mesh.state.texture = 0;
+        // map_Kd's -clamp on: clamped at the edges (the texture unit's clamp), else repeated.
+        if (mat >= 0 && materials[static_cast<size_t>(mat)].diffuse_texopt.clamp)
+          mesh.state.wrap_u = mesh.state.wrap_v = Wrap::Clamp;
       }
       std::array<uint32_t, 3> tri{};
       for (int k = 0; k < 3; ++k) {

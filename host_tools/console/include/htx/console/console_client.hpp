@@ -79,6 +79,8 @@ class ConsoleClient {
   bool prompt_within(std::chrono::milliseconds wait, std::string* text,
                      std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
   [[noreturn]] void no_prompt_in_stream(size_t bytes) const;
+  // Bytes came but no prompt, then silence: an error quoting the first of them.
+  [[noreturn]] void no_prompt_after(const std::string& seen) const;
   std::string read_until_prompt();
   // Reads text until it ends with `needle` (true) or with a prompt (false: the text without it).
   bool read_text_until(const std::string& needle, std::string* text);
