@@ -130,8 +130,9 @@ TEST(SystemRenderCli, WriteErrorsAreErrors) {
   }
 }
 
-// An output that is a directory, or two outputs that are one file, are refused before rendering.
-TEST(SystemRenderCli, AnOutputThatIsADirectoryOrTwoOutputsToOneFileAreRefused) {
+// An output that is a directory, two outputs that are one file, an output that cannot be written,
+// or one that is the command's standard output are refused before rendering.
+TEST(SystemRenderCli, OutputsThatCannotBeWrittenAreRefusedBeforeRendering) {
   const std::string dir = temp_path("a_dir");
   std::filesystem::create_directories(dir);
   const std::string png = temp_path("one_file.png");
@@ -143,29 +144,8 @@ TEST(SystemRenderCli, AnOutputThatIsADirectoryOrTwoOutputsToOneFileAreRefused) {
       {{"--out", dir}, dir + ": is a directory, not a file to write"},
       {{"--out", png, "--metrics", dir}, dir + ": is a directory, not a file to write"},
       {{"--out", png, "--metrics", ::testing::TempDir() + "./htx_render_cli_one_file.png"}, "two outputs to one file"},
-  };
-  for (const auto& c : cases) {
-    std::vector<std::string> args = {HTX_BIN, "render", "cube", "--engine", "model", "--size", "32x24"};
-    args.insert(args.end(), c.outputs.begin(), c.outputs.end());
-    const auto r = htx::test::run_program(args, 60s);
-    ASSERT_FALSE(r.timed_out);
-    EXPECT_EQ(r.status, 1) << c.message;
-    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
-    EXPECT_EQ(r.out.find("rendered"), std::string::npos) << "rendered first: " << r.out;
-  }
-  EXPECT_FALSE(std::filesystem::exists(png));
-}
-
-// An output that cannot be written (/proc takes no new files) or that is the command's standard
-// output, which carries its report lines (the image would be corrupted by them), is refused before
-// rendering; an output the check created is not left behind.
-TEST(SystemRenderCli, AnOutputThatCannotBeWrittenOrIsStandardOutputIsRefused) {
-  const std::string png = temp_path("checked_first.png");
-  std::filesystem::remove(png);
-  const struct {
-    std::vector<std::string> outputs;
-    std::string message;
-  } cases[] = {
+      // /proc takes no new files; standard output carries the report lines, which would corrupt
+      // an image there.
       {{"--out", "/proc/htx_no.png"}, "/proc/htx_no.png: cannot be written ("},
       {{"--out", png, "--metrics", "/proc/htx_no.json"}, "/proc/htx_no.json: cannot be written ("},
       {{"--out", "/dev/stdout"}, "/dev/stdout: is this command's standard output"},
@@ -179,9 +159,10 @@ TEST(SystemRenderCli, AnOutputThatCannotBeWrittenOrIsStandardOutputIsRefused) {
     EXPECT_EQ(r.status, 1) << c.message;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
     EXPECT_EQ(r.out.find("rendered"), std::string::npos) << "rendered first: " << r.out;
-    EXPECT_FALSE(std::filesystem::exists(png)) << "the check left " << png << " behind";
+    EXPECT_FALSE(std::filesystem::exists(png)) << c.message << ": " << png << " was written or left behind";
   }
 }
+
 
 // Options that belong to other engines are refused rather than ignored; values outside what an
 // option takes are the option parser's refusals (status 2).
