@@ -1,6 +1,6 @@
 // Output files are checked before the work that fills them (a long simulation, a frame over a serial
 // line), so a mistyped path costs nothing: the directory must exist, the path must not be a
-// directory, a file must be one that can be created or written, it must not be the command's
+// directory, a new file must be one its directory takes, it must not be the command's
 // standard output (which carries its report lines: an image there would be corrupted by them),
 // and two outputs of one command must not be the same file.
 #pragma once
@@ -25,17 +25,22 @@ inline void require_output_dir(const std::string& path) {
     throw std::runtime_error(path + ": no directory " + dir.string() + " to write it in");
   if (std::filesystem::is_directory(path)) throw std::runtime_error(path + ": is a directory, not a file to write");
   struct stat out {}, std_out {};
-  const bool exists = ::stat(path.c_str(), &out) == 0;
-  if (exists && ::fstat(STDOUT_FILENO, &std_out) == 0 && out.st_dev == std_out.st_dev && out.st_ino == std_out.st_ino)
+  // Standard output as a file, pipe or socket: the image would be mixed with the report lines. (A
+  // device is no such clash: --out /dev/null > /dev/null throws both away.)
+  if (::stat(path.c_str(), &out) == 0 && !S_ISCHR(out.st_mode) && ::fstat(STDOUT_FILENO, &std_out) == 0 &&
+      out.st_dev == std_out.st_dev && out.st_ino == std_out.st_ino)
     throw std::runtime_error(path + ": is this command's standard output, which carries its report lines; "
                              "give a file of its own");
-  // A regular file (or a new one) is opened once to see that it can be written, without changing
-  // it; a new one is removed again. Devices and pipes are left alone (a pipe's open would wait).
-  if (exists && !S_ISREG(out.st_mode)) return;
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_NOCTTY | O_CLOEXEC | (exists ? 0 : O_EXCL), 0666);
+  // A path where nothing is yet (not even a dangling link) is created once to see that its
+  // directory takes a new file (/proc does not), and removed again. What exists is left to its
+  // writer: an existing file may be replaced rather than written (the FST writer deletes it
+  // first), and a pipe's open would wait.
+  struct stat link {};
+  if (::lstat(path.c_str(), &link) == 0) return;
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOCTTY | O_CLOEXEC, 0666);
   if (fd < 0) throw std::runtime_error(path + ": cannot be written (" + std::strerror(errno) + ")");
   ::close(fd);
-  if (!exists) ::unlink(path.c_str());
+  ::unlink(path.c_str());
 }
 
 // Whether two output paths name one regular file, existing (also through a link) or to be created.

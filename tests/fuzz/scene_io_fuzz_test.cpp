@@ -144,6 +144,7 @@ TEST_F(SceneIoFuzz, PngMutationsAndTruncations) {
   for (int iter = 0; iter < 300; ++iter) {
     std::string p = png_;
     for (unsigned k = 1 + rng() % 4; k > 0; --k) p[rng() % p.size()] ^= static_cast<char>(1 << (rng() % 8));
+    if (p == png_) continue;  // (flips that cancelled out)
     try_obj(obj_, mtl_, p, "png flips " + std::to_string(iter));
     // The image loader on its own, too.
     spill(dir_ / "alone.png", p);

@@ -132,6 +132,30 @@ TEST(ImageLoad, AChunkWhoseCrcDoesNotMatchIsACorruptImage) {
   }
 }
 
+// A damaged ancillary chunk the decoder does not read (tEXt) is ignored, as libpng ignores it; one
+// it reads (tRNS: transparency) is refused like a critical chunk.
+TEST(ImageLoad, OnlyTheChunksTheDecoderReadsMustHaveTheirCrc) {
+  const std::string good = palette_png(8, 16, 5);
+  const size_t idat = good.find("IDAT") - 4;
+  for (const std::string type : {"tEXt", "tRNS"}) {
+    std::string chunk;
+    append_chunk(chunk, type, type == "tEXt" ? std::string("Comment\0hello", 13) : std::string(16, '\xFF'));
+    chunk[chunk.size() - 1] = static_cast<char>(chunk.back() ^ 0x40);  // the CRC's last byte
+    const std::string png = good.substr(0, idat) + chunk + good.substr(idat);
+    const std::string path = write_temp("ancillary.png", png);
+    if (type == "tEXt") {
+      EXPECT_EQ(load_image(path).rgba, load_image(write_temp("plain.png", good)).rgba);
+    } else {
+      try {
+        load_image(path);
+        ADD_FAILURE() << "loaded with a damaged " << type;
+      } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("the CRC of its tRNS chunk"), std::string::npos) << e.what();
+      }
+    }
+  }
+}
+
 // A PNG cut short anywhere before the end of its IEND chunk is refused, also where its pixel data
 // is whole (stb_image decoded those).
 TEST(ImageLoad, APngCutShortIsACorruptImage) {

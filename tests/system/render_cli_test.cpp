@@ -161,6 +161,20 @@ TEST(SystemRenderCli, OutputsThatCannotBeWrittenAreRefusedBeforeRendering) {
     EXPECT_EQ(r.out.find("rendered"), std::string::npos) << "rendered first: " << r.out;
     EXPECT_FALSE(std::filesystem::exists(png)) << c.message << ": " << png << " was written or left behind";
   }
+  // Not refused: /dev/null as the output while standard output is /dev/null too (a device is no
+  // clash), and a link to a file yet to be made (its writer makes the file).
+  const auto null = htx::test::run_program(
+      {"/bin/sh", "-c", std::string(HTX_BIN) + " render cube --engine model --size 32x24 --out /dev/null > /dev/null"},
+      60s);
+  EXPECT_EQ(null.status, 0) << null.err;
+  const std::string link = temp_path("link_out.png"), target = temp_path("link_target.png");
+  std::filesystem::remove(link);
+  std::filesystem::remove(target);
+  std::filesystem::create_symlink(target, link);
+  const auto linked =
+      htx::test::run_program({HTX_BIN, "render", "cube", "--engine", "model", "--size", "32x24", "--out", link}, 60s);
+  EXPECT_EQ(linked.status, 0) << linked.err;
+  EXPECT_TRUE(std::filesystem::is_regular_file(target));
 }
 
 

@@ -34,7 +34,8 @@ using htx::console::SerialPort;
 // console: kTrickle sends a byte every 50 ms and never a prompt (as a port at another baud rate
 // shows a stream of bytes), kChatty greets with a prompt and then prints a line every 50 ms, and
 // kPromptOnly answers every line with a prompt alone (no echo, no answer), kEcho sends back what
-// it gets (a loop-back cable, or a terminal program at the other end).
+// it gets (a loop-back cable, or a terminal program at the other end). kBusyGrab is a console
+// still sending a frame a grab left (a packet every 50 ms for 2.5 s) before it reads its input.
 enum class GrabMode {
   kGood,
   kGap,
@@ -51,7 +52,8 @@ enum class GrabMode {
   kTrickle,
   kChatty,
   kPromptOnly,
-  kEcho
+  kEcho,
+  kBusyGrab
 };
 
 // The console's side: answers each line it reads from the master end of a pty.
@@ -159,6 +161,12 @@ class FakeConsole {
   }
   void serve() {
     if (mode_ == GrabMode::kTrickle || mode_ == GrabMode::kChatty) return stream();
+    if (mode_ == GrabMode::kBusyGrab) {
+      for (int i = 0; i < 50; ++i) {
+        packet(htx::fw::kPacketFrameData, static_cast<uint8_t>(i), std::vector<uint8_t>(16, static_cast<uint8_t>(i)));
+        std::this_thread::sleep_for(50ms);
+      }
+    }
     if (mode_ != GrabMode::kEcho) put("hypertex console. Type help.\r\nhtx> ");
     std::string line;
     htx::fw::PacketDecoder decoder;
@@ -474,6 +482,18 @@ TEST(ConsoleClient, AStreamWithoutAConsoleIsAnErrorNotAHang) {
     EXPECT_GE(took, 2s);
     EXPECT_LT(took, 4s);
   }
+}
+
+// A console sending the rest of a frame when htx attaches (a grab interrupted) is waited for past
+// twice the timeout, since each whole packet shows a console at work; then the exchange works.
+TEST(ConsoleClient, AFrameStillComingIsWaitedFor) {
+  FakeConsole fake(GrabMode::kBusyGrab);
+  SerialPort port(fake.path(), 115200);
+  ConsoleClient client(port, 500ms);
+  const auto t0 = std::chrono::steady_clock::now();
+  client.sync();
+  EXPECT_GE(std::chrono::steady_clock::now() - t0, 2s);
+  EXPECT_EQ(client.command("info"), "line one\nline two\n");
 }
 
 // A device that only echoes: its bytes are quoted in the error, which used to blame silence.

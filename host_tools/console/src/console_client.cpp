@@ -82,10 +82,18 @@ uint8_t ConsoleClient::next_byte() {
   return b;
 }
 
-void ConsoleClient::no_prompt_in_stream(size_t bytes) const {
+void ConsoleClient::StreamBound::feed(uint8_t byte, std::chrono::milliseconds extend) {
+  ++bytes;
+  fw::Packet packet;
+  if (fw::packet_feed(&decoder, byte, &packet) == fw::kPacketReady)
+    deadline = std::max(deadline, std::chrono::steady_clock::now() + extend);
+}
+
+void ConsoleClient::no_prompt_in_stream(const StreamBound& bound) const {
   char seconds[32];
-  std::snprintf(seconds, sizeof seconds, "%g", 2.0 * static_cast<double>(timeout_.count()) / 1000.0);
-  throw std::runtime_error("the port kept sending (" + std::to_string(bytes) + " bytes in " + seconds +
+  std::snprintf(seconds, sizeof seconds, "%.1f",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - bound.start).count());
+  throw std::runtime_error("the port kept sending (" + std::to_string(bound.bytes) + " bytes in " + seconds +
                            " s) without a console prompt and a pause after it: is the console on this "
                            "port, at this baud rate?");
 }
@@ -105,14 +113,14 @@ void ConsoleClient::no_prompt_after(const std::string& seen) const {
                            " s (an echo of what htx sent? is the console on this port, at this baud rate?)");
 }
 
-bool ConsoleClient::prompt_within(std::chrono::milliseconds wait, std::string* text,
-                                  std::chrono::steady_clock::time_point deadline) {
+bool ConsoleClient::prompt_within(std::chrono::milliseconds wait, std::string* text, StreamBound* bound) {
   while (!ends_with(*text, kPrompt)) {
     if (text->size() > kMaxText) throw std::runtime_error("the console sent more than 1 MiB without a prompt");
-    if (std::chrono::steady_clock::now() > deadline) no_prompt_in_stream(text->size());
+    if (bound && std::chrono::steady_clock::now() > bound->deadline) no_prompt_in_stream(*bound);
     uint8_t b = 0;
     if (!next_byte_within(wait, &b)) return false;
     *text += static_cast<char>(b);
+    if (bound) bound->feed(b, timeout_);
   }
   return true;
 }
@@ -125,9 +133,10 @@ std::string ConsoleClient::read_until_prompt() {
 
 void ConsoleClient::sync() {
   // A console answers a line break at once unless it is busy, and a busy console is silent (a
-  // render) or stops at the key (a spin), so a stream of bytes that outlasts this is not one.
-  const auto deadline = std::chrono::steady_clock::now() + 2 * timeout_;
-  size_t streamed = 0;
+  // render), stops at the key (a spin) or sends packets (the rest of a frame), so a stream of
+  // other bytes that outlasts this is not one.
+  const auto now = std::chrono::steady_clock::now();
+  StreamBound bound{now, now + 2 * timeout_};
   port_.write("\r");
   // A console still receiving an upload whose client ended answers no line break (until its own
   // silence timeout: 10 s on a board, most of a minute on the simulator). After a second of
@@ -135,14 +144,13 @@ void ConsoleClient::sync() {
   // skips it as a packet frame. Only after silence: a busy console's receive FIFO may be full of
   // unread input, and a byte of the frame lost there would make the console skip what follows.
   std::string text;
-  if (!prompt_within(std::min<std::chrono::milliseconds>(kAbortAfter, timeout_), &text, deadline)) {
-    streamed += text.size();
+  if (!prompt_within(std::min<std::chrono::milliseconds>(kAbortAfter, timeout_), &text, &bound)) {
     std::string seen = std::move(text);
     const uint8_t nothing = 0;
     send_packet(fw::kPacketAbort, 0, &nothing, 1);
     port_.write("\r");
     text.clear();
-    if (!prompt_within(timeout_, &text, deadline)) {
+    if (!prompt_within(timeout_, &text, &bound)) {
       // Bytes without a prompt (an echo of what was sent, a device at another rate) are not the
       // silence of a console that is not running: say what came.
       seen += text;
@@ -150,15 +158,15 @@ void ConsoleClient::sync() {
       no_prompt_after(seen);
     }
   }
-  streamed += text.size();
   // A prompt printed before ours (the greeting's) may be followed by ours: drop everything up to a
-  // moment of silence.
-  streamed += buf_.size() - pos_;
+  // moment of silence, which a console gives at once after its prompt.
+  bound.deadline = std::max(bound.deadline, std::chrono::steady_clock::now() + timeout_);
+  for (size_t i = pos_; i < buf_.size(); ++i) bound.feed(buf_[i], timeout_);
   pos_ = buf_.size();
   uint8_t drop[256];
   while (const size_t n = port_.read_some(drop, sizeof drop, kSettle)) {
-    streamed += n;
-    if (std::chrono::steady_clock::now() > deadline) no_prompt_in_stream(streamed);
+    for (size_t i = 0; i < n; ++i) bound.feed(drop[i], timeout_);
+    if (std::chrono::steady_clock::now() > bound.deadline) no_prompt_in_stream(bound);
   }
 }
 

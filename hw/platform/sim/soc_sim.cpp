@@ -234,7 +234,7 @@ SimResult SocSim::run() {
         done = true;
       }
     }
-    if (s.opt.stop && c % kPollInterval == 0 && s.opt.stop->load(std::memory_order_relaxed)) {
+    if (!done && s.opt.stop && c % kPollInterval == 0 && s.opt.stop->load(std::memory_order_relaxed)) {
       res.reason = StopReason::Stopped;
       done = true;
     }

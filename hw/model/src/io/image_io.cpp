@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "htx/fw/crc32.h"
@@ -67,8 +68,8 @@ std::string with_padded_palette(const std::string& png, const PaletteChunk& plte
 }
 
 // A PNG's chunks each end with the CRC-32 of their type and data, which stb_image does not check
-// (nor zlib's own checksum): a damaged byte decoded silently into a wrong texel. Each chunk up to
-// IEND is checked here, and a file that ends before IEND (a chunk running past its end, or none
+// (nor zlib's own checksum): a damaged byte decoded silently into a wrong texel. Each chunk the
+// decoder reads, up to IEND, is checked here, and a file that ends before IEND (a chunk running past its end, or none
 // left) is refused too: stb_image decoded such a file when its pixel data came before the damage.
 void check_png_chunks(const std::string& png, const std::string& path) {
   static const std::string kSignature = "\x89PNG\r\n\x1a\n";
@@ -78,12 +79,17 @@ void check_png_chunks(const std::string& png, const std::string& path) {
     if (at + 12 > png.size() || length > png.size() - at - 12)
       throw std::runtime_error("cannot load image '" + path + "': it ends before its IEND chunk, in the chunk at byte " +
                                std::to_string(at) + " (a truncated or corrupt PNG)");
+    // The chunks the decoder reads: the critical ones (an upper-case first letter), tRNS
+    // (transparency) and CgBI. Other ancillary chunks are ignored, damaged or not, as libpng
+    // drops them with a warning.
+    const std::string_view type(png.data() + at + 4, 4);
+    const bool read = !(type[0] & 0x20) || type == "tRNS" || type == "CgBI";
     const uint32_t crc = fw::crc32(reinterpret_cast<const uint8_t*>(png.data() + at + 4), size_t{length} + 4);
-    if (crc != be32(png, at + 8 + length)) {
-      std::string type = png.substr(at + 4, 4);
-      for (char& c : type)
+    if (read && crc != be32(png, at + 8 + length)) {
+      std::string shown(type);
+      for (char& c : shown)
         if (c < 0x20 || c > 0x7E) c = '?';
-      throw std::runtime_error("cannot load image '" + path + "': the CRC of its " + type + " chunk at byte " +
+      throw std::runtime_error("cannot load image '" + path + "': the CRC of its " + shown + " chunk at byte " +
                                std::to_string(at) + " does not match (a corrupt PNG)");
     }
     if (png.compare(at + 4, 4, "IEND") == 0) return;

@@ -73,9 +73,9 @@ std::string read_text(const std::filesystem::path& file) {
                              std::to_string(1 + std::count(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(nul), '\n')) +
                              ": a NUL byte (not a text file)");
   if (s.starts_with(kBom)) s.erase(0, kBom.size());
-  // Classic Mac OS line ends (CR alone) are line ends: tinyobjloader read such a file as one line.
-  for (size_t i = 0; i < s.size(); ++i)
-    if (s[i] == '\r' && (i + 1 == s.size() || s[i + 1] != '\n')) s[i] = '\n';
+  // Classic Mac OS line ends (CR alone, in a file without LF) are line ends: tinyobjloader read
+  // such a file as one line. (In a file with LF a stray CR stays, so line numbers stay an editor's.)
+  if (s.find('\n') == std::string::npos) std::replace(s.begin(), s.end(), '\r', '\n');
   return s;
 }
 

@@ -30,7 +30,9 @@ class ConsoleClient {
   // Brings the exchange to a fresh prompt: sends a line break and reads until a prompt followed by
   // a moment of silence, so a greeting or prompt printed before we attached is consumed. A port
   // that keeps sending without giving both within twice the timeout (a device that is not the
-  // console, or one at another baud rate, sends a stream of bytes) is a std::runtime_error.
+  // console, or one at another baud rate, sends a stream of bytes) is a std::runtime_error; whole
+  // packets in the stream (the rest of a frame an interrupted grab left) each extend that by the
+  // timeout.
   void sync();
   // Sends one line and returns what the console printed for it, without the echoed line and the
   // prompt, with CR LF as LF. Throws std::runtime_error on a timeout.
@@ -74,11 +76,19 @@ class ConsoleClient {
   // The next byte if one comes within `wait` (false: none came; nothing is thrown).
   bool next_byte_within(std::chrono::milliseconds wait, uint8_t* byte);
   [[noreturn]] void silence() const;
-  // Reads into *text until it ends with a prompt; false when `wait` passes in silence first. Past
-  // `deadline`, bytes still coming without a prompt are a std::runtime_error (sync's bound).
-  bool prompt_within(std::chrono::milliseconds wait, std::string* text,
-                     std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
-  [[noreturn]] void no_prompt_in_stream(size_t bytes) const;
+  // sync's bound on bytes that keep coming without a prompt: a deadline, which each whole packet
+  // moves on by the timeout (a console sending the rest of a frame a grab left is a console), and
+  // the decoder that finds the packets.
+  struct StreamBound {
+    std::chrono::steady_clock::time_point start, deadline;
+    fw::PacketDecoder decoder{};
+    size_t bytes = 0;
+    void feed(uint8_t byte, std::chrono::milliseconds extend);
+  };
+  // Reads into *text until it ends with a prompt; false when `wait` passes in silence first. With
+  // `bound`, bytes still coming past its deadline are a std::runtime_error.
+  bool prompt_within(std::chrono::milliseconds wait, std::string* text, StreamBound* bound = nullptr);
+  [[noreturn]] void no_prompt_in_stream(const StreamBound& bound) const;
   // Bytes came but no prompt, then silence: an error quoting the first of them.
   [[noreturn]] void no_prompt_after(const std::string& seen) const;
   std::string read_until_prompt();
