@@ -490,6 +490,21 @@ TEST(RefIo, SceneSpecsAreCheckedAndDeterministic) {
   EXPECT_THROW(make_builtin_scene("wsweep:r"), std::invalid_argument);
   EXPECT_THROW(make_builtin_scene("wsweep:r=abc"), std::invalid_argument);
   EXPECT_THROW(make_builtin_scene("randmesh:count=2.5"), std::invalid_argument);
+  // Numbers are decimal: hex, spaces, nan and inf are not numbers; one past a double is out of
+  // range, and one below the smallest is its nearest double (stod threw for both).
+  const auto error = [](const std::string& spec) -> std::string {
+    try {
+      make_builtin_scene(spec);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  for (const char* text : {"0x10", " 5", "5 ", "nan", "inf", "1e5x", "+-1"})
+    EXPECT_EQ(error(std::string("cube:yaw=") + text), std::string("scene 'cube': parameter yaw='") + text + "' is not a number");
+  EXPECT_EQ(error("cube:yaw=1e400").rfind("scene 'cube': parameter yaw=1e400 out of range [", 0), 0u) << error("cube:yaw=1e400");
+  EXPECT_EQ(error("cube:yaw=-1e400").rfind("scene 'cube': parameter yaw=-1e400 out of range [", 0), 0u);
+  EXPECT_EQ(error("cube:yaw=1e-400"), "");
   for (const SceneInfo& info : builtin_scenes()) {
     const ScreenScene a = prepare_screen_scene(make_builtin_scene(info.name), 160, 120);
     const ScreenScene b = prepare_screen_scene(make_builtin_scene(info.name), 160, 120);

@@ -1,7 +1,9 @@
 #include "scene_params.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace htx {
@@ -40,16 +42,18 @@ double SceneParams::number(const std::string& key, double fallback, double min, 
   used_.insert(key);
   const auto it = values_.find(key);
   if (it == values_.end()) return fallback;
-  size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(it->second, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != it->second.size() || !std::isfinite(v))
-    throw std::invalid_argument("scene '" + name_ + "': parameter " + key + "='" + it->second + "' is not a number");
-  if (v < min || v > max)
+  // A decimal number (no hex, no spaces, no nan or inf); one too small for a double is its
+  // nearest double (1e-400 is 0), one too large is out of range (stod threw for both, which read
+  // as "not a number").
+  const std::string& text = it->second;
+  const bool decimal = !text.empty() && text.find_first_not_of("0123456789+-.eE") == std::string::npos;
+  char* end = nullptr;
+  errno = 0;
+  const double v = decimal ? std::strtod(text.c_str(), &end) : 0.0;
+  const bool overflow = errno == ERANGE && std::fabs(v) > 1.0;
+  if (!decimal || end != text.c_str() + text.size())
+    throw std::invalid_argument("scene '" + name_ + "': parameter " + key + "='" + text + "' is not a number");
+  if (overflow || v < min || v > max)
     throw std::invalid_argument("scene '" + name_ + "': parameter " + key + "=" + it->second + " out of range [" +
                                 format_number(min) + ", " + format_number(max) + "]");
   return v;
