@@ -33,7 +33,7 @@ module htx_gpu_full #(
 );
   htx_gpu_subsys #(
     .XyIntBits(16), .ZBits(24), .GF(24), .RecipW(32), .RecipK(10), .RecipG(2), .SetupSteps(2),
-    .Iterative(1'b0), .QBits(32), .UvIntBits(16), .PixelSteps(2), .PerspColor(1'b0),
+    .Iterative(1'b0), .QBits(32), .UvIntBits(16), .PixelSteps(2), .PerspColor(1'b1),
     .PixelPipelined(1'b1), .PixelMulIterative(1'b0), .SubdivDepth(128), .DfFracBits(4), .DfCap(64), .FifoDepth(64),
     .CoordW(48), .TF(16), .GradW(24), .LF(8), .TexFormats(3'b111), .TexFilters(3'b111),
     .TexSlots(8), .TexLanes(4), .TexShiftAdd(1'b0), .TexCounters(1'b1), .LogIdx(10),

@@ -1,11 +1,11 @@
 // The raster subsystem in the `full` configuration (wide, one setup product per clock): the parameters equal
 // htx::model_config("full") (hw/model/src/model/config.cpp) field by field; the `rtl` engine
 // checks that before it renders.
-// PerspColor is model_config("full").perspective_color; it stays 0 here (rtl_config("full"), what
-// the rtl engine renders) until the engine drops its switch; htx_raster_full_pc sets it.
+// PerspColor is model_config("full").perspective_color: perspective-correct Gouraud colour (0
+// until 2026-12-07, when the rtl engine still drew `full` with it off).
 module htx_raster_full #(
   parameter int unsigned FbPixels   = 19200,  // 160 x 120; the rtl engine uses 262144 (the depth window)
-  parameter bit          PerspColor = 1'b0
+  parameter bit          PerspColor = 1'b1
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,

@@ -30,7 +30,7 @@ TEST_P(RasterScenes, MatchesModelBitForBit) {
     t.state.textured = false;
     t.state.gouraud = c.gouraud;
   }
-  // Gouraud colour linear in screen space: `full`'s perspective_color is not built yet.
+  // (`full`'s Gouraud colour is perspective-correct, `icebreaker`'s linear in screen space.)
   const ModelConfig cfg = rtl_config(c.config);
   const Frame model = render_model(screen, cfg);
   RtlStats stats;

@@ -53,16 +53,15 @@ void check_config(const ModelConfig& c) {
                     c.pixel_nr_steps == n.pixel_nr_steps && c.texcoord_frac_bits == n.texcoord_frac_bits &&
                     c.lod_frac_bits == n.lod_frac_bits && c.lod_log_index_bits == n.lod_log_index_bits &&
                     c.lod_grad_bits == n.lod_grad_bits && c.filters == n.filters && c.formats == n.formats &&
-                    c.divfree_frac_bits == n.divfree_frac_bits && c.divfree_cap == n.divfree_cap;
-  if (c.perspective_color)
-    throw std::invalid_argument(
-        "rtl engine: perspective-correct Gouraud colour (perspective_color) is not built yet; render with it off");
+                    c.divfree_frac_bits == n.divfree_frac_bits && c.divfree_cap == n.divfree_cap &&
+                    c.perspective_color == n.perspective_color;
   if (c.methods & ~kRtlMethods)
     throw std::invalid_argument("rtl engine: the configuration names methods the RTL does not build (it builds "
                                 "affine, subdiv, recip_lut, recip_nr, divfree)");
   if (!same)
     throw std::invalid_argument("rtl engine: configuration '" + c.name +
-                                "' differs from the built one in a width, table, filter or format set");
+                                "' differs from the built one in a width, table, filter or format set, or in "
+                                "perspective-correct colour");
 }
 
 // What the model refuses for a textured triangle, the RTL refuses too (the same messages' sense).
@@ -122,7 +121,6 @@ uint32_t field(uint32_t value, uint32_t pos, uint32_t msk) { return (value << po
 
 ModelConfig rtl_config(const std::string& name) {
   ModelConfig c = model_config(name);
-  c.perspective_color = false;
   c.methods &= kRtlMethods;
   return c;
 }

@@ -32,9 +32,8 @@ struct RtlStats {
 
 // Renders textured and untextured triangles (Gouraud colour linear in screen space). Texture t goes
 // to slot t. Throws std::invalid_argument when the configuration is not one the RTL builds (the
-// named `full` and `icebreaker` with their exact field values, except that perspective_color must be
-// off and the methods a subset of the built ones; rtl_config() gives the configuration the RTL
-// renders), when a triangle asks for a method, filter or format the configuration does not build,
+// named `full` and `icebreaker` with their exact field values, perspective_color included, and the
+// methods a subset of the built ones; rtl_config() gives the configuration the RTL renders), when a triangle asks for a method, filter or format the configuration does not build,
 // names a texture beyond the built slots (8 / 4) or a bad texture, when the textures exceed the
 // Verilated texture memory (128K / 16K texels), or the frame exceeds the 262144-pixel memories or
 // 4096 per side. An `icebreaker` configuration whose methods are AFFINE and RECIP_LUT at most is
@@ -42,8 +41,8 @@ struct RtlStats {
 // htx_gpu_icebreaker with Methods 5'b00101); any other on the one with every method.
 Frame render_rtl(const ScreenScene& scene, const ModelConfig& config, RtlStats* stats = nullptr);
 
-// The named configuration as the RTL builds it (perspective_color off, the built methods: affine,
-// subdiv, recip_lut, recip_nr, divfree). Throws like model_config.
+// The named configuration as the RTL builds it: model_config(name) with the built methods (affine,
+// subdiv, recip_lut, recip_nr, divfree; not the model's quadratic). Throws like model_config.
 ModelConfig rtl_config(const std::string& name);
 
 // `icebreaker` with the board's methods only (AFFINE, RECIP_LUT): render_rtl draws it on the GPU

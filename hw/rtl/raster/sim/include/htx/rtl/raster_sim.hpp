@@ -26,9 +26,9 @@ struct TexRequest {
 
 class RasterSim {
  public:
-  // config: "full" or "icebreaker" (the Verilated configurations; "full" as rtl_config, without
-  // perspective-correct colour), "full_pc" (model_config("full") exactly, perspective_color
-  // included), or "icebreaker_untextured" (`icebreaker` built without texture mapping: it draws
+  // config: "full" or "icebreaker" (the Verilated configurations, as rtl_config), "full_pc" (the
+  // same `full`, its perspective-correct colour set explicitly: htx_raster_full_pc), or
+  // "icebreaker_untextured" (`icebreaker` built without texture mapping: it draws
   // untextured triangles as "icebreaker" does and refuses textured ones). Throws
   // std::invalid_argument for any other name. Resets the subsystem.
   explicit RasterSim(const std::string& config);
