@@ -138,13 +138,26 @@ void run_render(const RenderArgs& given) {
   ref_options.depth_bits = config.z_bits;
 
   const auto t0 = std::chrono::steady_clock::now();
+  const auto draw = [&]() -> Frame {
+    try {
 #ifdef HTX_HAVE_RTL_ENGINE
-  const Frame frame = a.engine == "ref"     ? render_ref(screen, ref_options)
-                      : a.engine == "model" ? render_model(screen, config)
-                                            : render_rtl(screen, config, &rtl_stats);
+      return a.engine == "ref"     ? render_ref(screen, ref_options)
+             : a.engine == "model" ? render_model(screen, config)
+                                   : render_rtl(screen, config, &rtl_stats);
 #else
-  const Frame frame = a.engine == "ref" ? render_ref(screen, ref_options) : render_model(screen, config);
+      return a.engine == "ref" ? render_ref(screen, ref_options) : render_model(screen, config);
 #endif
+    } catch (const std::invalid_argument& e) {
+      // A method the scene's own triangles ask for (no --method given) that this configuration
+      // lacks: say where it came from and what would draw them.
+      const std::string what = e.what();
+      if (a.method.empty() && what.find("method ") != std::string::npos &&
+          what.find(" is not built in configuration ") != std::string::npos)
+        throw std::invalid_argument(what + " (the scene's triangles ask for it; --method auto picks a built one)");
+      throw;
+    }
+  };
+  const Frame frame = draw();
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   write_png(a.out, image_from_rgb565(frame.width, frame.height, frame.color));
   // Triangles the vertex-record encoder refused, which the firmware would not send either (ref

@@ -91,6 +91,15 @@ TEST(SystemRenderCli, BoardConfigurationRefusesAMethodItDoesNotBuild) {
     EXPECT_EQ(r.status, 1) << engine;
     EXPECT_NE(r.err.find("recip_nr is not built in configuration icebreaker-board"), std::string::npos)
         << engine << ": " << r.err;
+    // Without --method, a scene whose triangles ask for such a method: the message says so.
+    const auto own = htx::test::run_program({HTX_BIN, "render", "bigtri", "--engine", engine, "--config",
+                                             "icebreaker-board", "--size", "80x60", "--out", temp_path("refused.png")},
+                                            120s);
+    EXPECT_EQ(own.status, 1) << engine;
+    EXPECT_NE(own.err.find("recip_nr is not built in configuration icebreaker-board (the scene's triangles ask "
+                           "for it; --method auto picks a built one)"),
+              std::string::npos)
+        << engine << ": " << own.err;
   }
 }
 
