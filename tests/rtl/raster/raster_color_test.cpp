@@ -1,6 +1,6 @@
 // Perspective-correct Gouraud colour (docs/model.md §3, `full`'s perspective_color): the planes of
-// c q divided by Q per pixel through the divider. The Verilated `full_pc` top (model_config("full")
-// exactly) against render_model, framebuffer and depth bit for bit: every built-in scene with every
+// c q divided by Q per pixel through the divider. The Verilated `full` top (model_config("full")
+// exactly, since 2026-12-07 as the GPU's too) against render_model, framebuffer and depth bit for bit: every built-in scene with every
 // built method, and random perspective triangles (fixed seeds).
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ void expect_frame(const ScreenScene& s, const std::string& what) {
   ASSERT_TRUE(cfg.perspective_color);
   const Frame model = render_model(s, cfg);
   const raster_test::RtlResult r =
-      raster_test::draw("full_pc", raster_test::encode(s, cfg), s.width, s.height, s.clear_color, s.clear_depth,
+      raster_test::draw("full", raster_test::encode(s, cfg), s.width, s.height, s.clear_color, s.clear_depth,
                         cfg.z_bits);
   size_t first = 0;
   const uint64_t bad = raster_test::mismatch_pixels(r, model, &first);

@@ -1,7 +1,7 @@
 // Drives the Verilated raster subsystem (RasterSim) directly for the tests in this directory:
 // encodes triangles exactly as render_model does (the encoder's rejects are not sent), pushes them
 // with their state words, records the texture request port and reads the memories back. Unlike
-// render_rtl it takes any built configuration name ("full_pc": perspective-correct colour).
+// render_rtl it takes any built configuration name ("icebreaker_untextured" too).
 #pragma once
 
 #include <algorithm>
@@ -58,7 +58,7 @@ struct RtlResult {
   uint64_t busy = 0, fragments = 0, pixels = 0, setup_busy = 0, triangles = 0, divfree_steps = 0;
 };
 
-// The configuration a built unit is of ("icebreaker_untextured" is `icebreaker`'s, "full_pc" `full`'s).
+// The configuration a built unit is of ("icebreaker_untextured" is `icebreaker`'s).
 inline const ModelConfig& config_of_build(const std::string& name) {
   return model_config(name.rfind("icebreaker", 0) == 0 ? "icebreaker" : "full");
 }

@@ -443,7 +443,7 @@ TEST(RasterRobust, TinyTriangleSetupThroughput) {
 // STATE (the board's build, without them, is checked in tests/rtl/soc), and whether setup is the
 // firmware's (`icebreaker`: plane records).
 TEST(RasterRobust, CapsNamesTheBuild) {
-  for (const std::string name : {"full", "full_pc", "icebreaker"}) {
+  for (const std::string name : {"full", "icebreaker"}) {
     rtl::RasterSim sim(name);
     const uint32_t caps = sim.read_reg(R(CAPS));
     const bool ice = name == "icebreaker";

@@ -22,13 +22,12 @@ using raster_test::Tri;
 const Method kBuilt[] = {Method::Affine, Method::Subdiv, Method::RecipLut, Method::RecipNr, Method::DivFree};
 
 TEST(RasterThroughput, BigtriPixelsPerClockPerMethod) {
-  for (const char* name : {"full", "full_pc", "icebreaker"}) {
+  for (const char* name : {"full", "icebreaker"}) {
     const ModelConfig& cfg = model_config(name == std::string("icebreaker") ? "icebreaker" : "full");
     // icebreaker divides slowly: a quarter of the pixels is enough for its figure.
     const bool ice = name == std::string("icebreaker");
     ScreenScene s = prepare_screen_scene(make_builtin_scene("bigtri"), ice ? 80 : 160, ice ? 60 : 120);
     for (Method m : kBuilt) {
-      if (name == std::string("full_pc") && m != Method::RecipNr) continue;  // colour: any method divides
       for (ScreenTri& t : s.tris) {
         t.state.textured = true;
         t.state.gouraud = true;

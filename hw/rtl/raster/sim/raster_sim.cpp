@@ -6,8 +6,6 @@
 
 #include "Vhtx_raster_full.h"
 #include "Vhtx_raster_full___024root.h"
-#include "Vhtx_raster_full_pc.h"
-#include "Vhtx_raster_full_pc___024root.h"
 #include "Vhtx_raster_icebreaker.h"
 #include "Vhtx_raster_icebreaker___024root.h"
 #include "Vhtx_raster_icebreaker_untextured.h"
@@ -75,9 +73,6 @@ bool read_request(Vhtx_raster_icebreaker& top, TexRequest* t) {
 bool read_request(Vhtx_raster_icebreaker_untextured& top, TexRequest* t) {
   HTX_READ_REQUEST(htx_raster_icebreaker__DOT__u_subsys, top.rootp, 20, 23, 16);
 }
-bool read_request(Vhtx_raster_full_pc& top, TexRequest* t) {
-  HTX_READ_REQUEST(htx_raster_full_pc__DOT__u_full__DOT__u_subsys, top.rootp, 48, 32, 24);
-}
 #undef HTX_READ_REQUEST
 
 template <class V>
@@ -107,15 +102,13 @@ constexpr uint32_t kDepthWindow = 0x30100000u;
 RasterSim::RasterSim(const std::string& config) {
   if (config == "full") {
     port_ = std::make_unique<VerilatedPort<Vhtx_raster_full>>();
-  } else if (config == "full_pc") {
-    port_ = std::make_unique<VerilatedPort<Vhtx_raster_full_pc>>();
   } else if (config == "icebreaker") {
     port_ = std::make_unique<VerilatedPort<Vhtx_raster_icebreaker>>();
   } else if (config == "icebreaker_untextured") {
     port_ = std::make_unique<VerilatedPort<Vhtx_raster_icebreaker_untextured>>();
   } else {
     throw std::invalid_argument("rtl engine: no Verilated raster for configuration '" + config +
-                                "' (built: full, full_pc, icebreaker, icebreaker_untextured)");
+                                "' (built: full, icebreaker, icebreaker_untextured)");
   }
   port_->reset();
 }

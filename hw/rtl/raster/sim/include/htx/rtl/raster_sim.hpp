@@ -26,8 +26,7 @@ struct TexRequest {
 
 class RasterSim {
  public:
-  // config: "full" or "icebreaker" (the Verilated configurations, as rtl_config), "full_pc" (the
-  // same `full`, its perspective-correct colour set explicitly: htx_raster_full_pc), or
+  // config: "full" or "icebreaker" (the Verilated configurations, as rtl_config), or
   // "icebreaker_untextured" (`icebreaker` built without texture mapping: it draws
   // untextured triangles as "icebreaker" does and refuses textured ones). Throws
   // std::invalid_argument for any other name. Resets the subsystem.
