@@ -57,10 +57,14 @@ const char* status_name(fw::PacketStatus s) {
 
 ConsoleClient::ConsoleClient(SerialPort& port, std::chrono::milliseconds timeout) : port_(port), timeout_(timeout) {}
 
-void ConsoleClient::silence() const {
+std::string ConsoleClient::timeout_seconds() const {
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, "%g", static_cast<double>(timeout_.count()) / 1000.0);
-  throw std::runtime_error(std::string("the console said nothing for ") + seconds +
+  return seconds;
+}
+
+void ConsoleClient::silence() const {
+  throw std::runtime_error("the console said nothing for " + timeout_seconds() +
                            " s (is the firmware running the console?)");
 }
 
@@ -106,10 +110,8 @@ void ConsoleClient::no_prompt_after(const std::string& seen) const {
     std::snprintf(hex, sizeof hex, "\\x%02x", c);
     shown += (c >= 0x20 && c < 0x7F && c != '"') ? std::string(1, static_cast<char>(c)) : std::string(hex);
   }
-  char seconds[32];
-  std::snprintf(seconds, sizeof seconds, "%g", static_cast<double>(timeout_.count()) / 1000.0);
   throw std::runtime_error("no console prompt: the port sent " + std::to_string(seen.size()) + " bytes (\"" + shown +
-                           (seen.size() > 32 ? "...\"" : "\"") + "), then nothing for " + seconds +
+                           (seen.size() > 32 ? "...\"" : "\"") + "), then nothing for " + timeout_seconds() +
                            " s (an echo of what htx sent? is the console on this port, at this baud rate?)");
 }
 

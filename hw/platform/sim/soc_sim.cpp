@@ -222,21 +222,21 @@ SimResult SocSim::run() {
         done = true;
       }
     }
-    if (c % kPollInterval == 0) {
+    if (!done && c % kPollInterval == 0) {
       if (s.top->instret_o != last_instret) {
         last_instret = s.top->instret_o;
         last_retire = c;
-      } else if (c - last_retire >= kStuckClocks && !done) {
+      } else if (c - last_retire >= kStuckClocks) {
         res.reason = StopReason::Stuck;
         res.note = "no instruction retired in " + std::to_string(c - last_retire) +
                    " cycles (execute stage at pc " + hex(s.top->cpu_e_pc_o) +
                    "): the CPU traps in a loop, or waits on a bus access that never completes";
         done = true;
       }
-    }
-    if (!done && s.opt.stop && c % kPollInterval == 0 && s.opt.stop->load(std::memory_order_relaxed)) {
-      res.reason = StopReason::Stopped;
-      done = true;
+      if (!done && s.opt.stop && s.opt.stop->load(std::memory_order_relaxed)) {
+        res.reason = StopReason::Stopped;
+        done = true;
+      }
     }
     if (s.uart && c % kPollInterval == 0) {
       if (!s.uart->paced()) {

@@ -1,7 +1,7 @@
 // Synthesis and place-and-route harness of the raster unit in the `icebreaker` configuration
 // (htx_raster_synth_wrapper) as the board's GPU builds it (gpu_icebreaker_up5k): AFFINE and
-// RECIP_LUT (its plane records carry LOD gradients for DIVFREE only, so the LOD outputs are 0), no
-// event counters; the synth-report design raster_icebreaker_up5k.
+// RECIP_LUT, the texture request's LOD fields left out (the wrapper's !Full: the board's texture
+// unit has no LOD unit), no event counters; the synth-report design raster_icebreaker_up5k.
 module htx_raster_synth_icebreaker (
   input  logic clk_i,
   input  logic rst_ni,

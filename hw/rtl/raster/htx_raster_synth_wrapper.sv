@@ -26,7 +26,13 @@ module htx_raster_synth_wrapper #(
   localparam int unsigned TagW    = htx_raster_pkg::tex_tag_w(AddrW, ZBits);
   // The texture port: requests are folded into the output; responses return the last request's
   // tag one clock later with a texel from the input chain (a stand-in for the texture unit).
-  localparam int unsigned ReqBits = 2 * CoordW + 2 + 2 + 2 + 8 + 1 + 24 + QW + 6 * GradW + 8 + 2 * LocW + TagW;
+  // The request's fields in tq_bits: u, v, filter, wraps, slot, then the LOD fields from LodAt
+  // (direct LOD, level 24, q, six gradients, shift 8, LOD u and v) up to LodEnd, then the tag.
+  localparam int unsigned LodAt   = 2 * CoordW + 14;
+  localparam int unsigned LodGrad = LodAt + 25 + QW;              // the first gradient
+  localparam int unsigned LodLoc  = LodGrad + 6 * GradW + 8;      // lod_u, past the shift
+  localparam int unsigned LodEnd  = LodLoc + 2 * LocW;
+  localparam int unsigned ReqBits = LodEnd + TagW;
 
   logic [InBits-1:0] in_q;
   always_ff @(posedge clk_i) in_q <= {in_q[InBits-2:0], din_i};
@@ -83,25 +89,25 @@ module htx_raster_synth_wrapper #(
     .tex_req_wrap_v_o(tq_bits[2*CoordW+4 +: 2]),
     .tex_req_slot_o(tq_bits[2*CoordW+6 +: 8]),
     .tex_req_lod_direct_o(tq_lod_direct),
-    .tex_req_lod_o(tq_bits[2*CoordW+15 +: 24]),
-    .tex_req_lod_q_o(tq_bits[2*CoordW+39 +: QW]),
-    .tex_req_lod_gux_o(tq_bits[2*CoordW+39+QW +: GradW]),
-    .tex_req_lod_guy_o(tq_bits[2*CoordW+39+QW+GradW +: GradW]),
-    .tex_req_lod_gvx_o(tq_bits[2*CoordW+39+QW+2*GradW +: GradW]),
-    .tex_req_lod_gvy_o(tq_bits[2*CoordW+39+QW+3*GradW +: GradW]),
-    .tex_req_lod_gqx_o(tq_bits[2*CoordW+39+QW+4*GradW +: GradW]),
-    .tex_req_lod_gqy_o(tq_bits[2*CoordW+39+QW+5*GradW +: GradW]),
-    .tex_req_lod_shift_o(tq_bits[2*CoordW+39+QW+6*GradW +: 8]),
-    .tex_req_lod_u_o(tq_bits[2*CoordW+47+QW+6*GradW +: LocW]),
-    .tex_req_lod_v_o(tq_bits[2*CoordW+47+QW+6*GradW+LocW +: LocW]),
+    .tex_req_lod_o(tq_bits[LodAt+1 +: 24]),
+    .tex_req_lod_q_o(tq_bits[LodAt+25 +: QW]),
+    .tex_req_lod_gux_o(tq_bits[LodGrad +: GradW]),
+    .tex_req_lod_guy_o(tq_bits[LodGrad+GradW +: GradW]),
+    .tex_req_lod_gvx_o(tq_bits[LodGrad+2*GradW +: GradW]),
+    .tex_req_lod_gvy_o(tq_bits[LodGrad+3*GradW +: GradW]),
+    .tex_req_lod_gqx_o(tq_bits[LodGrad+4*GradW +: GradW]),
+    .tex_req_lod_gqy_o(tq_bits[LodGrad+5*GradW +: GradW]),
+    .tex_req_lod_shift_o(tq_bits[LodGrad+6*GradW +: 8]),
+    .tex_req_lod_u_o(tq_bits[LodLoc +: LocW]),
+    .tex_req_lod_v_o(tq_bits[LodLoc+LocW +: LocW]),
     .tex_req_tag_o(tq_tag),
     .tex_out_valid_i(to_valid_q),
     .tex_out_ready_o(to_ready),
     .tex_out_rgba_i(in_q[38 +: 32]),
     .tex_out_tag_i(to_tag_q)
   );
-  assign tq_bits[2*CoordW+14] = tq_lod_direct;
-  assign tq_bits[2*CoordW+47+QW+6*GradW+2*LocW +: TagW] = tq_tag;
+  assign tq_bits[LodAt] = tq_lod_direct;
+  assign tq_bits[LodEnd +: TagW] = tq_tag;
 
   always_ff @(posedge clk_i) begin
     if (!to_valid_q || to_ready) begin
@@ -110,12 +116,10 @@ module htx_raster_synth_wrapper #(
     end
   end
 
-  localparam int unsigned LodLo = 2 * CoordW + 14;                          // tex_req_lod_direct_o
-  localparam int unsigned LodHi = 2 * CoordW + 47 + QW + 6 * GradW + 2 * LocW;  // past lod_v
   logic [ReqBits-1:0] req_kept;
   always_comb begin
     req_kept = tq_bits;
-    if (!Full) req_kept[LodHi-1:LodLo] = '0;
+    if (!Full) req_kept[LodEnd-1:LodAt] = '0;
   end
 
   logic [OutBits-1:0] out_q;

@@ -34,6 +34,24 @@ void append_be32(std::string& s, uint32_t v) {
   for (int shift = 24; shift >= 0; shift -= 8) s.push_back(static_cast<char>(v >> shift));
 }
 
+const std::string kPngSignature = "\x89PNG\r\n\x1a\n";
+
+bool is_png(const std::string& bytes) { return bytes.compare(0, kPngSignature.size(), kPngSignature) == 0; }
+
+// Calls visit(at, length, type) for each whole chunk of a PNG in order (at: where its length field
+// is) until visit returns false. Returns npos when visit stopped the walk, else where the chunk
+// that runs past the file's end begins (the file's end when none is left).
+template <class Visit>
+size_t walk_png_chunks(const std::string& png, Visit visit) {
+  for (size_t at = kPngSignature.size();;) {
+    if (at + 12 > png.size()) return at;
+    const uint32_t length = be32(png, at);
+    if (length > png.size() - at - 12) return at;
+    if (!visit(at, length, std::string_view(png.data() + at + 4, 4))) return std::string::npos;
+    at += 12 + length;
+  }
+}
+
 // A palette PNG's PLTE chunk: where it starts and how many entries it has (0 entries: not a
 // palette PNG, or a structure the decoder will refuse itself).
 struct PaletteChunk {
@@ -42,17 +60,15 @@ struct PaletteChunk {
 };
 
 PaletteChunk find_palette(const std::string& png) {
-  static const std::string kSignature = "\x89PNG\r\n\x1a\n";
   constexpr size_t kColourTypeAt = 8 + 8 + 9;  // IHDR's data: width, height, bit depth, colour type
-  if (png.compare(0, kSignature.size(), kSignature) != 0 || png.size() <= kColourTypeAt || png[kColourTypeAt] != 3)
-    return {};
-  for (size_t at = kSignature.size(); at + 12 <= png.size();) {
-    const uint32_t length = be32(png, at);
-    if (length > png.size() - at - 12) return {};
-    if (png.compare(at + 4, 4, "PLTE") == 0) return length % 3 == 0 ? PaletteChunk{at, length / 3} : PaletteChunk{};
-    at += 12 + length;
-  }
-  return {};
+  if (!is_png(png) || png.size() <= kColourTypeAt || png[kColourTypeAt] != 3) return {};
+  PaletteChunk plte;
+  walk_png_chunks(png, [&](size_t at, uint32_t length, std::string_view type) {
+    if (type != "PLTE") return true;
+    if (length % 3 == 0) plte = {at, length / 3};
+    return false;
+  });
+  return plte;
 }
 
 // The PNG with its palette padded to 256 entries of one grey level (the chunk's CRC made anew).
@@ -69,20 +85,15 @@ std::string with_padded_palette(const std::string& png, const PaletteChunk& plte
 
 // A PNG's chunks each end with the CRC-32 of their type and data, which stb_image does not check
 // (nor zlib's own checksum): a damaged byte decoded silently into a wrong texel. Each chunk the
-// decoder reads, up to IEND, is checked here, and a file that ends before IEND (a chunk running past its end, or none
-// left) is refused too: stb_image decoded such a file when its pixel data came before the damage.
+// decoder reads, up to IEND, is checked here, and a file that ends before IEND (a chunk running
+// past its end, or none left) is refused too: stb_image decoded such a file when its pixel data
+// came before the damage.
 void check_png_chunks(const std::string& png, const std::string& path) {
-  static const std::string kSignature = "\x89PNG\r\n\x1a\n";
-  if (png.compare(0, kSignature.size(), kSignature) != 0) return;
-  for (size_t at = kSignature.size();;) {
-    const uint32_t length = at + 12 <= png.size() ? be32(png, at) : 0;
-    if (at + 12 > png.size() || length > png.size() - at - 12)
-      throw std::runtime_error("cannot load image '" + path + "': it ends before its IEND chunk, in the chunk at byte " +
-                               std::to_string(at) + " (a truncated or corrupt PNG)");
+  if (!is_png(png)) return;
+  const size_t end = walk_png_chunks(png, [&](size_t at, uint32_t length, std::string_view type) {
     // The chunks the decoder reads: the critical ones (an upper-case first letter), tRNS
     // (transparency) and CgBI. Other ancillary chunks are ignored, damaged or not, as libpng
     // drops them with a warning.
-    const std::string_view type(png.data() + at + 4, 4);
     const bool read = !(type[0] & 0x20) || type == "tRNS" || type == "CgBI";
     const uint32_t crc = fw::crc32(reinterpret_cast<const uint8_t*>(png.data() + at + 4), size_t{length} + 4);
     if (read && crc != be32(png, at + 8 + length)) {
@@ -92,9 +103,11 @@ void check_png_chunks(const std::string& png, const std::string& path) {
       throw std::runtime_error("cannot load image '" + path + "': the CRC of its " + shown + " chunk at byte " +
                                std::to_string(at) + " does not match (a corrupt PNG)");
     }
-    if (png.compare(at + 4, 4, "IEND") == 0) return;
-    at += 12 + length;
-  }
+    return type != "IEND";
+  });
+  if (end != std::string::npos)
+    throw std::runtime_error("cannot load image '" + path + "': it ends before its IEND chunk, in the chunk at byte " +
+                             std::to_string(end) + " (a truncated or corrupt PNG)");
 }
 
 std::vector<uint8_t> decode(const std::string& bytes, const std::string& path, int* w, int* h) {

@@ -75,6 +75,7 @@ class ConsoleClient {
   uint8_t next_byte();
   // The next byte if one comes within `wait` (false: none came; nothing is thrown).
   bool next_byte_within(std::chrono::milliseconds wait, uint8_t* byte);
+  std::string timeout_seconds() const;  // the timeout as the error messages give it ("2", "0.5")
   [[noreturn]] void silence() const;
   // sync's bound on bytes that keep coming without a prompt: a deadline, which each whole packet
   // moves on by the timeout (a console sending the rest of a frame a grab left is a console), and

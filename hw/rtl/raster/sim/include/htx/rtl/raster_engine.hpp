@@ -30,10 +30,12 @@ struct RtlStats {
   double setup_cycles_per_triangle = 0;
 };
 
-// Renders textured and untextured triangles (Gouraud colour linear in screen space). Texture t goes
-// to slot t. Throws std::invalid_argument when the configuration is not one the RTL builds (the
-// named `full` and `icebreaker` with their exact field values, perspective_color included, and the
-// methods a subset of the built ones; rtl_config() gives the configuration the RTL renders), when a triangle asks for a method, filter or format the configuration does not build,
+// Renders textured and untextured triangles (Gouraud colour perspective-correct in `full`, linear in
+// screen space in `icebreaker`). Texture t goes to slot t. Throws std::invalid_argument when the
+// configuration is not one the RTL builds (the named `full` and `icebreaker` with their exact field
+// values, perspective_color included, and the methods a subset of the built ones; rtl_config()
+// gives the configuration the RTL renders), when a triangle asks for a method, filter or format the
+// configuration does not build,
 // names a texture beyond the built slots (8 / 4) or a bad texture, when the textures exceed the
 // Verilated texture memory (128K / 16K texels), or the frame exceeds the 262144-pixel memories or
 // 4096 per side. An `icebreaker` configuration whose methods are AFFINE and RECIP_LUT at most is
