@@ -11,9 +11,8 @@ void register_scenes(CLI::App& app) {
   auto* cmd = app.add_subcommand("scenes", "List the built-in scenes (use as NAME or NAME:key=value,...)");
   cmd->callback([] {
     for (const SceneInfo& s : builtin_scenes()) {
-      std::cout << std::left << std::setw(10) << s.name << s.description;
-      if (!s.params.empty()) std::cout << "  [" << s.params << "]";
-      std::cout << "\n";
+      std::cout << std::left << std::setw(10) << s.name << s.description << "\n";
+      if (!s.params.empty()) std::cout << std::setw(10) << "" << describe_scene_params(s.params) << "\n";
     }
     std::cout << "Any FILE.obj (with its MTL and PNG textures) renders as a scene too.\n";
   });

@@ -520,5 +520,35 @@ TEST(RefIo, SceneSpecsAreCheckedAndDeterministic) {
   }
 }
 
+// `htx scenes` lists each parameter as the scene reads it: every listed bound is accepted, a step
+// past it refused, and an integer parameter refuses a fraction.
+TEST(RefIo, ListedSceneParametersAreTheOnesTheScenesTake) {
+  EXPECT_EQ(describe_scene_params(builtin_scenes().front().params),
+            "pitch=8 (0.5..60 deg down), height=1 (0.05..10 eye height), grid=8 (1..64 quads a side)");
+  size_t listed = 0;
+  for (const SceneInfo& info : builtin_scenes()) {
+    ASSERT_FALSE(info.params.empty()) << info.name;
+    for (const SceneParamInfo& p : info.params) {
+      ++listed;
+      const auto spec = [&](double v) {
+        char text[48];
+        std::snprintf(text, sizeof text, "%.10g", v);
+        return info.name + ":" + p.key + "=" + text;
+      };
+      EXPECT_GE(p.fallback, p.min) << info.name << " " << p.key;
+      EXPECT_LE(p.fallback, p.max) << info.name << " " << p.key;
+      const double step = p.integer ? 1.0 : (p.max - p.min) * 1e-3;
+      EXPECT_NO_THROW(make_builtin_scene(spec(p.min))) << spec(p.min);
+      EXPECT_NO_THROW(make_builtin_scene(spec(p.max))) << spec(p.max);
+      EXPECT_THROW(make_builtin_scene(spec(p.min - step)), std::invalid_argument) << spec(p.min - step);
+      EXPECT_THROW(make_builtin_scene(spec(p.max + step)), std::invalid_argument) << spec(p.max + step);
+      if (p.integer) {
+        EXPECT_THROW(make_builtin_scene(spec(p.fallback + 0.5)), std::invalid_argument) << info.name;
+      }
+    }
+  }
+  EXPECT_EQ(listed, 23u);
+}
+
 }  // namespace
 }  // namespace htx

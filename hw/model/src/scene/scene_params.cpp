@@ -38,8 +38,17 @@ SceneParams::SceneParams(const std::string& spec) {
   }
 }
 
-double SceneParams::number(const std::string& key, double fallback, double min, double max) {
-  used_.insert(key);
+void SceneParams::note(const std::string& key, double fallback, double min, double max, bool integer,
+                       const char* unit) {
+  if (used_.insert(key).second) asked_.push_back({key, fallback, min, max, integer, unit});
+}
+
+double SceneParams::number(const std::string& key, double fallback, double min, double max, const char* unit) {
+  note(key, fallback, min, max, false, unit);
+  return read(key, fallback, min, max);
+}
+
+double SceneParams::read(const std::string& key, double fallback, double min, double max) {
   const auto it = values_.find(key);
   if (it == values_.end()) return fallback;
   // A decimal number (no hex, no spaces, no nan or inf); one too small for a double is its
@@ -59,11 +68,23 @@ double SceneParams::number(const std::string& key, double fallback, double min, 
   return v;
 }
 
-int SceneParams::integer(const std::string& key, int fallback, int min, int max) {
-  const double v = number(key, fallback, min, max);
+int SceneParams::integer(const std::string& key, int fallback, int min, int max, const char* unit) {
+  note(key, fallback, min, max, true, unit);
+  const double v = read(key, fallback, min, max);
   if (v != std::floor(v))
     throw std::invalid_argument("scene '" + name_ + "': parameter " + key + " must be an integer");
   return static_cast<int>(v);
+}
+
+std::string describe_scene_params(const std::vector<SceneParamInfo>& params) {
+  std::string out;
+  for (const SceneParamInfo& p : params) {
+    if (!out.empty()) out += ", ";
+    out += p.key + "=" + format_number(p.fallback) + " (" + format_number(p.min) + ".." + format_number(p.max);
+    if (!p.unit.empty()) out += " " + p.unit;
+    out += ")";
+  }
+  return out;
 }
 
 void SceneParams::check_all_used() const {

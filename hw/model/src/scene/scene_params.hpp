@@ -4,6 +4,9 @@
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
+
+#include "htx/model/scenes.hpp"
 
 namespace htx {
 
@@ -14,8 +17,10 @@ class SceneParams {
   explicit SceneParams(const std::string& spec);
 
   const std::string& name() const { return name_; }
-  double number(const std::string& key, double fallback, double min, double max);
-  int integer(const std::string& key, int fallback, int min, int max);
+  double number(const std::string& key, double fallback, double min, double max, const char* unit = "");
+  int integer(const std::string& key, int fallback, int min, int max, const char* unit = "");
+  // Every parameter asked for so far, in the order first asked.
+  const std::vector<SceneParamInfo>& asked() const { return asked_; }
   // Throws when a given key was never asked for (a misspelt parameter must not pass silently).
   void check_all_used() const;
 
@@ -23,6 +28,10 @@ class SceneParams {
   std::string name_;
   std::map<std::string, std::string> values_;
   std::set<std::string> used_;
+  std::vector<SceneParamInfo> asked_;
+
+  double read(const std::string& key, double fallback, double min, double max);
+  void note(const std::string& key, double fallback, double min, double max, bool integer, const char* unit);
 };
 
 }  // namespace htx

@@ -9,11 +9,22 @@
 
 namespace htx {
 
+// A scene parameter as the scene reads it (so the listing and the parsing cannot drift apart).
+struct SceneParamInfo {
+  std::string key;
+  double fallback, min, max;
+  bool integer;
+  std::string unit;  // what the number counts, or empty
+};
+
 struct SceneInfo {
   std::string name;
   std::string description;  // one line
-  std::string params;       // "key=default (meaning), ..." or empty
+  std::vector<SceneParamInfo> params;
 };
+
+// "key=default (min..max unit), ..." (empty for no parameters).
+std::string describe_scene_params(const std::vector<SceneParamInfo>& params);
 
 const std::vector<SceneInfo>& builtin_scenes();
 

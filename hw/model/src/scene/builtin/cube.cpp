@@ -5,8 +5,8 @@
 namespace htx::scenes {
 
 Scene make_cube(SceneParams& p) {
-  const double yaw = p.number("yaw", 30, -360, 360);
-  const double pitch = p.number("pitch", 25, -90, 90);
+  const double yaw = p.number("yaw", 30, -360, 360, "deg");
+  const double pitch = p.number("pitch", 25, -90, 90, "deg");
   const double distance = p.number("distance", 4.5, 2.0, 100);
   Scene s;
   s.textures.push_back(default_checker());

@@ -7,9 +7,9 @@
 namespace htx::scenes {
 
 Scene make_floor(SceneParams& p) {
-  const double pitch = p.number("pitch", 8, 0.5, 60);    // degrees the camera looks down
-  const double height = p.number("height", 1, 0.05, 10);  // eye height above the plane
-  const int grid = p.integer("grid", 8, 1, 64);           // quads per side
+  const double pitch = p.number("pitch", 8, 0.5, 60, "deg down");
+  const double height = p.number("height", 1, 0.05, 10, "eye height");  // above the plane
+  const int grid = p.integer("grid", 8, 1, 64, "quads a side");
   Scene s;
   s.textures.push_back(default_checker());
   s.camera.eye = {0, height, 0};

@@ -5,8 +5,8 @@
 namespace htx::scenes {
 
 Scene make_pan(SceneParams& p) {
-  const int step = p.integer("step", 1, -65536, 65536);  // in 1/256 texel
-  const double tilt = p.number("tilt", 20, 0, 70);
+  const int step = p.integer("step", 1, -65536, 65536, "1/256 texel");
+  const double tilt = p.number("tilt", 20, 0, 70, "deg");
   Scene s;
   s.textures.push_back(gradient_texture(TexFormat::RGB565, 5));  // 32x32: about 9 pixels per texel
   s.camera.eye = {0, 0, 0};

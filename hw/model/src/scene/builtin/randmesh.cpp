@@ -10,8 +10,8 @@ namespace htx::scenes {
 
 Scene make_randmesh(SceneParams& p) {
   const int seed = p.integer("seed", 1, 0, 1 << 30);
-  const int count = p.integer("count", 4, 1, 64);
-  const int points = p.integer("points", 48, 4, 4000);
+  const int count = p.integer("count", 4, 1, 64, "meshes");
+  const int points = p.integer("points", 48, 4, 4000, "a mesh");
   Scene s;
   s.textures.push_back(default_checker());
   s.camera.eye = {0, 0, 0};

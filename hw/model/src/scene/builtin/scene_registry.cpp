@@ -18,29 +18,24 @@ struct Entry {
 
 const std::vector<Entry>& registry() {
   static const std::vector<Entry> entries = {
-      {{"floor", "checkerboard plane at a grazing angle, out to the horizon", "pitch=8 (deg down), height=1, grid=8"},
-       scenes::make_floor},
-      {{"cube", "reference 002's cube: a 64x64 checkerboard on every face, in perspective",
-        "yaw=30, pitch=25 (deg), distance=4.5"},
+      {{"floor", "checkerboard plane at a grazing angle, out to the horizon", {}}, scenes::make_floor},
+      {{"cube", "reference 002's cube: a 64x64 checkerboard on every face, in perspective", {}},
        scenes::make_cube},
-      {{"tunnel", "inside a long textured cylinder, darkening with depth", "segments=16, rings=24, length=60"},
+      {{"tunnel", "inside a long textured cylinder, darkening with depth", {}},
        scenes::make_tunnel},
-      {{"wsweep", "one triangle spanning du texels from depth w to r*w (affine error study)",
-        "r=10 (1..1000), du=256 (texels)"},
+      {{"wsweep", "one triangle spanning du texels from depth w to r*w (affine error study)", {}},
        scenes::make_wsweep},
-      {{"nearclip", "triangles crossing the near plane, one or two vertices behind the camera", "near=0.5"},
+      {{"nearclip", "triangles crossing the near plane, one or two vertices behind the camera", {}},
        scenes::make_nearclip},
-      {{"slivers", "a fan of thin triangles sharing edges, plus sub-pixel needles", "spokes=512, needles=64, seed=1"},
+      {{"slivers", "a fan of thin triangles sharing edges, plus sub-pixel needles", {}},
        scenes::make_slivers},
-      {{"bigtri", "triangles hundreds of screens wide, some reaching behind the camera", "size=1000"},
+      {{"bigtri", "triangles hundreds of screens wide, some reaching behind the camera", {}},
        scenes::make_bigtri},
-      {{"wrap", "texture coordinates up to +-2^14 texels, repeat/mirror/clamp, tilted",
-        "offset=16384 (texels, <= 16384), tilt=35 (deg)"},
+      {{"wrap", "texture coordinates up to +-2^14 texels, repeat/mirror/clamp, tilted", {}},
        scenes::make_wrap},
-      {{"pan", "magnified texture panned by step/256 texel", "step=1 (1/256 texel), tilt=20 (deg)"},
+      {{"pan", "magnified texture panned by step/256 texel", {}},
        scenes::make_pan},
-      {{"randmesh", "random closed meshes (convex hulls on random ellipsoids), seeded",
-        "seed=1, count=4, points=48"},
+      {{"randmesh", "random closed meshes (convex hulls on random ellipsoids), seeded", {}},
        scenes::make_randmesh},
   };
   return entries;
@@ -57,8 +52,14 @@ bool ends_with_obj(const std::string& s) {
 
 const std::vector<SceneInfo>& builtin_scenes() {
   static const std::vector<SceneInfo> infos = [] {
+    // Each scene's parameters as its maker asks for them, read by making it with the defaults.
     std::vector<SceneInfo> v;
-    for (const Entry& e : registry()) v.push_back(e.info);
+    for (const Entry& e : registry()) {
+      SceneParams defaults(e.info.name);
+      e.make(defaults);
+      v.push_back(e.info);
+      v.back().params = defaults.asked();
+    }
     return v;
   }();
   return infos;

@@ -7,8 +7,8 @@
 namespace htx::scenes {
 
 Scene make_tunnel(SceneParams& p) {
-  const int segments = p.integer("segments", 16, 3, 256);
-  const int rings = p.integer("rings", 24, 1, 256);
+  const int segments = p.integer("segments", 16, 3, 256, "around");
+  const int rings = p.integer("rings", 24, 1, 256, "along");
   const double length = p.number("length", 60, 1, 1000);
   Scene s;
   s.textures.push_back(checkerboard_texture(TexFormat::RGB565, 6, 3, kYellow, kRed));

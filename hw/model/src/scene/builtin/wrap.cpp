@@ -7,8 +7,8 @@ namespace htx::scenes {
 Scene make_wrap(SceneParams& p) {
   // Texels: the repeat panel's coordinates end at +offset, the mirror panel's start at -offset, the
   // mixed panel has both; the clamp panel stays at -16..80 (so at small offsets it reaches farthest).
-  const double offset = p.number("offset", 16384, 0, 16384);
-  const double tilt = p.number("tilt", 35, 0, 80);           // degrees about the vertical axis
+  const double offset = p.number("offset", 16384, 0, 16384, "texels");
+  const double tilt = p.number("tilt", 35, 0, 80, "deg");  // about the vertical axis
   Scene s;
   s.textures.push_back(gradient_texture(TexFormat::RGB565, 6));
   s.camera.eye = {0, 0, 0};

@@ -10,8 +10,8 @@
 namespace htx::scenes {
 
 Scene make_wsweep(SceneParams& p) {
-  const double r = p.number("r", 10, 1, 1000);
-  const double du = p.number("du", 256, 1, 4096);  // texels spanned from left edge to apex
+  const double r = p.number("r", 10, 1, 1000, "depth ratio");
+  const double du = p.number("du", 256, 1, 4096, "texels");  // texels spanned from left edge to apex
   Scene s;
   s.textures.push_back(gradient_texture(TexFormat::RGB565, 6));
   s.camera.eye = {0, 0, 0};
