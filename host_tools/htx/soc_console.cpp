@@ -33,6 +33,8 @@ SocConsole::~SocConsole() {
 }
 
 sim::SimResult SocConsole::finish(std::chrono::milliseconds limit) {
+  if (failure_) throw std::runtime_error(*failure_);
+  if (ended_) return *ended_;
   if (result_.wait_for(limit) != std::future_status::ready) {
     stop_ = true;
     thread_.join();
@@ -40,6 +42,26 @@ sim::SimResult SocConsole::finish(std::chrono::milliseconds limit) {
   }
   thread_.join();
   return result_.get();  // rethrows what the run threw
+}
+
+std::optional<std::string> SocConsole::ended_early() {
+  if (!ended_ && !failure_) {
+    if (result_.wait_for(std::chrono::milliseconds(0)) != std::future_status::ready) return std::nullopt;
+    thread_.join();
+    try {
+      ended_ = result_.get();
+    } catch (const std::exception& e) {
+      failure_ = e.what();
+    }
+  }
+  if (failure_) return "the simulated SoC had failed: " + *failure_;
+  const sim::SimResult& r = *ended_;
+  std::string how = "the simulated SoC had stopped after " + std::to_string(r.cycles) + " clocks: " +
+                    sim::to_string(r.reason);
+  if (r.reason == sim::StopReason::Exit || r.reason == sim::StopReason::ToHost)
+    how += " with code " + std::to_string(r.exit_code);
+  if (!r.note.empty()) how += " (" + r.note + ")";
+  return how;
 }
 
 }  // namespace htx

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <future>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -30,6 +31,10 @@ class SocConsole {
   // Waits up to `limit` for the run to end (the firmware exits after `quit`) and returns how it
   // ended. Throws std::runtime_error when it has not ended by then (it is stopped) or failed.
   sim::SimResult finish(std::chrono::milliseconds limit);
+  // When the run has already ended (the firmware exited, or the CPU stopped retiring), how: "the
+  // simulated SoC had stopped after N clocks: stuck (no instruction retired in ...)". A console
+  // that answers nothing then says why (a firmware that is not the console, or one that hangs).
+  std::optional<std::string> ended_early();
 
  private:
   std::string pty_;
@@ -38,6 +43,9 @@ class SocConsole {
   std::ostringstream putchar_;  // SYSCTRL.SIM_PUTCHAR output (the console firmware prints none)
   std::unique_ptr<sim::SocSim> soc_;
   std::future<sim::SimResult> result_;
+  // result_'s value or error once taken (a future gives it once).
+  std::optional<sim::SimResult> ended_;
+  std::optional<std::string> failure_;
   std::thread thread_;
 };
 

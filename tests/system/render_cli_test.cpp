@@ -364,4 +364,19 @@ TEST(SystemRenderCli, MistakesAreNamed) {
   EXPECT_NE(r.err.find("htx scenes: standard output could not be written"), std::string::npos) << r.err;
 }
 
+
+// `--engine soc` with a firmware that is not the console: the console's silence is reported with
+// how the SoC's run had ended (here an exit after a few thousand clocks; the timeout's message
+// alone was all there was before).
+TEST(SystemRenderCli, ASocThatStoppedSaysHowWhenTheConsoleIsQuiet) {
+  const auto r = htx::test::run_program({HTX_BIN, "render", "cube", "--engine", "soc", "--firmware", HTX_SIM_CALLS_ELF,
+                                         "--timeout", "2", "--out", temp_path("quiet.png")},
+                                        60s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("the console said nothing for 2 s"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("; the simulated SoC had stopped after "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" clocks: tohost with code 0"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(temp_path("quiet.png")));
+}
+
 }  // namespace
