@@ -186,22 +186,24 @@ void render_on_console(const RenderArgs& a) {
 #ifdef HTX_HAVE_SOC_CONSOLE
     std::cerr << "soc: starting the console firmware on the simulated SoC" << std::endl;
     SocConsole sim(console_firmware(a));
-    console::SerialPort port(sim.pty(), 115200);  // (a pseudo-terminal has no rate; --baud is the board's)
-    console::ConsoleClient client(port, timeout);
+    std::optional<console::SerialPort> port;  // open until the run ends after `quit`
     try {
+      port.emplace(sim.pty(), 115200);  // (a pseudo-terminal has no rate; --baud is the board's)
+      console::ConsoleClient client(*port, timeout);
       client.sync();
       // The simulated line has no cable to limit it: 1 Mbaud (12 clocks a bit) takes the transfers,
       // most of the run at 115,200 baud, down by a factor of nine.
       switch_line(client, draw, kSocBaud);
       drawn = draw_on_console(client, draw);
       if (want_caps) caps = console_caps(client);
+      port->write("quit\r");
     } catch (const std::runtime_error& e) {
-      // A console that went quiet because the SoC's run had ended says how it ended.
+      // A console that went quiet because the SoC's run had ended (its pseudo-terminal closes then)
+      // says how it ended.
       if (const std::optional<std::string> how = sim.ended_early())
         throw std::runtime_error(std::string(e.what()) + "; " + *how);
       throw;
     }
-    port.write("quit\r");
     const sim::SimResult r = sim.finish(timeout);
     where = "the simulated SoC, " + std::to_string(r.cycles) + " clocks";
 #else

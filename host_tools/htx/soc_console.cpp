@@ -22,9 +22,17 @@ SocConsole::SocConsole(const std::string& elf_path) {
   opt.max_cycles = kMaxCycles;
   opt.stop = &stop_;
   soc_ = std::make_unique<sim::SocSim>(elf, opt, uart_.get(), putchar_);
-  std::packaged_task<sim::SimResult()> task([this] { return soc_->run(); });
-  result_ = task.get_future();
-  thread_ = std::thread(std::move(task));
+  result_ = done_.get_future();
+  thread_ = std::thread([this] {
+    try {
+      done_.set_value(soc_->run());
+    } catch (...) {
+      done_.set_exception(std::current_exception());
+    }
+    // The pseudo-terminal closes once the run has ended (and how is known), so that a client
+    // waiting on it fails at once rather than after its timeout.
+    uart_.reset();
+  });
 }
 
 SocConsole::~SocConsole() {

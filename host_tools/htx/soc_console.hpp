@@ -26,14 +26,14 @@ class SocConsole {
   SocConsole(const SocConsole&) = delete;
   SocConsole& operator=(const SocConsole&) = delete;
 
-  // The pseudo-terminal the UART is on (a console::SerialPort opens it).
+  // The pseudo-terminal the UART is on (a console::SerialPort opens it); gone once the run ends.
   const std::string& pty() const { return pty_; }
   // Waits up to `limit` for the run to end (the firmware exits after `quit`) and returns how it
   // ended. Throws std::runtime_error when it has not ended by then (it is stopped) or failed.
   sim::SimResult finish(std::chrono::milliseconds limit);
   // When the run has already ended (the firmware exited, or the CPU stopped retiring), how: "the
-  // simulated SoC had stopped after N clocks: stuck (no instruction retired in ...)". A console
-  // that answers nothing then says why (a firmware that is not the console, or one that hangs).
+  // simulated SoC had stopped after N clocks: stuck (no instruction retired in ...)". The
+  // pseudo-terminal closes as the run ends, so a client on it fails at once and can say why.
   std::optional<std::string> ended_early();
 
  private:
@@ -42,6 +42,7 @@ class SocConsole {
   std::atomic<bool> stop_{false};
   std::ostringstream putchar_;  // SYSCTRL.SIM_PUTCHAR output (the console firmware prints none)
   std::unique_ptr<sim::SocSim> soc_;
+  std::promise<sim::SimResult> done_;
   std::future<sim::SimResult> result_;
   // result_'s value or error once taken (a future gives it once).
   std::optional<sim::SimResult> ended_;

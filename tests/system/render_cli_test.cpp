@@ -5,6 +5,7 @@
 // before anything is rendered or written.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -365,15 +366,16 @@ TEST(SystemRenderCli, MistakesAreNamed) {
 }
 
 
-// `--engine soc` with a firmware that is not the console: the console's silence is reported with
-// how the SoC's run had ended (here an exit after a few thousand clocks; the timeout's message
-// alone was all there was before).
+// `--engine soc` with a firmware that is not the console: the pseudo-terminal closes as the SoC's
+// run ends, and the error says how it ended (here an exit after a few thousand clocks). Before,
+// the console's silence was reported alone, after the whole --timeout.
 TEST(SystemRenderCli, ASocThatStoppedSaysHowWhenTheConsoleIsQuiet) {
+  const auto t0 = std::chrono::steady_clock::now();
   const auto r = htx::test::run_program({HTX_BIN, "render", "cube", "--engine", "soc", "--firmware", HTX_SIM_CALLS_ELF,
-                                         "--timeout", "2", "--out", temp_path("quiet.png")},
+                                         "--timeout", "100", "--out", temp_path("quiet.png")},
                                         60s);
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 50s);  // not the timeout
   EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.err.find("the console said nothing for 2 s"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("; the simulated SoC had stopped after "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(" clocks: tohost with code 0"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(temp_path("quiet.png")));
