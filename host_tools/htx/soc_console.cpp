@@ -40,29 +40,39 @@ SocConsole::~SocConsole() {
   if (thread_.joinable()) thread_.join();
 }
 
+bool SocConsole::take_result(std::chrono::milliseconds wait) {
+  if (ended_ || failure_) return true;
+  if (result_.wait_for(wait) != std::future_status::ready) return false;
+  thread_.join();
+  try {
+    ended_ = result_.get();
+  } catch (...) {
+    failure_ = std::current_exception();
+  }
+  return true;
+}
+
 sim::SimResult SocConsole::finish(std::chrono::milliseconds limit) {
-  if (failure_) throw std::runtime_error(*failure_);
-  if (ended_) return *ended_;
-  if (result_.wait_for(limit) != std::future_status::ready) {
+  if (!take_result(limit)) {
     stop_ = true;
     thread_.join();
     throw std::runtime_error("the simulated SoC did not end after quit");
   }
-  thread_.join();
-  return result_.get();  // rethrows what the run threw
+  if (failure_) std::rethrow_exception(failure_);  // what the run threw
+  return *ended_;
 }
 
 std::optional<std::string> SocConsole::ended_early() {
-  if (!ended_ && !failure_) {
-    if (result_.wait_for(std::chrono::milliseconds(0)) != std::future_status::ready) return std::nullopt;
-    thread_.join();
+  if (!take_result(std::chrono::milliseconds(0))) return std::nullopt;
+  if (failure_) {
     try {
-      ended_ = result_.get();
+      std::rethrow_exception(failure_);
     } catch (const std::exception& e) {
-      failure_ = e.what();
+      return std::string("the simulated SoC had failed: ") + e.what();
+    } catch (...) {
+      return std::string("the simulated SoC had failed");
     }
   }
-  if (failure_) return "the simulated SoC had failed: " + *failure_;
   const sim::SimResult& r = *ended_;
   std::string how = "the simulated SoC had stopped after " + std::to_string(r.cycles) + " clocks: " +
                     sim::to_string(r.reason);

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <exception>
 #include <future>
 #include <memory>
 #include <optional>
@@ -46,8 +47,12 @@ class SocConsole {
   std::future<sim::SimResult> result_;
   // result_'s value or error once taken (a future gives it once).
   std::optional<sim::SimResult> ended_;
-  std::optional<std::string> failure_;
+  std::exception_ptr failure_;
   std::thread thread_;
+
+  // Takes the run's result into ended_ or failure_ if it comes within `wait` (at once when it
+  // was taken before); false when the run is still going.
+  bool take_result(std::chrono::milliseconds wait);
 };
 
 }  // namespace htx

@@ -187,7 +187,6 @@ TEST(SystemRenderCli, OutputsThatCannotBeWrittenAreRefusedBeforeRendering) {
   EXPECT_TRUE(std::filesystem::is_regular_file(target));
 }
 
-
 // Options that belong to other engines are refused rather than ignored; values outside what an
 // option takes are the option parser's refusals (status 2).
 TEST(SystemRenderCli, OptionsOfOtherEnginesAndValuesOutOfRangeAreRefused) {
@@ -364,7 +363,6 @@ TEST(SystemRenderCli, MistakesAreNamed) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("htx scenes: standard output could not be written"), std::string::npos) << r.err;
 }
-
 
 // `--engine soc` with a firmware that is not the console: the pseudo-terminal closes as the SoC's
 // run ends, and the error says how it ended (here an exit after a few thousand clocks). Before,

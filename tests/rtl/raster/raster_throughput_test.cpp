@@ -23,7 +23,7 @@ const Method kBuilt[] = {Method::Affine, Method::Subdiv, Method::RecipLut, Metho
 
 TEST(RasterThroughput, BigtriPixelsPerClockPerMethod) {
   for (const char* name : {"full", "icebreaker"}) {
-    const ModelConfig& cfg = model_config(name == std::string("icebreaker") ? "icebreaker" : "full");
+    const ModelConfig& cfg = model_config(name);
     // icebreaker divides slowly: a quarter of the pixels is enough for its figure.
     const bool ice = name == std::string("icebreaker");
     ScreenScene s = prepare_screen_scene(make_builtin_scene("bigtri"), ice ? 80 : 160, ice ? 60 : 120);

@@ -1,5 +1,6 @@
 #include "scene_params.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -40,7 +41,11 @@ SceneParams::SceneParams(const std::string& spec) {
 
 void SceneParams::note(const std::string& key, double fallback, double min, double max, bool integer,
                        const char* unit) {
-  if (used_.insert(key).second) asked_.push_back({key, fallback, min, max, integer, unit});
+  if (!was_asked(key)) asked_.push_back({key, fallback, min, max, integer, unit});
+}
+
+bool SceneParams::was_asked(const std::string& key) const {
+  return std::any_of(asked_.begin(), asked_.end(), [&](const SceneParamInfo& p) { return p.key == key; });
 }
 
 double SceneParams::number(const std::string& key, double fallback, double min, double max, const char* unit) {
@@ -89,7 +94,7 @@ std::string describe_scene_params(const std::vector<SceneParamInfo>& params) {
 
 void SceneParams::check_all_used() const {
   for (const auto& [key, value] : values_)
-    if (!used_.count(key))
+    if (!was_asked(key))
       throw std::invalid_argument("scene '" + name_ + "' has no parameter '" + key + "'");
 }
 

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <map>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -27,9 +26,9 @@ class SceneParams {
  private:
   std::string name_;
   std::map<std::string, std::string> values_;
-  std::set<std::string> used_;
   std::vector<SceneParamInfo> asked_;
 
+  bool was_asked(const std::string& key) const;
   double read(const std::string& key, double fallback, double min, double max);
   void note(const std::string& key, double fallback, double min, double max, bool integer, const char* unit);
 };

@@ -12,31 +12,23 @@ namespace htx {
 namespace {
 
 struct Entry {
-  SceneInfo info;
+  const char* name;
+  const char* description;  // one line
   Scene (*make)(SceneParams&);
 };
 
 const std::vector<Entry>& registry() {
   static const std::vector<Entry> entries = {
-      {{"floor", "checkerboard plane at a grazing angle, out to the horizon", {}}, scenes::make_floor},
-      {{"cube", "reference 002's cube: a 64x64 checkerboard on every face, in perspective", {}},
-       scenes::make_cube},
-      {{"tunnel", "inside a long textured cylinder, darkening with depth", {}},
-       scenes::make_tunnel},
-      {{"wsweep", "one triangle spanning du texels from depth w to r*w (affine error study)", {}},
-       scenes::make_wsweep},
-      {{"nearclip", "triangles crossing the near plane, one or two vertices behind the camera", {}},
-       scenes::make_nearclip},
-      {{"slivers", "a fan of thin triangles sharing edges, plus sub-pixel needles", {}},
-       scenes::make_slivers},
-      {{"bigtri", "triangles hundreds of screens wide, some reaching behind the camera", {}},
-       scenes::make_bigtri},
-      {{"wrap", "texture coordinates up to +-2^14 texels, repeat/mirror/clamp, tilted", {}},
-       scenes::make_wrap},
-      {{"pan", "magnified texture panned by step/256 texel", {}},
-       scenes::make_pan},
-      {{"randmesh", "random closed meshes (convex hulls on random ellipsoids), seeded", {}},
-       scenes::make_randmesh},
+      {"floor", "checkerboard plane at a grazing angle, out to the horizon", scenes::make_floor},
+      {"cube", "reference 002's cube: a 64x64 checkerboard on every face, in perspective", scenes::make_cube},
+      {"tunnel", "inside a long textured cylinder, darkening with depth", scenes::make_tunnel},
+      {"wsweep", "one triangle spanning du texels from depth w to r*w (affine error study)", scenes::make_wsweep},
+      {"nearclip", "triangles crossing the near plane, one or two vertices behind the camera", scenes::make_nearclip},
+      {"slivers", "a fan of thin triangles sharing edges, plus sub-pixel needles", scenes::make_slivers},
+      {"bigtri", "triangles hundreds of screens wide, some reaching behind the camera", scenes::make_bigtri},
+      {"wrap", "texture coordinates up to +-2^14 texels, repeat/mirror/clamp, tilted", scenes::make_wrap},
+      {"pan", "magnified texture panned by step/256 texel", scenes::make_pan},
+      {"randmesh", "random closed meshes (convex hulls on random ellipsoids), seeded", scenes::make_randmesh},
   };
   return entries;
 }
@@ -55,10 +47,9 @@ const std::vector<SceneInfo>& builtin_scenes() {
     // Each scene's parameters as its maker asks for them, read by making it with the defaults.
     std::vector<SceneInfo> v;
     for (const Entry& e : registry()) {
-      SceneParams defaults(e.info.name);
+      SceneParams defaults(e.name);
       e.make(defaults);
-      v.push_back(e.info);
-      v.back().params = defaults.asked();
+      v.push_back({e.name, e.description, defaults.asked()});
     }
     return v;
   }();
@@ -68,7 +59,7 @@ const std::vector<SceneInfo>& builtin_scenes() {
 Scene make_builtin_scene(const std::string& spec) {
   SceneParams params(spec);
   for (const Entry& e : registry()) {
-    if (e.info.name != params.name()) continue;
+    if (e.name != params.name()) continue;
     Scene s = e.make(params);
     params.check_all_used();
     s.name = spec;
@@ -77,7 +68,7 @@ Scene make_builtin_scene(const std::string& spec) {
   if (ends_with_obj(params.name()))
     throw std::invalid_argument("'" + spec + "': an OBJ file takes no parameters (the built-in scenes do)");
   std::string names;
-  for (const Entry& e : registry()) names += (names.empty() ? "" : ", ") + e.info.name;
+  for (const Entry& e : registry()) names += (names.empty() ? "" : ", ") + std::string(e.name);
   throw std::invalid_argument("unknown scene '" + params.name() + "' (built-in: " + names + "; or a .obj file)");
 }
 
