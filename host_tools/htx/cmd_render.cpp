@@ -27,6 +27,7 @@
 #include "metrics_output.hpp"
 #include "output_path.hpp"
 #include "render_args.hpp"
+#include "render_setup.hpp"
 
 namespace htx {
 
@@ -94,8 +95,9 @@ void run_render(const RenderArgs& given) {
   if (given.timeout_given) throw std::invalid_argument("--timeout is for --engine soc and board");
   // ref draws every triangle exactly (float64 perspective): a method would be ignored without a word.
   if (given.engine == "ref" && !given.method.empty())
-    throw std::invalid_argument("--method: ref draws every triangle exactly; the methods are the model's, rtl's, "
-                                "soc's and board's (ref is what --metrics compares them with)");
+    throw std::invalid_argument(
+        "--method: ref draws every triangle exactly; the methods are the model's, rtl's, "
+        "soc's and board's (ref is what --metrics compares them with)");
   RenderArgs a = given;
   if (a.size.empty()) a.size = "320x240";
   if (a.config.empty()) a.config = "full";
@@ -105,32 +107,16 @@ void run_render(const RenderArgs& given) {
   require_render_outputs(a, scene);
   for (const std::string& note : scene.notes) std::cerr << "htx: " << note << "\n";
   ScreenScene screen = prepare_screen_scene(scene, width, height);
-  if (a.untextured)
-    for (ScreenTri& t : screen.tris) t.state.textured = false;
-  if (!a.method.empty()) {
-    const MethodChoice m = parse_method(a.method);
-    for (ScreenTri& t : screen.tris) {
-      t.state.method = m.method;
-      t.state.subdiv_n = m.subdiv_n;
-    }
-  }
-  if (!a.filter.empty()) {
-    const Filter f = parse_filter(a.filter);
-    for (ScreenTri& t : screen.tris) t.state.filter = f;
-  }
-  // icebreaker-board: `icebreaker` with the board GPU's methods only (AFFINE, RECIP_LUT); the rtl
-  // engine draws it on that GPU, the design gpu_icebreaker_up5k synthesises. A triangle that asks
-  // for another method is refused with the engines' error, which names it.
-  const bool board = a.config == "icebreaker-board";
-  const std::string base_config = board ? "icebreaker" : a.config;
+  override_triangle_states(screen, a.method, a.filter, a.untextured);
 #ifdef HTX_HAVE_RTL_ENGINE
   // The RTL builds the named configurations but for the model's QUADRATIC (rtl_config).
-  ModelConfig config = a.engine == "rtl" ? rtl_config(base_config) : model_config(base_config);
+  const ModelConfig config = a.engine == "rtl"
+                                 ? named_config(a.config, rtl_config)
+                                 : named_config(a.config, [](const std::string& n) { return model_config(n); });
   RtlStats rtl_stats;
 #else
-  ModelConfig config = model_config(base_config);
+  const ModelConfig config = named_config(a.config, [](const std::string& n) { return model_config(n); });
 #endif
-  if (board) config = icebreaker_board_config(config);
   // AUTO: the firmware's per-triangle choice (docs/auto.md) within --tolerance texels.
   const fw::AutoSceneSummary auto_summary = fw::resolve_auto_methods(screen, config, static_cast<float>(a.tolerance));
   if (auto_summary.resolved > 0) std::cout << auto_summary_line(auto_summary, a.tolerance) << "\n";
@@ -211,8 +197,7 @@ void register_render(CLI::App& app) {
                   "ref | model | rtl (when built) | soc (the console firmware on the simulated SoC) | board "
                   "(the console firmware on a board, --port)")
       ->capture_default_str();
-  cmd->add_flag("--untextured", args->untextured,
-                "draw every triangle untextured (its colour only)");
+  cmd->add_flag("--untextured", args->untextured, "draw every triangle untextured (its colour only)");
   cmd->add_option("--method", args->method,
                   "override every triangle's perspective method: affine, subdivN (2..64), recip_lut, recip_nr, "
                   "divfree, quadratic, auto");
@@ -224,7 +209,8 @@ void register_render(CLI::App& app) {
                   "model configuration: full | icebreaker | icebreaker-board (icebreaker with the board GPU's "
                   "methods only: affine, recip_lut); default full, on soc and board icebreaker (the SoC's GPU)")
       ->check(CLI::IsMember({"full", "icebreaker", "icebreaker-board"}));
-  cmd->add_option("--size", args->size, "frame size WxH; default 320x240, on soc and board 160x120 (the console's screen)");
+  cmd->add_option("--size", args->size,
+                  "frame size WxH; default 320x240, on soc and board 160x120 (the console's screen)");
   cmd->add_option("--out", args->out, "output PNG")->required();
   cmd->add_option("--metrics", args->metrics, "also render ref and write the metrics JSON here");
   cmd->add_option("--firmware", args->firmware, "soc: the console firmware's ELF (default: the build's console.elf)");

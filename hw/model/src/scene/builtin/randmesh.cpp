@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "../convex_hull.hpp"
-#include "../random.hpp"
+#include "htx/model/random.hpp"
 #include "builtin_makers.hpp"
 
 namespace htx::scenes {

@@ -2,7 +2,7 @@
 // once) on a tilted disc, plus needles narrower than a pixel.
 #include <cmath>
 
-#include "../random.hpp"
+#include "htx/model/random.hpp"
 #include "builtin_makers.hpp"
 
 namespace htx::scenes {

@@ -1,0 +1,191 @@
+// htx crosscheck: random renders drawn from a seed, each drawn by the model and by the Verilated
+// GPU (the rtl engine) with the same configuration, compared pixel for pixel (colour and depth).
+// The RTL must match the model bit for bit; a case where they differ, or where one engine refuses
+// what the other draws, is a bug in one of them, and its line gives the `htx render` command that
+// makes it again.
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "commands.hpp"
+#include "crosscheck_cases.hpp"
+#include "htx/model/scenes.hpp"
+#if __has_include("htx/rtl/raster_engine.hpp")
+#include "htx/fw/auto_scene.h"
+#include "htx/model/geometry.hpp"
+#include "htx/model/image_io.hpp"
+#include "htx/model/model.hpp"
+#include "htx/rtl/raster_engine.hpp"
+#include "render_setup.hpp"
+#define HTX_HAVE_RTL_ENGINE 1
+#endif
+
+namespace htx {
+
+namespace {
+
+struct CrosscheckArgs {
+  uint64_t seed = 1;
+  uint64_t first = 0;
+  uint32_t count = 50;
+  double minutes = 0;  // 0: no time limit
+  std::string out_dir;
+  bool list = false;
+};
+
+std::string case_label(const CrosscheckCase& c) {
+  std::string s = c.scene + " --config " + c.config;
+  if (!c.method.empty()) s += " --method " + c.method;
+  if (!c.filter.empty()) s += " --filter " + c.filter;
+  if (!c.tolerance.empty()) s += " --tolerance " + c.tolerance;
+  if (c.untextured) s += " --untextured";
+  return s + " --size " + std::to_string(c.width) + "x" + std::to_string(c.height);
+}
+
+#ifdef HTX_HAVE_RTL_ENGINE
+
+struct Tally {
+  uint64_t equal = 0, different = 0, refused_alike = 0, refused_by_one = 0;
+};
+
+// One engine's frame, or its refusal's message.
+struct Drawn {
+  std::optional<Frame> frame;
+  std::string error;
+};
+
+template <class Draw>
+Drawn draw_with(Draw draw) {
+  Drawn d;
+  try {
+    d.frame = draw();
+  } catch (const std::exception& e) {
+    d.error = e.what();
+  }
+  return d;
+}
+
+// Runs a case and says what came of it on one line (the case itself is already printed).
+void run_case(uint64_t index, const CrosscheckCase& c, const std::string& out_dir, Tally& tally) {
+  Scene scene;
+  try {
+    scene = load_scene(c.scene);
+  } catch (const std::exception& e) {
+    // Cases are drawn within the ranges the scenes list, so this is crosscheck's own bug.
+    throw std::logic_error("case " + std::to_string(index) + ": scene '" + c.scene +
+                           "' was refused, but its parameters were drawn from their listed ranges: " + e.what());
+  }
+  // As htx render prepares it (render_setup.hpp), with the configuration the RTL builds for both.
+  const ModelConfig config = named_config(c.config, rtl_config);
+  ScreenScene screen;
+  try {
+    screen = prepare_screen_scene(scene, c.width, c.height);
+  } catch (const std::exception& e) {
+    ++tally.refused_alike;  // before either engine: htx render refuses it the same for both
+    std::cout << "refused before drawing: " << e.what() << std::endl;
+    return;
+  }
+  override_triangle_states(screen, c.method, c.filter, c.untextured);
+  const float tolerance =
+      c.tolerance.empty() ? 1.0f / 64 : static_cast<float>(std::stod(c.tolerance));  // as htx render reads it
+  fw::resolve_auto_methods(screen, config, tolerance);
+
+  RtlStats stats;
+  const Drawn model = draw_with([&] { return render_model(screen, config); });
+  const Drawn rtl = draw_with([&] { return render_rtl(screen, config, &stats); });
+  if (!model.frame && !rtl.frame) {
+    ++tally.refused_alike;
+    std::cout << "refused by both: " << model.error << std::endl;
+    return;
+  }
+  const std::string again =
+      crosscheck_render_command(c, "rtl", "rtl.png", "rtl.json") + "  (rtl.json's model_mismatch_pixels counts them)";
+  if (!model.frame || !rtl.frame) {
+    ++tally.refused_by_one;
+    std::cout << "REFUSED BY ONE ENGINE: " << (model.frame ? "rtl: " + rtl.error : "model: " + model.error)
+              << "\n    the other drew it; again: "
+              << crosscheck_render_command(c, model.frame ? "rtl" : "model", "x.png") << std::endl;
+    return;
+  }
+  const uint64_t differing = frame_mismatch_pixels(*model.frame, *rtl.frame);
+  if (differing == 0) {
+    ++tally.equal;
+    std::cout << "equal (" << screen.tris.size() << " triangles, " << stats.pixels_written << " pixels written, "
+              << stats.cycles << " clocks)" << std::endl;
+    return;
+  }
+  ++tally.different;
+  std::cout << "DIFFERENT: " << differing << " of " << c.width * c.height
+            << " pixels (colour or depth)\n    again: " << again << std::endl;
+  if (!out_dir.empty()) {
+    const std::string stem = out_dir + "/case" + std::to_string(index);
+    write_png(stem + "_model.png", image_from_rgb565(c.width, c.height, model.frame->color));
+    write_png(stem + "_rtl.png", image_from_rgb565(c.width, c.height, rtl.frame->color));
+    std::cout << "    frames -> " << stem << "_model.png, " << stem << "_rtl.png" << std::endl;
+  }
+}
+
+#endif
+
+void run_crosscheck(const CrosscheckArgs& a) {
+  if (a.first > UINT64_MAX - a.count) throw std::invalid_argument("--first + --count is past the last case number");
+  const std::vector<SceneInfo>& scenes = builtin_scenes();
+  if (a.list) {
+    for (uint64_t i = a.first; i < a.first + a.count; ++i)
+      std::cout << i << ": " << case_label(draw_crosscheck_case(a.seed, i, scenes)) << "\n";
+    return;
+  }
+#ifdef HTX_HAVE_RTL_ENGINE
+  if (!a.out_dir.empty()) std::filesystem::create_directories(a.out_dir);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto elapsed_s = [&t0] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  Tally tally;
+  uint64_t run = 0;
+  for (uint64_t i = a.first; i < a.first + a.count; ++i) {
+    if (a.minutes > 0 && elapsed_s() > a.minutes * 60) {
+      std::cout << "time limit (" << a.minutes << " min) reached before case " << i << "\n";
+      break;
+    }
+    const CrosscheckCase c = draw_crosscheck_case(a.seed, i, scenes);
+    // Printed before drawing, so that a case that never ends names itself.
+    std::cout << "[" << i << "] " << case_label(c) << ": " << std::flush;
+    run_case(i, c, a.out_dir, tally);
+    ++run;
+  }
+  std::cout << "crosscheck seed " << a.seed << ": " << run << " cases, " << tally.equal << " equal, " << tally.different
+            << " different, " << tally.refused_alike << " refused alike, " << tally.refused_by_one
+            << " refused by one engine only (" << static_cast<int64_t>(elapsed_s()) << " s)\n";
+  if (tally.different + tally.refused_by_one > 0)
+    throw std::runtime_error(
+        std::to_string(tally.different + tally.refused_by_one) +
+        " case(s) where the RTL and the model disagree (each line above says how to draw it again)");
+#else
+  throw std::invalid_argument("this build has no rtl engine to check against the model (--list still lists the cases)");
+#endif
+}
+
+}  // namespace
+
+void register_crosscheck(CLI::App& app) {
+  auto args = std::make_shared<CrosscheckArgs>();
+  auto* cmd = app.add_subcommand("crosscheck",
+                                 "Draw random renders on the model and on the RTL and compare them pixel for pixel");
+  cmd->add_option("--seed", args->seed, "the sequence of cases (the same on every machine)")->capture_default_str();
+  cmd->add_option("--first", args->first, "the first case's number in the sequence")->capture_default_str();
+  cmd->add_option("--count", args->count, "how many cases")
+      ->check(CLI::Range(uint32_t{1}, uint32_t{10000000}))
+      ->capture_default_str();
+  cmd->add_option("--minutes", args->minutes, "stop starting cases after this long (0: no limit)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd->add_option("--out-dir", args->out_dir, "write both engines' frames of every case that differs here");
+  cmd->add_flag("--list", args->list, "print the cases without drawing them");
+  cmd->callback([args] { run_crosscheck(*args); });
+}
+
+}  // namespace htx

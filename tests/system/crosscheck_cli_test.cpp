@@ -1,0 +1,89 @@
+// `htx crosscheck`: random renders drawn from a seed, each by the model and by the Verilated GPU,
+// compared pixel for pixel. A fixed seed's cases agree; the cases are a function of the seed and
+// their number alone, drawn within the ranges the scenes list, and cover every scene and
+// configuration; bad arguments are refused.
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "htx/model/scenes.hpp"
+#include "subprocess.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(SystemCrosscheckCli, AFixedSeedsCasesAgreeOnTheModelAndTheRtl) {
+  const auto r = htx::test::run_program({HTX_BIN, "crosscheck", "--seed", "20261207", "--count", "24"}, 110s);
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m,
+                                std::regex(R"(crosscheck seed 20261207: 24 cases, (\d+) equal, 0 different, (\d+) )"
+                                           R"(refused alike, 0 refused by one engine only)")))
+      << r.out;
+  // Most cases draw something (a refusal both engines share compares nothing).
+  EXPECT_GE(std::stoi(m[1]), 16) << r.out;
+  EXPECT_EQ(std::stoi(m[1]) + std::stoi(m[2]), 24);
+  for (int i = 0; i < 24; ++i) EXPECT_NE(r.out.find("[" + std::to_string(i) + "] "), std::string::npos) << i;
+}
+
+TEST(SystemCrosscheckCli, CasesAreTheSeedsAndNumbersAloneAndWithinTheListedRanges) {
+  const auto list = [](const std::vector<std::string>& extra) {
+    std::vector<std::string> argv = {HTX_BIN, "crosscheck", "--list"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    const auto r = htx::test::run_program(argv, 30s);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return lines_of(r.out);
+  };
+  const std::vector<std::string> cases = list({"--seed", "5", "--count", "120"});
+  ASSERT_EQ(cases.size(), 120u);
+  EXPECT_EQ(list({"--seed", "5", "--count", "120"}), cases);
+  const std::vector<std::string> later = list({"--seed", "5", "--first", "110", "--count", "10"});
+  EXPECT_EQ(later, std::vector<std::string>(cases.begin() + 110, cases.end()));
+  EXPECT_NE(list({"--seed", "6", "--count", "120"}), cases);
+
+  // "N: SCENE --config C [--method M] [--filter F] [--tolerance T] [--untextured] --size WxH"
+  const std::regex line(R"((\d+): (\S+) --config (\S+)( --method \S+)?( --filter \S+)?( --tolerance \S+)?)"
+                        R"(( --untextured)? --size (\d+)x(\d+))");
+  std::set<std::string> scenes, configs;
+  for (const std::string& text : cases) {
+    std::smatch m;
+    ASSERT_TRUE(std::regex_match(text, m, line)) << text;
+    // Every scene spec is one its scene takes (the ranges are the scenes' own, as htx scenes lists).
+    EXPECT_NO_THROW(htx::make_builtin_scene(m[2])) << text;  // (the slowest part: built whole)
+    scenes.insert(m[2].str().substr(0, m[2].str().find(':')));
+    configs.insert(m[3]);
+    EXPECT_GE(std::stoi(m[8]), 1);
+    EXPECT_LE(std::stoi(m[8]), 400);
+    EXPECT_GE(std::stoi(m[9]), 1);
+    EXPECT_LE(std::stoi(m[9]), 300);
+  }
+  EXPECT_EQ(configs, (std::set<std::string>{"full", "icebreaker", "icebreaker-board"}));
+  std::set<std::string> every_scene;
+  for (const htx::SceneInfo& s : htx::builtin_scenes()) every_scene.insert(s.name);
+  EXPECT_EQ(scenes, every_scene);
+}
+
+TEST(SystemCrosscheckCli, BadArgumentsAreRefused) {
+  auto r = htx::test::run_program({HTX_BIN, "crosscheck", "--count", "0"}, 30s);
+  EXPECT_EQ(r.status, 2) << r.err;
+  r = htx::test::run_program({HTX_BIN, "crosscheck", "--first", "18446744073709551615", "--count", "2"}, 30s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("past the last case number"), std::string::npos) << r.err;
+  r = htx::test::run_program({HTX_BIN, "crosscheck", "--minutes", "-1"}, 30s);
+  EXPECT_EQ(r.status, 2) << r.err;
+}
+
+}  // namespace
