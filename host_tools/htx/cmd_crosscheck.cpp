@@ -21,6 +21,7 @@
 #include "htx/model/image_io.hpp"
 #include "htx/model/model.hpp"
 #include "htx/rtl/raster_engine.hpp"
+#include "output_path.hpp"
 #include "render_setup.hpp"
 #define HTX_HAVE_RTL_ENGINE 1
 #endif
@@ -141,7 +142,13 @@ void run_crosscheck(const CrosscheckArgs& a) {
     return;
   }
 #ifdef HTX_HAVE_RTL_ENGINE
-  if (!a.out_dir.empty()) std::filesystem::create_directories(a.out_dir);
+  // --out-dir made and tried with a first frame's name before any case runs (a sweep is long).
+  if (!a.out_dir.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(a.out_dir, error);
+    if (error) throw std::runtime_error("--out-dir " + a.out_dir + ": cannot be made (" + error.message() + ")");
+    require_output_dir(a.out_dir + "/case" + std::to_string(a.first) + "_model.png");
+  }
   const auto t0 = std::chrono::steady_clock::now();
   auto elapsed_s = [&t0] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   Tally tally;

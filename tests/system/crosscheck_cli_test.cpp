@@ -84,6 +84,15 @@ TEST(SystemCrosscheckCli, BadArgumentsAreRefused) {
   EXPECT_NE(r.err.find("past the last case number"), std::string::npos) << r.err;
   r = htx::test::run_program({HTX_BIN, "crosscheck", "--minutes", "-1"}, 30s);
   EXPECT_EQ(r.status, 2) << r.err;
+  // An output directory that cannot be made or written is refused before any case runs.
+  r = htx::test::run_program({HTX_BIN, "crosscheck", "--out-dir", "/proc/htx_no_such_dir"}, 30s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("--out-dir /proc/htx_no_such_dir: cannot be made"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("[0]"), std::string::npos) << r.out;
+  r = htx::test::run_program({HTX_BIN, "crosscheck", "--out-dir", "/proc/self"}, 30s);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("cannot be written"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("[0]"), std::string::npos) << r.out;
 }
 
 }  // namespace
