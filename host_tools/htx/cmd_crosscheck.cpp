@@ -1,6 +1,6 @@
 // htx crosscheck: random renders drawn from a seed, each drawn by the model and by the Verilated
 // GPU (the rtl engine) with the same configuration, compared pixel for pixel (colour and depth).
-// The RTL must match the model bit for bit; a case where they differ, or where one engine refuses
+// The RTL must match the model bit for bit (and count as it counts); a case where they differ, or where one engine refuses
 // what the other draws, is a bug in one of them, and its line gives the `htx render` command that
 // makes it again.
 #include <chrono>
@@ -105,7 +105,7 @@ void run_case(uint64_t index, const CrosscheckCase& c, const std::string& out_di
     return;
   }
   const std::string again =
-      crosscheck_render_command(c, "rtl", "rtl.png", "rtl.json") + "  (rtl.json's model_mismatch_pixels counts them)";
+      crosscheck_render_command(c, "rtl", "rtl.png", "rtl.json") + "  (rtl.json's model_mismatch_pixels counts the differing pixels)";
   if (!model.frame || !rtl.frame) {
     ++tally.refused_by_one;
     std::cout << "REFUSED BY ONE ENGINE: " << (model.frame ? "rtl: " + rtl.error : "model: " + model.error)
@@ -114,15 +114,26 @@ void run_case(uint64_t index, const CrosscheckCase& c, const std::string& out_di
     return;
   }
   const uint64_t differing = frame_mismatch_pixels(*model.frame, *rtl.frame);
-  if (differing == 0) {
+  // The raster unit's counters, which the model keeps too (docs/raster.md).
+  const Counters& counted = model.frame->counters;
+  std::string counters;
+  auto compare = [&counters](const char* name, uint64_t model_count, uint64_t rtl_count) {
+    if (model_count != rtl_count)
+      counters += std::string(counters.empty() ? "" : ", ") + name + " " + std::to_string(rtl_count) +
+                  " (the model's " + std::to_string(model_count) + ")";
+  };
+  compare("CNT_FRAGMENTS", counted.fragments, stats.covered_pixels);
+  compare("CNT_PIXELS", counted.pixels_written, stats.pixels_written);
+  compare("CNT_DIVFREE_STEPS", counted.divfree_steps_total, stats.divfree_steps);
+  if (differing == 0 && counters.empty()) {
     ++tally.equal;
     std::cout << "equal (" << screen.tris.size() << " triangles, " << stats.pixels_written << " pixels written, "
               << stats.cycles << " clocks)" << std::endl;
     return;
   }
   ++tally.different;
-  std::cout << "DIFFERENT: " << differing << " of " << c.width * c.height
-            << " pixels (colour or depth)\n    again: " << again << std::endl;
+  std::cout << "DIFFERENT: " << differing << " of " << c.width * c.height << " pixels (colour or depth)"
+            << (counters.empty() ? "" : "; counters differ: " + counters) << "\n    again: " << again << std::endl;
   if (!out_dir.empty()) {
     const std::string stem = out_dir + "/case" + std::to_string(index);
     write_png(stem + "_model.png", image_from_rgb565(c.width, c.height, model.frame->color));
