@@ -1,8 +1,10 @@
 // htx crosscheck: random renders drawn from a seed, each drawn by the model and by the Verilated
-// GPU (the rtl engine) with the same configuration, compared pixel for pixel (colour and depth).
-// The RTL must match the model bit for bit (and count as it counts); a case where they differ, or where one engine refuses
-// what the other draws, is a bug in one of them, and its line gives the `htx render` command that
-// makes it again.
+// GPU (the rtl engine) with the same configuration, compared pixel for pixel (colour and depth);
+// or (--engine soc) by the console firmware on the simulated SoC, against the model drawing the
+// console's own triangles.
+// The RTL must match the model bit for bit (and count as it counts); a case where they differ, or where one engine
+// refuses what the other draws, is a bug in one of them, and its line gives the `htx render` command that makes it
+// again.
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -16,6 +18,7 @@
 #include "crosscheck_cases.hpp"
 #include "htx/model/scenes.hpp"
 #if __has_include("htx/rtl/raster_engine.hpp")
+#include "console_scene.hpp"
 #include "htx/fw/auto_scene.h"
 #include "htx/model/geometry.hpp"
 #include "htx/model/image_io.hpp"
@@ -37,7 +40,13 @@ struct CrosscheckArgs {
   double minutes = 0;  // 0: no time limit
   std::string out_dir;
   bool list = false;
+  std::string engine = "rtl";
+  uint32_t max_triangles = 0;  // 0: the engine's default (kSocMaxTriangles on soc, no limit on rtl)
 };
+
+// soc: a case's scene above this many triangles is skipped unless --max-triangles says otherwise
+// (the SoC simulation runs some 2.5 M clocks a second, and the CPU spends thousands a triangle).
+constexpr uint32_t kSocMaxTriangles = 2000;
 
 std::string case_label(const CrosscheckCase& c) {
   std::string s = c.scene + " --config " + c.config;
@@ -51,7 +60,7 @@ std::string case_label(const CrosscheckCase& c) {
 #ifdef HTX_HAVE_RTL_ENGINE
 
 struct Tally {
-  uint64_t equal = 0, different = 0, refused_alike = 0, refused_by_one = 0;
+  uint64_t equal = 0, different = 0, refused_alike = 0, refused_by_one = 0, skipped = 0;
 };
 
 // One engine's frame, or its refusal's message.
@@ -72,7 +81,8 @@ Drawn draw_with(Draw draw) {
 }
 
 // Runs a case and says what came of it on one line (the case itself is already printed).
-void run_case(uint64_t index, const CrosscheckCase& c, const std::string& out_dir, Tally& tally) {
+void run_case(uint64_t index, const CrosscheckCase& c, uint32_t max_triangles, const std::string& out_dir,
+              Tally& tally) {
   Scene scene;
   try {
     scene = load_scene(c.scene);
@@ -91,6 +101,12 @@ void run_case(uint64_t index, const CrosscheckCase& c, const std::string& out_di
     std::cout << "refused before drawing: " << e.what() << std::endl;
     return;
   }
+  if (screen.tris.size() > max_triangles) {
+    ++tally.skipped;
+    std::cout << "skipped: " << screen.tris.size() << " triangles (over --max-triangles " << max_triangles << ")"
+              << std::endl;
+    return;
+  }
   override_triangle_states(screen, c.method, c.filter, c.untextured);
   const float tolerance =
       c.tolerance.empty() ? 1.0f / 64 : static_cast<float>(std::stod(c.tolerance));  // as htx render reads it
@@ -104,8 +120,8 @@ void run_case(uint64_t index, const CrosscheckCase& c, const std::string& out_di
     std::cout << "refused by both: " << model.error << std::endl;
     return;
   }
-  const std::string again =
-      crosscheck_render_command(c, "rtl", "rtl.png", "rtl.json") + "  (rtl.json's model_mismatch_pixels counts the differing pixels)";
+  const std::string again = crosscheck_render_command(c, "rtl", "rtl.png", "rtl.json") +
+                            "  (rtl.json's model_mismatch_pixels counts the differing pixels)";
   if (!model.frame || !rtl.frame) {
     ++tally.refused_by_one;
     std::cout << "REFUSED BY ONE ENGINE: " << (model.frame ? "rtl: " + rtl.error : "model: " + model.error)
@@ -142,16 +158,100 @@ void run_case(uint64_t index, const CrosscheckCase& c, const std::string& out_di
   }
 }
 
+// The model's own refusal of the case's triangles, as the rtl case draws them (empty: it draws
+// them), for a case the console refused.
+std::string model_refusal(const ScreenScene& console_screen_scene, const CrosscheckCase& c) {
+  ScreenScene screen = console_screen_scene;
+  override_triangle_states(screen, c.method, c.filter, false);
+  const ModelConfig config = named_config(c.config, rtl_config);
+  try {
+    fw::resolve_auto_methods(screen, config, 1.0f / 64);
+    render_model(screen, config);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return {};
+}
+
+// A case drawn by the console firmware on a fresh simulated SoC, as `htx render --engine soc`
+// draws it, against the model drawing the console's own triangles (the firmware's pipeline run on
+// the host): the frame and the triangle counts.
+void run_soc_case(const CrosscheckCase& c, uint32_t max_triangles, Tally& tally) {
+  RenderArgs a;
+  a.scene = c.scene;
+  a.engine = "soc";
+  a.config = c.config;
+  a.size = std::to_string(c.width) + "x" + std::to_string(c.height);
+  a.method = c.method;
+  a.filter = c.filter;
+  a.untextured = c.untextured;
+  if (!c.tolerance.empty()) a.tolerance = std::stod(c.tolerance);
+  ConsoleScene scene;
+  try {
+    scene = prepare_console_scene(a);
+  } catch (const std::invalid_argument& e) {
+    ++tally.refused_alike;  // on the host, before the console: htx render refuses it so
+    std::cout << "refused before drawing: " << e.what() << std::endl;
+    return;
+  }
+  if (scene.screen.tris.size() > max_triangles) {
+    ++tally.skipped;
+    std::cout << "skipped: " << scene.screen.tris.size() << " triangles (over --max-triangles " << max_triangles << ")"
+              << std::endl;
+    return;
+  }
+  const std::string again = crosscheck_render_command(c, "soc", "soc.png", "soc.json") +
+                            "  (its stderr says why soc.json has no texel errors)";
+  ConsoleRun run;
+  try {
+    run = draw_console_scene(a, scene.draw, true, {});
+  } catch (const std::exception& e) {
+    const std::string model = model_refusal(scene.screen, c);
+    if (!model.empty()) {
+      ++tally.refused_alike;
+      std::cout << "refused by both: " << e.what() << " (the model: " << model << ")" << std::endl;
+    } else {
+      ++tally.refused_by_one;
+      std::cout << "REFUSED BY ONE ENGINE: the console: " << e.what()
+                << "\n    the model draws it; again: " << crosscheck_render_command(c, "soc", "soc.png") << std::endl;
+    }
+    return;
+  }
+  std::string disagreement;
+  try {
+    disagreement = console_model_disagreement(console_model_frame(scene.draw, run.caps), run.drawn);
+  } catch (const std::exception& e) {
+    ++tally.refused_by_one;
+    std::cout << "REFUSED BY ONE ENGINE: the model: " << e.what() << "\n    the console drew it; again: " << again
+              << std::endl;
+    return;
+  }
+  if (!disagreement.empty()) {
+    ++tally.different;
+    std::cout << "DIFFERENT: " << disagreement << "\n    again: " << again << std::endl;
+    return;
+  }
+  ++tally.equal;
+  std::cout << "equal (" << run.drawn.figures.at("triangles") << " triangles, " << run.drawn.figures.at("sent")
+            << " sent, " << run.where << ")" << std::endl;
+}
+
 #endif
 
 void run_crosscheck(const CrosscheckArgs& a) {
   if (a.first > UINT64_MAX - a.count) throw std::invalid_argument("--first + --count is past the last case number");
+  const CrosscheckEngine engine = a.engine == "soc" ? CrosscheckEngine::Soc : CrosscheckEngine::Rtl;
   const std::vector<SceneInfo>& scenes = builtin_scenes();
   if (a.list) {
     for (uint64_t i = a.first; i < a.first + a.count; ++i)
-      std::cout << i << ": " << case_label(draw_crosscheck_case(a.seed, i, scenes)) << "\n";
+      std::cout << i << ": " << case_label(draw_crosscheck_case(a.seed, i, scenes, engine)) << "\n";
     return;
   }
+#ifdef HTX_HAVE_RTL_ENGINE
+  const uint32_t max_triangles = a.max_triangles > 0               ? a.max_triangles
+                                 : engine == CrosscheckEngine::Soc ? kSocMaxTriangles
+                                                                   : UINT32_MAX;
+#endif
 #ifdef HTX_HAVE_RTL_ENGINE
   // --out-dir made and tried with a first frame's name before any case runs (a sweep is long).
   if (!a.out_dir.empty()) {
@@ -169,19 +269,23 @@ void run_crosscheck(const CrosscheckArgs& a) {
       std::cout << "time limit (" << a.minutes << " min) reached before case " << i << "\n";
       break;
     }
-    const CrosscheckCase c = draw_crosscheck_case(a.seed, i, scenes);
+    const CrosscheckCase c = draw_crosscheck_case(a.seed, i, scenes, engine);
     // Printed before drawing, so that a case that never ends names itself.
     std::cout << "[" << i << "] " << case_label(c) << ": " << std::flush;
-    run_case(i, c, a.out_dir, tally);
+    if (engine == CrosscheckEngine::Soc)
+      run_soc_case(c, max_triangles, tally);
+    else
+      run_case(i, c, max_triangles, a.out_dir, tally);
     ++run;
   }
-  std::cout << "crosscheck seed " << a.seed << ": " << run << " cases, " << tally.equal << " equal, " << tally.different
-            << " different, " << tally.refused_alike << " refused alike, " << tally.refused_by_one
-            << " refused by one engine only (" << static_cast<int64_t>(elapsed_s()) << " s)\n";
+  std::cout << "crosscheck " << a.engine << " seed " << a.seed << ": " << run << " cases, " << tally.equal << " equal, "
+            << tally.different << " different, " << tally.refused_alike << " refused alike, " << tally.refused_by_one
+            << " refused by one engine only, " << tally.skipped << " skipped (" << static_cast<int64_t>(elapsed_s())
+            << " s)\n";
   if (tally.different + tally.refused_by_one > 0)
-    throw std::runtime_error(
-        std::to_string(tally.different + tally.refused_by_one) +
-        " case(s) where the RTL and the model disagree (each line above says how to draw it again)");
+    throw std::runtime_error(std::to_string(tally.different + tally.refused_by_one) + " case(s) where the " +
+                             (engine == CrosscheckEngine::Soc ? "SoC" : "RTL") +
+                             " and the model disagree (each line above says how to draw it again)");
 #else
   throw std::invalid_argument("this build has no rtl engine to check against the model (--list still lists the cases)");
 #endif
@@ -203,6 +307,15 @@ void register_crosscheck(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--out-dir", args->out_dir, "write both engines' frames of every case that differs here");
   cmd->add_flag("--list", args->list, "print the cases without drawing them");
+  cmd->add_option("--engine", args->engine,
+                  "what draws beside the model: rtl (the Verilated GPU), or soc (the console firmware on the "
+                  "simulated SoC, against the model drawing the console's own triangles)")
+      ->check(CLI::IsMember({"rtl", "soc"}))
+      ->capture_default_str();
+  cmd->add_option("--max-triangles", args->max_triangles,
+                  "skip a case whose scene has more triangles (default: " + std::to_string(kSocMaxTriangles) +
+                      " on soc, no limit on rtl)")
+      ->check(CLI::Range(uint32_t{1}, UINT32_MAX));
   cmd->callback([args] { run_crosscheck(*args); });
 }
 

@@ -164,4 +164,21 @@ ConsoleModel console_model_frame(const ConsoleDraw& draw, const ConsoleCaps& cap
   return {render_model_records(records, config), std::move(slots), stats.triangles, stats.sent};
 }
 
+std::string console_model_disagreement(const ConsoleModel& model, const ConsoleDrawn& drawn) {
+  const std::string counts = std::to_string(model.triangles) + " triangles, " + std::to_string(model.sent) + " sent";
+  const std::string console_counts =
+      drawn.figures.at("triangles") + " triangles, " + drawn.figures.at("sent") + " sent";
+  if (counts != console_counts) return "the host's pipeline made " + counts + ", the console's " + console_counts;
+  const std::vector<uint16_t>& sent_pixels = drawn.frame.pixels;
+  if (sent_pixels.size() != model.frame.color.size())
+    return "the console sent " + std::to_string(sent_pixels.size()) + " pixels, the model drew " +
+           std::to_string(model.frame.color.size());
+  size_t differ = 0;
+  for (size_t i = 0; i < sent_pixels.size(); ++i) differ += model.frame.color[i] != sent_pixels[i];
+  if (differ != 0)
+    return "the model's frame of the console's triangles differs from the console's at " + std::to_string(differ) +
+           " pixels";
+  return {};
+}
+
 }  // namespace htx

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "console_render.hpp"
@@ -37,5 +38,9 @@ struct ConsoleModel {
 // std::runtime_error when the console would refuse the draw or the model cannot draw it (a
 // triangle that samples such a slot 0 among them).
 ConsoleModel console_model_frame(const ConsoleDraw& draw, const ConsoleCaps& caps);
+
+// Why the model's frame is not the one the console sent (empty when it is: every pixel, and the
+// triangle counts, since the same pixels from other triangles would be a coincidence to catch).
+std::string console_model_disagreement(const ConsoleModel& model, const ConsoleDrawn& drawn);
 
 }  // namespace htx

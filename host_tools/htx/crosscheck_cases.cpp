@@ -7,6 +7,7 @@
 #include "htx/model/config.hpp"
 #include "htx/model/names.hpp"
 #include "htx/model/random.hpp"
+#include "soc_config.hpp"
 
 namespace htx {
 
@@ -105,8 +106,11 @@ std::string draw_filter(CaseRng& rng, const ModelConfig& config) {
 
 }  // namespace
 
-CrosscheckCase draw_crosscheck_case(uint64_t seed, uint64_t index, const std::vector<SceneInfo>& scenes) {
-  CaseRng rng(seed, index);
+CrosscheckCase draw_crosscheck_case(uint64_t seed, uint64_t index, const std::vector<SceneInfo>& scenes,
+                                    CrosscheckEngine engine) {
+  const bool soc = engine == CrosscheckEngine::Soc;
+  // (The two engines' sequences are apart: one seed's case K is not the same scene on both.)
+  CaseRng rng(seed, soc ? ~index : index);
   CrosscheckCase c;
   const SceneInfo& scene = scenes.at(rng.next() % scenes.size());
   c.scene = scene.name;
@@ -116,14 +120,20 @@ CrosscheckCase draw_crosscheck_case(uint64_t seed, uint64_t index, const std::ve
     c.scene += sep + p.key + "=" + draw_param(rng, p);
     sep = ',';
   }
-  c.config = rng.pick(kConfigs);
+  c.config = soc ? "icebreaker" : rng.pick(kConfigs);  // (the SoC's GPU)
   const ModelConfig config = config_of(c.config);
   if (!rng.chance(0.15)) c.method = draw_method(rng, config);
   if (!rng.chance(0.25)) c.filter = draw_filter(rng, config);
   c.untextured = rng.chance(0.1);
   // AUTO's tolerance, log-uniform over 1/256 .. 4 texels (a scene's own triangles may ask for AUTO).
+  // (The console takes 1/N texel: a power of two, whose decimal is exact.)
   if ((c.method.empty() || c.method == "auto") && rng.chance(0.3))
-    c.tolerance = number_text(std::exp2(-8.0 + 10.0 * rng.unit()), 0x1.0p-8, 4.0);
+    c.tolerance = soc ? number_text(std::exp2(-static_cast<double>(rng.between(0, 8))), 0x1.0p-8, 1.0)
+                      : number_text(std::exp2(-8.0 + 10.0 * rng.unit()), 0x1.0p-8, 4.0);
+  if (soc) {
+    c.width = render_app::kWidth, c.height = render_app::kHeight;  // the console's screen
+    return c;
+  }
   const double r = rng.unit();
   if (r < 0.3) {
     c.width = 320, c.height = 240;

@@ -21,10 +21,16 @@ struct CrosscheckCase {
   int width = 320, height = 240;
 };
 
-// Case `index` (0, 1, ...) of the sequence `seed` names: a function of the two alone (its own
-// SplitMix64 stream, ranges mapped by hand, not by the standard library's distributions, whose
-// results differ between implementations), drawn from `scenes`' parameters and ranges.
-CrosscheckCase draw_crosscheck_case(uint64_t seed, uint64_t index, const std::vector<SceneInfo>& scenes);
+// What draws the cases beside the model: the rtl engine (any configuration and size), or the
+// console firmware on the simulated SoC (its GPU's configuration, its screen, the methods it takes
+// and tolerances of 1/N texel).
+enum class CrosscheckEngine { Rtl, Soc };
+
+// Case `index` (0, 1, ...) of the sequence `seed` names for `engine`: a function of the three alone
+// (its own SplitMix64 stream, ranges mapped by hand, not by the standard library's distributions,
+// whose results differ between implementations), drawn from `scenes`' parameters and ranges.
+CrosscheckCase draw_crosscheck_case(uint64_t seed, uint64_t index, const std::vector<SceneInfo>& scenes,
+                                    CrosscheckEngine engine = CrosscheckEngine::Rtl);
 
 // The `htx render` arguments that make the case on `engine`, writing `out` (and `metrics`, if not
 // empty). (Every part is plain: letters, digits and `:,=._-`, which no shell treats specially.)

@@ -12,6 +12,7 @@
 #include "console_model.hpp"
 #include "console_payload.hpp"
 #include "console_render.hpp"
+#include "console_scene.hpp"
 #include "htx/console/console_client.hpp"
 #include "htx/console/serial_port.hpp"
 #include "htx/model/geometry.hpp"
@@ -92,28 +93,17 @@ std::string console_firmware(const RenderArgs& a) {
 // has no per-pixel probe; the model drawing the console's own triangles has one, and where its
 // frame is the one the console sent, pixel for pixel, with the same counts, it is that frame's.
 // Otherwise the probe's figures are null and stderr says why.
-template <class ScreenOf>
 void console_probe_figures(const Scene& scene, const ConsoleDraw& draw, const ConsoleDrawn& drawn,
-                           const ConsoleCaps& caps, const ScreenOf& screen_of, const RefOptions& ref_options, const MetricsLabels& labels,
+                           const ConsoleCaps& caps, bool untextured, const RefOptions& ref_options, const MetricsLabels& labels,
                            const std::string& engine, nlohmann::json* j) {
   const auto no_probe = [j, &engine](const std::string& why) {
     null_probe_figures(j);
     std::cerr << engine << ": metrics: no texel errors: " << why << std::endl;
   };
-  const std::vector<uint16_t>& sent_pixels = drawn.frame.pixels;
   try {
     const ConsoleModel model = console_model_frame(draw, caps);
-    size_t differ = 0;
-    for (size_t i = 0; i < sent_pixels.size(); ++i) differ += model.frame.color.at(i) != sent_pixels[i];
-    // (The counts too: the same pixels from other triangles would be a coincidence to catch.)
-    const std::string counts = std::to_string(model.triangles) + " triangles, " + std::to_string(model.sent) + " sent";
-    const std::string console_counts =
-        drawn.figures.at("triangles") + " triangles, " + drawn.figures.at("sent") + " sent";
-    if (counts != console_counts)
-      return no_probe("the host's pipeline made " + counts + ", the console's " + console_counts);
-    if (differ != 0)
-      return no_probe("the model's frame of the console's triangles differs from the console's at " +
-                      std::to_string(differ) + " pixels");
+    const std::string disagreement = console_model_disagreement(model, drawn);
+    if (!disagreement.empty()) return no_probe(disagreement);
     // Texel errors are in texels of the texture sampled, and the console's are the scene's brought
     // to its size limit, so they are taken against ref drawing with those (the texture's size
     // scales the texel coordinates as the screen scene is prepared).
@@ -122,7 +112,7 @@ void console_probe_figures(const Scene& scene, const ConsoleDraw& draw, const Co
       const size_t slot = i < draw.payload.slot_of_texture.size() ? draw.payload.slot_of_texture[i] : 0;
       same_textures.textures[i] = model.slots.at(slot);
     }
-    const Frame ref_same = render_ref(screen_of(same_textures), ref_options);
+    const Frame ref_same = render_ref(console_screen(same_textures, untextured), ref_options);
     take_probe_figures(metrics_to_json(compute_metrics(model.frame, ref_same, labels)), j);
   } catch (const std::exception& e) {
     no_probe(std::string("the model cannot draw the console's triangles: ") + e.what());
@@ -131,7 +121,15 @@ void console_probe_figures(const Scene& scene, const ConsoleDraw& draw, const Co
 
 }  // namespace
 
-void render_on_console(const RenderArgs& a) {
+ScreenScene console_screen(const Scene& scene, bool untextured) {
+  ScreenScene s = prepare_screen_scene(scene, kScreenWidth, kScreenHeight);
+  s.clear_color = render_app::kClearColor;
+  if (untextured)
+    for (ScreenTri& t : s.tris) t.state.textured = false;
+  return s;
+}
+
+ConsoleScene prepare_console_scene(const RenderArgs& a) {
   const bool soc = a.engine == "soc";
   const std::string screen_size = std::to_string(kScreenWidth) + "x" + std::to_string(kScreenHeight);
   if (!a.size.empty() && a.size != screen_size)
@@ -157,34 +155,26 @@ void render_on_console(const RenderArgs& a) {
     throw std::invalid_argument("--baud is for --engine board (soc's line has no rate: it runs at " +
                                 std::to_string(kSocBaud) + " baud once the console is up)");
 
+  ConsoleScene c;
   // (The scene's notes come with the upload's, as a step.)
-  const Scene scene = load_scene(a.scene);
-  require_render_outputs(a, scene);
-  // For ref: on the background the console draws on.
-  const auto screen_of = [&a](const Scene& sc) {
-    ScreenScene s = prepare_screen_scene(sc, kScreenWidth, kScreenHeight);
-    s.clear_color = render_app::kClearColor;
-    if (a.untextured)
-      for (ScreenTri& t : s.tris) t.state.textured = false;
-    return s;
-  };
-  const ScreenScene screen = screen_of(scene);
-  ConsoleDraw draw;
-  draw.payload = scene_payload(scene, a.scene, screen_size, true, render::kMaxPackedMeshVertices, a.untextured);
-  draw.method = console_method(a, screen);
-  draw.tolerance_denominator = tolerance_denominator(a.tolerance);
-  draw.filter = a.filter.empty() ? "scene" : std::string(filter_name(parse_filter(a.filter)));
-  draw.on_step = [&a](const std::string& what) { std::cerr << a.engine << ": " << what << std::endl; };
+  c.scene = load_scene(a.scene);
+  c.screen = console_screen(c.scene, a.untextured);
+  c.draw.payload = scene_payload(c.scene, a.scene, screen_size, true, render::kMaxPackedMeshVertices, a.untextured);
+  c.draw.method = console_method(a, c.screen);
+  c.draw.tolerance_denominator = tolerance_denominator(a.tolerance);
+  c.draw.filter = a.filter.empty() ? "scene" : std::string(filter_name(parse_filter(a.filter)));
+  return c;
+}
 
+ConsoleRun draw_console_scene(const RenderArgs& a, ConsoleDraw draw, bool want_caps,
+                              const std::function<void(const std::string&)>& on_step) {
+  draw.on_step = on_step ? on_step : [](const std::string&) {};
   const auto t0 = std::chrono::steady_clock::now();
   const auto timeout = timeout_ms(a.timeout_s);
-  ConsoleDrawn drawn;
-  ConsoleCaps caps;  // asked only for the metrics' model (console_model.hpp)
-  const bool want_caps = !a.metrics.empty();
-  std::string where;
-  if (soc) {
+  ConsoleRun run;
+  if (a.engine == "soc") {
 #ifdef HTX_HAVE_SOC_CONSOLE
-    std::cerr << "soc: starting the console firmware on the simulated SoC" << std::endl;
+    draw.on_step("starting the console firmware on the simulated SoC");
     SocConsole sim(console_firmware(a));
     std::optional<console::SerialPort> port;  // open until the run ends after `quit`
     try {
@@ -194,8 +184,8 @@ void render_on_console(const RenderArgs& a) {
       // The simulated line has no cable to limit it: 1 Mbaud (12 clocks a bit) takes the transfers,
       // most of the run at 115,200 baud, down by a factor of nine.
       switch_line(client, draw, kSocBaud);
-      drawn = draw_on_console(client, draw);
-      if (want_caps) caps = console_caps(client);
+      run.drawn = draw_on_console(client, draw);
+      if (want_caps) run.caps = console_caps(client);
       port->write("quit\r");
     } catch (const std::runtime_error& e) {
       // A console that went quiet because the SoC's run had ended (its pseudo-terminal closes then)
@@ -205,7 +195,7 @@ void render_on_console(const RenderArgs& a) {
       throw;
     }
     const sim::SimResult r = sim.finish(timeout);
-    where = "the simulated SoC, " + std::to_string(r.cycles) + " clocks";
+    run.where = "the simulated SoC, " + std::to_string(r.cycles) + " clocks";
 #else
     throw std::invalid_argument("--engine soc: this build has no SoC simulation");
 #endif
@@ -214,14 +204,14 @@ void render_on_console(const RenderArgs& a) {
     console::ConsoleClient client(port, timeout);
     client.sync();
     if (a.fast_baud == 0) {
-      drawn = draw_on_console(client, draw);
+      run.drawn = draw_on_console(client, draw);
     } else {
       // The board is left at --baud, where the next `htx console` expects it, whatever happened
       // (a switch the console refused leaves it there already, and switching back is harmless).
       const auto back = [&] { switch_line(client, draw, a.baud, "back to"); };
       try {
         switch_line(client, draw, a.fast_baud);
-        drawn = draw_on_console(client, draw);
+        run.drawn = draw_on_console(client, draw);
       } catch (...) {
         try {
           back();
@@ -232,19 +222,29 @@ void render_on_console(const RenderArgs& a) {
       }
       back();
     }
-    if (want_caps) caps = console_caps(client);
-    where = a.port;
+    if (want_caps) run.caps = console_caps(client);
+    run.where = a.port;
   }
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const console::GrabbedFrame& g = drawn.frame;
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const console::GrabbedFrame& g = run.drawn.frame;
   if (g.width != kScreenWidth || g.height != kScreenHeight)
     throw std::runtime_error("the console sent a " + std::to_string(g.width) + "x" + std::to_string(g.height) +
-                             " frame, not " + screen_size);
+                             " frame, not " + std::to_string(kScreenWidth) + "x" + std::to_string(kScreenHeight));
+  return run;
+}
+
+void render_on_console(const RenderArgs& a) {
+  const ConsoleScene c = prepare_console_scene(a);
+  require_render_outputs(a, c.scene);
+  const ConsoleRun run = draw_console_scene(a, c.draw, !a.metrics.empty(),
+                                            [&a](const std::string& what) { std::cerr << a.engine << ": " << what << std::endl; });
+  const ConsoleDrawn& drawn = run.drawn;
+  const console::GrabbedFrame& g = drawn.frame;
   write_png(a.out, image_from_rgb565(g.width, g.height, g.pixels));
   std::cout << a.engine << " rendered " << a.scene << " (" << drawn.figures.at("triangles") << " triangles, "
-            << drawn.figures.at("sent") << " sent, "
-            << screen_size << ", method " << draw.method << ") on " << where << " in " << s << " s, crc32 "
-            << drawn.figures.at("crc32") << " -> " << a.out << "\n";
+            << drawn.figures.at("sent") << " sent, " << g.width << "x" << g.height << ", method " << c.draw.method
+            << ") on " << run.where << " in " << run.seconds << " s, crc32 " << drawn.figures.at("crc32") << " -> "
+            << a.out << "\n";
   if (drawn.figures.count("dropped") && drawn.figures.at("dropped") != "0")
     std::cerr << "htx render: the console dropped " << drawn.figures.at("dropped")
               << " triangles: the vertex-record format cannot hold them (texture coordinates out of its "
@@ -253,13 +253,13 @@ void render_on_console(const RenderArgs& a) {
   if (!a.metrics.empty()) {
     RefOptions ref_options;
     ref_options.depth_bits = model_config(kSocConfig).z_bits;
-    const Frame ref = render_ref(screen, ref_options);
+    const Frame ref = render_ref(c.screen, ref_options);
     Frame frame;
     frame.width = g.width;
     frame.height = g.height;
     frame.color = g.pixels;
     frame.probe.assign(g.pixels.size(), PixelProbe{});  // the console has no per-pixel probe (below)
-    const MetricsLabels labels{a.engine, a.scene, draw.method, draw.filter, kSocConfig};
+    const MetricsLabels labels{a.engine, a.scene, c.draw.method, c.draw.filter, kSocConfig};
     nlohmann::json j = metrics_to_json(compute_metrics(frame, ref, labels));
     // The figures the console printed: the raster unit's busy clocks (CNT_BUSY; null on a GPU
     // without counters), the CPU's clocks for the frame, the triangles it drew and sent.
@@ -274,9 +274,9 @@ void render_on_console(const RenderArgs& a) {
     if (drawn.figures.count("dropped")) j["dropped"] = number_or_null(drawn.figures.at("dropped"));
     j["crc32"] = drawn.figures.at("crc32");
     // AUTO's skipped choices, which a console from before 2026-12-06 does not print.
-    if (draw.method == "auto" && drawn.figures.count("auto_skipped"))
+    if (c.draw.method == "auto" && drawn.figures.count("auto_skipped"))
       j["auto"] = {{"skipped", number_or_null(drawn.figures.at("auto_skipped"))}};
-    console_probe_figures(scene, draw, drawn, caps, screen_of, ref_options, labels, a.engine, &j);
+    console_probe_figures(c.scene, c.draw, drawn, run.caps, a.untextured, ref_options, labels, a.engine, &j);
     write_metrics(a.metrics, j);
   }
 }

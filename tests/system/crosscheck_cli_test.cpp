@@ -1,7 +1,8 @@
-// `htx crosscheck`: random renders drawn from a seed, each by the model and by the Verilated GPU,
-// compared pixel for pixel. A fixed seed's cases agree; the cases are a function of the seed and
-// their number alone, drawn within the ranges the scenes list, and cover every scene and
-// configuration; bad arguments are refused.
+// `htx crosscheck`: random renders drawn from a seed, each by the model and by the Verilated GPU
+// (or the console firmware on the simulated SoC), compared pixel for pixel. A fixed seed's cases
+// agree on both; the cases are a function of the seed and their number alone, drawn within the
+// ranges the scenes list, and cover every scene and configuration; a scene over the triangle limit
+// is skipped; bad arguments are refused.
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -30,13 +31,38 @@ TEST(SystemCrosscheckCli, AFixedSeedsCasesAgreeOnTheModelAndTheRtl) {
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   std::smatch m;
   ASSERT_TRUE(std::regex_search(r.out, m,
-                                std::regex(R"(crosscheck seed 20261207: 24 cases, (\d+) equal, 0 different, (\d+) )"
-                                           R"(refused alike, 0 refused by one engine only)")))
+                                std::regex(R"(crosscheck rtl seed 20261207: 24 cases, (\d+) equal, 0 different, (\d+) )"
+                                           R"(refused alike, 0 refused by one engine only, 0 skipped)")))
       << r.out;
   // Most cases draw something (a refusal both engines share compares nothing).
   EXPECT_GE(std::stoi(m[1]), 16) << r.out;
   EXPECT_EQ(std::stoi(m[1]) + std::stoi(m[2]), 24);
   for (int i = 0; i < 24; ++i) EXPECT_NE(r.out.find("[" + std::to_string(i) + "] "), std::string::npos) << i;
+}
+
+// The console firmware on the simulated SoC against the model drawing the console's own triangles
+// (each case a fresh SoC, some 6 s).
+TEST(SystemCrosscheckCli, ASeedsCasesOnTheSocAgreeWithTheModel) {
+  const auto r =
+      htx::test::run_program({HTX_BIN, "crosscheck", "--engine", "soc", "--seed", "3", "--count", "3"}, 110s);
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m,
+                                std::regex(R"(crosscheck soc seed 3: 3 cases, (\d+) equal, 0 different, \d+ refused )"
+                                           R"(alike, 0 refused by one engine only, 0 skipped)")))
+      << r.out;
+  EXPECT_GE(std::stoi(m[1]), 2) << r.out;
+  EXPECT_NE(r.out.find("sent, the simulated SoC, "), std::string::npos) << r.out;
+}
+
+// A scene over --max-triangles is skipped, and counted so.
+TEST(SystemCrosscheckCli, ScenesOverTheTriangleLimitAreSkipped) {
+  const auto r = htx::test::run_program(
+      {HTX_BIN, "crosscheck", "--seed", "20261207", "--count", "4", "--max-triangles", "1"}, 60s);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("(over --max-triangles 1)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("4 cases, 0 equal, 0 different"), std::string::npos) << r.out;
 }
 
 TEST(SystemCrosscheckCli, CasesAreTheSeedsAndNumbersAloneAndWithinTheListedRanges) {
@@ -74,6 +100,14 @@ TEST(SystemCrosscheckCli, CasesAreTheSeedsAndNumbersAloneAndWithinTheListedRange
   std::set<std::string> every_scene;
   for (const htx::SceneInfo& s : htx::builtin_scenes()) every_scene.insert(s.name);
   EXPECT_EQ(scenes, every_scene);
+
+  // On the SoC: its GPU's configuration, its screen, and tolerances of 1/N texel (a power of two).
+  const std::vector<std::string> soc = list({"--engine", "soc", "--seed", "5", "--count", "60"});
+  ASSERT_EQ(soc.size(), 60u);
+  const std::regex soc_line(R"(\d+: \S+ --config icebreaker( --method \S+)?( --filter \S+)?)"
+                            R"(( --tolerance (1|0\.5|0\.25|0\.125|0\.0625|0\.03125|0\.015625|0\.0078125|0\.00390625))?)"
+                            R"(( --untextured)? --size 160x120)");
+  for (const std::string& text : soc) EXPECT_TRUE(std::regex_match(text, soc_line)) << text;
 }
 
 TEST(SystemCrosscheckCli, BadArgumentsAreRefused) {
