@@ -80,6 +80,16 @@ Drawn draw_with(Draw draw) {
   return d;
 }
 
+// --out-dir's two frames of a case that differs: caseN_model.png and caseN_<engine>.png.
+void write_frames(const std::string& out_dir, uint64_t index, const CrosscheckCase& c,
+                  const std::vector<uint16_t>& model, const std::string& engine, const std::vector<uint16_t>& other) {
+  if (out_dir.empty()) return;
+  const std::string stem = out_dir + "/case" + std::to_string(index);
+  write_png(stem + "_model.png", image_from_rgb565(c.width, c.height, model));
+  write_png(stem + "_" + engine + ".png", image_from_rgb565(c.width, c.height, other));
+  std::cout << "    frames -> " << stem << "_model.png, " << stem << "_" << engine << ".png" << std::endl;
+}
+
 // Runs a case and says what came of it on one line (the case itself is already printed).
 void run_case(uint64_t index, const CrosscheckCase& c, uint32_t max_triangles, const std::string& out_dir,
               Tally& tally) {
@@ -150,12 +160,7 @@ void run_case(uint64_t index, const CrosscheckCase& c, uint32_t max_triangles, c
   ++tally.different;
   std::cout << "DIFFERENT: " << differing << " of " << c.width * c.height << " pixels (colour or depth)"
             << (counters.empty() ? "" : "; counters differ: " + counters) << "\n    again: " << again << std::endl;
-  if (!out_dir.empty()) {
-    const std::string stem = out_dir + "/case" + std::to_string(index);
-    write_png(stem + "_model.png", image_from_rgb565(c.width, c.height, model.frame->color));
-    write_png(stem + "_rtl.png", image_from_rgb565(c.width, c.height, rtl.frame->color));
-    std::cout << "    frames -> " << stem << "_model.png, " << stem << "_rtl.png" << std::endl;
-  }
+  write_frames(out_dir, index, c, model.frame->color, "rtl", rtl.frame->color);
 }
 
 // The model's own refusal of the case's triangles, as the rtl case draws them (empty: it draws
@@ -176,7 +181,8 @@ std::string model_refusal(const ScreenScene& console_screen_scene, const Crossch
 // A case drawn by the console firmware on a fresh simulated SoC, as `htx render --engine soc`
 // draws it, against the model drawing the console's own triangles (the firmware's pipeline run on
 // the host): the frame and the triangle counts.
-void run_soc_case(const CrosscheckCase& c, uint32_t max_triangles, Tally& tally) {
+void run_soc_case(uint64_t index, const CrosscheckCase& c, uint32_t max_triangles, const std::string& out_dir,
+                  Tally& tally) {
   RenderArgs a;
   a.scene = c.scene;
   a.engine = "soc";
@@ -221,8 +227,10 @@ void run_soc_case(const CrosscheckCase& c, uint32_t max_triangles, Tally& tally)
     return;
   }
   std::string disagreement;
+  ConsoleModel model;
   try {
-    disagreement = console_model_disagreement(console_model_frame(scene.draw, run.caps), run.drawn);
+    model = console_model_frame(scene.draw, run.caps);
+    disagreement = console_model_disagreement(model, run.drawn);
   } catch (const std::exception& e) {
     ++tally.refused_by_one;
     std::cout << "REFUSED BY ONE ENGINE: the model: " << e.what() << "\n    the console drew it; again: " << again
@@ -232,6 +240,8 @@ void run_soc_case(const CrosscheckCase& c, uint32_t max_triangles, Tally& tally)
   if (!disagreement.empty()) {
     ++tally.different;
     std::cout << "DIFFERENT: " << disagreement << "\n    again: " << again << std::endl;
+    if (model.frame.color.size() == run.drawn.frame.pixels.size())
+      write_frames(out_dir, index, c, model.frame.color, "soc", run.drawn.frame.pixels);
     return;
   }
   ++tally.equal;
@@ -276,7 +286,7 @@ void run_crosscheck(const CrosscheckArgs& a) {
     // Printed before drawing, so that a case that never ends names itself.
     std::cout << "[" << i << "] " << case_label(c) << ": " << std::flush;
     if (engine == CrosscheckEngine::Soc)
-      run_soc_case(c, max_triangles, tally);
+      run_soc_case(i, c, max_triangles, a.out_dir, tally);
     else
       run_case(i, c, max_triangles, a.out_dir, tally);
     ++run;
