@@ -163,10 +163,11 @@ void run_case(uint64_t index, const CrosscheckCase& c, uint32_t max_triangles, c
   write_frames(out_dir, index, c, model.frame->color, "rtl", rtl.frame->color);
 }
 
-// The model's own refusal of the case's triangles, as the rtl case draws them (empty: it draws
-// them), for a case the console refused.
-std::string model_refusal(const ScreenScene& console_screen_scene, const CrosscheckCase& c) {
-  ScreenScene screen = console_screen_scene;
+// The model's own refusal of the case's method and filter (empty: it draws them), for a case the
+// console refused. The console refuses a setting its GPU lacks whatever the triangles (`set filter
+// trilinear` for an untextured scene too), so the model is asked with the scene textured.
+std::string model_refusal(const Scene& scene, const CrosscheckCase& c) {
+  ScreenScene screen = console_screen(scene, false);
   override_triangle_states(screen, c.method, c.filter, false);
   const ModelConfig config = named_config(c.config, rtl_config);
   try {
@@ -215,7 +216,7 @@ void run_soc_case(uint64_t index, const CrosscheckCase& c, uint32_t max_triangle
   try {
     run = draw_console_scene(a, scene.draw, true, {});
   } catch (const std::exception& e) {
-    const std::string model = model_refusal(scene.screen, c);
+    const std::string model = model_refusal(scene.scene, c);
     if (!model.empty()) {
       ++tally.refused_alike;
       std::cout << "refused by both: " << e.what() << " (the model: " << model << ")" << std::endl;
