@@ -309,8 +309,9 @@ void run_crosscheck(const CrosscheckArgs& a) {
 
 void register_crosscheck(CLI::App& app) {
   auto args = std::make_shared<CrosscheckArgs>();
-  auto* cmd = app.add_subcommand("crosscheck",
-                                 "Draw random renders on the model and on the RTL and compare them pixel for pixel");
+  auto* cmd = app.add_subcommand(
+      "crosscheck",
+      "Draw random renders on the model and on the RTL (or the simulated SoC) and compare them pixel for pixel");
   cmd->add_option("--seed", args->seed, "the sequence of cases (the same on every machine)")->capture_default_str();
   cmd->add_option("--first", args->first, "the first case's number in the sequence")->capture_default_str();
   cmd->add_option("--count", args->count, "how many cases")
