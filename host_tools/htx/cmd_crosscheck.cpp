@@ -49,12 +49,7 @@ struct CrosscheckArgs {
 constexpr uint32_t kSocMaxTriangles = 2000;
 
 std::string case_label(const CrosscheckCase& c) {
-  std::string s = c.scene + " --config " + c.config;
-  if (!c.method.empty()) s += " --method " + c.method;
-  if (!c.filter.empty()) s += " --filter " + c.filter;
-  if (!c.tolerance.empty()) s += " --tolerance " + c.tolerance;
-  if (c.untextured) s += " --untextured";
-  return s + " --size " + std::to_string(c.width) + "x" + std::to_string(c.height);
+  return c.scene + " " + crosscheck_case_options(c);
 }
 
 #ifdef HTX_HAVE_RTL_ENGINE
@@ -265,8 +260,6 @@ void run_crosscheck(const CrosscheckArgs& a) {
   const uint32_t max_triangles = a.max_triangles > 0               ? a.max_triangles
                                  : engine == CrosscheckEngine::Soc ? kSocMaxTriangles
                                                                    : UINT32_MAX;
-#endif
-#ifdef HTX_HAVE_RTL_ENGINE
   // --out-dir made and tried with a first frame's name before any case runs (a sweep is long).
   if (!a.out_dir.empty()) {
     std::error_code error;

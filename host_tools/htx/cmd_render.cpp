@@ -110,12 +110,10 @@ void run_render(const RenderArgs& given) {
   override_triangle_states(screen, a.method, a.filter, a.untextured);
 #ifdef HTX_HAVE_RTL_ENGINE
   // The RTL builds the named configurations but for the model's QUADRATIC (rtl_config).
-  const ModelConfig config = a.engine == "rtl"
-                                 ? named_config(a.config, rtl_config)
-                                 : named_config(a.config, [](const std::string& n) { return model_config(n); });
+  const ModelConfig config = a.engine == "rtl" ? named_config(a.config, rtl_config) : named_config(a.config);
   RtlStats rtl_stats;
 #else
-  const ModelConfig config = named_config(a.config, [](const std::string& n) { return model_config(n); });
+  const ModelConfig config = named_config(a.config);
 #endif
   // AUTO: the firmware's per-triangle choice (docs/auto.md) within --tolerance texels.
   const fw::AutoSceneSummary auto_summary = fw::resolve_auto_methods(screen, config, static_cast<float>(a.tolerance));

@@ -7,6 +7,7 @@
 #include "htx/model/config.hpp"
 #include "htx/model/names.hpp"
 #include "htx/model/random.hpp"
+#include "render_setup.hpp"
 #include "soc_config.hpp"
 
 namespace htx {
@@ -73,11 +74,6 @@ const Method kMethods[] = {Method::Affine,  Method::Subdiv,    Method::RecipLut,
                            Method::DivFree, Method::Quadratic, Method::Auto};
 const Filter kFilters[] = {Filter::Nearest, Filter::Bilinear, Filter::Trilinear};
 
-// The model's configuration of a name (the board's: icebreaker's with the board GPU's methods).
-ModelConfig config_of(const std::string& name) {
-  return name == kIcebreakerBoard ? icebreaker_board_config(model_config("icebreaker")) : model_config(name);
-}
-
 // Nine times in ten one the configuration builds on the GPU (AUTO, or a built method but the
 // model's QUADRATIC), otherwise any: the engines must refuse those alike.
 std::string draw_method(CaseRng& rng, const ModelConfig& config) {
@@ -121,7 +117,7 @@ CrosscheckCase draw_crosscheck_case(uint64_t seed, uint64_t index, const std::ve
     sep = ',';
   }
   c.config = soc ? "icebreaker" : rng.pick(kConfigs);  // (the SoC's GPU)
-  const ModelConfig config = config_of(c.config);
+  const ModelConfig config = named_config(c.config);
   if (!rng.chance(0.15)) c.method = draw_method(rng, config);
   if (!rng.chance(0.25)) c.filter = draw_filter(rng, config);
   c.untextured = rng.chance(0.1);
@@ -146,14 +142,19 @@ CrosscheckCase draw_crosscheck_case(uint64_t seed, uint64_t index, const std::ve
   return c;
 }
 
+std::string crosscheck_case_options(const CrosscheckCase& c) {
+  std::string s = "--config " + c.config;
+  if (!c.method.empty()) s += " --method " + c.method;
+  if (!c.filter.empty()) s += " --filter " + c.filter;
+  if (!c.tolerance.empty()) s += " --tolerance " + c.tolerance;
+  if (c.untextured) s += " --untextured";
+  return s + " --size " + std::to_string(c.width) + "x" + std::to_string(c.height);
+}
+
 std::string crosscheck_render_command(const CrosscheckCase& c, const std::string& engine, const std::string& out,
                                       const std::string& metrics) {
-  std::string cmd = "htx render " + c.scene + " --engine " + engine + " --config " + c.config;
-  if (!c.method.empty()) cmd += " --method " + c.method;
-  if (!c.filter.empty()) cmd += " --filter " + c.filter;
-  if (!c.tolerance.empty()) cmd += " --tolerance " + c.tolerance;
-  if (c.untextured) cmd += " --untextured";
-  cmd += " --size " + std::to_string(c.width) + "x" + std::to_string(c.height) + " --out " + out;
+  std::string cmd =
+      "htx render " + c.scene + " --engine " + engine + " " + crosscheck_case_options(c) + " --out " + out;
   if (!metrics.empty()) cmd += " --metrics " + metrics;
   return cmd;
 }

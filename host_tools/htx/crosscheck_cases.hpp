@@ -32,6 +32,10 @@ enum class CrosscheckEngine { Rtl, Soc };
 CrosscheckCase draw_crosscheck_case(uint64_t seed, uint64_t index, const std::vector<SceneInfo>& scenes,
                                     CrosscheckEngine engine = CrosscheckEngine::Rtl);
 
+// The case's `htx render` options but the scene and engine: "--config C [--method M] [--filter F]
+// [--tolerance T] [--untextured] --size WxH".
+std::string crosscheck_case_options(const CrosscheckCase& c);
+
 // The `htx render` arguments that make the case on `engine`, writing `out` (and `metrics`, if not
 // empty). (Every part is plain: letters, digits and `:,=._-`, which no shell treats specially.)
 std::string crosscheck_render_command(const CrosscheckCase& c, const std::string& engine, const std::string& out,

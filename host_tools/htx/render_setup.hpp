@@ -39,4 +39,10 @@ ModelConfig named_config(const std::string& name, BaseConfig base_config) {
   return config;
 }
 
+// The model's configuration of --config's name (QUADRATIC included; the rtl engine's is
+// named_config(name, rtl_config)).
+inline ModelConfig named_config(const std::string& name) {
+  return named_config(name, [](const std::string& n) { return model_config(n); });
+}
+
 }  // namespace htx
