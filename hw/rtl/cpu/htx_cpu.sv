@@ -113,6 +113,7 @@ module htx_cpu #(
   logic                    e_valid_q;
   htx_cpu_pkg::exec_t      e_q;
   logic [32:0]             e_a_q, e_b_q;                    // ALU operands (bit 32: see the ALU)
+  logic [31:0]             e_rs1_q;                         // the multiplier's operand a (rs1)
   logic [31:0]             e_rs2_q, e_aux_q;                // store data, target (or instruction)
   logic                    e_br_eq_q, e_br_inv_q;           // branch condition: use eq, invert
   logic [31:2]             e_pc_q, e_npc_q;
@@ -291,6 +292,18 @@ module htx_cpu #(
   assign b_ext_1 = (d_b_rs2_q ? signed_d : (signed_d & d_dec.imm[31])) ^ sub_d;
   assign signed_d = d_signed_q;
 
+  // A MUL-class instruction's ALU operands are the two terms of its signed correction, corr =
+  // (a < 0 ? b : 0) + (b < 0 ? a : 0) with a = rs1 signed unless MULHU and b = rs2 signed for MUL
+  // and MULH: operand a is rs1 if rs2 is a negative signed operand and 0 otherwise, operand b is
+  // rs2 if rs1 is a negative signed operand and 0 otherwise. E's adder then forms corr, inverted
+  // for the multiplier's DSP (htx_cpu_mul), in place of a 4-way choice among 0, rs1, rs2 and their
+  // sum in the unit (66 LUT4). The zeros are the operand flip-flops' synchronous resets, whose
+  // conditions come from the forwarded signs one LUT level after them, as e_b_q's inversion does;
+  // the multiplier takes rs1 from e_rs1_q (its DSPs' input register).
+  logic mul_zero_a, mul_zero_b;
+  assign mul_zero_a = d_dec.mul && !(!d_dec.funct3[1] && d_rs2[31]);
+  assign mul_zero_b = d_dec.mul && !((d_dec.funct3[1:0] != 2'b11) && d_a[31]);
+
   // Address bits [1:0] of a load, store or JALR target, for the misalignment checks. The two-bit
   // sum is formed for every forwarding source and the forwarding selects come last, so the
   // register compares and the trap logic behind them are not in series with the adder.
@@ -408,6 +421,7 @@ module htx_cpu #(
     .sub_i    (e_sub_q),
     .left_i   (e_left_q),
     .arith_i  (e_arith_q),
+    .invert_i (e_q.mul),     // the multiplier's ~corr (below)
     .a_i      (e_a_q),
     .b_i      (e_b_q),
     .fast_o   (e_fast_result),
@@ -457,11 +471,10 @@ module htx_cpu #(
     .clk_i,
     .rst_ni,
     .start_i  (e_can_go && e_mul && !mul_busy),
-    .op_i     (e_q.funct3[1:0]),
     .high_i   (e_high_q),
-    .a_i      (e_a_q[31:0]),
+    .a_i      (e_rs1_q),
     .b_i      (e_rs2_q),
-    .sum_i    (alu_sum),     // a + b: the operands of a MUL-class instruction are rs1 and rs2
+    .ncorr_i  (alu_sum),     // ~(a + b): a MUL-class instruction's operands are corr's terms
     .busy_o   (mul_busy),
     .done_next_o (mul_done_next),
     .result_o (mul_result)
@@ -672,8 +685,9 @@ module htx_cpu #(
     end
     if (e_accept_nr) begin
       e_q       <= d_exec;
-      e_a_q     <= {signed_d & d_a[31], d_a};
-      e_b_q     <= {d_rs2[31] ? b_ext_1 : b_ext_0, d_b ^ {32{sub_d}}};
+      e_a_q     <= mul_zero_a ? 33'b0 : {signed_d & d_a[31], d_a};
+      e_b_q     <= mul_zero_b ? 33'b0 : {d_rs2[31] ? b_ext_1 : b_ext_0, d_b ^ {32{sub_d}}};
+      e_rs1_q   <= d_a;
       e_br_eq_q <= !d_dec.funct3[2];
       e_br_inv_q <= d_dec.funct3[0];
       e_rs2_q   <= d_rs2;

@@ -10,22 +10,42 @@
 // adder is 33 bits wide: decode extends the operands with their sign bits for a signed comparison
 // and with zeros for an unsigned one, so bit 32 of a - b is the comparison result straight from
 // the end of the carry chain.
+//
+// invert_i inverts the sum (a MUL-class instruction: the multiplier's DSP adds ~(a + b), the
+// signed correction, docs/cpu.md). It costs no LUT: each sum bit's iCE40 carry-chain LUT computes
+// a ^ b ^ carry from three of its four inputs, and the fourth takes invert_i. With HTX_ICE40 the
+// adder is written as those cells (SB_LUT4 and SB_CARRY a bit); Yosys maps the behavioural code
+// with a LUT more a bit for the inversion (docs/architecture.md, "Vendor cells").
 module htx_cpu_alu (
   input  htx_cpu_pkg::alu_op_e op_i,
   input  logic                 sub_i,    // op_i is Sub, Slt or Sltu (decoded a cycle earlier)
   input  logic                 left_i,   // op_i is Sll (decoded a cycle earlier)
   input  logic                 arith_i,  // op_i is Sra (decoded a cycle earlier)
+  input  logic                 invert_i, // sum_o (and the sum behind eq_o, lt_o, fast_o) inverted
   input  logic [32:0]          a_i,      // bit 32: extension for comparisons
   input  logic [32:0]          b_i,      // b, or ~b when sub_i; bit 32 likewise
   output logic [31:0]          fast_o,   // add, sub, xor, or, and
   output logic [31:0]          late_o,   // sll (bit-reversed), srl, sra
-  output logic [31:0]          sum_o,    // a + b, or a - b when sub_i
+  output logic [31:0]          sum_o,    // a + b, or a - b when sub_i; inverted when invert_i
   output logic                 eq_o,     // a == b (valid when sub_i: a - b is 0)
   output logic                 lt_o      // a < b, signed or not as extended (valid when sub_i)
 );
 
   logic [32:0] sum33;
-  assign sum33 = a_i + b_i + {32'b0, sub_i};
+`ifdef HTX_ICE40
+  logic [32:0] carry;
+  assign carry[0] = sub_i;
+  for (genvar i = 0; i < 33; i++) begin : g_bit
+    // O = I0 ^ I1 ^ I2 ^ I3  (I0 invert, I1 a, I2 b, I3 carry in)
+    SB_LUT4 #(.LUT_INIT(16'h6996)) u_sum_lut (
+      .O(sum33[i]), .I0(invert_i), .I1(a_i[i]), .I2(b_i[i]), .I3(carry[i]));
+    if (i < 32) begin : g_carry
+      SB_CARRY u_sum_carry (.CO(carry[i+1]), .I0(a_i[i]), .I1(b_i[i]), .CI(carry[i]));
+    end
+  end
+`else
+  assign sum33 = (a_i + b_i + {32'b0, sub_i}) ^ {33{invert_i}};
+`endif
   assign sum_o = sum33[31:0];
   // Equality from the difference (branches always subtract): a zero test of the sum is about 20
   // LUT4 smaller than comparing the operands bit by bit. The carry chain's low sum bits settle

@@ -1,9 +1,9 @@
 // Three-cycle 32x32 multiplier for MUL/MULH/MULHSU/MULHU built from four unsigned 16x16 partial
 // products, so that synth_ice40 -dsp maps exactly four SB_MAC16. Signed high halves come from the
-// unsigned product: hi_signed = hi_unsigned - (a<0 ? b : 0) - (b<0 ? a : 0) (mod 2^32).
-// The correction needs no adder of its own: when both terms are present (MULH of two negative
-// operands) it is a + b, which execute's ALU adder computes anyway for a MUL-class instruction
-// (sum_i), so it is one 4:1 choice among 0, a, b and a + b. Nor does its subtraction: the high
+// unsigned product: hi_signed = hi_unsigned - corr (mod 2^32), corr = (a<0 ? b : 0) + (b<0 ? a : 0).
+// The unit forms no part of the correction itself: execute's ALU adds its two terms (decode
+// registers a MUL-class instruction's ALU operands as those terms, each rs1 or rs2 or zero) and
+// inverts the sum, so ncorr_i is ~corr (docs/cpu.md, "Multiply"). Nor does it subtract: the high
 // partial product's DSP adds ~corr as it forms hh (hh - corr = hh + ~corr + 1), and the 1 rides on
 // the lh product's DSP, which adds 2^16 to it, so that mid's upper half carries it into the high
 // word (both sums fit their 32 bits: lh + 2^16 <= 0xFFFF_0001, and mid < 2^33 still). The two
@@ -19,30 +19,16 @@ module htx_cpu_mul (
   input  logic        clk_i,
   input  logic        rst_ni,
   input  logic        start_i,
-  input  logic [1:0]  op_i,     // funct3[1:0]: 00 MUL, 01 MULH, 10 MULHSU, 11 MULHU
-  input  logic        high_i,   // the instruction in execute reads the high word (op_i != 00)
+  input  logic        high_i,   // the instruction in execute reads the high word (funct3 != 00)
   input  logic [31:0] a_i,
   input  logic [31:0] b_i,
-  input  logic [31:0] sum_i,    // a_i + b_i (execute's adder)
+  // ~corr for the instruction's signedness (MUL takes MULH's: its low word does not depend on it,
+  // and its high word is then the one a fused MULH after it reads; see htx_cpu)
+  input  logic [31:0] ncorr_i,
   output logic        busy_o,   // an operation is in flight: start_i is ignored
   output logic        done_next_o,  // result_o is the result from the next cycle on
   output logic [31:0] result_o
 );
-
-  logic        a_corr, b_corr;  // a < 0 as a signed operand (subtract b), likewise b
-  logic [31:0] corr_d;
-  // MUL (00) takes MULH's correction: its low word does not depend on it, and its high word is
-  // then the one a fused MULH after it reads (see htx_cpu).
-  assign a_corr = (op_i != 2'b11) && a_i[31];
-  assign b_corr = !op_i[1] && b_i[31];
-  always_comb begin
-    unique case ({a_corr, b_corr})
-      2'b11:   corr_d = sum_i;
-      2'b10:   corr_d = b_i;
-      2'b01:   corr_d = a_i;
-      default: corr_d = 32'b0;
-    endcase
-  end
 
   logic [31:0] p_ll_q, p_lh_q, p_hl_q, p_hh_q;
   logic [31:0] lo_q, hi_q;
@@ -57,7 +43,7 @@ module htx_cpu_mul (
       p_ll_q <= a_i[15:0]  * b_i[15:0];
       p_lh_q <= a_i[15:0]  * b_i[31:16] + 32'h0001_0000;  // the 1 of -corr, at mid's bit 16
       p_hl_q <= a_i[31:16] * b_i[15:0];
-      p_hh_q <= a_i[31:16] * b_i[31:16] + ~corr_d;        // hh - corr - 1
+      p_hh_q <= a_i[31:16] * b_i[31:16] + ncorr_i;        // hh - corr - 1
     end
     if (step1_q) begin
       lo_q <= {lo_upper[15:0], p_ll_q[15:0]};
