@@ -25,6 +25,7 @@
 #include "htx/model/model.hpp"
 #include "htx/rtl/raster_engine.hpp"
 #include "output_path.hpp"
+#include "render_args.hpp"
 #include "render_setup.hpp"
 #define HTX_HAVE_RTL_ENGINE 1
 #endif
@@ -75,6 +76,20 @@ Drawn draw_with(Draw draw) {
   return d;
 }
 
+// The case as `htx render`'s arguments on `engine` (its tolerance read as htx render reads it).
+RenderArgs render_args_of(const CrosscheckCase& c, const std::string& engine) {
+  RenderArgs a;
+  a.scene = c.scene;
+  a.engine = engine;
+  a.config = c.config;
+  a.size = std::to_string(c.width) + "x" + std::to_string(c.height);
+  a.method = c.method;
+  a.filter = c.filter;
+  a.untextured = c.untextured;
+  if (!c.tolerance.empty()) a.tolerance = std::stod(c.tolerance);
+  return a;
+}
+
 // --out-dir's two frames of a case that differs: caseN_model.png and caseN_<engine>.png.
 void write_frames(const std::string& out_dir, uint64_t index, const CrosscheckCase& c,
                   const std::vector<uint16_t>& model, const std::string& engine, const std::vector<uint16_t>& other) {
@@ -113,9 +128,7 @@ void run_case(uint64_t index, const CrosscheckCase& c, uint32_t max_triangles, c
     return;
   }
   override_triangle_states(screen, c.method, c.filter, c.untextured);
-  const float tolerance =
-      c.tolerance.empty() ? 1.0f / 64 : static_cast<float>(std::stod(c.tolerance));  // as htx render reads it
-  fw::resolve_auto_methods(screen, config, tolerance);
+  fw::resolve_auto_methods(screen, config, static_cast<float>(render_args_of(c, "rtl").tolerance));
 
   RtlStats stats;
   const Drawn model = draw_with([&] { return render_model(screen, config); });
@@ -179,15 +192,7 @@ std::string model_refusal(const Scene& scene, const CrosscheckCase& c) {
 // the host): the frame and the triangle counts.
 void run_soc_case(uint64_t index, const CrosscheckCase& c, uint32_t max_triangles, const std::string& out_dir,
                   Tally& tally) {
-  RenderArgs a;
-  a.scene = c.scene;
-  a.engine = "soc";
-  a.config = c.config;
-  a.size = std::to_string(c.width) + "x" + std::to_string(c.height);
-  a.method = c.method;
-  a.filter = c.filter;
-  a.untextured = c.untextured;
-  if (!c.tolerance.empty()) a.tolerance = std::stod(c.tolerance);
+  const RenderArgs a = render_args_of(c, "soc");
   ConsoleScene scene;
   try {
     scene = prepare_console_scene(a);

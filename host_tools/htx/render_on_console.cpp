@@ -37,8 +37,8 @@ namespace {
 
 // The console's screen and clear colour: its render firmware's (firmware/app/render).
 constexpr int kScreenWidth = render_app::kWidth, kScreenHeight = render_app::kHeight;
-constexpr const char* kSocConfig = "icebreaker";         // the simulated SoC's and the ULX3S's GPU
-constexpr unsigned kSocBaud = 1'000'000;                 // soc: the console's `baud` once it is up
+constexpr const char* kSocConfig = "icebreaker";  // the simulated SoC's and the ULX3S's GPU
+constexpr unsigned kSocBaud = 1'000'000;          // soc: the console's `baud` once it is up
 
 // A number as printf's %g writes it (std::to_string's fixed six decimals write 1e-7 as 0.000000).
 std::string shortest(double v) {
@@ -68,8 +68,9 @@ std::string console_method(const RenderArgs& a, const ScreenScene& screen) {
   for (const ScreenTri& t : screen.tris) {
     const std::string n = method_name(t.state.method, t.state.subdiv_n);
     if (name && *name != n)
-      throw std::invalid_argument("the scene's triangles use more than one method, and the console draws every "
-                                  "triangle with one: give --method");
+      throw std::invalid_argument(
+          "the scene's triangles use more than one method, and the console draws every "
+          "triangle with one: give --method");
     name = n;
   }
   return name.value_or("auto");
@@ -94,8 +95,8 @@ std::string console_firmware(const RenderArgs& a) {
 // frame is the one the console sent, pixel for pixel, with the same counts, it is that frame's.
 // Otherwise the probe's figures are null and stderr says why.
 void console_probe_figures(const Scene& scene, const ConsoleDraw& draw, const ConsoleDrawn& drawn,
-                           const ConsoleCaps& caps, bool untextured, const RefOptions& ref_options, const MetricsLabels& labels,
-                           const std::string& engine, nlohmann::json* j) {
+                           const ConsoleCaps& caps, bool untextured, const RefOptions& ref_options,
+                           const MetricsLabels& labels, const std::string& engine, nlohmann::json* j) {
   const auto no_probe = [j, &engine](const std::string& why) {
     null_probe_figures(j);
     std::cerr << engine << ": metrics: no texel errors: " << why << std::endl;
@@ -119,6 +120,11 @@ void console_probe_figures(const Scene& scene, const ConsoleDraw& draw, const Co
   }
 }
 
+// "WxH" of the console's screen.
+std::string console_screen_size() {
+  return std::to_string(kScreenWidth) + "x" + std::to_string(kScreenHeight);
+}
+
 }  // namespace
 
 ScreenScene console_screen(const Scene& scene, bool untextured) {
@@ -131,7 +137,7 @@ ScreenScene console_screen(const Scene& scene, bool untextured) {
 
 ConsoleScene prepare_console_scene(const RenderArgs& a) {
   const bool soc = a.engine == "soc";
-  const std::string screen_size = std::to_string(kScreenWidth) + "x" + std::to_string(kScreenHeight);
+  const std::string screen_size = console_screen_size();
   if (!a.size.empty() && a.size != screen_size)
     throw std::invalid_argument("--size " + a.size + ": --engine " + a.engine + " draws the console's " + screen_size +
                                 " screen only");
@@ -229,15 +235,16 @@ ConsoleRun draw_console_scene(const RenderArgs& a, ConsoleDraw draw, bool want_c
   const console::GrabbedFrame& g = run.drawn.frame;
   if (g.width != kScreenWidth || g.height != kScreenHeight)
     throw std::runtime_error("the console sent a " + std::to_string(g.width) + "x" + std::to_string(g.height) +
-                             " frame, not " + std::to_string(kScreenWidth) + "x" + std::to_string(kScreenHeight));
+                             " frame, not " + console_screen_size());
   return run;
 }
 
 void render_on_console(const RenderArgs& a) {
   const ConsoleScene c = prepare_console_scene(a);
   require_render_outputs(a, c.scene);
-  const ConsoleRun run = draw_console_scene(a, c.draw, !a.metrics.empty(),
-                                            [&a](const std::string& what) { std::cerr << a.engine << ": " << what << std::endl; });
+  const ConsoleRun run = draw_console_scene(a, c.draw, !a.metrics.empty(), [&a](const std::string& what) {
+    std::cerr << a.engine << ": " << what << std::endl;
+  });
   const ConsoleDrawn& drawn = run.drawn;
   const console::GrabbedFrame& g = drawn.frame;
   write_png(a.out, image_from_rgb565(g.width, g.height, g.pixels));
