@@ -114,7 +114,7 @@ module htx_cpu #(
   htx_cpu_pkg::exec_t      e_q;
   logic [32:0]             e_a_q, e_b_q;                    // ALU operands (bit 32: see the ALU)
   logic [31:0]             e_rs1_q;                         // the multiplier's operand a (rs1)
-  logic [31:0]             e_rs2_q, e_aux_q;                // store data, target (or instruction)
+  logic [31:0]             e_rs2_q, e_aux_q;                // store data, a JAL or branch target
   logic                    e_br_eq_q, e_br_inv_q;           // branch condition: use eq, invert
   logic [31:2]             e_pc_q, e_npc_q;
   logic                    e_pred_q, e_xtrap_q, e_late_q, e_sub_q, e_fwd_q;
