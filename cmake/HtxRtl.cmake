@@ -15,6 +15,14 @@
 #   Registers `lint.ice40_equiv.<test name>` (default: the module): Yosys proves the module's HTX_ICE40 netlist (iCE40 cells
 #   from Yosys's own simulation models) equivalent to its behavioural code (equiv_make,
 #   equiv_simple, equiv_induct, with the registers' reset made synchronous).
+# htx_formal_bmc(NAME <test> TOP <harness> SOURCES <sv files...> DEPTH <cycles>
+#                [CUT <modules...>] [COVER <signals...>])
+#   Registers the test <test> (label `rtl`): Yosys's SAT solver checks every `assert` of the harness
+#   for DEPTH cycles from a free initial state under its `assume`s (`sat -seq -prove-asserts`, a
+#   bounded proof). CUT modules have their outputs replaced by free values each cycle (`cutpoint`:
+#   an over-approximation, so a proof still holds for the real module). Each COVER signal (a name
+#   in the flattened harness) must be reachable within DEPTH: a proof that it stays 0 must fail,
+#   so the assertions are not checked on a subset of behaviour that never reaches it.
 # htx_verilate(<lib target> TOP <top> [ARGS <verilator args...>] [TRACE])
 #   Builds a static library holding the Verilated model of a top registered with htx_rtl_top.
 
@@ -118,6 +126,34 @@ function(htx_ice40_equiv)
   add_test(NAME lint.ice40_equiv.${A_TEST}
     COMMAND ${HTX_YOSYS_BIN} -q -l ${CMAKE_BINARY_DIR}/lint/${A_TEST}.ice40_equiv.log -s ${script})
   set_tests_properties(lint.ice40_equiv.${A_TEST} PROPERTIES LABELS lint)
+endfunction()
+
+function(htx_formal_bmc)
+  cmake_parse_arguments(A "" "NAME;TOP;DEPTH" "SOURCES;CUT;COVER" ${ARGN})
+  if(NOT HTX_YOSYS_BIN)
+    return()
+  endif()
+  htx_absolute_paths(srcs ${A_SOURCES})
+  list(JOIN srcs " " files)
+  set(script ${CMAKE_BINARY_DIR}/formal/${A_NAME}.ys)
+  file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/formal)
+  set(text "read_verilog -sv -formal ${files}\nprep -top ${A_TOP}\n")
+  if(A_CUT)
+    list(JOIN A_CUT " " cut)
+    string(APPEND text "cutpoint ${cut}\n")
+  endif()
+  # The register file and buffers become flip-flops (the SAT pass takes no memories); reset
+  # becomes synchronous with its value visible at once, as the asynchronous one is.
+  string(APPEND text "memory_map\nflatten\nopt -fast\nasync2sync\ndffunmap\nopt_clean\n")
+  foreach(c IN LISTS A_COVER)
+    string(APPEND text "sat -seq ${A_DEPTH} -set-assumes -prove ${c} 0 -falsify -timeout 900\n")
+  endforeach()
+  string(APPEND text "sat -seq ${A_DEPTH} -set-assumes -prove-asserts -verify -show-ports -timeout 900"
+    " -dump_vcd ${CMAKE_BINARY_DIR}/formal/${A_NAME}.vcd\n")
+  file(WRITE ${script} "${text}")
+  add_test(NAME ${A_NAME}
+    COMMAND ${HTX_YOSYS_BIN} -q -l ${CMAKE_BINARY_DIR}/formal/${A_NAME}.log -s ${script})
+  set_tests_properties(${A_NAME} PROPERTIES LABELS rtl TIMEOUT 1200)
 endfunction()
 
 # PREFIX names the generated class (default V<TOP>), so two parameterisations of one top can be

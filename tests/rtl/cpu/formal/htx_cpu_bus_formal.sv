@@ -1,0 +1,137 @@
+// Formal harness (Yosys `sat`, bounded): htx_cpu on both buses against every slave behaviour the
+// bus contract allows (docs/contracts.md, "On-chip bus"): any wait states on the request channel,
+// a response at any time from a cycle after acceptance on, any read data and any error. The core
+// starts from an arbitrary state (flip-flops without a reset are free) held in reset for the
+// first cycle. Asserted: a request waiting for ready stays presented and unchanged; at most two
+// instruction requests and one data request outstanding; instruction requests are aligned word
+// reads; a data request's byte enables are those of an aligned access at its address.
+// cov_* are reachability targets: the test also finds a trace to each, so that the assertions are
+// not checked on a subset of behaviour that never issues a request.
+module htx_cpu_bus_formal (
+  input logic        clk_i,
+  input logic        rst_ni,
+  input logic        ibus_req_ready_i,
+  input logic        ibus_rsp_valid_i,
+  input logic [31:0] ibus_rsp_rdata_i,
+  input logic        ibus_rsp_err_i,
+  input logic        dbus_req_ready_i,
+  input logic        dbus_rsp_valid_i,
+  input logic [31:0] dbus_rsp_rdata_i,
+  input logic        dbus_rsp_err_i
+);
+  logic        ibus_req_valid, ibus_req_we, dbus_req_valid, dbus_req_we;
+  logic [31:0] ibus_req_addr, ibus_req_wdata, dbus_req_addr, dbus_req_wdata;
+  logic [3:0]  ibus_req_be, dbus_req_be;
+
+  htx_cpu u_cpu (
+    .clk_i,
+    .rst_ni,
+    .ibus_req_valid_o (ibus_req_valid),
+    .ibus_req_ready_i,
+    .ibus_req_addr_o  (ibus_req_addr),
+    .ibus_req_we_o    (ibus_req_we),
+    .ibus_req_be_o    (ibus_req_be),
+    .ibus_req_wdata_o (ibus_req_wdata),
+    .ibus_rsp_valid_i,
+    .ibus_rsp_rdata_i,
+    .ibus_rsp_err_i,
+    .dbus_req_valid_o (dbus_req_valid),
+    .dbus_req_ready_i,
+    .dbus_req_addr_o  (dbus_req_addr),
+    .dbus_req_we_o    (dbus_req_we),
+    .dbus_req_be_o    (dbus_req_be),
+    .dbus_req_wdata_o (dbus_req_wdata),
+    .dbus_rsp_valid_i,
+    .dbus_rsp_rdata_i,
+    .dbus_rsp_err_i
+  );
+
+  logic past_valid_q = 1'b0;
+  always_ff @(posedge clk_i) begin
+    past_valid_q <= 1'b1;
+  end
+  always_comb begin
+    if (!past_valid_q) begin
+      assume (!rst_ni);
+    end
+  end
+
+  // The slave side: accepted requests without a response yet. A response comes only for one of
+  // them and never in the cycle its request is accepted.
+  logic [2:0] i_out_q = 3'd0;
+  logic [2:0] d_out_q = 3'd0;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      i_out_q <= 3'd0;
+      d_out_q <= 3'd0;
+    end else begin
+      i_out_q <= i_out_q + {2'b0, ibus_req_valid && ibus_req_ready_i} - {2'b0, ibus_rsp_valid_i};
+      d_out_q <= d_out_q + {2'b0, dbus_req_valid && dbus_req_ready_i} - {2'b0, dbus_rsp_valid_i};
+    end
+  end
+
+  always_comb begin
+    if (i_out_q == 3'd0 || !rst_ni) begin
+      assume (!ibus_rsp_valid_i);
+    end
+    if (d_out_q == 3'd0 || !rst_ni) begin
+      assume (!dbus_rsp_valid_i);
+    end
+    if (!ibus_rsp_valid_i) begin
+      assume (!ibus_rsp_err_i);
+    end
+    if (!dbus_rsp_valid_i) begin
+      assume (!dbus_rsp_err_i);
+    end
+  end
+
+  always_comb begin
+    if (rst_ni) begin
+      assert (i_out_q <= 3'd2);
+      assert (d_out_q <= 3'd1);
+      if (ibus_req_valid) begin
+        assert (!ibus_req_we && ibus_req_be == 4'b1111 && ibus_req_addr[1:0] == 2'b00);
+      end
+      if (dbus_req_valid) begin
+        unique case (dbus_req_be)
+          4'b1111, 4'b0011, 4'b0001: assert (dbus_req_addr[1:0] == 2'b00);
+          4'b1100, 4'b0100:          assert (dbus_req_addr[1:0] == 2'b10);
+          4'b0010:                   assert (dbus_req_addr[1:0] == 2'b01);
+          4'b1000:                   assert (dbus_req_addr[1:0] == 2'b11);
+          default:                   assert (1'b0);
+        endcase
+      end
+    end
+  end
+
+  logic i_waited_q = 1'b0;
+  logic d_waited_q = 1'b0;
+  logic [31:0] i_addr_q, d_addr_q, d_wdata_q;
+  logic        d_we_q;
+  logic [3:0]  d_be_q;
+  always_ff @(posedge clk_i) begin
+    i_waited_q <= rst_ni && ibus_req_valid && !ibus_req_ready_i;
+    d_waited_q <= rst_ni && dbus_req_valid && !dbus_req_ready_i;
+    i_addr_q   <= ibus_req_addr;
+    d_addr_q   <= dbus_req_addr;
+    d_we_q     <= dbus_req_we;
+    d_be_q     <= dbus_req_be;
+    d_wdata_q  <= dbus_req_wdata;
+  end
+
+  always_comb begin
+    if (rst_ni && i_waited_q) begin
+      assert (ibus_req_valid && ibus_req_addr == i_addr_q);
+    end
+    if (rst_ni && d_waited_q) begin
+      assert (dbus_req_valid && dbus_req_addr == d_addr_q && dbus_req_we == d_we_q &&
+              dbus_req_be == d_be_q && dbus_req_wdata == d_wdata_q);
+    end
+  end
+
+  // Reachability targets.
+  (* keep *) logic cov_dbus_waited_store, cov_dbus_waited_load, cov_ibus_waited;
+  assign cov_dbus_waited_store = rst_ni && d_waited_q && dbus_req_ready_i && dbus_req_we;
+  assign cov_dbus_waited_load  = rst_ni && d_waited_q && dbus_req_ready_i && !dbus_req_we;
+  assign cov_ibus_waited       = rst_ni && i_waited_q && ibus_req_ready_i;
+endmodule
