@@ -3,7 +3,10 @@
 # Yosys `synth_ice40 -dsp`) and fmax_mhz (nextpnr-ice40 --up5k). Not part of the default build or
 # the tests: place-and-route takes minutes. `--target synth-breakdown-NAME` counts design NAME's
 # cells per module instead (BUILD/reports/synth/NAME.modules.txt), `--target
-# synth-attribution-NAME` the flattened design's cells by signal scope (NAME.attribution.txt).
+# synth-attribution-NAME` the flattened design's cells by signal scope (NAME.attribution.txt),
+# `--target synth-spread-NAME` the LUT4 count over HTX_SYNTH_SPREAD_VARIANTS versions of the same
+# logic that differ only in Yosys's internal numbering (NAME.spread.json: ABC's spread, against
+# which an RTL change's saving is judged).
 #
 # HTX_SYNTH_DESIGNS lists the designs. For each design NAME:
 #   HTX_SYNTH_<NAME>_AREA_TOP  top whose cells are counted (registered with htx_rtl_top)
@@ -21,6 +24,7 @@ set(HTX_SYNTH_soc_up5k_AREA_TOP htx_soc_synth_top)
 find_program(HTX_NEXTPNR_ICE40 nextpnr-ice40)
 set(HTX_SYNTH_DIR ${CMAKE_BINARY_DIR}/reports/synth)
 set(HTX_SYNTH_ATTRIB_DEPTH 7 CACHE STRING "scope parts in the synth-attribution tables")
+set(HTX_SYNTH_SPREAD_VARIANTS 6 CACHE STRING "area syntheses of one design in synth-spread")
 set(outputs)
 foreach(d IN LISTS HTX_SYNTH_DESIGNS)
   set(area_top ${HTX_SYNTH_${d}_AREA_TOP})
@@ -70,6 +74,16 @@ foreach(d IN LISTS HTX_SYNTH_DESIGNS)
       -P ${CMAKE_SOURCE_DIR}/cmake/HtxSynthAttribution.cmake
     DEPENDS htx_regs_sv htx-synth-attrib
     COMMENT "synth-attribution: ${d} (yosys synth_ice40, flattened, by signal scope)"
+    VERBATIM)
+  # The area synthesis over variants of the same logic (cmake/HtxSynthSpread.cmake):
+  # `--target synth-spread-NAME`.
+  add_custom_target(synth-spread-${d}
+    COMMAND ${CMAKE_COMMAND} -DNAME=${d} -DTOP=${area_top} "-DSOURCES=${area_src_arg}"
+      -DWORK=${HTX_SYNTH_DIR} -DYOSYS=${HTX_YOSYS_BIN} "-DYOSYS_DEFINES=${HTX_YOSYS_DEFINES}"
+      -DVARIANTS=${HTX_SYNTH_SPREAD_VARIANTS} -DOUT=${HTX_SYNTH_DIR}/${d}.spread.json
+      -P ${CMAKE_SOURCE_DIR}/cmake/HtxSynthSpread.cmake
+    DEPENDS htx_regs_sv
+    COMMENT "synth-spread: ${d} (yosys synth_ice40 over ${HTX_SYNTH_SPREAD_VARIANTS} numberings)"
     VERBATIM)
 endforeach()
 

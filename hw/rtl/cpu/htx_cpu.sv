@@ -127,20 +127,15 @@ module htx_cpu #(
   // flip-flop of its own it lets the result multiplexer fold in (9 LUT4 fewer than the compare).
   logic                    e_high_q;
 
-  logic        w_valid_q, w_rd_we_q, w_load_q, w_store_q, w_nocount_q;
+  logic        w_valid_q, w_load_q, w_store_q, w_nocount_q;
   logic        w_xt_q;       // W holds an instruction that traps: w_result_q is its mtval
   htx_cpu_pkg::exc_cause_e w_cause_q;
   logic        w_reverse_q;  // w_result_q is a bit-reversed left shift
-  logic        w_wr_q;       // w_valid_q && w_rd_we_q
+  logic        w_wr_q;       // W holds an instruction that writes a register (not x0, no trap)
   logic [4:0]  w_rd_q;
-  logic [2:0]  w_funct3_q;
+  htx_cpu_pkg::load_sel_t e_load_sel, w_load_sel_q;
   logic [31:0] w_result_q;   // result, or the address of a load/store
   logic [31:2] w_pc_q;
-
-  // The last register-file write, which a read issued in the same cycle did not see.
-  logic        lw_valid_q;
-  logic [4:0]  lw_rd_q;
-  logic [31:0] lw_data_q;
 
   // ------------------------------------------------------------------------------------------
   // Write-back
@@ -153,18 +148,20 @@ module htx_cpu #(
   assign w_ready  = !w_memwait_q || dbus_rsp_valid_i;
   assign w_fault  = w_memwait_q && dbus_rsp_valid_i && dbus_rsp_err_i;
   assign w_trap   = w_fault || w_xt_q;
-  assign rf_we    = w_valid_q && w_ready && !w_fault && w_rd_we_q;
+  // (One LUT from the bus's response: the register file takes it half a cycle later.)
+  (* keep *) logic rf_we_k;
+  assign rf_we_k  = w_wr_q && (!w_memwait_q || (dbus_rsp_valid_i && !dbus_rsp_err_i));
+  assign rf_we    = rf_we_k;
+  // Everything but a load's value is known from W's flip-flops (a left shift's result is
+  // reversed), so it is formed first and ORed in where the load's lanes end (w_load_value is 0
+  // unless W holds a load).
+  logic [31:0] w_other;
   always_comb begin
-    if (w_load_q) begin
-      rf_wdata = w_load_value;
-    end else if (w_reverse_q) begin
-      for (int i = 0; i < 32; i++) begin
-        rf_wdata[i] = w_result_q[31-i];
-      end
-    end else begin
-      rf_wdata = w_result_q;
+    for (int i = 0; i < 32; i++) begin
+      w_other[i] = !w_load_q && (w_reverse_q ? w_result_q[31-i] : w_result_q[i]);
     end
   end
+  assign rf_wdata = w_load_value | w_other;
 
   // ------------------------------------------------------------------------------------------
   // Register file: read when D takes an instruction; while D holds its instruction the register
@@ -225,14 +222,12 @@ module htx_cpu #(
   logic [31:0] e_fast_result;
 
   // Forwarding: E's adder/logic result, W's write data, the last write, the register file.
-  logic fe_a, fe_b, fw_a, fw_b, fl_a, fl_b;
+  logic fe_a, fe_b, fw_a, fw_b;
   // (Each compare starts from one registered enable; a squashed E or D makes the choice moot.)
   assign fe_a = e_valid_q && e_fwd_q && (e_q.rd == d_ra);
   assign fe_b = e_valid_q && e_fwd_q && (e_q.rd == d_rb);
   assign fw_a = w_wr_q && (w_rd_q == d_ra);
   assign fw_b = w_wr_q && (w_rd_q == d_rb);
-  assign fl_a = lw_valid_q && (lw_rd_q == d_ra);
-  assign fl_b = lw_valid_q && (lw_rd_q == d_rb);
 
   // The value from E comes last (end of the carry chain), so it enters at the final LUT level, and
   // W's write data (a load's lanes come straight from the bus) one level before it: every other
@@ -240,8 +235,8 @@ module htx_cpu #(
   // values deeper into the mux tree).
   (* keep *) logic [31:0] d_rs1_early, d_rs2_early, d_rs2_rest;
   (* keep *) logic [31:0] d_a_early, d_a_rest;
-  assign d_rs1_early = fl_a ? lw_data_q : rf_rdata_a;
-  assign d_rs2_early = fl_b ? lw_data_q : rf_rdata_b;
+  assign d_rs1_early = rf_rdata_a;
+  assign d_rs2_early = rf_rdata_b;
   assign d_rs2_rest  = fw_b ? rf_wdata : d_rs2_early;
   logic [31:0] d_rs2;
   assign d_rs2    = fe_b ? e_fast_result : d_rs2_rest;
@@ -307,13 +302,12 @@ module htx_cpu #(
   // Address bits [1:0] of a load, store or JALR target, for the misalignment checks. The two-bit
   // sum is formed for every forwarding source and the forwarding selects come last, so the
   // register compares and the trap logic behind them are not in series with the adder.
-  logic [1:0] d_lo, lo_e, lo_w, lo_l, lo_r;
+  logic [1:0] d_lo, lo_e, lo_w, lo_r;
   logic       d_misaligned;
   assign lo_e = e_fast_result[1:0] + d_dec.imm[1:0];
   assign lo_w = rf_wdata[1:0] + d_dec.imm[1:0];
-  assign lo_l = lw_data_q[1:0] + d_dec.imm[1:0];
   assign lo_r = rf_rdata_a[1:0] + d_dec.imm[1:0];
-  assign d_lo = fe_a ? lo_e : fw_a ? lo_w : fl_a ? lo_l : lo_r;
+  assign d_lo = fe_a ? lo_e : fw_a ? lo_w : lo_r;
   always_comb begin
     unique case (d_dec.funct3[1:0])
       2'b00:   d_misaligned = 1'b0;
@@ -584,8 +578,10 @@ module htx_cpu #(
     .req_data_i   (e_rs2_q),
     .req_be_o     (lsu_be),
     .req_wdata_o  (lsu_wdata),
-    .rsp_funct3_i (w_funct3_q),
-    .rsp_offset_i (w_result_q[1:0]),
+    .req_load_i   (e_q.load),
+    .req_signed_i (!e_q.funct3[2]),
+    .req_sel_o    (e_load_sel),
+    .rsp_sel_i    (w_load_sel_q),
     .rsp_rdata_i  (dbus_rsp_rdata_i),
     .rsp_value_o  (w_load_value)
   );
@@ -645,7 +641,6 @@ module htx_cpu #(
       w_valid_q  <= 1'b0;
       w_wr_q     <= 1'b0;
       w_xt_q     <= 1'b0;
-      lw_valid_q <= 1'b0;
       d_jump_q   <= 1'b0;
       w_memwait_q <= 1'b0;
     end else begin
@@ -660,9 +655,6 @@ module htx_cpu #(
         w_xt_q    <= br_cond ? xt_t : xt_n;
         w_wr_q    <= e_done && e_q.rd_we && !e_xtrap_q;
         w_memwait_q <= e_done && e_mem_q;
-      end
-      if (rf_we) begin
-        lw_valid_q <= 1'b1;
       end
     end
   end
@@ -719,20 +711,15 @@ module htx_cpu #(
     end
     if (w_ready) begin
       w_rd_q      <= e_q.rd;
-      w_rd_we_q   <= e_q.rd_we && !e_xtrap_q;
       w_cause_q   <= e_cause;
       w_load_q    <= e_q.load;
       w_store_q   <= e_q.store;
-      w_funct3_q  <= e_q.funct3;
+      w_load_sel_q <= e_load_sel;
       // (A misaligned JALR's mtval is its target with bit 0 cleared.)
       w_result_q  <= {e_result[31:1], e_result[0] && !(e_q.jalr && e_xtrap_q)};
       w_reverse_q <= e_left_q;
       w_pc_q      <= e_pc_q;
       w_nocount_q <= e_q.csr && e_q.csr_we && csr_instret_we;
-    end
-    if (rf_we) begin
-      lw_rd_q   <= w_rd_q;
-      lw_data_q <= rf_wdata;
     end
   end
 

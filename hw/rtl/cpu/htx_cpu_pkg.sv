@@ -94,4 +94,16 @@ package htx_cpu_pkg;
     alu_op_e     alu_op;
   } exec_t;
 
+  // A load's lane choices, decoded in E from funct3 and the address's low bits so that W's
+  // extension of the bus word takes only one-hot selects from flip-flops (all zero for anything
+  // but a load).
+  typedef struct packed {
+    logic [3:0] lane;     // bits 7:0 come from byte lane k
+    logic [3:0] sign;     // the fill is bit 7 of byte lane k (signed byte or half-word loads)
+    logic       mid_lo;   // bits 15:8 from lane 1 (half-word at offset 0, word)
+    logic       mid_hi;   // bits 15:8 from lane 3 (half-word at offset 2)
+    logic       mid_fill; // bits 15:8 are the fill (byte loads)
+    logic       word;     // bits 31:16 from lanes 3:2 (else the fill)
+  } load_sel_t;
+
 endpackage

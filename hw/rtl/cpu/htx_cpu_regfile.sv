@@ -1,7 +1,9 @@
 // 31 x 32-bit register file with two synchronous read ports and one write port, written so that
-// Yosys maps it to iCE40 block RAM (one copy per read port). A read returns the contents from
-// before a write to the same address in the same cycle; the pipeline bypasses that write itself.
-// Entry 0 is never written and reads 0.
+// Yosys maps it to iCE40 block RAM (one copy per read port). The write port is clocked on the
+// falling edge, so a read on the next rising edge already returns the value written in the same
+// cycle: the pipeline needs no bypass for a write that coincides with a read (it forwards only E's
+// and W's results). The write data and enable therefore have half a cycle (htx_cpu arranges them
+// for it). Entry 0 is never written (the pipeline's rd_we is false for x0) and reads 0.
 module htx_cpu_regfile (
   input  logic        clk_i,
   input  logic [4:0]  raddr_a_i,
@@ -13,8 +15,7 @@ module htx_cpu_regfile (
   input  logic [31:0] wdata_i
 );
 
-  // A same-cycle read of the address being written may return anything (the pipeline forwards that
-  // write itself), so synthesis adds no collision logic around the block RAM.
+  // Reads and writes never meet on one edge, so synthesis adds no collision logic.
   (* no_rw_check *) logic [31:0] mem_q [32];
 
   initial begin
@@ -23,10 +24,13 @@ module htx_cpu_regfile (
     end
   end
 
-  always_ff @(posedge clk_i) begin
-    if (we_i && (waddr_i != 5'd0)) begin
+  always_ff @(negedge clk_i) begin
+    if (we_i) begin
       mem_q[waddr_i] <= wdata_i;
     end
+  end
+
+  always_ff @(posedge clk_i) begin
     rdata_a_o <= mem_q[raddr_a_i];
     rdata_b_o <= mem_q[raddr_b_i];
   end

@@ -172,7 +172,6 @@ int main(int argc, char** argv) {
     top->eval();
     top->clk_i = 1;
     top->eval();
-    top->clk_i = 0;
     top->rst_ni = 1;
     top->eval();
 
@@ -191,6 +190,9 @@ int main(int argc, char** argv) {
       top->dbus_rsp_valid_i = drsp.valid;
       top->dbus_rsp_rdata_i = drsp.rdata;
       top->dbus_rsp_err_i = drsp.err;
+      // The falling edge comes after the slaves' outputs of this cycle, as on a real bus: the
+      // core writes its register file on it (htx_cpu_regfile).
+      top->clk_i = 0;
       top->eval();
 
       const BusRequest ireq{top->ibus_req_valid_o != 0, top->ibus_req_addr_o, top->ibus_req_we_o != 0,
@@ -207,8 +209,6 @@ int main(int argc, char** argv) {
         dbus.respond(cycle, rdata, err);
       }
       top->clk_i = 1;
-      top->eval();
-      top->clk_i = 0;
       top->eval();
       ++cycle;
     }
