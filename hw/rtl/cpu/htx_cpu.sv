@@ -95,18 +95,21 @@ module htx_cpu #(
   assign f_predict   = !f_err && ((f_is_jal && !f_instr[21]) || (f_is_branch && f_instr[31] && !f_instr[8]));
   // The target is added as D takes the instruction, so that in D's first cycle it is a register
   // that fetch can put on the bus at once (a predicted-taken jump then costs one bubble, not two).
-  // Only a JAL's or a branch's target is used, and bit 2 tells them apart (a full opcode compare
-  // here put two more LUT levels in front of the carry chain).
-  assign f_timm   = f_instr[2] ?
+  // The adder also forms AUIPC's result (PC + its U-immediate, E's result from e_aux_q), so D's
+  // operand a has no PC input. A JAL's, branch's or AUIPC's sum is used, and bits 2 and 3 tell
+  // them apart (a full opcode compare here put two more LUT levels in front of the carry chain).
+  assign f_timm   = !f_instr[2] ?
+      {{19{f_instr[31]}}, f_instr[31], f_instr[7], f_instr[30:25], f_instr[11:8], 1'b0} :
+      f_instr[3] ?
       {{11{f_instr[31]}}, f_instr[31], f_instr[19:12], f_instr[20], f_instr[30:21], 1'b0} :
-      {{19{f_instr[31]}}, f_instr[31], f_instr[7], f_instr[30:25], f_instr[11:8], 1'b0};
+      {f_instr[31:12], 12'b0};
   assign f_target = {f_pc, 2'b00} + f_timm;
 
   // ------------------------------------------------------------------------------------------
   // Pipeline registers
   logic        d_valid_q, d_err_q, d_pred_q;
   logic        d_jump_q;   // d_valid_q && d_pred_q && D's first cycle: redirect fetch now
-  logic        d_sub_q, d_signed_q, d_a_pc_q, d_a_zero_q, d_b_rs2_q;
+  logic        d_sub_q, d_signed_q, d_auipc_q, d_a_zero_q, d_b_rs2_q;
   logic [31:0] d_instr_q;
   logic [31:2] d_pc_q, d_npc_q;
 
@@ -126,6 +129,7 @@ module htx_cpu #(
   // A MUL-class instruction reads the product's high word. e_q.funct3 holds the same fact; as a
   // flip-flop of its own it lets the result multiplexer fold in (9 LUT4 fewer than the compare).
   logic                    e_high_q;
+  logic                    e_auipc_q;  // AUIPC: the result is e_aux_q (PC + immediate)
 
   logic        w_valid_q, w_load_q, w_store_q, w_nocount_q;
   logic        w_xt_q;       // W holds an instruction that traps: w_result_q is its mtval
@@ -196,11 +200,11 @@ module htx_cpu #(
 
   // Operand controls predecoded from the instruction bits as D takes the instruction, so the
   // operand path in D does not wait for the decoder: subtract (SUB, SLT(I)(U), branches), signed
-  // compare (SLT(I), BLT, BGE), operand a = PC (AUIPC) or 0 (LUI, ECALL/EBREAK/MRET/WFI, so mtval
-  // is 0 + 0), operand b = rs2 (OP, BRANCH) or the immediate. Where they do not matter they are
-  // whatever is cheapest.
-  logic f_sub, f_signed, f_a_pc, f_a_zero, f_b_rs2;
-  assign f_a_pc   = (f_instr[6:2] == 5'b00101);
+  // compare (SLT(I), BLT, BGE), AUIPC (its result is the target adder's), operand a = 0 (LUI,
+  // ECALL/EBREAK/MRET/WFI, so mtval is 0 + 0; E's operand flip-flop's synchronous reset), operand
+  // b = rs2 (OP, BRANCH) or the immediate. Where they do not matter they are whatever is cheapest.
+  logic f_sub, f_signed, f_auipc, f_a_zero, f_b_rs2;
+  assign f_auipc  = (f_instr[6:2] == 5'b00101);
   assign f_a_zero = (f_instr[6:2] == 5'b01101) || ((f_instr[6:2] == 5'b11100) && (f_instr[14:12] == 3'b000));
   assign f_b_rs2  = (f_instr[6:2] == 5'b01100) || (f_instr[6:2] == 5'b11000);
   assign f_sub    = (f_instr[6:2] == 5'b11000) ||
@@ -221,7 +225,7 @@ module htx_cpu #(
   logic        e_live, e_accept;
   logic [31:0] e_fast_result;
 
-  // Forwarding: E's adder/logic result, W's write data, the last write, the register file.
+  // Forwarding: E's adder/logic result, W's write data, the register file.
   logic fe_a, fe_b, fw_a, fw_b;
   // (Each compare starts from one registered enable; a squashed E or D makes the choice moot.)
   assign fe_a = e_valid_q && e_fwd_q && (e_q.rd == d_ra);
@@ -230,14 +234,10 @@ module htx_cpu #(
   assign fw_b = w_wr_q && (w_rd_q == d_rb);
 
   // The value from E comes last (end of the carry chain), so it enters at the final LUT level, and
-  // W's write data (a load's lanes come straight from the bus) one level before it: every other
-  // choice is made first (_early, kept as separate signals so synthesis does not fold the late
-  // values deeper into the mux tree).
-  (* keep *) logic [31:0] d_rs1_early, d_rs2_early, d_rs2_rest;
-  (* keep *) logic [31:0] d_a_early, d_a_rest;
-  assign d_rs1_early = rf_rdata_a;
-  assign d_rs2_early = rf_rdata_b;
-  assign d_rs2_rest  = fw_b ? rf_wdata : d_rs2_early;
+  // W's write data (a load's lanes come straight from the bus) one level before it (_rest, kept
+  // as separate signals so synthesis does not fold the later value deeper into the mux tree).
+  (* keep *) logic [31:0] d_rs2_rest, d_a_rest;
+  assign d_rs2_rest  = fw_b ? rf_wdata : rf_rdata_b;
   logic [31:0] d_rs2;
   assign d_rs2    = fe_b ? e_fast_result : d_rs2_rest;
 
@@ -256,26 +256,16 @@ module htx_cpu #(
   assign late_alu_d = (d_dec.alu_op == htx_cpu_pkg::AluSll) || (d_dec.alu_op == htx_cpu_pkg::AluSrl) ||
                       (d_dec.alu_op == htx_cpu_pkg::AluSra) || (d_dec.alu_op == htx_cpu_pkg::AluSlt) ||
                       (d_dec.alu_op == htx_cpu_pkg::AluSltu);
-  assign late_d     = d_dec.load || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul || d_dec.div ||
-                      late_alu_d;
+  assign late_d     = d_auipc_q || d_dec.load || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul ||
+                      d_dec.div || late_alu_d;
   assign sub_d      = d_sub_q;
 
   // ALU operands, extended to 33 bits with the sign for a signed comparison (SLT, BLT, BGE) and
   // with zero otherwise; b is inverted for a subtraction.
   logic [31:0] d_a, d_b;
-  logic        signed_d, fe_a_op;
-  always_comb begin
-    if (d_a_pc_q) begin
-      d_a_early = {d_pc_q, 2'b00};
-    end else if (d_a_zero_q) begin
-      d_a_early = 32'b0;
-    end else begin
-      d_a_early = d_rs1_early;
-    end
-  end
-  assign d_a_rest  = (fw_a && !d_a_pc_q && !d_a_zero_q) ? rf_wdata : d_a_early;
-  assign fe_a_op  = fe_a && !d_a_pc_q && !d_a_zero_q;
-  assign d_a      = fe_a_op ? e_fast_result : d_a_rest;
+  logic        signed_d;
+  assign d_a_rest = fw_a ? rf_wdata : rf_rdata_a;
+  assign d_a      = fe_a ? e_fast_result : d_a_rest;
   // Operand b is the forwarded rs2 (the store data's multiplexer) or the immediate, one LUT level
   // after it with the inversion for a subtraction: a forwarding multiplexer of its own with the
   // late values at its last level cost 54 LUT4 more (2026-12-05).
@@ -554,13 +544,13 @@ module htx_cpu #(
   //
   // A trapping instruction goes to W with its mtval as the result: the address of a misaligned
   // load, store or JALR target (the adder), the target of a JAL or branch (e_aux_q), the PC of a
-  // fetch that faulted (AUIPC x0, 0 on the adder), 0 for an illegal instruction (no kind is
+  // fetch that faulted (AUIPC x0, 0: PC + 0 in e_aux_q), 0 for an illegal instruction (no kind is
   // selected) and for ECALL and EBREAK (the adder's 0 + 0).
   (* keep *) logic [31:0] e_result_rest, e_result_early;
   logic [31:0] e_result;
   logic        sel_link, sel_aux, sel_fast;
   assign sel_link = (e_q.jal || e_q.jalr) && !e_xtrap_q;
-  assign sel_aux  = e_q.branch || (e_q.jal && e_xtrap_q);
+  assign sel_aux  = e_q.branch || e_auipc_q || (e_q.jal && e_xtrap_q);
   assign sel_fast = e_fast_q || (e_q.jalr && e_xtrap_q);
   // An AND-OR of the registered one-hot kinds (csr_rdata is already 0 unless a CSR instruction).
   assign e_result_rest  = ({32{sel_link}} & {e_npc_q, 2'b00}) | ({32{sel_aux}} & e_aux_q) |
@@ -666,7 +656,7 @@ module htx_cpu #(
       d_sub_q      <= f_sub;
       d_rs1_used_q <= f_rs1_used;
       d_rs2_used_q <= f_rs2_used;
-      d_a_pc_q     <= f_a_pc;
+      d_auipc_q    <= f_auipc;
       d_a_zero_q   <= f_a_zero;
       d_b_rs2_q    <= f_b_rs2;
       d_signed_q   <= f_signed;
@@ -677,7 +667,7 @@ module htx_cpu #(
     end
     if (e_accept_nr) begin
       e_q       <= d_exec;
-      e_a_q     <= mul_zero_a ? 33'b0 : {signed_d & d_a[31], d_a};
+      e_a_q     <= (mul_zero_a || d_a_zero_q) ? 33'b0 : {signed_d & d_a[31], d_a};
       e_b_q     <= mul_zero_b ? 33'b0 : {d_rs2[31] ? b_ext_1 : b_ext_0, d_b ^ {32{sub_d}}};
       e_rs1_q   <= d_a;
       e_br_eq_q <= !d_dec.funct3[2];
@@ -697,11 +687,12 @@ module htx_cpu #(
       e_late_q  <= late_d;
       e_fwd_q   <= d_dec.rd_we && !late_d;
       e_sub_q   <= sub_d;
+      e_auipc_q <= d_auipc_q && !d_dec.illegal;
       e_left_q  <= (d_dec.alu_op == htx_cpu_pkg::AluSll);
       e_arith_q <= (d_dec.alu_op == htx_cpu_pkg::AluSra);
       // (Not for an illegal instruction, whose result is its mtval 0, nor a branch, whose result
       // is its target for mtval.)
-      e_fast_q  <= !(late_alu_d || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul || d_dec.div ||
+      e_fast_q  <= !(d_auipc_q || late_alu_d || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul || d_dec.div ||
                      d_dec.branch || d_dec.illegal);
       e_slt_q   <= ((d_dec.alu_op == htx_cpu_pkg::AluSlt) || (d_dec.alu_op == htx_cpu_pkg::AluSltu)) &&
                    !d_dec.illegal;

@@ -67,8 +67,8 @@ module htx_cpu_fetch #(
   assign flush            = redirect_i || predict_i;
   assign flush_pc         = redirect_i ? redirect_pc_i : predict_pc_i;
 
-  // A faulting fetch is handed on as AUIPC x0, 0, so execute's adder produces the PC for mtval
-  // (the bus returns rdata = 0 with an error); instr_err_o makes it trap.
+  // A faulting fetch is handed on as AUIPC x0, 0, whose result (PC + 0, from the core's target
+  // adder) is the PC for mtval (the bus returns rdata = 0 with an error); instr_err_o makes it trap.
   assign rsp_instr = ibus_rsp_rdata_i | (ibus_rsp_err_i ? 32'h0000_0017 : 32'h0);
 
   assign buf_empty     = (count_q == 2'd0);
