@@ -201,11 +201,13 @@ module htx_cpu #(
   // Operand controls predecoded from the instruction bits as D takes the instruction, so the
   // operand path in D does not wait for the decoder: subtract (SUB, SLT(I)(U), branches), signed
   // compare (SLT(I), BLT, BGE), AUIPC (its result is the target adder's), operand a = 0 (LUI,
-  // ECALL/EBREAK/MRET/WFI, so mtval is 0 + 0; E's operand flip-flop's synchronous reset), operand
-  // b = rs2 (OP, BRANCH) or the immediate. Where they do not matter they are whatever is cheapest.
+  // ECALL/EBREAK/MRET/WFI, so mtval is 0 + 0, and CSRR*I, whose source is then e_a_q ORed with its
+  // 5-bit immediate; E's operand flip-flop's synchronous reset), operand b = rs2 (OP, BRANCH) or the
+  // immediate. Where they do not matter they are whatever is cheapest.
   logic f_sub, f_signed, f_auipc, f_a_zero, f_b_rs2;
   assign f_auipc  = (f_instr[6:2] == 5'b00101);
-  assign f_a_zero = (f_instr[6:2] == 5'b01101) || ((f_instr[6:2] == 5'b11100) && (f_instr[14:12] == 3'b000));
+  assign f_a_zero = (f_instr[6:2] == 5'b01101) ||
+                    ((f_instr[6:2] == 5'b11100) && (f_instr[14] || (f_instr[13:12] == 2'b00)));
   assign f_b_rs2  = (f_instr[6:2] == 5'b01100) || (f_instr[6:2] == 5'b11000);
   assign f_sub    = (f_instr[6:2] == 5'b11000) ||
                     ((((f_instr[6:2] == 5'b01100) && !f_instr[25]) || (f_instr[6:2] == 5'b00100)) &&
@@ -525,7 +527,7 @@ module htx_cpu #(
     .rdata_o   (csr_rdata),
     .we_i      (csr_we),
     .op_i      (e_q.funct3[1:0]),
-    .src_i     (e_q.funct3[2] ? {27'b0, e_q.uimm} : e_a_q[31:0]),
+    .src_i     ({e_a_q[31:5], e_a_q[4:0] | (e_q.uimm & {5{e_q.funct3[2]}})}),
     .retire_i  (w_valid_q && w_ready && !w_trap && !w_nocount_q),
     .counting_o(csr_counting),
     .trap_i    (trap_q),
