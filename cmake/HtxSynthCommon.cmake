@@ -40,3 +40,15 @@ function(htx_board_image what elf hex ram_bytes)
     message(FATAL_ERROR "${what}: htx image failed for ${elf}")
   endif()
 endfunction()
+
+# The iCE40 block RAMs in a `stat -json` file into OUT, in every clock-polarity form (Yosys maps a
+# memory written or read on a falling edge to SB_RAM40_4KNW, NR or NRNW; the CPU's register file
+# is written on the falling edge).
+function(htx_synth_ice40_ebr_count stat_json out)
+  set(ebr 0)
+  foreach(kind SB_RAM40_4K SB_RAM40_4KNR SB_RAM40_4KNW SB_RAM40_4KNRNW)
+    htx_synth_cell_count(${stat_json} ${kind} n)
+    math(EXPR ebr "${ebr} + ${n}")
+  endforeach()
+  set(${out} ${ebr} PARENT_SCOPE)
+endfunction()

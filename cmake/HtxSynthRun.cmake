@@ -28,13 +28,7 @@ set(area_stat ${WORK}/${NAME}.area.stat.json)
 run_yosys(${AREA_TOP} "${area_files}" ${area_stat} "" ${WORK}/${NAME}.area.yosys.log)
 htx_synth_cell_count(${area_stat} SB_LUT4 lut4)
 htx_synth_cell_count(${area_stat} SB_MAC16 dsp)
-# Block RAMs in every clock-polarity form (Yosys maps a memory written or read on a falling edge
-# to SB_RAM40_4KNW, NR or NRNW).
-set(ebr 0)
-foreach(kind SB_RAM40_4K SB_RAM40_4KNR SB_RAM40_4KNW SB_RAM40_4KNRNW)
-  htx_synth_cell_count(${area_stat} ${kind} n)
-  math(EXPR ebr "${ebr} + ${n}")
-endforeach()
+htx_synth_ice40_ebr_count(${area_stat} ebr)
 htx_synth_cell_count(${area_stat} SB_SPRAM256KA spram)
 
 set(netlist ${WORK}/${NAME}.pnr.netlist.json)

@@ -17,7 +17,7 @@ message(STATUS "board-icebreaker: yosys synth_ice40 (log ${log})")
 htx_synth_yosys(board-icebreaker ${log} "${script}")
 htx_synth_cell_count(${stat} SB_LUT4 lut4)
 htx_synth_cell_count(${stat} SB_MAC16 dsp)
-htx_synth_cell_count(${stat} SB_RAM40_4K ebr)
+htx_synth_ice40_ebr_count(${stat} ebr)
 htx_synth_cell_count(${stat} SB_SPRAM256KA spram)
 
 set(asc ${WORK}/htx_icebreaker.asc)
