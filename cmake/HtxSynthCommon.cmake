@@ -19,6 +19,19 @@ function(htx_synth_yosys what log commands)
   endif()
 endfunction()
 
+# The synthesis report's own flow (`synth_ice40 -dsp`) on TOP from FILES (space-separated), its
+# `stat -json` into STAT_JSON and, unless NETLIST is empty, its netlist; YOSYS_DEFINES are the
+# HTX_YOSYS_DEFINES of HtxRtl.cmake (the iCE40 cell instances of a few modules). WHAT names the job
+# in the error.
+function(htx_synth_ice40_area what top files stat_json netlist log)
+  set(script "read_verilog -sv ${YOSYS_DEFINES} ${files}; synth_ice40 -dsp -top ${top}")
+  if(netlist)
+    string(APPEND script " -json ${netlist}")
+  endif()
+  string(APPEND script "; tee -q -o ${stat_json} stat -json")
+  htx_synth_yosys("${what}" ${log} "${script}")
+endfunction()
+
 # The number of cells of type CELL in a Yosys `stat -json` file (0 when there are none) into OUT.
 function(htx_synth_cell_count stat_json cell out)
   file(READ ${stat_json} text)

@@ -10,29 +10,18 @@ file(MAKE_DIRECTORY ${WORK})
 string(REPLACE "|" " " area_files "${AREA_SOURCES}")
 string(REPLACE "|" " " pnr_files "${PNR_SOURCES}")
 
-function(run_yosys top files stat_json netlist log)
-  # YOSYS_DEFINES: HTX_YOSYS_DEFINES of HtxRtl.cmake (the iCE40 cell instances of a few modules).
-  set(script "read_verilog -sv ${YOSYS_DEFINES} ${files}; synth_ice40 -dsp -top ${top}")
-  if(netlist)
-    string(APPEND script " -json ${netlist}")
-  endif()
-  string(APPEND script "; tee -q -o ${stat_json} stat -json")
-  execute_process(COMMAND ${YOSYS} -q -l ${log} -p "${script}" RESULT_VARIABLE rc)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "synth-report ${NAME}: yosys failed for ${top}; see ${log}")
-  endif()
-endfunction()
-
 
 set(area_stat ${WORK}/${NAME}.area.stat.json)
-run_yosys(${AREA_TOP} "${area_files}" ${area_stat} "" ${WORK}/${NAME}.area.yosys.log)
+htx_synth_ice40_area("synth-report ${NAME} (${AREA_TOP})" ${AREA_TOP} "${area_files}" ${area_stat} ""
+  ${WORK}/${NAME}.area.yosys.log)
 htx_synth_cell_count(${area_stat} SB_LUT4 lut4)
 htx_synth_cell_count(${area_stat} SB_MAC16 dsp)
 htx_synth_ice40_ebr_count(${area_stat} ebr)
 htx_synth_cell_count(${area_stat} SB_SPRAM256KA spram)
 
 set(netlist ${WORK}/${NAME}.pnr.netlist.json)
-run_yosys(${PNR_TOP} "${pnr_files}" ${WORK}/${NAME}.pnr.stat.json ${netlist} ${WORK}/${NAME}.pnr.yosys.log)
+htx_synth_ice40_area("synth-report ${NAME} (${PNR_TOP})" ${PNR_TOP} "${pnr_files}"
+  ${WORK}/${NAME}.pnr.stat.json ${netlist} ${WORK}/${NAME}.pnr.yosys.log)
 # Place and route once per seed (SEEDS, default 1;2;3) and keep the best: nextpnr's placement moves
 # Fmax by about +-0.7 MHz from seed to seed on these designs (docs/cpu_area_log.md), and a board build would
 # use the seed that meets timing. Every seed's figure is recorded ("fmax_by_seed"); the chosen seed's

@@ -145,17 +145,15 @@ module htx_cpu #(
   // Write-back
   logic        w_ready, w_fault, w_trap;
   logic [31:0] w_load_value;
-  logic        rf_we;
+  (* keep *) logic rf_we;
   logic [31:0] rf_wdata;
 
   logic        w_memwait_q;  // W holds a load or store: it waits for the data response
   assign w_ready  = !w_memwait_q || dbus_rsp_valid_i;
   assign w_fault  = w_memwait_q && dbus_rsp_valid_i && dbus_rsp_err_i;
   assign w_trap   = w_fault || w_xt_q;
-  // (One LUT from the bus's response: the register file takes it half a cycle later.)
-  (* keep *) logic rf_we_k;
-  assign rf_we_k  = w_wr_q && (!w_memwait_q || (dbus_rsp_valid_i && !dbus_rsp_err_i));
-  assign rf_we    = rf_we_k;
+  // (One LUT from the bus's response, kept so: the register file takes it half a cycle later.)
+  assign rf_we    = w_wr_q && (!w_memwait_q || (dbus_rsp_valid_i && !dbus_rsp_err_i));
   // Everything but a load's value is known from W's flip-flops (a left shift's result is
   // reversed), so it is formed first and ORed in where the load's lanes end (w_load_value is 0
   // unless W holds a load).
