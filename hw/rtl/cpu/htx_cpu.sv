@@ -3,10 +3,10 @@
 //   F  fetch      htx_cpu_fetch issues word requests from a registered PC (one per clock). When
 //                 decode takes an instruction, JAL and backward branches are predicted taken (BTFN)
 //                 and redirect fetch; the register file read of the instruction's sources is issued.
-//   D  decode     decodes the registered instruction, forwards its operands (newest first: the
-//                 instruction in E, the one in W, the last register write, the register file) and
-//                 registers the ALU operands, so E starts from flip-flops. Also precomputes every
-//                 trap that does not depend on E's results.
+//   D  decode     holds the instruction, decoded on its way in; forwards its operands (newest
+//                 first: the instruction in E, the one in W, the register file) and registers the
+//                 ALU operands, so E starts from flip-flops. Also precomputes every trap that does
+//                 not depend on E's results.
 //   E  execute    ALU, branch resolution, CSR access, the data bus request, MUL/DIV.
 //   W  write-back waits for the data bus response of a load/store, writes the register file, and
 //                 takes every trap: an access fault of its own load/store, or an instruction that
@@ -110,7 +110,7 @@ module htx_cpu #(
   logic        d_valid_q, d_err_q, d_pred_q;
   logic        d_jump_q;   // d_valid_q && d_pred_q && D's first cycle: redirect fetch now
   logic        d_sub_q, d_signed_q, d_auipc_q, d_a_zero_q, d_b_rs2_q;
-  logic [31:0] d_instr_q;
+  logic [24:15] d_instr_q;  // the source register fields (the rest is decoded into d_dec_q)
   logic [31:2] d_pc_q, d_npc_q;
 
   logic                    e_valid_q;
@@ -184,14 +184,17 @@ module htx_cpu #(
   );
 
   // ------------------------------------------------------------------------------------------
-  // Decode. The forwarding selects and the hazard check use the raw register fields and two bits
-  // predecoded as D takes the instruction, so they do not wait for the decoder.
-  htx_cpu_pkg::decoded_t d_dec;
+  // Decode. The decoder works on fetch's output and D registers its result as it takes the
+  // instruction (d_dec_q), so D's logic starts from flip-flops: 20 LUT4 fewer over ten numberings
+  // than decoding D's registered instruction (the immediate's format choice, for one, no longer
+  // sits in front of operand b). The forwarding selects and the hazard check use the raw register
+  // fields.
+  htx_cpu_pkg::decoded_t f_dec, d_dec_q;
   logic [4:0] d_ra, d_rb;  // source register fields
 
   htx_cpu_decoder u_decoder (
-    .instr_i (d_instr_q),
-    .dec_o   (d_dec)
+    .instr_i (f_instr),
+    .dec_o   (f_dec)
   );
   assign d_ra = d_instr_q[19:15];
   assign d_rb = d_instr_q[24:20];
@@ -253,11 +256,11 @@ module htx_cpu #(
   assign d_hazard = e_live && hz;
 
   logic late_alu_d, late_d, sub_d;
-  assign late_alu_d = (d_dec.alu_op == htx_cpu_pkg::AluSll) || (d_dec.alu_op == htx_cpu_pkg::AluSrl) ||
-                      (d_dec.alu_op == htx_cpu_pkg::AluSra) || (d_dec.alu_op == htx_cpu_pkg::AluSlt) ||
-                      (d_dec.alu_op == htx_cpu_pkg::AluSltu);
-  assign late_d     = d_auipc_q || d_dec.load || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul ||
-                      d_dec.div || late_alu_d;
+  assign late_alu_d = (d_dec_q.alu_op == htx_cpu_pkg::AluSll) || (d_dec_q.alu_op == htx_cpu_pkg::AluSrl) ||
+                      (d_dec_q.alu_op == htx_cpu_pkg::AluSra) || (d_dec_q.alu_op == htx_cpu_pkg::AluSlt) ||
+                      (d_dec_q.alu_op == htx_cpu_pkg::AluSltu);
+  assign late_d     = d_auipc_q || d_dec_q.load || d_dec_q.jal || d_dec_q.jalr || d_dec_q.csr || d_dec_q.mul ||
+                      d_dec_q.div || late_alu_d;
   assign sub_d      = d_sub_q;
 
   // ALU operands, extended to 33 bits with the sign for a signed comparison (SLT, BLT, BGE) and
@@ -269,12 +272,12 @@ module htx_cpu #(
   // Operand b is the forwarded rs2 (the store data's multiplexer) or the immediate, one LUT level
   // after it with the inversion for a subtraction: a forwarding multiplexer of its own with the
   // late values at its last level cost 54 LUT4 more (2026-12-05).
-  assign d_b      = d_b_rs2_q ? d_rs2 : d_dec.imm;
+  assign d_b      = d_b_rs2_q ? d_rs2 : d_dec_q.imm;
   // Operand b's extension bit for either value of the forwarded rs2's sign, so that the late sign
   // only selects (one LUT level after d_rs2, like the other bits).
   (* keep *) logic b_ext_0, b_ext_1;
-  assign b_ext_0 = (d_b_rs2_q ? 1'b0 : (signed_d & d_dec.imm[31])) ^ sub_d;
-  assign b_ext_1 = (d_b_rs2_q ? signed_d : (signed_d & d_dec.imm[31])) ^ sub_d;
+  assign b_ext_0 = (d_b_rs2_q ? 1'b0 : (signed_d & d_dec_q.imm[31])) ^ sub_d;
+  assign b_ext_1 = (d_b_rs2_q ? signed_d : (signed_d & d_dec_q.imm[31])) ^ sub_d;
   assign signed_d = d_signed_q;
 
   // A MUL-class instruction's ALU operands are the two terms of its signed correction, corr =
@@ -286,20 +289,20 @@ module htx_cpu #(
   // conditions come from the forwarded signs one LUT level after them, as e_b_q's inversion does;
   // the multiplier takes rs1 from e_rs1_q (its DSPs' input register).
   logic mul_zero_a, mul_zero_b;
-  assign mul_zero_a = d_dec.mul && !(!d_dec.funct3[1] && d_rs2[31]);
-  assign mul_zero_b = d_dec.mul && !((d_dec.funct3[1:0] != 2'b11) && d_a[31]);
+  assign mul_zero_a = d_dec_q.mul && !(!d_dec_q.funct3[1] && d_rs2[31]);
+  assign mul_zero_b = d_dec_q.mul && !((d_dec_q.funct3[1:0] != 2'b11) && d_a[31]);
 
   // Address bits [1:0] of a load, store or JALR target, for the misalignment checks. The two-bit
   // sum is formed for every forwarding source and the forwarding selects come last, so the
   // register compares and the trap logic behind them are not in series with the adder.
   logic [1:0] d_lo, lo_e, lo_w, lo_r;
   logic       d_misaligned;
-  assign lo_e = e_fast_result[1:0] + d_dec.imm[1:0];
-  assign lo_w = rf_wdata[1:0] + d_dec.imm[1:0];
-  assign lo_r = rf_rdata_a[1:0] + d_dec.imm[1:0];
+  assign lo_e = e_fast_result[1:0] + d_dec_q.imm[1:0];
+  assign lo_w = rf_wdata[1:0] + d_dec_q.imm[1:0];
+  assign lo_r = rf_rdata_a[1:0] + d_dec_q.imm[1:0];
   assign d_lo = fe_a ? lo_e : fw_a ? lo_w : lo_r;
   always_comb begin
-    unique case (d_dec.funct3[1:0])
+    unique case (d_dec_q.funct3[1:0])
       2'b00:   d_misaligned = 1'b0;
       2'b01:   d_misaligned = d_lo[0];
       default: d_misaligned = (d_lo != 2'b00);
@@ -318,45 +321,44 @@ module htx_cpu #(
   always_comb begin
     if (d_err_q) begin
       d_cause = htx_cpu_pkg::ExcInstrAccess;
-    end else if (d_dec.illegal) begin
+    end else if (d_dec_q.illegal) begin
       d_cause = htx_cpu_pkg::ExcIllegal;
-    end else if (d_dec.ecall) begin
+    end else if (d_dec_q.ecall) begin
       d_cause = htx_cpu_pkg::ExcEcallM;
-    end else if (d_dec.ebreak) begin
+    end else if (d_dec_q.ebreak) begin
       d_cause = htx_cpu_pkg::ExcBreakpoint;
-    end else if (d_dec.jal || d_dec.jalr) begin
+    end else if (d_dec_q.jal || d_dec_q.jalr) begin
       d_cause = htx_cpu_pkg::ExcInstrMisaligned;
-    end else if (d_dec.store) begin
+    end else if (d_dec_q.store) begin
       d_cause = htx_cpu_pkg::ExcStoreMisaligned;
     end else begin
       d_cause = htx_cpu_pkg::ExcLoadMisaligned;
     end
   end
   // (Bit 1 of a JAL's offset is instruction bit 21.)
-  assign d_xtrap = d_err_q || d_dec.illegal || d_dec.ecall || d_dec.ebreak ||
-                   (d_dec.jal && d_instr_q[21]) || (d_dec.jalr && d_lo[1]) ||
-                   ((d_dec.load || d_dec.store) && d_misaligned);
+  assign d_xtrap = d_err_q || d_dec_q.illegal || d_dec_q.ecall || d_dec_q.ebreak ||
+                   (d_dec_q.jal && d_instr_q[21]) || (d_dec_q.jalr && d_lo[1]) ||
+                   ((d_dec_q.load || d_dec_q.store) && d_misaligned);
 
   htx_cpu_pkg::exec_t d_exec;
   always_comb begin
-    d_exec.mret    = d_dec.mret;
-    d_exec.fencei  = d_dec.fencei;
+    d_exec.mret    = d_dec_q.mret;
+    d_exec.fencei  = d_dec_q.fencei;
     // (An illegal branch, JALR or CSR encoding is none of them in E: its result is its mtval, 0.)
-    d_exec.branch  = d_dec.branch && !d_dec.illegal;
-    d_exec.jal     = d_dec.jal;
-    d_exec.jalr    = d_dec.jalr && !d_dec.illegal;
-    d_exec.load    = d_dec.load;
-    d_exec.store   = d_dec.store;
-    d_exec.mul     = d_dec.mul;
-    d_exec.div     = d_dec.div;
-    d_exec.csr     = d_dec.csr && !d_dec.illegal;
-    d_exec.csr_we  = d_dec.csr_we;
-    d_exec.csr_sel = d_dec.csr_sel;
-    d_exec.funct3  = d_dec.funct3;
-    d_exec.uimm    = d_dec.rs1;
-    d_exec.rd      = d_dec.rd;
-    d_exec.rd_we   = d_dec.rd_we;
-    d_exec.alu_op  = d_dec.alu_op;
+    d_exec.branch  = d_dec_q.branch && !d_dec_q.illegal;
+    d_exec.jal     = d_dec_q.jal;
+    d_exec.jalr    = d_dec_q.jalr && !d_dec_q.illegal;
+    d_exec.load    = d_dec_q.load;
+    d_exec.store   = d_dec_q.store;
+    d_exec.mul     = d_dec_q.mul;
+    d_exec.csr     = d_dec_q.csr && !d_dec_q.illegal;
+    d_exec.csr_we  = d_dec_q.csr_we;
+    d_exec.csr_sel = d_dec_q.csr_sel;
+    d_exec.funct3  = d_dec_q.funct3;
+    d_exec.uimm    = d_dec_q.rs1;
+    d_exec.rd      = d_dec_q.rd;
+    d_exec.rd_we   = d_dec_q.rd_we;
+    d_exec.alu_op  = d_dec_q.alu_op;
   end
 
   // Multiply fusion: a MUL-class instruction that enters E right behind another one with the same
@@ -368,9 +370,9 @@ module htx_cpu #(
   // (after MULHSU or MULHU the high half is not MULH's). The first one's destination cannot be a
   // source of the second here: that is a late-result hazard, which puts a bubble in E first.
   logic fuse_d, fuse_mode;
-  assign fuse_mode = (d_dec.funct3[1:0] == 2'b00) || (d_dec.funct3[1:0] == e_q.funct3[1:0]) ||
-                     ((e_q.funct3[1:0] == 2'b00) && e_mul_q && (d_dec.funct3[1:0] == 2'b01));
-  assign fuse_d    = d_dec.mul && e_valid_q && e_q.mul && !e_xtrap_q && fuse_mode &&
+  assign fuse_mode = (d_dec_q.funct3[1:0] == 2'b00) || (d_dec_q.funct3[1:0] == e_q.funct3[1:0]) ||
+                     ((e_q.funct3[1:0] == 2'b00) && e_mul_q && (d_dec_q.funct3[1:0] == 2'b01));
+  assign fuse_d    = d_dec_q.mul && e_valid_q && e_q.mul && !e_xtrap_q && fuse_mode &&
                      (e_q.uimm == d_ra) && (e_rb_q == d_rb);
 
   logic d_live, d_go;
@@ -469,6 +471,7 @@ module htx_cpu #(
     .rst_ni,
     .start_i  (e_can_go && e_div && !div_busy),
     .kill_i   (w_fault),
+    .clear_i  (e_accept_nr),
     .op_i     (e_q.funct3[1:0]),
     .a_i      (e_a_q[31:0]),
     .b_i      (e_rs2_q),
@@ -482,8 +485,8 @@ module htx_cpu #(
   logic unit_wait_q, unit_wait_d, mul_next, div_next;
   // (A decoded MUL or DIV is legal and traps before E only on an instruction access fault, so
   // d_err_q stands for d_xtrap here and keeps the misalignment checks off this path.)
-  assign mul_next    = e_accept_nr ? (d_dec.mul && !d_err_q && !fuse_d) : e_mul_q;
-  assign div_next    = e_accept_nr ? (d_dec.div && !d_err_q) : e_div_q;
+  assign mul_next    = e_accept_nr ? (d_dec_q.mul && !d_err_q && !fuse_d) : e_mul_q;
+  assign div_next    = e_accept_nr ? (d_dec_q.div && !d_err_q) : e_div_q;
   assign unit_wait_d = (mul_next && !mul_done_next) || (div_next && !div_done_next);
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -552,9 +555,10 @@ module htx_cpu #(
   assign sel_link = (e_q.jal || e_q.jalr) && !e_xtrap_q;
   assign sel_aux  = e_q.branch || e_auipc_q || (e_q.jal && e_xtrap_q);
   assign sel_fast = e_fast_q || (e_q.jalr && e_xtrap_q);
-  // An AND-OR of the registered one-hot kinds (csr_rdata is already 0 unless a CSR instruction).
+  // An AND-OR of the registered one-hot kinds (csr_rdata is already 0 unless a CSR instruction,
+  // div_result unless E holds a division that has finished).
   assign e_result_rest  = ({32{sel_link}} & {e_npc_q, 2'b00}) | ({32{sel_aux}} & e_aux_q) |
-                          csr_rdata | ({32{e_q.mul}} & mul_result) | ({32{e_q.div}} & div_result);
+                          csr_rdata | ({32{e_q.mul}} & mul_result) | div_result;
   assign e_result_early = sel_fast ? e_fast_result :               // fast: includes the address
                           e_slt_q  ? {31'b0, alu_lt} : e_result_rest;
   assign e_result       = e_shift_q ? alu_late : e_result_early;
@@ -651,7 +655,8 @@ module htx_cpu #(
 
   always_ff @(posedge clk_i) begin
     if (d_free_nr) begin
-      d_instr_q  <= f_instr;
+      d_instr_q  <= f_instr[24:15];
+      d_dec_q    <= f_dec;
       d_target_q <= f_target;
       d_sub_q      <= f_sub;
       d_rs1_used_q <= f_rs1_used;
@@ -670,34 +675,34 @@ module htx_cpu #(
       e_a_q     <= (mul_zero_a || d_a_zero_q) ? 33'b0 : {signed_d & d_a[31], d_a};
       e_b_q     <= mul_zero_b ? 33'b0 : {d_rs2[31] ? b_ext_1 : b_ext_0, d_b ^ {32{sub_d}}};
       e_rs1_q   <= d_a;
-      e_br_eq_q <= !d_dec.funct3[2];
-      e_br_inv_q <= d_dec.funct3[0];
+      e_br_eq_q <= !d_dec_q.funct3[2];
+      e_br_inv_q <= d_dec_q.funct3[0];
       e_rs2_q   <= d_rs2;
       e_aux_q   <= d_target_q;
       e_pc_q    <= d_pc_q;
       e_npc_q   <= d_npc_q;
       e_pred_q  <= d_pred_q;
       e_xtrap_q <= d_xtrap;
-      e_mem_q   <= (d_dec.load || d_dec.store) && !d_xtrap;
+      e_mem_q   <= (d_dec_q.load || d_dec_q.store) && !d_xtrap;
       e_mul_q   <= mul_next;  // a fused one needs no unit cycles
       e_rb_q    <= d_rb;
-      e_high_q  <= (d_dec.funct3[1:0] != 2'b00);
+      e_high_q  <= (d_dec_q.funct3[1:0] != 2'b00);
       e_div_q   <= div_next;
       e_cause_q <= d_cause;
       e_late_q  <= late_d;
-      e_fwd_q   <= d_dec.rd_we && !late_d;
+      e_fwd_q   <= d_dec_q.rd_we && !late_d;
       e_sub_q   <= sub_d;
-      e_auipc_q <= d_auipc_q && !d_dec.illegal;
-      e_left_q  <= (d_dec.alu_op == htx_cpu_pkg::AluSll);
-      e_arith_q <= (d_dec.alu_op == htx_cpu_pkg::AluSra);
+      e_auipc_q <= d_auipc_q && !d_dec_q.illegal;
+      e_left_q  <= (d_dec_q.alu_op == htx_cpu_pkg::AluSll);
+      e_arith_q <= (d_dec_q.alu_op == htx_cpu_pkg::AluSra);
       // (Not for an illegal instruction, whose result is its mtval 0, nor a branch, whose result
       // is its target for mtval.)
-      e_fast_q  <= !(d_auipc_q || late_alu_d || d_dec.jal || d_dec.jalr || d_dec.csr || d_dec.mul || d_dec.div ||
-                     d_dec.branch || d_dec.illegal);
-      e_slt_q   <= ((d_dec.alu_op == htx_cpu_pkg::AluSlt) || (d_dec.alu_op == htx_cpu_pkg::AluSltu)) &&
-                   !d_dec.illegal;
-      e_shift_q <= ((d_dec.alu_op == htx_cpu_pkg::AluSll) || (d_dec.alu_op == htx_cpu_pkg::AluSrl) ||
-                    (d_dec.alu_op == htx_cpu_pkg::AluSra)) && !d_dec.illegal;
+      e_fast_q  <= !(d_auipc_q || late_alu_d || d_dec_q.jal || d_dec_q.jalr || d_dec_q.csr || d_dec_q.mul || d_dec_q.div ||
+                     d_dec_q.branch || d_dec_q.illegal);
+      e_slt_q   <= ((d_dec_q.alu_op == htx_cpu_pkg::AluSlt) || (d_dec_q.alu_op == htx_cpu_pkg::AluSltu)) &&
+                   !d_dec_q.illegal;
+      e_shift_q <= ((d_dec_q.alu_op == htx_cpu_pkg::AluSll) || (d_dec_q.alu_op == htx_cpu_pkg::AluSrl) ||
+                    (d_dec_q.alu_op == htx_cpu_pkg::AluSra)) && !d_dec_q.illegal;
       e_lo_q    <= d_lo;
     end
     if (w_ready) begin

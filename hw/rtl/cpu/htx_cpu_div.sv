@@ -14,12 +14,14 @@
 //
 // a_i, b_i and op_i must stay unchanged from start_i until the result (execute holds the
 // instruction). Execute registers done_next_o into its own stall flip-flop, so the unit keeps no
-// done flag of its own.
+// done flag of its own. result_o is 0 from the edge at which execute takes a new instruction
+// (clear_i) until a result replaces it, so execute ORs it into its result without a select.
 module htx_cpu_div (
   input  logic        clk_i,
   input  logic        rst_ni,
   input  logic        start_i,
   input  logic        kill_i,   // abandon an operation in flight
+  input  logic        clear_i,  // execute takes a new instruction: result_o becomes 0
   input  logic [1:0]  op_i,     // funct3[1:0]: 00 DIV, 01 DIVU, 10 REM, 11 REMU
   input  logic [31:0] a_i,
   input  logic [31:0] b_i,
@@ -120,6 +122,9 @@ module htx_cpu_div (
       DivFix: quo_q <= sum[31:0];
       default: ;
     endcase
+    if (clear_i) begin
+      quo_q <= 32'b0;
+    end
   end
 
   assign result_o = quo_q;

@@ -83,7 +83,6 @@ package htx_cpu_pkg;
     logic        load;
     logic        store;
     logic        mul;
-    logic        div;
     logic        csr;
     logic        csr_we;
     csr_sel_e    csr_sel;
