@@ -199,12 +199,12 @@ module htx_cpu #(
   assign d_ra = d_instr_q[19:15];
   assign d_rb = d_instr_q[24:20];
 
-  // Operand controls predecoded from the instruction bits as D takes the instruction, so the
-  // operand path in D does not wait for the decoder: subtract (SUB, SLT(I)(U), branches), signed
-  // compare (SLT(I), BLT, BGE), AUIPC (its result is the target adder's), operand a = 0 (LUI,
-  // ECALL/EBREAK/MRET/WFI, so mtval is 0 + 0, and CSRR*I, whose source is then e_a_q ORed with its
-  // 5-bit immediate; E's operand flip-flop's synchronous reset), operand b = rs2 (OP, BRANCH) or the
-  // immediate. Where they do not matter they are whatever is cheapest.
+  // Operand controls decoded from a few instruction bits as D takes the instruction, fewer LUT4
+  // than exact decodes from the decoder's record: where they do not matter they are whatever is
+  // cheapest. Subtract (SUB, SLT(I)(U), branches), signed compare (SLT(I), BLT, BGE), AUIPC (its
+  // result is the target adder's), operand a = 0 (LUI, ECALL/EBREAK/MRET/WFI, so mtval is 0 + 0,
+  // and CSRR*I, whose source is then e_a_q ORed with its 5-bit immediate; E's operand flip-flop's
+  // synchronous reset), operand b = rs2 (OP, BRANCH) or the immediate.
   logic f_sub, f_signed, f_auipc, f_a_zero, f_b_rs2;
   assign f_auipc  = (f_instr[6:2] == 5'b00101);
   assign f_a_zero = (f_instr[6:2] == 5'b01101) ||
@@ -256,11 +256,13 @@ module htx_cpu #(
   assign d_hazard = e_live && hz;
 
   logic late_alu_d, late_d, sub_d;
-  assign late_alu_d = (d_dec_q.alu_op == htx_cpu_pkg::AluSll) || (d_dec_q.alu_op == htx_cpu_pkg::AluSrl) ||
-                      (d_dec_q.alu_op == htx_cpu_pkg::AluSra) || (d_dec_q.alu_op == htx_cpu_pkg::AluSlt) ||
+  assign late_alu_d = (d_dec_q.alu_op == htx_cpu_pkg::AluSll) ||
+                      (d_dec_q.alu_op == htx_cpu_pkg::AluSrl) ||
+                      (d_dec_q.alu_op == htx_cpu_pkg::AluSra) ||
+                      (d_dec_q.alu_op == htx_cpu_pkg::AluSlt) ||
                       (d_dec_q.alu_op == htx_cpu_pkg::AluSltu);
-  assign late_d     = d_auipc_q || d_dec_q.load || d_dec_q.jal || d_dec_q.jalr || d_dec_q.csr || d_dec_q.mul ||
-                      d_dec_q.div || late_alu_d;
+  assign late_d     = d_auipc_q || d_dec_q.load || d_dec_q.jal || d_dec_q.jalr || d_dec_q.csr ||
+                      d_dec_q.mul || d_dec_q.div || late_alu_d;
   assign sub_d      = d_sub_q;
 
   // ALU operands, extended to 33 bits with the sign for a signed comparison (SLT, BLT, BGE) and
@@ -697,11 +699,12 @@ module htx_cpu #(
       e_arith_q <= (d_dec_q.alu_op == htx_cpu_pkg::AluSra);
       // (Not for an illegal instruction, whose result is its mtval 0, nor a branch, whose result
       // is its target for mtval.)
-      e_fast_q  <= !(d_auipc_q || late_alu_d || d_dec_q.jal || d_dec_q.jalr || d_dec_q.csr || d_dec_q.mul || d_dec_q.div ||
-                     d_dec_q.branch || d_dec_q.illegal);
-      e_slt_q   <= ((d_dec_q.alu_op == htx_cpu_pkg::AluSlt) || (d_dec_q.alu_op == htx_cpu_pkg::AluSltu)) &&
-                   !d_dec_q.illegal;
-      e_shift_q <= ((d_dec_q.alu_op == htx_cpu_pkg::AluSll) || (d_dec_q.alu_op == htx_cpu_pkg::AluSrl) ||
+      e_fast_q  <= !(d_auipc_q || late_alu_d || d_dec_q.jal || d_dec_q.jalr || d_dec_q.csr ||
+                     d_dec_q.mul || d_dec_q.div || d_dec_q.branch || d_dec_q.illegal);
+      e_slt_q   <= ((d_dec_q.alu_op == htx_cpu_pkg::AluSlt) ||
+                    (d_dec_q.alu_op == htx_cpu_pkg::AluSltu)) && !d_dec_q.illegal;
+      e_shift_q <= ((d_dec_q.alu_op == htx_cpu_pkg::AluSll) ||
+                    (d_dec_q.alu_op == htx_cpu_pkg::AluSrl) ||
                     (d_dec_q.alu_op == htx_cpu_pkg::AluSra)) && !d_dec_q.illegal;
       e_lo_q    <= d_lo;
     end
