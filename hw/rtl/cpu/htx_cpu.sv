@@ -88,22 +88,20 @@ module htx_cpu #(
   // Static prediction: JAL and backward branches are taken, unless the target would be misaligned
   // (then E raises the trap). Decided as D takes the instruction (from a few instruction bits) and
   // acted on in D's first cycle, when the target is already a register (d_target_q).
+  htx_cpu_pkg::decoded_t f_dec, d_dec_q;  // the decoder's record of f_instr, and D's copy
   logic f_is_jal, f_is_branch, f_predict;
-  logic [31:0] f_timm, f_target;
+  logic [31:0] f_target;
   assign f_is_jal    = (f_instr[6:0] == 7'b1101111);
   assign f_is_branch = (f_instr[6:0] == 7'b1100011);
   assign f_predict   = !f_err && ((f_is_jal && !f_instr[21]) || (f_is_branch && f_instr[31] && !f_instr[8]));
   // The target is added as D takes the instruction, so that in D's first cycle it is a register
   // that fetch can put on the bus at once (a predicted-taken jump then costs one bubble, not two).
   // The adder also forms AUIPC's result (PC + its U-immediate, E's result from e_aux_q), so D's
-  // operand a has no PC input. A JAL's, branch's or AUIPC's sum is used, and bits 2 and 3 tell
-  // them apart (a full opcode compare here put two more LUT levels in front of the carry chain).
-  assign f_timm   = !f_instr[2] ?
-      {{19{f_instr[31]}}, f_instr[31], f_instr[7], f_instr[30:25], f_instr[11:8], 1'b0} :
-      f_instr[3] ?
-      {{11{f_instr[31]}}, f_instr[31], f_instr[19:12], f_instr[20], f_instr[30:21], 1'b0} :
-      {f_instr[31:12], 12'b0};
-  assign f_target = {f_pc, 2'b00} + f_timm;
+  // operand a has no PC input. Its immediate is the decoder's, whose format comes from a few
+  // opcode bits (one multiplexer for operand b and this adder: 27 LUT4 fewer than one each over
+  // ten numberings, and every placement seed faster; a full opcode compare in front of the carry
+  // chain had cost two LUT levels).
+  assign f_target = {f_pc, 2'b00} + f_dec.imm;
 
   // ------------------------------------------------------------------------------------------
   // Pipeline registers
@@ -188,8 +186,7 @@ module htx_cpu #(
   // instruction (d_dec_q), so D's logic starts from flip-flops: 20 LUT4 fewer over ten numberings
   // than decoding D's registered instruction (the immediate's format choice, for one, no longer
   // sits in front of operand b). The forwarding selects and the hazard check use the raw register
-  // fields.
-  htx_cpu_pkg::decoded_t f_dec, d_dec_q;
+  // fields. (f_dec is declared with the target adder, its other user.)
   logic [4:0] d_ra, d_rb;  // source register fields
 
   htx_cpu_decoder u_decoder (

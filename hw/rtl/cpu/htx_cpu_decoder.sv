@@ -24,7 +24,7 @@ module htx_cpu_decoder (
   logic [2:0]  funct3;
   logic [6:0]  funct7;
   logic [11:0] csr_addr;
-  logic [31:0] imm_i, imm_s, imm_u;
+  logic [31:0] imm_i, imm_s, imm_u, imm_b, imm_j;
 
   assign opcode   = instr_i[6:0];
   assign funct3   = instr_i[14:12];
@@ -34,19 +34,29 @@ module htx_cpu_decoder (
   assign imm_i = {{20{instr_i[31]}}, instr_i[31:20]};
   assign imm_s = {{20{instr_i[31]}}, instr_i[31:25], instr_i[11:7]};
   assign imm_u = {instr_i[31:12], 12'b0};
+  assign imm_b = {{20{instr_i[31]}}, instr_i[7], instr_i[30:25], instr_i[11:8], 1'b0};
+  assign imm_j = {{12{instr_i[31]}}, instr_i[19:12], instr_i[20], instr_i[30:21], 1'b0};
 
-  // The immediate straight from the opcode bits, so it does not wait for the rest of the decode.
-  // SYSTEM gets 0: mtval of ECALL and EBREAK is the adder's 0 + 0 (CSR instructions use uimm).
-  // A JAL's or branch's immediate is not needed here: fetch adds their targets (htx_cpu), and
-  // their ALU operand b is unused (a branch compares rs2); they get the I-type value.
+  // The instruction's immediate in its format, for operand b and for fetch's target adder (JAL,
+  // branches, AUIPC: htx_cpu adds it to the PC as D takes the instruction), one multiplexer for
+  // both. The format comes from a few opcode bits (opcode[6:2]: U = LUI, AUIPC; J = JAL; B =
+  // BRANCH and SYSTEM; S = STORE; I = the rest), right for every instruction that uses the
+  // immediate and whatever is cheapest for the others (OP, MISC-MEM). SYSTEM takes the B format
+  // because that is 0 for ECALL and EBREAK, whose mtval the adder forms as 0 + 0 (CSR
+  // instructions, MRET and WFI do not use operand b).
   logic [31:0] imm;
   always_comb begin
-    unique case (instr_i[6:2])
-      5'b01101, 5'b00101: imm = imm_u;   // LUI, AUIPC
-      5'b01000:           imm = imm_s;   // STORE
-      5'b11100:           imm = 32'b0;   // SYSTEM
-      default:            imm = imm_i;
-    endcase
+    if (instr_i[2] && instr_i[4]) begin
+      imm = imm_u;
+    end else if (instr_i[3]) begin
+      imm = imm_j;
+    end else if (instr_i[6] && !instr_i[2]) begin
+      imm = imm_b;
+    end else if (instr_i[5] && !instr_i[6] && !instr_i[2]) begin
+      imm = imm_s;
+    end else begin
+      imm = imm_i;
+    end
   end
 
   // CSR address -> selector; read_only covers the user counter aliases and the machine id and
@@ -179,7 +189,7 @@ module htx_cpu_decoder (
         end
         OpcSystem: begin
           if (funct3 == 3'b000) begin
-            // mtval of ECALL and EBREAK is 0: the adder computes 0 + 0 (imm is 0 for SYSTEM).
+            // mtval of ECALL and EBREAK is 0: the adder computes 0 + 0 (their B-format imm is 0).
             unique case (instr_i[31:7])
               25'h0000000: begin legal = 1'b1; d.ecall  = 1'b1; end
               25'h0002000: begin legal = 1'b1; d.ebreak = 1'b1; end

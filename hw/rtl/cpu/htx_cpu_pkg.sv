@@ -69,7 +69,7 @@ package htx_cpu_pkg;
     logic [4:0]  rd;
     logic        rd_we;     // writes a register other than x0
     alu_op_e     alu_op;
-    logic [31:0] imm;       // ALU operand b's immediate (I, S or U type; 0 for SYSTEM)
+    logic [31:0] imm;       // in the instruction's format (SYSTEM: B, 0 for ECALL and EBREAK)
   } decoded_t;
 
   // The part of a decoded instruction that execute still needs (operands, traps and targets are
