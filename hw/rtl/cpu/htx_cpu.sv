@@ -200,11 +200,13 @@ module htx_cpu #(
   // than exact decodes from the decoder's record: where they do not matter they are whatever is
   // cheapest. Subtract (SUB, SLT(I)(U), branches), signed compare (SLT(I), BLT, BGE), AUIPC (its
   // result is the target adder's), operand a = 0 (LUI, ECALL/EBREAK/MRET/WFI, so mtval is 0 + 0,
-  // and CSRR*I, whose source is then e_a_q ORed with its 5-bit immediate; E's operand flip-flop's
+  // CSRR*I, whose source is then e_a_q ORed with its 5-bit immediate, and DIV/REM, whose adder
+  // then tests rs2 for zero while the divider takes rs1 from e_rs1_q; E's operand flip-flop's
   // synchronous reset), operand b = rs2 (OP, BRANCH) or the immediate.
   logic f_sub, f_signed, f_auipc, f_a_zero, f_b_rs2;
   assign f_auipc  = (f_instr[6:2] == 5'b00101);
   assign f_a_zero = (f_instr[6:2] == 5'b01101) ||
+                    ((f_instr[6:2] == 5'b01100) && f_instr[25] && f_instr[14]) ||  // DIV, REM(U)
                     ((f_instr[6:2] == 5'b11100) && (f_instr[14] || (f_instr[13:12] == 2'b00)));
   assign f_b_rs2  = (f_instr[6:2] == 5'b01100) || (f_instr[6:2] == 5'b11000);
   assign f_sub    = (f_instr[6:2] == 5'b11000) ||
@@ -472,8 +474,9 @@ module htx_cpu #(
     .kill_i   (w_fault),
     .clear_i  (e_accept_nr),
     .op_i     (e_q.funct3[1:0]),
-    .a_i      (e_a_q[31:0]),
+    .a_i      (e_rs1_q),
     .b_i      (e_rs2_q),
+    .b_zero_i (alu_eq),      // 0 + rs2 == 0: decode clears a divide's operand a
     .busy_o   (div_busy),
     .done_next_o (div_done_next),
     .result_o (div_result)

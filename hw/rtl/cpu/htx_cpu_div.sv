@@ -25,6 +25,7 @@ module htx_cpu_div (
   input  logic [1:0]  op_i,     // funct3[1:0]: 00 DIV, 01 DIVU, 10 REM, 11 REMU
   input  logic [31:0] a_i,
   input  logic [31:0] b_i,
+  input  logic        b_zero_i,  // b_i == 0 (execute's adder tests it), valid with start_i
   output logic        busy_o,   // not idle: ignores start_i
   output logic        done_next_o,  // result_o is the result from the next cycle on
   output logic [31:0] result_o
@@ -101,7 +102,7 @@ module htx_cpu_div (
         carry_q      <= a_neg;
         want_rem_q   <= op_i[1];
         // Remainder takes the dividend's sign; a quotient of a division by zero stays all ones.
-        neg_result_q <= op_i[1] ? a_neg : ((a_neg ^ b_neg) && (b_i != 32'b0));
+        neg_result_q <= op_i[1] ? a_neg : ((a_neg ^ b_neg) && !b_zero_i);
       end
       DivAbsA: quo_q <= sum[31:0];
       DivRun: begin
