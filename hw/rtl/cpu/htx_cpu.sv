@@ -165,8 +165,8 @@ module htx_cpu #(
 
   // ------------------------------------------------------------------------------------------
   // Register file: read when D takes an instruction; while D holds its instruction the register
-  // file keeps reading D's own sources, so the read data always reflects every write up to the
-  // previous edge and the bypass register only ever has to cover the most recent one.
+  // file keeps reading D's own sources, so the read data reflects every write up to the previous
+  // falling edge and only the write of D's current cycle (W's) has to be forwarded.
   logic        d_free;
   logic [31:0] rf_rdata_a, rf_rdata_b;
 
