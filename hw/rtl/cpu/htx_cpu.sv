@@ -88,7 +88,8 @@ module htx_cpu #(
   // Static prediction: JAL and backward branches are taken, unless the target would be misaligned
   // (then E raises the trap). Decided as D takes the instruction (from a few instruction bits) and
   // acted on in D's first cycle, when the target is already a register (d_target_q).
-  htx_cpu_pkg::decoded_t f_dec, d_dec_q;  // the decoder's record of f_instr, and D's copy
+  htx_cpu_pkg::fetch_dec_t f_dec, d_fdec_q;  // the decoder's record of f_instr, and D's copy
+  htx_cpu_pkg::decoded_t   d_dec;            // D's record: the decode table's entry joined with d_fdec_q
   logic f_is_jal, f_is_branch, f_predict;
   logic [31:0] f_target;
   assign f_is_jal    = (f_instr[6:0] == 7'b1101111);
@@ -107,8 +108,7 @@ module htx_cpu #(
   // Pipeline registers
   logic        d_valid_q, d_err_q, d_pred_q;
   logic        d_jump_q;   // d_valid_q && d_pred_q && D's first cycle: redirect fetch now
-  logic        d_sub_q, d_signed_q, d_auipc_q, d_a_zero_q, d_b_rs2_q;
-  logic [24:15] d_instr_q;  // the source register fields (the rest is decoded into d_dec_q)
+  logic [24:15] d_instr_q;  // the source register fields (the rest is decoded into d_dec)
   logic [31:2] d_pc_q, d_npc_q;
 
   logic                    e_valid_q;
@@ -182,47 +182,26 @@ module htx_cpu #(
   );
 
   // ------------------------------------------------------------------------------------------
-  // Decode. The decoder works on fetch's output and D registers its result as it takes the
-  // instruction (d_dec_q), so D's logic starts from flip-flops: 20 LUT4 fewer over ten numberings
-  // than decoding D's registered instruction (the immediate's format choice, for one, no longer
-  // sits in front of operand b). The forwarding selects and the hazard check use the raw register
-  // fields. (f_dec is declared with the target adder, its other user.)
+  // Decode. The decoder works on fetch's output and D registers its record as it takes the
+  // instruction (d_fdec_q); the decode table, read at the same edge from the same word's opcode and
+  // funct3, holds the rest in block RAM and joins the two (d_dec), so D's logic starts from
+  // flip-flops and the RAM's output register. The forwarding selects and the hazard check use the
+  // raw register fields. (f_dec is declared with the target adder, its other user.)
   logic [4:0] d_ra, d_rb;  // source register fields
 
   htx_cpu_decoder u_decoder (
     .instr_i (f_instr),
     .dec_o   (f_dec)
   );
+  htx_cpu_decode_table u_decode_table (
+    .clk_i,
+    .take_i  (d_free_nr),
+    .instr_i (f_instr),
+    .fdec_i  (d_fdec_q),
+    .dec_o   (d_dec)
+  );
   assign d_ra = d_instr_q[19:15];
   assign d_rb = d_instr_q[24:20];
-
-  // Operand controls decoded from a few instruction bits as D takes the instruction, fewer LUT4
-  // than exact decodes from the decoder's record: where they do not matter they are whatever is
-  // cheapest. Subtract (SUB, SLT(I)(U), branches), signed compare (SLT(I), BLT, BGE), AUIPC (its
-  // result is the target adder's), operand a = 0 (LUI, ECALL/EBREAK/MRET/WFI, so mtval is 0 + 0,
-  // CSRR*I, whose source is then e_a_q ORed with its 5-bit immediate, and DIV/REM, whose adder
-  // then tests rs2 for zero while the divider takes rs1 from e_rs1_q; E's operand flip-flop's
-  // synchronous reset), operand b = rs2 (OP, BRANCH) or the immediate.
-  logic f_sub, f_signed, f_auipc, f_a_zero, f_b_rs2;
-  assign f_auipc  = (f_instr[6:2] == 5'b00101);
-  assign f_a_zero = (f_instr[6:2] == 5'b01101) ||
-                    ((f_instr[6:2] == 5'b01100) && f_instr[25] && f_instr[14]) ||  // DIV, REM(U)
-                    ((f_instr[6:2] == 5'b11100) && (f_instr[14] || (f_instr[13:12] == 2'b00)));
-  assign f_b_rs2  = (f_instr[6:2] == 5'b01100) || (f_instr[6:2] == 5'b11000);
-  assign f_sub    = (f_instr[6:2] == 5'b11000) ||
-                    ((((f_instr[6:2] == 5'b01100) && !f_instr[25]) || (f_instr[6:2] == 5'b00100)) &&
-                     (f_instr[14:13] == 2'b01)) ||
-                    ((f_instr[6:2] == 5'b01100) && (f_instr[14:12] == 3'b000) && f_instr[30] &&
-                     !f_instr[25]);
-  assign f_signed = ((f_instr[6:2] == 5'b11000) && !f_instr[13]) ||
-                    (((f_instr[6:2] == 5'b01100) || (f_instr[6:2] == 5'b00100)) &&
-                     (f_instr[14:12] == 3'b010));
-
-  // Sources possibly read (a superset is harmless: it can only add a stall).
-  logic f_rs1_used, f_rs2_used;
-  assign f_rs1_used = !f_instr[2] || (f_instr[6:2] == 5'b11001);               // all but LUI/AUIPC/JAL
-  assign f_rs2_used = (f_instr[6:2] == 5'b01100) || (f_instr[6:2] == 5'b01000) ||  // OP, STORE
-                      (f_instr[6:2] == 5'b11000);                               // BRANCH
 
   logic        e_live, e_accept;
   logic [31:0] e_fast_result;
@@ -249,20 +228,16 @@ module htx_cpu #(
   // reads them). It was computed a cycle early, for whatever E's and D's registers would hold,
   // to keep it off the stall chain; compared in place it is 11 LUT4 smaller and the core placed
   // faster at every seed (2026-12-05).
-  logic d_hazard, hz, d_rs1_used_q, d_rs2_used_q;
+  logic d_hazard, hz;
   assign hz       = e_q.rd_we && e_late_q &&
-                    ((d_rs1_used_q && (e_q.rd == d_ra)) || (d_rs2_used_q && (e_q.rd == d_rb)));
+                    ((d_dec.rs1_used && (e_q.rd == d_ra)) || (d_dec.rs2_used && (e_q.rd == d_rb)));
   assign d_hazard = e_live && hz;
 
   logic late_alu_d, late_d, sub_d;
-  assign late_alu_d = (d_dec_q.alu_op == htx_cpu_pkg::AluSll) ||
-                      (d_dec_q.alu_op == htx_cpu_pkg::AluSrl) ||
-                      (d_dec_q.alu_op == htx_cpu_pkg::AluSra) ||
-                      (d_dec_q.alu_op == htx_cpu_pkg::AluSlt) ||
-                      (d_dec_q.alu_op == htx_cpu_pkg::AluSltu);
-  assign late_d     = d_auipc_q || d_dec_q.load || d_dec_q.jal || d_dec_q.jalr || d_dec_q.csr ||
-                      d_dec_q.mul || d_dec_q.div || late_alu_d;
-  assign sub_d      = d_sub_q;
+  assign late_alu_d = d_dec.slt || d_dec.shift;
+  assign late_d     = d_dec.auipc || d_dec.load || d_dec.jal || d_dec.jalr || d_dec.csr ||
+                      d_dec.mul || d_dec.div || late_alu_d;
+  assign sub_d      = d_dec.sub;
 
   // ALU operands, extended to 33 bits with the sign for a signed comparison (SLT, BLT, BGE) and
   // with zero otherwise; b is inverted for a subtraction.
@@ -273,13 +248,13 @@ module htx_cpu #(
   // Operand b is the forwarded rs2 (the store data's multiplexer) or the immediate, one LUT level
   // after it with the inversion for a subtraction: a forwarding multiplexer of its own with the
   // late values at its last level cost 54 LUT4 more (2026-12-05).
-  assign d_b      = d_b_rs2_q ? d_rs2 : d_dec_q.imm;
+  assign d_b      = d_dec.b_rs2 ? d_rs2 : d_dec.imm;
   // Operand b's extension bit for either value of the forwarded rs2's sign, so that the late sign
   // only selects (one LUT level after d_rs2, like the other bits).
   (* keep *) logic b_ext_0, b_ext_1;
-  assign b_ext_0 = (d_b_rs2_q ? 1'b0 : (signed_d & d_dec_q.imm[31])) ^ sub_d;
-  assign b_ext_1 = (d_b_rs2_q ? signed_d : (signed_d & d_dec_q.imm[31])) ^ sub_d;
-  assign signed_d = d_signed_q;
+  assign b_ext_0 = (d_dec.b_rs2 ? 1'b0 : (signed_d & d_dec.imm[31])) ^ sub_d;
+  assign b_ext_1 = (d_dec.b_rs2 ? signed_d : (signed_d & d_dec.imm[31])) ^ sub_d;
+  assign signed_d = d_dec.signed_cmp;
 
   // A MUL-class instruction's ALU operands are the two terms of its signed correction, corr =
   // (a < 0 ? b : 0) + (b < 0 ? a : 0) with a = rs1 signed unless MULHU and b = rs2 signed for MUL
@@ -289,21 +264,29 @@ module htx_cpu #(
   // sum in the unit (66 LUT4). The zeros are the operand flip-flops' synchronous resets, whose
   // conditions come from the forwarded signs one LUT level after them, as e_b_q's inversion does;
   // the multiplier takes rs1 from e_rs1_q (its DSPs' input register).
-  logic mul_zero_a, mul_zero_b;
-  assign mul_zero_a = d_dec_q.mul && !(!d_dec_q.funct3[1] && d_rs2[31]);
-  assign mul_zero_b = d_dec_q.mul && !((d_dec_q.funct3[1:0] != 2'b11) && d_a[31]);
+  // Each reset is the OR of a part known from D's registers and a part that waits for the forwarded
+  // sign, kept apart so that the sign enters at the last LUT level (the decode table's entry and
+  // funct7's flag would otherwise put a second level behind it).
+  (* keep *) logic zero_a_now, zero_a_pos, zero_b_now, zero_b_pos;
+  logic            zero_a, zero_b;
+  assign zero_a_now = d_dec.a_zero || (d_dec.mul && d_dec.funct3[1]);
+  assign zero_a_pos = d_dec.mul && !d_dec.funct3[1];
+  assign zero_b_now = d_dec.mul && (d_dec.funct3[1:0] == 2'b11);
+  assign zero_b_pos = d_dec.mul && (d_dec.funct3[1:0] != 2'b11);
+  assign zero_a     = zero_a_now || (zero_a_pos && !d_rs2[31]);
+  assign zero_b     = zero_b_now || (zero_b_pos && !d_a[31]);
 
   // Address bits [1:0] of a load, store or JALR target, for the misalignment checks. The two-bit
   // sum is formed for every forwarding source and the forwarding selects come last, so the
   // register compares and the trap logic behind them are not in series with the adder.
   logic [1:0] d_lo, lo_e, lo_w, lo_r;
   logic       d_misaligned;
-  assign lo_e = e_fast_result[1:0] + d_dec_q.imm[1:0];
-  assign lo_w = rf_wdata[1:0] + d_dec_q.imm[1:0];
-  assign lo_r = rf_rdata_a[1:0] + d_dec_q.imm[1:0];
+  assign lo_e = e_fast_result[1:0] + d_dec.imm[1:0];
+  assign lo_w = rf_wdata[1:0] + d_dec.imm[1:0];
+  assign lo_r = rf_rdata_a[1:0] + d_dec.imm[1:0];
   assign d_lo = fe_a ? lo_e : fw_a ? lo_w : lo_r;
   always_comb begin
-    unique case (d_dec_q.funct3[1:0])
+    unique case (d_dec.funct3[1:0])
       2'b00:   d_misaligned = 1'b0;
       2'b01:   d_misaligned = d_lo[0];
       default: d_misaligned = (d_lo != 2'b00);
@@ -322,44 +305,44 @@ module htx_cpu #(
   always_comb begin
     if (d_err_q) begin
       d_cause = htx_cpu_pkg::ExcInstrAccess;
-    end else if (d_dec_q.illegal) begin
+    end else if (d_dec.illegal) begin
       d_cause = htx_cpu_pkg::ExcIllegal;
-    end else if (d_dec_q.ecall) begin
+    end else if (d_dec.ecall) begin
       d_cause = htx_cpu_pkg::ExcEcallM;
-    end else if (d_dec_q.ebreak) begin
+    end else if (d_dec.ebreak) begin
       d_cause = htx_cpu_pkg::ExcBreakpoint;
-    end else if (d_dec_q.jal || d_dec_q.jalr) begin
+    end else if (d_dec.jal || d_dec.jalr) begin
       d_cause = htx_cpu_pkg::ExcInstrMisaligned;
-    end else if (d_dec_q.store) begin
+    end else if (d_dec.store) begin
       d_cause = htx_cpu_pkg::ExcStoreMisaligned;
     end else begin
       d_cause = htx_cpu_pkg::ExcLoadMisaligned;
     end
   end
   // (Bit 1 of a JAL's offset is instruction bit 21.)
-  assign d_xtrap = d_err_q || d_dec_q.illegal || d_dec_q.ecall || d_dec_q.ebreak ||
-                   (d_dec_q.jal && d_instr_q[21]) || (d_dec_q.jalr && d_lo[1]) ||
-                   ((d_dec_q.load || d_dec_q.store) && d_misaligned);
+  assign d_xtrap = d_err_q || d_dec.illegal || d_dec.ecall || d_dec.ebreak ||
+                   (d_dec.jal && d_instr_q[21]) || (d_dec.jalr && d_lo[1]) ||
+                   ((d_dec.load || d_dec.store) && d_misaligned);
 
   htx_cpu_pkg::exec_t d_exec;
   always_comb begin
-    d_exec.mret    = d_dec_q.mret;
-    d_exec.fencei  = d_dec_q.fencei;
+    d_exec.mret    = d_dec.mret;
+    d_exec.fencei  = d_dec.fencei;
     // (An illegal branch, JALR or CSR encoding is none of them in E: its result is its mtval, 0.)
-    d_exec.branch  = d_dec_q.branch && !d_dec_q.illegal;
-    d_exec.jal     = d_dec_q.jal;
-    d_exec.jalr    = d_dec_q.jalr && !d_dec_q.illegal;
-    d_exec.load    = d_dec_q.load;
-    d_exec.store   = d_dec_q.store;
-    d_exec.mul     = d_dec_q.mul;
-    d_exec.csr     = d_dec_q.csr && !d_dec_q.illegal;
-    d_exec.csr_we  = d_dec_q.csr_we;
-    d_exec.csr_sel = d_dec_q.csr_sel;
-    d_exec.funct3  = d_dec_q.funct3;
-    d_exec.uimm    = d_dec_q.rs1;
-    d_exec.rd      = d_dec_q.rd;
-    d_exec.rd_we   = d_dec_q.rd_we;
-    d_exec.alu_op  = d_dec_q.alu_op;
+    d_exec.branch  = d_dec.branch && !d_dec.illegal;
+    d_exec.jal     = d_dec.jal;
+    d_exec.jalr    = d_dec.jalr && !d_dec.illegal;
+    d_exec.load    = d_dec.load;
+    d_exec.store   = d_dec.store;
+    d_exec.mul     = d_dec.mul;
+    d_exec.csr     = d_dec.csr && !d_dec.illegal;
+    d_exec.csr_we  = d_dec.csr_we;
+    d_exec.csr_sel = d_dec.csr_sel;
+    d_exec.funct3  = d_dec.funct3;
+    d_exec.uimm    = d_dec.rs1;
+    d_exec.rd      = d_dec.rd;
+    d_exec.rd_we   = d_dec.rd_we;
+    d_exec.alu_op  = d_dec.alu_op;
   end
 
   // Multiply fusion: a MUL-class instruction that enters E right behind another one with the same
@@ -371,9 +354,9 @@ module htx_cpu #(
   // (after MULHSU or MULHU the high half is not MULH's). The first one's destination cannot be a
   // source of the second here: that is a late-result hazard, which puts a bubble in E first.
   logic fuse_d, fuse_mode;
-  assign fuse_mode = (d_dec_q.funct3[1:0] == 2'b00) || (d_dec_q.funct3[1:0] == e_q.funct3[1:0]) ||
-                     ((e_q.funct3[1:0] == 2'b00) && e_mul_q && (d_dec_q.funct3[1:0] == 2'b01));
-  assign fuse_d    = d_dec_q.mul && e_valid_q && e_q.mul && !e_xtrap_q && fuse_mode &&
+  assign fuse_mode = (d_dec.funct3[1:0] == 2'b00) || (d_dec.funct3[1:0] == e_q.funct3[1:0]) ||
+                     ((e_q.funct3[1:0] == 2'b00) && e_mul_q && (d_dec.funct3[1:0] == 2'b01));
+  assign fuse_d    = d_dec.mul && e_valid_q && e_q.mul && !e_xtrap_q && fuse_mode &&
                      (e_q.uimm == d_ra) && (e_rb_q == d_rb);
 
   logic d_live, d_go;
@@ -487,8 +470,8 @@ module htx_cpu #(
   logic unit_wait_q, unit_wait_d, mul_next, div_next;
   // (A decoded MUL or DIV is legal and traps before E only on an instruction access fault, so
   // d_err_q stands for d_xtrap here and keeps the misalignment checks off this path.)
-  assign mul_next    = e_accept_nr ? (d_dec_q.mul && !d_err_q && !fuse_d) : e_mul_q;
-  assign div_next    = e_accept_nr ? (d_dec_q.div && !d_err_q) : e_div_q;
+  assign mul_next    = e_accept_nr ? (d_dec.mul && !d_err_q && !fuse_d) : e_mul_q;
+  assign div_next    = e_accept_nr ? (d_dec.div && !d_err_q) : e_div_q;
   assign unit_wait_d = (mul_next && !mul_done_next) || (div_next && !div_done_next);
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -658,15 +641,8 @@ module htx_cpu #(
   always_ff @(posedge clk_i) begin
     if (d_free_nr) begin
       d_instr_q  <= f_instr[24:15];
-      d_dec_q    <= f_dec;
+      d_fdec_q   <= f_dec;
       d_target_q <= f_target;
-      d_sub_q      <= f_sub;
-      d_rs1_used_q <= f_rs1_used;
-      d_rs2_used_q <= f_rs2_used;
-      d_auipc_q    <= f_auipc;
-      d_a_zero_q   <= f_a_zero;
-      d_b_rs2_q    <= f_b_rs2;
-      d_signed_q   <= f_signed;
       d_err_q    <= f_err;
       d_pc_q     <= f_pc;
       d_npc_q    <= f_npc;
@@ -674,38 +650,35 @@ module htx_cpu #(
     end
     if (e_accept_nr) begin
       e_q       <= d_exec;
-      e_a_q     <= (mul_zero_a || d_a_zero_q) ? 33'b0 : {signed_d & d_a[31], d_a};
-      e_b_q     <= mul_zero_b ? 33'b0 : {d_rs2[31] ? b_ext_1 : b_ext_0, d_b ^ {32{sub_d}}};
+      e_a_q     <= zero_a ? 33'b0 : {signed_d & d_a[31], d_a};
+      e_b_q     <= zero_b ? 33'b0 : {d_rs2[31] ? b_ext_1 : b_ext_0, d_b ^ {32{sub_d}}};
       e_rs1_q   <= d_a;
-      e_br_eq_q <= !d_dec_q.funct3[2];
-      e_br_inv_q <= d_dec_q.funct3[0];
+      e_br_eq_q <= !d_dec.funct3[2];
+      e_br_inv_q <= d_dec.funct3[0];
       e_rs2_q   <= d_rs2;
       e_aux_q   <= d_target_q;
       e_pc_q    <= d_pc_q;
       e_npc_q   <= d_npc_q;
       e_pred_q  <= d_pred_q;
       e_xtrap_q <= d_xtrap;
-      e_mem_q   <= (d_dec_q.load || d_dec_q.store) && !d_xtrap;
+      e_mem_q   <= (d_dec.load || d_dec.store) && !d_xtrap;
       e_mul_q   <= mul_next;  // a fused one needs no unit cycles
       e_rb_q    <= d_rb;
-      e_high_q  <= (d_dec_q.funct3[1:0] != 2'b00);
+      e_high_q  <= (d_dec.funct3[1:0] != 2'b00);
       e_div_q   <= div_next;
       e_cause_q <= d_cause;
       e_late_q  <= late_d;
-      e_fwd_q   <= d_dec_q.rd_we && !late_d;
+      e_fwd_q   <= d_dec.rd_we && !late_d;
       e_sub_q   <= sub_d;
-      e_auipc_q <= d_auipc_q && !d_dec_q.illegal;
-      e_left_q  <= (d_dec_q.alu_op == htx_cpu_pkg::AluSll);
-      e_arith_q <= (d_dec_q.alu_op == htx_cpu_pkg::AluSra);
+      e_auipc_q <= d_dec.auipc && !d_dec.illegal;
+      e_left_q  <= d_dec.left;
+      e_arith_q <= d_dec.arith;
       // (Not for an illegal instruction, whose result is its mtval 0, nor a branch, whose result
       // is its target for mtval.)
-      e_fast_q  <= !(d_auipc_q || late_alu_d || d_dec_q.jal || d_dec_q.jalr || d_dec_q.csr ||
-                     d_dec_q.mul || d_dec_q.div || d_dec_q.branch || d_dec_q.illegal);
-      e_slt_q   <= ((d_dec_q.alu_op == htx_cpu_pkg::AluSlt) ||
-                    (d_dec_q.alu_op == htx_cpu_pkg::AluSltu)) && !d_dec_q.illegal;
-      e_shift_q <= ((d_dec_q.alu_op == htx_cpu_pkg::AluSll) ||
-                    (d_dec_q.alu_op == htx_cpu_pkg::AluSrl) ||
-                    (d_dec_q.alu_op == htx_cpu_pkg::AluSra)) && !d_dec_q.illegal;
+      e_fast_q  <= !(d_dec.auipc || late_alu_d || d_dec.jal || d_dec.jalr || d_dec.csr ||
+                     d_dec.mul || d_dec.div || d_dec.branch || d_dec.illegal);
+      e_slt_q   <= d_dec.slt && !d_dec.illegal;
+      e_shift_q <= d_dec.shift && !d_dec.illegal;
       e_lo_q    <= d_lo;
     end
     if (w_ready) begin

@@ -1,32 +1,18 @@
-// RV32IM + Zicsr instruction decoder (combinational). Every encoding that is not a legal RV32IM,
-// Zicsr, FENCE/FENCE.I, ECALL, EBREAK, MRET or WFI instruction for an implemented CSR comes out with
-// `illegal` set and mul and div clear; its other flags are left as its opcode set them, since it
-// traps before execute acts (htx_cpu gates every action with the early trap; the stall chain starts
-// the multiplier and divider before that, from d_err_q alone, so those two flags are cleared here).
+// RV32IM + Zicsr instruction decoder, fetch's half (combinational): what depends on more of the
+// instruction than opcode[6:2] and funct3, which the decode table in block RAM looks up as D takes
+// the instruction (htx_cpu_decode_table, which joins the two into D's record). Here: the
+// immediate (also for fetch's target adder), the CSR's selector and whether it exists, and the
+// checks of funct7 and of the SYSTEM encodings that the table's legality classes refer to.
 module htx_cpu_decoder (
   input  logic [31:0]               instr_i,
-  output htx_cpu_pkg::decoded_t     dec_o
+  output htx_cpu_pkg::fetch_dec_t   dec_o
 );
 
-  localparam logic [6:0] OpcLoad    = 7'b0000011;
-  localparam logic [6:0] OpcMiscMem = 7'b0001111;
-  localparam logic [6:0] OpcOpImm   = 7'b0010011;
-  localparam logic [6:0] OpcAuipc   = 7'b0010111;
-  localparam logic [6:0] OpcStore   = 7'b0100011;
-  localparam logic [6:0] OpcOp      = 7'b0110011;
-  localparam logic [6:0] OpcLui     = 7'b0110111;
-  localparam logic [6:0] OpcBranch  = 7'b1100011;
-  localparam logic [6:0] OpcJalr    = 7'b1100111;
-  localparam logic [6:0] OpcJal     = 7'b1101111;
-  localparam logic [6:0] OpcSystem  = 7'b1110011;
-
-  logic [6:0]  opcode;
   logic [2:0]  funct3;
   logic [6:0]  funct7;
   logic [11:0] csr_addr;
   logic [31:0] imm_i, imm_s, imm_u, imm_b, imm_j;
 
-  assign opcode   = instr_i[6:0];
   assign funct3   = instr_i[14:12];
   assign funct7   = instr_i[31:25];
   assign csr_addr = instr_i[31:20];
@@ -95,129 +81,32 @@ module htx_cpu_decoder (
     endcase
   end
 
-  htx_cpu_pkg::decoded_t d;
-  logic legal;
+  // The CSR instruction would write: CSRRW(I), or CSRRS(I)/CSRRC(I) with rs1/uimm not 0.
+  logic csr_we;
+  assign csr_we = (funct3[1:0] == 2'b01) || (instr_i[19:15] != 5'd0);
 
   always_comb begin
-    d          = '0;
-    d.funct3   = funct3;
-    d.rs1      = instr_i[19:15];
-    d.rd       = instr_i[11:7];
-    d.alu_op   = htx_cpu_pkg::AluAdd;
-    d.csr_sel  = csr_sel;
-    d.imm      = imm;
-    legal      = 1'b0;
-    if (instr_i[1:0] == 2'b11) begin
-      unique case (opcode)
-        OpcLui: begin
-          legal      = 1'b1;
-          d.rd_we    = 1'b1;
-        end
-        OpcAuipc: begin
-          legal      = 1'b1;
-          d.rd_we    = 1'b1;
-        end
-        OpcJal: begin
-          legal   = 1'b1;
-          d.jal   = 1'b1;
-          d.rd_we = 1'b1;
-        end
-        OpcJalr: begin
-          legal      = (funct3 == 3'b000);
-          d.jalr     = 1'b1;
-          d.rd_we    = 1'b1;
-        end
-        OpcBranch: begin
-          legal      = (funct3 != 3'b010) && (funct3 != 3'b011);
-          d.branch   = 1'b1;
-          d.alu_op   = htx_cpu_pkg::AluSub;
-        end
-        OpcLoad: begin
-          legal      = (funct3 != 3'b011) && (funct3 != 3'b110) && (funct3 != 3'b111);
-          d.load     = 1'b1;
-          d.rd_we    = 1'b1;
-        end
-        OpcStore: begin
-          legal      = (funct3 == 3'b000) || (funct3 == 3'b001) || (funct3 == 3'b010);
-          d.store    = 1'b1;
-        end
-        OpcOpImm: begin
-          d.rd_we    = 1'b1;
-          legal      = 1'b1;
-          unique case (funct3)
-            3'b000: d.alu_op = htx_cpu_pkg::AluAdd;
-            3'b010: d.alu_op = htx_cpu_pkg::AluSlt;
-            3'b011: d.alu_op = htx_cpu_pkg::AluSltu;
-            3'b100: d.alu_op = htx_cpu_pkg::AluXor;
-            3'b110: d.alu_op = htx_cpu_pkg::AluOr;
-            3'b111: d.alu_op = htx_cpu_pkg::AluAnd;
-            3'b001: begin
-              d.alu_op = htx_cpu_pkg::AluSll;
-              legal    = (funct7 == 7'b0000000);
-            end
-            default: begin  // 3'b101
-              d.alu_op = funct7[5] ? htx_cpu_pkg::AluSra : htx_cpu_pkg::AluSrl;
-              legal    = (funct7 == 7'b0000000) || (funct7 == 7'b0100000);
-            end
-          endcase
-        end
-        OpcOp: begin
-          d.rd_we    = 1'b1;
-          if (funct7 == 7'b0000001) begin
-            legal = 1'b1;
-            d.mul = ~funct3[2];
-            d.div = funct3[2];
-          end else begin
-            unique case (funct3)
-              3'b000: d.alu_op = funct7[5] ? htx_cpu_pkg::AluSub : htx_cpu_pkg::AluAdd;
-              3'b001: d.alu_op = htx_cpu_pkg::AluSll;
-              3'b010: d.alu_op = htx_cpu_pkg::AluSlt;
-              3'b011: d.alu_op = htx_cpu_pkg::AluSltu;
-              3'b100: d.alu_op = htx_cpu_pkg::AluXor;
-              3'b101: d.alu_op = funct7[5] ? htx_cpu_pkg::AluSra : htx_cpu_pkg::AluSrl;
-              3'b110: d.alu_op = htx_cpu_pkg::AluOr;
-              default: d.alu_op = htx_cpu_pkg::AluAnd;
-            endcase
-            legal = (funct7 == 7'b0000000) ||
-                    ((funct7 == 7'b0100000) && ((funct3 == 3'b000) || (funct3 == 3'b101)));
-          end
-        end
-        OpcMiscMem: begin
-          // FENCE orders nothing here (one in-order hart, no caches); FENCE.I refetches.
-          legal    = (funct3 == 3'b000) || (funct3 == 3'b001);
-          d.fencei = (funct3 == 3'b001);
-        end
-        OpcSystem: begin
-          if (funct3 == 3'b000) begin
-            // mtval of ECALL and EBREAK is 0: the adder computes 0 + 0 (their B-format imm is 0).
-            unique case (instr_i[31:7])
-              25'h0000000: begin legal = 1'b1; d.ecall  = 1'b1; end
-              25'h0002000: begin legal = 1'b1; d.ebreak = 1'b1; end
-              25'h0604000: begin legal = 1'b1; d.mret   = 1'b1; end
-              25'h020a000: legal = 1'b1;  // WFI: a legal no-op
-              default:     legal = 1'b0;
-            endcase
-          end else if (funct3 != 3'b100) begin
-            d.csr      = 1'b1;
-            d.rd_we    = 1'b1;
-            d.csr_we   = (funct3[1:0] == 2'b01) || (instr_i[19:15] != 5'd0);
-            legal      = csr_known && !(csr_read_only && d.csr_we);
-          end
-        end
-        default: legal = 1'b0;
-      endcase
-    end
-    if (d.rd == 5'd0) begin
-      d.rd_we = 1'b0;
-    end
-    // Everything else stays as the opcode set it (docs/cpu.md): the early trap cancels the actions.
-    if (!legal) begin
-      d.illegal = 1'b1;
-      d.mul     = 1'b0;
-      d.div     = 1'b0;
-    end
+    dec_o           = '0;
+    dec_o.imm       = imm;
+    dec_o.csr_sel   = csr_sel;
+    dec_o.csr_we    = csr_we;
+    dec_o.csr_ok    = csr_known && !(csr_read_only && csr_we);
+    // mtval of ECALL and EBREAK is 0: the adder computes 0 + 0 (their B-format imm is 0).
+    dec_o.ecall     = (instr_i[31:7] == 25'h0000000);
+    dec_o.ebreak    = (instr_i[31:7] == 25'h0002000);
+    dec_o.mret      = (instr_i[31:7] == 25'h0604000);
+    dec_o.system_ok = dec_o.ecall || dec_o.ebreak || dec_o.mret ||
+                      (instr_i[31:7] == 25'h020a000);  // WFI: a legal no-op
+    dec_o.f7_zero   = (funct7 == 7'b0000000);
+    dec_o.f7_20     = (funct7 == 7'b0100000);
+    dec_o.f7_one    = (funct7 == 7'b0000001);
+    dec_o.quad      = (instr_i[1:0] == 2'b11);
+    dec_o.m_ok      = dec_o.f7_one && dec_o.quad;
+    dec_o.rd_nz     = (instr_i[11:7] != 5'd0);
+    dec_o.i30       = instr_i[30];
+    dec_o.funct3    = funct3;
+    dec_o.rs1       = instr_i[19:15];
+    dec_o.rd        = instr_i[11:7];
   end
-
-  assign dec_o = d;
 
 endmodule

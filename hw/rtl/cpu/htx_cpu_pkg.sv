@@ -46,10 +46,81 @@ package htx_cpu_pkg;
     ExcEcallM          = 4'd11
   } exc_cause_e;
 
-  // What decode hands to execute. funct3 is kept whole: it selects the branch condition, the memory
-  // access size and sign, the multiply/divide operation and the CSR operation.
+  // How an instruction's legality depends on more than its opcode and funct3 (the decode table's
+  // entry says which; the decoder tests the other fields in fetch's cycle).
+  typedef enum logic [2:0] {
+    LegalNever   = 3'd0,
+    LegalAlways  = 3'd1,
+    LegalF7Zero  = 3'd2,  // funct7 is 0 (SLLI)
+    LegalF7Shift = 3'd3,  // funct7 is 0 or 0x20 (SRLI, SRAI)
+    LegalF7OpM   = 3'd4,  // funct7 is 0 or 1 (OP with funct3 other than 000 and 101)
+    LegalF7OpAll = 3'd5,  // funct7 is 0, 0x20 or 1 (OP with funct3 000 or 101)
+    LegalSystem  = 3'd6,  // exactly ECALL, EBREAK, MRET or WFI
+    LegalCsr     = 3'd7   // an implemented CSR, and no write to a read-only one
+  } legal_class_e;
+
+  // One entry of the decode table (htx_cpu_decode_table), addressed by opcode[6:2] and funct3:
+  // everything decode needs that depends on those eight bits only, with the few corrections that
+  // funct7's bits 0 and 5 make left to the table's user.
   typedef struct packed {
-    logic        illegal;   // an early trap (mul, div clear; other flags as decoded); mtval 0
+    legal_class_e legal;
+    logic        load;
+    logic        store;
+    logic        branch;
+    logic        jal;
+    logic        jalr;
+    logic        csr;        // SYSTEM with funct3 other than 000 and 100
+    logic        fencei;
+    logic        auipc;
+    logic        system;     // SYSTEM with funct3 000 (ECALL, EBREAK, MRET, WFI)
+    logic        mul;        // OP with funct3[2] clear: a MUL-class instruction if funct7 is 1
+    logic        div;        // OP with funct3[2] set: a DIV-class instruction if funct7 is 1
+    logic        rd_we;      // writes rd (unless rd is x0)
+    logic        sub;        // subtracts (SLT(I)(U), branches), unless a MUL-class instruction
+    logic        sub30;      // subtracts if instr[30] (ADD/SUB)
+    logic        signed_cmp; // SLT(I), BLT, BGE
+    logic        b_rs2;      // operand b is rs2 (OP, BRANCH), else the immediate
+    logic        a_zero;     // operand a is 0 (LUI; SYSTEM: mtval 0 + 0, CSRR*I)
+    logic        rs1_used;   // may read rs1 (a superset is harmless: it can only add a stall)
+    logic        rs2_used;
+    alu_op_e     alu_op;
+    logic        alu30;      // alu_op's bit 0 is set by instr[30] (SUB from ADD, SRA from SRL)
+    logic        slt;        // SLT(I)(U), unless a MUL-class instruction
+    logic        shift;      // SLL(I), SRL(I), SRA(I), unless MUL-class or DIV-class
+    logic        left;       // SLL(I), unless MUL-class
+    logic        arith30;    // SRA(I) if instr[30]
+  } table_entry_t;
+  localparam int TableEntryBits = 31;  // $bits(table_entry_t), for Yosys
+
+  // What the decoder finds in fetch's cycle beside the table: the immediate, the CSR, the fields
+  // funct7 and the SYSTEM encodings are checked against. D registers it as it takes the
+  // instruction.
+  typedef struct packed {
+    logic [31:0] imm;       // in the instruction's format (SYSTEM: B, 0 for ECALL and EBREAK)
+    csr_sel_e    csr_sel;
+    logic        csr_we;    // a CSR instruction would write (csrrw*, or csrrs/c* with rs1/uimm != 0)
+    logic        csr_ok;    // the CSR is implemented and not written if read-only
+    logic        ecall;     // instr[31:7] is ECALL's (and so on; the table's `system` gates them)
+    logic        ebreak;
+    logic        mret;
+    logic        system_ok; // one of ECALL, EBREAK, MRET, WFI
+    logic        f7_zero;   // funct7 is 0
+    logic        f7_20;     // funct7 is 0x20
+    logic        f7_one;    // funct7 is 1
+    logic        m_ok;      // funct7 is 1 and instr[1:0] is 11 (an M instruction if OP)
+    logic        quad;      // instr[1:0] is 11 (a 32-bit instruction)
+    logic        rd_nz;     // rd is not x0
+    logic        i30;       // instr[30]
+    logic [2:0]  funct3;
+    logic [4:0]  rs1;       // also the CSRR*I immediate
+    logic [4:0]  rd;
+  } fetch_dec_t;
+
+  // What decode hands to D's logic (htx_cpu_decode_table joins the table's entry and the
+  // decoder's record). An illegal instruction has mul and div clear and jal clear; its other
+  // flags are left as its opcode set them, since it traps before execute acts.
+  typedef struct packed {
+    logic        illegal;   // an early trap; mtval 0
     logic        ecall;
     logic        ebreak;
     logic        mret;
@@ -62,14 +133,25 @@ package htx_cpu_pkg;
     logic        mul;
     logic        div;
     logic        csr;
-    logic        csr_we;    // the CSR instruction writes (csrrw*, or csrrs/c* with rs1/uimm != 0)
+    logic        csr_we;
     csr_sel_e    csr_sel;
     logic [2:0]  funct3;
     logic [4:0]  rs1;       // also the CSRR*I immediate
     logic [4:0]  rd;
     logic        rd_we;     // writes a register other than x0
     alu_op_e     alu_op;
-    logic [31:0] imm;       // in the instruction's format (SYSTEM: B, 0 for ECALL and EBREAK)
+    logic        sub;       // operand b inverted, carry in 1
+    logic        signed_cmp;
+    logic        auipc;
+    logic        a_zero;
+    logic        b_rs2;
+    logic        rs1_used;
+    logic        rs2_used;
+    logic        slt;
+    logic        shift;
+    logic        left;
+    logic        arith;
+    logic [31:0] imm;
   } decoded_t;
 
   // The part of a decoded instruction that execute still needs (operands, traps and targets are
