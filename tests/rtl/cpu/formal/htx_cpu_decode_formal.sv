@@ -1,6 +1,7 @@
 // Formal harness (Yosys `sat`, two cycles): the core's decode, the decoder's record registered
 // beside the decode table's entry as D does it, against the reference decoder
-// (htx_cpu_decoder_ref) for every 32-bit instruction word. Proved: the same words are illegal;
+// (htx_cpu_decoder_ref, which takes the immediate and the CSR decode from the decoder's record)
+// for every 32-bit instruction word. Proved: the same words are illegal;
 // for a legal word every field execute and D's logic read is the same, except the ALU operation of
 // a MUL- or DIV-class instruction and the write flag of anything but a CSR instruction, which
 // nothing reads.
@@ -24,7 +25,8 @@ module htx_cpu_decode_formal (
   );
   htx_cpu_decoder_ref u_ref (
     .instr_i,
-    .dec_o (ref_dec)
+    .fdec_i (fdec),
+    .dec_o  (ref_dec)
   );
 
   always_ff @(posedge clk_i) begin

@@ -1,8 +1,11 @@
 // Reference decoder for the decode equivalence proof (htx_cpu_decode_formal): the core's decoder
 // as it was before the decode table (2026-12-07), one case statement over the whole instruction,
-// with the operand controls htx_cpu then decoded beside it. It is not part of the core.
+// with the operand controls htx_cpu then decoded beside it. It is not part of the core. The parts
+// the table did not change, the immediate and the CSR decode, are taken from the decoder's record
+// of the same word (fdec_i) rather than written twice.
 module htx_cpu_decoder_ref (
   input  logic [31:0]               instr_i,
+  input  htx_cpu_pkg::fetch_dec_t   fdec_i,   // htx_cpu_decoder's record of instr_i
   output htx_cpu_pkg::decoded_t     dec_o
 );
 
@@ -21,77 +24,10 @@ module htx_cpu_decoder_ref (
   logic [6:0]  opcode;
   logic [2:0]  funct3;
   logic [6:0]  funct7;
-  logic [11:0] csr_addr;
-  logic [31:0] imm_i, imm_s, imm_u, imm_b, imm_j;
 
   assign opcode   = instr_i[6:0];
   assign funct3   = instr_i[14:12];
   assign funct7   = instr_i[31:25];
-  assign csr_addr = instr_i[31:20];
-
-  assign imm_i = {{20{instr_i[31]}}, instr_i[31:20]};
-  assign imm_s = {{20{instr_i[31]}}, instr_i[31:25], instr_i[11:7]};
-  assign imm_u = {instr_i[31:12], 12'b0};
-  assign imm_b = {{20{instr_i[31]}}, instr_i[7], instr_i[30:25], instr_i[11:8], 1'b0};
-  assign imm_j = {{12{instr_i[31]}}, instr_i[19:12], instr_i[20], instr_i[30:21], 1'b0};
-
-  // The instruction's immediate in its format, for operand b and for fetch's target adder (JAL,
-  // branches, AUIPC: htx_cpu adds it to the PC as D takes the instruction), one multiplexer for
-  // both. The format comes from a few opcode bits (opcode[6:2]: U = LUI, AUIPC; J = JAL; B =
-  // BRANCH and SYSTEM; S = STORE; I = the rest), right for every instruction that uses the
-  // immediate and whatever is cheapest for the others (OP, MISC-MEM). SYSTEM takes the B format
-  // because that is 0 for ECALL and EBREAK, whose mtval the adder forms as 0 + 0 (CSR
-  // instructions, MRET and WFI do not use operand b).
-  logic [31:0] imm;
-  always_comb begin
-    if (instr_i[2] && instr_i[4]) begin
-      imm = imm_u;
-    end else if (instr_i[3]) begin
-      imm = imm_j;
-    end else if (instr_i[6] && !instr_i[2]) begin
-      imm = imm_b;
-    end else if (instr_i[5] && !instr_i[6] && !instr_i[2]) begin
-      imm = imm_s;
-    end else begin
-      imm = imm_i;
-    end
-  end
-
-  // CSR address -> selector; read_only covers the user counter aliases and the machine id and
-  // configuration registers. The zero CSRs (CsrZero) read 0.
-  logic     csr_known;
-  logic     csr_read_only;
-  htx_cpu_pkg::csr_sel_e csr_sel;
-  always_comb begin
-    csr_known     = 1'b1;
-    csr_read_only = 1'b0;
-    csr_sel       = htx_cpu_pkg::CsrZero;
-    unique case (csr_addr)
-      12'h300: csr_sel = htx_cpu_pkg::CsrMstatus;
-      12'h301: csr_sel = htx_cpu_pkg::CsrMisa;
-      12'h304: csr_sel = htx_cpu_pkg::CsrMie;
-      12'h305: csr_sel = htx_cpu_pkg::CsrMtvec;
-      12'h340: csr_sel = htx_cpu_pkg::CsrMscratch;
-      12'h341: csr_sel = htx_cpu_pkg::CsrMepc;
-      12'h342: csr_sel = htx_cpu_pkg::CsrMcause;
-      12'h343: csr_sel = htx_cpu_pkg::CsrMtval;
-      12'h344: csr_sel = htx_cpu_pkg::CsrMip;
-      12'hB00: csr_sel = htx_cpu_pkg::CsrCycle;
-      12'hB02: csr_sel = htx_cpu_pkg::CsrInstret;
-      12'hB80: csr_sel = htx_cpu_pkg::CsrCycleh;
-      12'hB82: csr_sel = htx_cpu_pkg::CsrInstreth;
-      12'hC00: begin csr_sel = htx_cpu_pkg::CsrCycle;    csr_read_only = 1'b1; end
-      12'hC02: begin csr_sel = htx_cpu_pkg::CsrInstret;  csr_read_only = 1'b1; end
-      12'hC80: begin csr_sel = htx_cpu_pkg::CsrCycleh;   csr_read_only = 1'b1; end
-      12'hC82: begin csr_sel = htx_cpu_pkg::CsrInstreth; csr_read_only = 1'b1; end
-      12'hF11, 12'hF12, 12'hF13, 12'hF14, 12'hF15: csr_read_only = 1'b1;
-      12'h310: ;  // mstatush: little-endian only, zero, writes ignored
-      // mhpmcounter3-31, their high halves and mhpmevent3-31: zero, writes ignored (the
-      // privileged spec's legal minimum for the counters it says should exist).
-      default: csr_known = ((csr_addr[11:5] == 7'h58) || (csr_addr[11:5] == 7'h5C) ||
-                            (csr_addr[11:5] == 7'h19)) && (csr_addr[4:0] >= 5'd3);
-    endcase
-  end
 
   htx_cpu_pkg::decoded_t d;
   logic legal;
@@ -102,8 +38,8 @@ module htx_cpu_decoder_ref (
     d.rs1      = instr_i[19:15];
     d.rd       = instr_i[11:7];
     d.alu_op   = htx_cpu_pkg::AluAdd;
-    d.csr_sel  = csr_sel;
-    d.imm      = imm;
+    d.csr_sel  = fdec_i.csr_sel;
+    d.imm      = fdec_i.imm;
     legal      = 1'b0;
     if (instr_i[1:0] == 2'b11) begin
       unique case (opcode)
@@ -199,7 +135,7 @@ module htx_cpu_decoder_ref (
             d.csr      = 1'b1;
             d.rd_we    = 1'b1;
             d.csr_we   = (funct3[1:0] == 2'b01) || (instr_i[19:15] != 5'd0);
-            legal      = csr_known && !(csr_read_only && d.csr_we);
+            legal      = fdec_i.csr_ok;  // the CSR exists and is not written if read-only
           end
         end
         default: legal = 1'b0;
