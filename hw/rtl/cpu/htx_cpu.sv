@@ -21,8 +21,13 @@
 // E only acts (bus request, CSR write, redirect, hand-over to W) in a cycle in which W completes
 // without a trap, so a trap in W cancels everything younger: traps are precise. Taking every
 // trap in W gives mepc and mtval one source each (W's PC and result registers).
+//
+// Instructions execute from the window [0, 2^PcBits - 4] (docs/cpu.md, "Executable window"): a
+// fetch outside it is an instruction access fault, as a bus error on the fetch would be, with mepc
+// and mtval the full address. Only fetch's and the redirect's PC logic is PcBits wide.
 module htx_cpu #(
-  parameter logic [31:0] ResetVector = 32'h0000_0000
+  parameter logic [31:0] ResetVector = 32'h0000_0000,
+  parameter int unsigned PcBits      = 18
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -48,19 +53,29 @@ module htx_cpu #(
   input  logic        dbus_rsp_err_i
 );
 
+  // The window must hold at least the reset vector's word and its last (faulting) word.
+  if (PcBits < 3 || PcBits > 31 || ResetVector[31:2] >= (30'(1) << (PcBits - 2)) - 30'(1)) begin : g_bad_window
+    $error("htx_cpu: PcBits must be 3 to 31 with the reset vector below the window's last word");
+  end
+
   // ------------------------------------------------------------------------------------------
   // Fetch
   logic        redirect_q, d_redirect;
-  logic [31:2] redirect_pc_q, redirect_npc_q;
+  logic [PcBits-1:2] redirect_pc_q, redirect_npc_q;
+  logic [31:PcBits]  redirect_hi_q;  // the redirect target's high bits: not zero if outside
   logic [31:0] d_target_q;  // branch/JAL target, PC + immediate, added as D takes the instruction
   logic        redirect_seq_q;
   logic        f_valid, f_err;
   logic [31:0] f_instr;
   logic [31:2] f_pc;
-  logic [31:2] f_npc;
+  logic [PcBits-1:2] f_npc;
   logic        f_take;   // D takes the fetch output this cycle
 
-  htx_cpu_fetch #(.BootAddr(ResetVector)) u_fetch (
+  // A fall-through (redirect_seq_q) is inside the window: the window's last word never executes.
+  logic redirect_out;
+  assign redirect_out = !redirect_seq_q && (redirect_hi_q != '0);
+
+  htx_cpu_fetch #(.BootAddr(ResetVector), .PcBits(PcBits)) u_fetch (
     .clk_i,
     .rst_ni,
     .ibus_req_valid_o,
@@ -71,8 +86,10 @@ module htx_cpu #(
     .ibus_rsp_err_i,
     .redirect_i    (redirect_q),
     .redirect_pc_i (redirect_seq_q ? redirect_npc_q : redirect_pc_q),
+    .redirect_out_i(redirect_out),
+    .redirect_hi_i (redirect_hi_q),
     .predict_i     (d_redirect),
-    .predict_pc_i  (d_target_q[31:2]),
+    .predict_pc_i  (d_target_q[PcBits-1:2]),
     .instr_valid_o (f_valid),
     .instr_o       (f_instr),
     .instr_err_o   (f_err),
@@ -109,7 +126,8 @@ module htx_cpu #(
   logic        d_valid_q, d_err_q, d_pred_q;
   logic        d_jump_q;   // d_valid_q && d_pred_q && D's first cycle: redirect fetch now
   logic [24:15] d_instr_q;  // the source register fields (the rest is decoded into d_dec)
-  logic [31:2] d_pc_q, d_npc_q;
+  logic [31:2] d_pc_q;
+  logic [PcBits-1:2] d_npc_q;
 
   logic                    e_valid_q;
   htx_cpu_pkg::exec_t      e_q;
@@ -117,7 +135,11 @@ module htx_cpu #(
   logic [31:0]             e_rs1_q;                         // the multiplier's operand a (rs1)
   logic [31:0]             e_rs2_q, e_aux_q;                // store data, a JAL or branch target
   logic                    e_br_eq_q, e_br_inv_q;           // branch condition: use eq, invert
-  logic [31:2]             e_pc_q, e_npc_q;
+  logic [31:2]             e_pc_q;
+  logic [PcBits-1:2]       e_npc_q;
+  // A predicted jump or branch whose target is outside the window: fetch went to the target's low
+  // bits, so execute redirects it as if mispredicted, with the target's high bits.
+  logic                    e_pout_q;
   logic                    e_pred_q, e_xtrap_q, e_late_q, e_sub_q, e_fwd_q;
   logic                    e_left_q, e_arith_q, e_fast_q, e_slt_q, e_shift_q;
   logic                    e_mem_q, e_mul_q, e_div_q;
@@ -265,11 +287,11 @@ module htx_cpu #(
   // conditions come from the forwarded signs one LUT level after them, as e_b_q's inversion does;
   // the multiplier takes rs1 from e_rs1_q (its DSPs' input register).
   // Each reset is the OR of a part known from D's registers and a part that waits for the forwarded
-  // sign, the latter kept apart so that the sign enters at the last LUT level (the decode table's
-  // entry and funct7's flag would otherwise put a second level behind it). Keeping the first part
-  // too placed slower (27.93 / 29.84 / 30.72 MHz against 28.90 / 30.44 / 31.04 at seeds 1-3).
-  logic            zero_a_now, zero_b_now, zero_a, zero_b;
-  (* keep *) logic zero_a_pos, zero_b_pos;
+  // sign, both kept apart so that the sign enters at the last LUT level (the decode table's entry
+  // and funct7's flag would otherwise put a second level behind it: 27.37 / 27.77 / 27.55 MHz at
+  // seeds 1-3 with only the second part kept, 30.76 / 30.36 / 30.55 with both, 2026-12-07).
+  logic            zero_a, zero_b;
+  (* keep *) logic zero_a_now, zero_b_now, zero_a_pos, zero_b_pos;
   assign zero_a_now = d_dec.a_zero || (d_dec.mul && d_dec.funct3[1]);
   assign zero_a_pos = d_dec.mul && !d_dec.funct3[1];
   assign zero_b_now = d_dec.mul && (d_dec.funct3[1:0] == 2'b11);
@@ -427,7 +449,8 @@ module htx_cpu #(
   logic [31:2]             trap_pc_q;
   logic [31:0]             trap_tval_q;
   logic [31:0] mul_result, div_result, csr_rdata;
-  logic [31:2] mtvec, mepc;
+  logic [PcBits-1:2] mtvec;
+  logic [31:2]       mepc;
 
   // E holds a live instruction unless it entered on the wrong path while a redirect was decided.
   // A CSR instruction waits until W is empty and its retirement is counted, so the counters it
@@ -490,9 +513,9 @@ module htx_cpu #(
   logic br_misaligned, e_jump, e_ctl_n, e_ctl_t;
   assign br_misaligned = e_q.branch && e_aux_q[1];
   assign e_jump        = e_q.jal || e_q.jalr;
-  assign e_ctl_n       = !e_xtrap_q && (e_q.mret || e_q.fencei || (e_jump != e_pred_q));
+  assign e_ctl_n       = !e_xtrap_q && (e_q.mret || e_q.fencei || (e_jump != e_pred_q) || e_pout_q);
   assign e_ctl_t       = !e_xtrap_q && !br_misaligned &&
-                         (e_q.mret || e_q.fencei || ((e_jump || e_q.branch) != e_pred_q));
+                         (e_q.mret || e_q.fencei || ((e_jump || e_q.branch) != e_pred_q) || e_pout_q);
   (* keep *) logic xt_t, xt_n, redir_t, redir_n, seq_t, seq_n;
   assign xt_n     = e_done && e_xtrap_q;
   assign xt_t     = e_done && (e_xtrap_q || br_misaligned);
@@ -506,7 +529,7 @@ module htx_cpu #(
   assign csr_instret_we = (e_q.csr_sel == htx_cpu_pkg::CsrInstret) ||
                           (e_q.csr_sel == htx_cpu_pkg::CsrInstreth);
 
-  htx_cpu_csr u_csr (
+  htx_cpu_csr #(.PcBits(PcBits)) u_csr (
     .clk_i,
     .rst_ni,
     .sel_i     (e_q.csr_sel),
@@ -543,7 +566,7 @@ module htx_cpu #(
   assign sel_fast = e_fast_q || (e_q.jalr && e_xtrap_q);
   // An AND-OR of the registered one-hot kinds (csr_rdata is already 0 unless a CSR instruction,
   // div_result unless E holds a division that has finished).
-  assign e_result_rest  = ({32{sel_link}} & {e_npc_q, 2'b00}) | ({32{sel_aux}} & e_aux_q) |
+  assign e_result_rest  = ({32{sel_link}} & 32'({e_npc_q, 2'b00})) | ({32{sel_aux}} & e_aux_q) |
                           csr_rdata | ({32{e_q.mul}} & mul_result) | div_result;
   assign e_result_early = sel_fast ? e_fast_result :               // fast: includes the address
                           e_slt_q  ? {31'b0, alu_lt} : e_result_rest;
@@ -584,7 +607,7 @@ module htx_cpu #(
   logic [31:2] late_pc;
   always_comb begin
     if (w_trap) begin
-      late_pc = mtvec;
+      late_pc = 30'(mtvec);
     end else if (e_q.mret) begin
       late_pc = mepc;
     end else if (e_q.jalr) begin
@@ -605,7 +628,8 @@ module htx_cpu #(
   end
 
   always_ff @(posedge clk_i) begin
-    redirect_pc_q <= late_pc;
+    redirect_pc_q <= late_pc[PcBits-1:2];
+    redirect_hi_q <= late_pc[31:PcBits];
     redirect_npc_q <= e_npc_q;
     redirect_seq_q <= br_cond ? seq_t : seq_n;
     trap_cause_q  <= w_fault ? (w_store_q ? htx_cpu_pkg::ExcStoreAccess : htx_cpu_pkg::ExcLoadAccess)
@@ -661,6 +685,7 @@ module htx_cpu #(
       e_pc_q    <= d_pc_q;
       e_npc_q   <= d_npc_q;
       e_pred_q  <= d_pred_q;
+      e_pout_q  <= d_pred_q && (d_target_q[31:PcBits] != '0);
       e_xtrap_q <= d_xtrap;
       e_mem_q   <= (d_dec.load || d_dec.store) && !d_xtrap;
       e_mul_q   <= mul_next;  // a fused one needs no unit cycles

@@ -4,7 +4,10 @@
 // user aliases cycle(h)/instret(h) and mvendorid/marchid/mimpid/mhartid/mconfigptr (read 0);
 // mstatush and the mhpm counters and event selectors read 0 and ignore writes (the decoder's
 // CsrZero).
-module htx_cpu_csr (
+// mtvec holds addresses inside the executable window only (WARL: its bits 31:PcBits read 0).
+module htx_cpu_csr #(
+  parameter int unsigned PcBits = 18
+) (
   input  logic                    clk_i,
   input  logic                    rst_ni,
   // CSR instruction in execute
@@ -23,14 +26,15 @@ module htx_cpu_csr (
   input  logic [31:2]             trap_pc_i,
   input  logic [31:0]             tval_i,
   input  logic                    mret_i,
-  output logic [31:2]             mtvec_o,
+  output logic [PcBits-1:2]       mtvec_o,
   output logic [31:2]             mepc_o
 );
 
   localparam logic [31:0] MisaValue = 32'h4000_1100;  // MXL=32, I, M
 
   logic        mie_q, mpie_q;
-  logic [31:2] mtvec_q, mepc_q;
+  logic [PcBits-1:2] mtvec_q;
+  logic [31:2]       mepc_q;
   logic [3:0]  mcause_q;
   logic [31:0] mtval_q, mscratch_q;
   // Public so simulation harnesses can report the counts without a port.
@@ -46,7 +50,7 @@ module htx_cpu_csr (
   logic [31:0] rdata_raw;
   assign rdata_raw = pick(sel_i == htx_cpu_pkg::CsrMstatus, {19'b0, 2'b11, 3'b0, mpie_q, 3'b0, mie_q, 3'b0}) |
                      pick(sel_i == htx_cpu_pkg::CsrMisa, MisaValue) |
-                     pick(sel_i == htx_cpu_pkg::CsrMtvec, {mtvec_q, 2'b00}) |
+                     pick(sel_i == htx_cpu_pkg::CsrMtvec, 32'({mtvec_q, 2'b00})) |
                      pick(sel_i == htx_cpu_pkg::CsrMscratch, mscratch_q) |
                      pick(sel_i == htx_cpu_pkg::CsrMepc, {mepc_q, 2'b00}) |
                      pick(sel_i == htx_cpu_pkg::CsrMcause, {28'b0, mcause_q}) |
@@ -133,7 +137,7 @@ module htx_cpu_csr (
     if (!rst_ni) begin
       mie_q    <= 1'b0;
       mpie_q   <= 1'b0;
-      mtvec_q  <= 30'b0;
+      mtvec_q  <= '0;
       mcause_q <= 4'b0;
     end else if (trap_i) begin
       mpie_q   <= mie_q;
@@ -148,7 +152,7 @@ module htx_cpu_csr (
           mie_q  <= wdata[3];
           mpie_q <= wdata[7];
         end
-        htx_cpu_pkg::CsrMtvec:  mtvec_q  <= wdata[31:2];
+        htx_cpu_pkg::CsrMtvec:  mtvec_q  <= wdata[PcBits-1:2];
         htx_cpu_pkg::CsrMcause: mcause_q <= wdata[3:0];
         default: ;
       endcase

@@ -20,7 +20,8 @@ module htx_cpu_synth_wrapper (
   logic [31:0] ibus_req_addr, ibus_req_wdata, dbus_req_addr, dbus_req_wdata;
   logic [3:0]  ibus_req_be, dbus_req_be;
 
-  htx_cpu u_cpu (
+  // The window for the UP5K's 128 KiB of SPRAM, as the SoC sets it (twice the RAM).
+  htx_cpu #(.PcBits(18)) u_cpu (
     .clk_i,
     .rst_ni,
     .ibus_req_valid_o (ibus_req_valid),

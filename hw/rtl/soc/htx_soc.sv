@@ -48,7 +48,10 @@ module htx_soc #(
   logic [31:0] dbus_req_addr, dbus_req_wdata, dbus_rsp_rdata;
   logic [3:0]  dbus_req_be;
 
-  htx_cpu #(.ResetVector(ResetVector)) u_cpu (
+  // The core executes from RAM only (the fabric maps nothing else on its instruction bus), so its
+  // executable window is twice the RAM: every fetch outside RAM still faults, by the bus or by
+  // the window, and the window's last word is never RAM.
+  htx_cpu #(.ResetVector(ResetVector), .PcBits($clog2(RamBytes) + 1)) u_cpu (
     .clk_i, .rst_ni,
     .ibus_req_valid_o(ibus_req_valid), .ibus_req_ready_i(ibus_req_ready),
     .ibus_req_addr_o (ibus_req_addr),  .ibus_req_we_o   (ibus_req_we),

@@ -15,6 +15,7 @@ set(HTX_ISA_TESTS
   csr
   counters
   traps
+  window
   hazards
   fence)
 set(HTX_ISA_TEST_DIR ${CMAKE_CURRENT_LIST_DIR})
