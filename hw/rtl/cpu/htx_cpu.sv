@@ -87,6 +87,7 @@ module htx_cpu #(
     .redirect_i    (redirect_q),
     .redirect_pc_i (redirect_seq_q ? redirect_npc_q : redirect_pc_q),
     .redirect_out_i(redirect_out),
+    .redirect_hi_ok_i(!redirect_seq_q),
     .redirect_hi_i (redirect_hi_q),
     .predict_i     (d_redirect),
     .predict_pc_i  (d_target_q[PcBits-1:2]),
@@ -250,9 +251,13 @@ module htx_cpu #(
   // reads them). It was computed a cycle early, for whatever E's and D's registers would hold,
   // to keep it off the stall chain; compared in place it is 11 LUT4 smaller and the core placed
   // faster at every seed (2026-12-05).
+  // A MUL-class instruction also waits for a source E would forward (its adder/logic result): its
+  // correction terms below then take the sources' signs from W or the register file, not from the
+  // end of E's carry chain, which had been a critical path (1,027 more cycles in `bench`).
   logic d_hazard, hz;
-  assign hz       = e_q.rd_we && e_late_q &&
-                    ((d_dec.rs1_used && (e_q.rd == d_ra)) || (d_dec.rs2_used && (e_q.rd == d_rb)));
+  assign hz       = (e_q.rd_we && e_late_q &&
+                     ((d_dec.rs1_used && (e_q.rd == d_ra)) || (d_dec.rs2_used && (e_q.rd == d_rb)))) ||
+                    (d_dec.mul && e_fwd_q && ((e_q.rd == d_ra) || (e_q.rd == d_rb)));
   assign d_hazard = e_live && hz;
 
   logic late_alu_d, late_d, sub_d;
@@ -284,20 +289,19 @@ module htx_cpu #(
   // rs2 if rs1 is a negative signed operand and 0 otherwise. E's adder then forms corr, inverted
   // for the multiplier's DSP (htx_cpu_mul), in place of a 4-way choice among 0, rs1, rs2 and their
   // sum in the unit (66 LUT4). The zeros are the operand flip-flops' synchronous resets, whose
-  // conditions come from the forwarded signs one LUT level after them, as e_b_q's inversion does;
-  // the multiplier takes rs1 from e_rs1_q (its DSPs' input register).
-  // Each reset is the OR of a part known from D's registers and a part that waits for the forwarded
-  // sign, both kept apart so that the sign enters at the last LUT level (the decode table's entry
-  // and funct7's flag would otherwise put a second level behind it: 27.37 / 27.77 / 27.55 MHz at
-  // seeds 1-3 with only the second part kept, 30.76 / 30.36 / 30.55 with both, 2026-12-07).
+  // conditions come from the sources' signs one LUT level after them (never E's result: a MUL
+  // waits for it, above); the multiplier takes rs1 from e_rs1_q (its DSPs' input register).
+  // Each reset is the OR of a part known from D's registers and a part that waits for the sign,
+  // both kept apart so that the sign enters at the last LUT level (the decode table's entry and
+  // funct7's flag would otherwise put a second level behind it).
   logic            zero_a, zero_b;
   (* keep *) logic zero_a_now, zero_b_now, zero_a_pos, zero_b_pos;
   assign zero_a_now = d_dec.a_zero || (d_dec.mul && d_dec.funct3[1]);
   assign zero_a_pos = d_dec.mul && !d_dec.funct3[1];
   assign zero_b_now = d_dec.mul && (d_dec.funct3[1:0] == 2'b11);
   assign zero_b_pos = d_dec.mul && (d_dec.funct3[1:0] != 2'b11);
-  assign zero_a     = zero_a_now || (zero_a_pos && !d_rs2[31]);
-  assign zero_b     = zero_b_now || (zero_b_pos && !d_a[31]);
+  assign zero_a     = zero_a_now || (zero_a_pos && !d_rs2_rest[31]);
+  assign zero_b     = zero_b_now || (zero_b_pos && !d_a_rest[31]);
 
   // Address bits [1:0] of a load, store or JALR target, for the misalignment checks. The two-bit
   // sum is formed for every forwarding source and the forwarding selects come last, so the

@@ -51,9 +51,12 @@ module htx_cpu_alu (
   // LUT4 smaller than comparing the operands bit by bit. The carry chain's low sum bits settle
   // first, so they are tested on their own (kept) and only the top twelve after the chain's end:
   // one balanced tree put three LUT levels between the chain and the branch condition (29.1 MHz
-  // at two of three seeds).
-  (* keep *) logic eq_low;
-  assign eq_low = (sum33[19:0] == 20'b0);
+  // at two of three seeds). The low test is two kept halves: as one signal ABC made it a chain of
+  // four LUTs fed from bit 19, which became the critical path (2026-12-07, thirty-sixth session).
+  (* keep *) logic eq_low, eq_low_a, eq_low_b;
+  assign eq_low_a = (sum33[9:0] == 10'b0);
+  assign eq_low_b = (sum33[19:10] == 10'b0);
+  assign eq_low   = eq_low_a && eq_low_b;
   assign eq_o   = eq_low && (sum33[31:20] == 12'b0);
   assign lt_o  = sum33[32];
 

@@ -38,7 +38,8 @@ module htx_cpu_fetch #(
   input  logic        redirect_i,      // registered redirect (has priority)
   input  logic [PcBits-1:2] redirect_pc_i,
   input  logic        redirect_out_i,  // its target is outside the window (valid with redirect_i)
-  input  logic [31:PcBits]  redirect_hi_i,  // the target's high bits (used when redirect_out_i)
+  input  logic        redirect_hi_ok_i, // redirect_hi_i holds the target's high bits (not a
+  input  logic [31:PcBits]  redirect_hi_i,  // fall-through, whose are zero)
   input  logic        predict_i,       // decode's predicted-taken jump or branch, first cycle
   input  logic [PcBits-1:2] predict_pc_i,  // its target (registered; execute corrects one outside)
 
@@ -136,8 +137,12 @@ module htx_cpu_fetch #(
       out_q       <= out_d;
       fault_q     <= fault_d;
       head_pc_q   <= head_pc_d;
-      if (flush) begin
-        head_hi_q <= flush_out ? redirect_hi_i : '0;
+      // Taken from every redirect that carries them, so no clear is needed: they are zero for a
+      // target inside the window, and a fall-through or a predicted jump comes only from an
+      // instruction inside it, while they are already zero (after an outside redirect the next
+      // redirect is its fault's trap). A clear beside the reset cost 14 LUT4.
+      if (redirect_i && redirect_hi_ok_i) begin
+        head_hi_q <= redirect_hi_i;
       end
       if (flush) begin
         // Every request in flight after this cycle is stale, except one for the new address.

@@ -38,6 +38,14 @@ TEST_BEGIN
   TEST_CASE(21, a2, 6, li a0, 6; li a1, 7; mul a2, a0, a1; div a2, a2, a1)
   TEST_CASE(22, a2, 0, li a0, 100; li a1, 7; rem a2, a0, a1; mul a2, a2, x0)
   TEST_CASE(23, a2, 2, li a0, 100; li a1, 7; divu a2, a0, a1; addi a2, a2, 2; remu a2, a2, a1; mulhu a3, a2, a2)
+  // A multiply whose source E would forward waits a cycle (its signs set the correction terms):
+  // negative sources straight from the instruction before, for each signedness.
+  TEST_CASE(30, a2, 35, li a0, -5; li a1, 7; sub a1, x0, a1; mul a2, a0, a1)
+  TEST_CASE(31, a2, 0xffffffff, li a1, 7; li a0, 5; sub a0, x0, a0; mulh a2, a0, a1)
+  TEST_CASE(32, a2, 0, li a0, -5; li a1, 7; sub a1, x0, a1; mulh a2, a0, a1)
+  TEST_CASE(33, a2, 0xffffffff, li a1, 7; li a0, 5; sub a0, x0, a0; mulhsu a2, a0, a1)
+  TEST_CASE(34, a2, 4, li a0, 5; li a1, 7; sub a1, x0, a1; mulhu a2, a0, a1)
+  TEST_CASE(35, a2, 4, li a0, 5; li a1, 7; sub a1, x0, a1; mulhsu a2, a0, a1)
   TEST_CASE(24, a2, 0x10, lw a1, 0(s0); li a0, 0x1234; divu a2, a1, a0; slli a2, a2, 4)
   // CSR read used at once; CSR write from a just-computed value.
   TEST_CASE(25, a2, 0x56, li a0, 0x55; addi a0, a0, 1; csrw mscratch, a0; csrr a1, mscratch; mv a2, a1)
