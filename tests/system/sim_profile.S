@@ -16,8 +16,8 @@ _start:
     slli    t3, t2, 1        /* a shift whose result ... */
     add     t4, t3, t3       /* ... the next instruction uses: one late_result clock */
     srai    t6, t4, 2        /* and again: */
-    xor     t4, t6, t4       /*   a second late_result clock */
-    mul     t5, t4, t4       /* three clocks in execute: two mul_div clocks */
+    xor     t4, t6, t4       /*   a second late_result clock; and a multiply that uses ... */
+    mul     t5, t4, t4       /* ... it waits too (a third); three clocks in execute: two mul_div clocks */
     addi    t0, t0, -1
     bnez    t0, 1b           /* backward, predicted taken: one jump clock (mispredicted once, at the end) */
     la      t0, tohost
