@@ -257,7 +257,7 @@ module htx_cpu #(
   logic d_hazard, hz;
   assign hz       = (e_q.rd_we && e_late_q &&
                      ((d_dec.rs1_used && (e_q.rd == d_ra)) || (d_dec.rs2_used && (e_q.rd == d_rb)))) ||
-                    (d_dec.mul && e_fwd_q && ((e_q.rd == d_ra) || (e_q.rd == d_rb)));
+                    (d_dec.mul && (fe_a || fe_b));
   assign d_hazard = e_live && hz;
 
   logic late_alu_d, late_d, sub_d;
